@@ -1,0 +1,478 @@
+#include "ShadowMapFocusing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowmaps
+{
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+// Corner i of a cube has x from bit 0, y from bit 1, z from bit 2.
+glm::dvec3 CubeCorner(int i, const glm::dvec3& lo, const glm::dvec3& hi)
+{
+  return { (i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z };
+}
+
+// The 12 edges of a cube as pairs of corner indices.
+const std::array<std::array<int, 2>, 12>& CubeEdges()
+{
+  static const std::array<std::array<int, 2>, 12> edges = { { { 0, 1 }, { 2, 3 }, { 4, 5 },
+    { 6, 7 }, { 0, 2 }, { 1, 3 }, { 4, 6 }, { 5, 7 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } } };
+  return edges;
+}
+
+// The 6 faces of a cube as corner-index quads in winding order.
+const std::array<std::array<int, 4>, 6>& CubeFaces()
+{
+  static const std::array<std::array<int, 4>, 6> faces = { { { 0, 2, 6, 4 }, { 1, 3, 7, 5 },
+    { 0, 1, 5, 4 }, { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } } };
+  return faces;
+}
+
+std::array<Plane, 6> BoxPlanes(const Aabb& box)
+{
+  std::array<Plane, 6> planes;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    glm::dvec3 n(0.0);
+    n[axis] = 1.0;
+    planes[2 * axis] = { n, -box.Min[axis] };
+    planes[2 * axis + 1] = { -n, box.Max[axis] };
+  }
+  return planes;
+}
+
+bool InsideAll(const std::array<Plane, 6>& planes, const glm::dvec3& p, double tolerance)
+{
+  return std::all_of(planes.begin(), planes.end(),
+    [&](const Plane& plane) { return plane.Distance(p) >= -tolerance; });
+}
+
+// Adds the crossings of segments a-b with each plane that lie inside all of `inside`.
+void AddEdgeCrossings(const glm::dvec3& a, const glm::dvec3& b,
+  const std::array<Plane, 6>& cutting, const std::array<Plane, 6>& inside, double tolerance,
+  std::vector<glm::dvec3>& out)
+{
+  for (const Plane& plane : cutting)
+  {
+    const double da = plane.Distance(a);
+    const double db = plane.Distance(b);
+    if ((da < 0.0) == (db < 0.0) || da == db)
+    {
+      continue;
+    }
+    const glm::dvec3 p = a + (b - a) * (da / (da - db));
+    if (InsideAll(inside, p, tolerance))
+    {
+      out.push_back(p);
+    }
+  }
+}
+
+// Sutherland-Hodgman: keeps the part of a polygon where coordinate `axis` of each
+// vertex satisfies sign * (v[axis] - bound) >= 0.
+std::vector<glm::dvec3> ClipPolygon(
+  const std::vector<glm::dvec3>& polygon, int axis, double bound, double sign)
+{
+  std::vector<glm::dvec3> out;
+  const size_t n = polygon.size();
+  for (size_t i = 0; i < n; ++i)
+  {
+    const glm::dvec3& a = polygon[i];
+    const glm::dvec3& b = polygon[(i + 1) % n];
+    const double da = sign * (a[axis] - bound);
+    const double db = sign * (b[axis] - bound);
+    if (da >= 0.0)
+    {
+      out.push_back(a);
+    }
+    if ((da >= 0.0) != (db >= 0.0))
+    {
+      out.push_back(a + (b - a) * (da / (da - db)));
+    }
+  }
+  return out;
+}
+
+glm::dvec3 Transform(const glm::dmat4& m, const glm::dvec3& p)
+{
+  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+  return glm::dvec3(q) / q.w;
+}
+
+glm::dvec3 SafeDirection(const glm::dvec3& direction)
+{
+  const double length = glm::length(direction);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return { 0.0, 0.0, -1.0 };
+  }
+  return direction / length;
+}
+
+// A box that is never degenerate: zero-size axes get a small extent relative to
+// the largest one (or 1 if the box is a point), so that fits stay invertible.
+Aabb Inflated(const Aabb& box)
+{
+  Aabb result = box;
+  const glm::dvec3 size = box.Max - box.Min;
+  const double largest = std::max({ size.x, size.y, size.z });
+  const double minimum = largest > 0.0 ? largest * 1e-3 : std::max(1.0, glm::length(box.Max) * 1e-3);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (size[axis] < minimum)
+    {
+      result.Min[axis] -= 0.5 * minimum;
+      result.Max[axis] += 0.5 * minimum;
+    }
+  }
+  return result;
+}
+
+// Body points if any, else the box corners.
+std::vector<glm::dvec3> BodyOrScene(const glm::dmat4& cameraViewProjection, const Aabb& scene)
+{
+  std::vector<glm::dvec3> body;
+  if (IsFinite(cameraViewProjection))
+  {
+    body = IntersectFrustumWithBox(cameraViewProjection, scene);
+  }
+  if (body.empty())
+  {
+    const auto corners = scene.Corners();
+    body.assign(corners.begin(), corners.end());
+  }
+  return body;
+}
+} // namespace
+
+bool Aabb::IsEmpty() const
+{
+  return !(this->Min.x <= this->Max.x && this->Min.y <= this->Max.y && this->Min.z <= this->Max.z);
+}
+
+void Aabb::Add(const glm::dvec3& p)
+{
+  if (this->IsEmpty())
+  {
+    this->Min = this->Max = p;
+    return;
+  }
+  this->Min = glm::min(this->Min, p);
+  this->Max = glm::max(this->Max, p);
+}
+
+void Aabb::Add(const Aabb& other)
+{
+  if (!other.IsEmpty())
+  {
+    this->Add(other.Min);
+    this->Add(other.Max);
+  }
+}
+
+glm::dvec3 Aabb::Center() const
+{
+  return 0.5 * (this->Min + this->Max);
+}
+
+double Aabb::Diagonal() const
+{
+  return this->IsEmpty() ? 0.0 : glm::length(this->Max - this->Min);
+}
+
+std::array<glm::dvec3, 8> Aabb::Corners() const
+{
+  std::array<glm::dvec3, 8> corners;
+  for (int i = 0; i < 8; ++i)
+  {
+    corners[i] = CubeCorner(i, this->Min, this->Max);
+  }
+  return corners;
+}
+
+Aabb Aabb::FromBounds(const double bounds[6])
+{
+  Aabb box;
+  if (bounds && bounds[0] <= bounds[1] && bounds[2] <= bounds[3] && bounds[4] <= bounds[5])
+  {
+    box.Min = { bounds[0], bounds[2], bounds[4] };
+    box.Max = { bounds[1], bounds[3], bounds[5] };
+  }
+  return box;
+}
+
+std::array<glm::dvec3, 8> FrustumCorners(const glm::dmat4& viewProjection)
+{
+  const glm::dmat4 inverse = glm::inverse(viewProjection);
+  std::array<glm::dvec3, 8> corners;
+  for (int i = 0; i < 8; ++i)
+  {
+    corners[i] = Transform(inverse, CubeCorner(i, glm::dvec3(-1.0), glm::dvec3(1.0)));
+  }
+  return corners;
+}
+
+std::array<Plane, 6> FrustumPlanes(const glm::dmat4& viewProjection)
+{
+  const glm::dmat4 t = glm::transpose(viewProjection); // t[i] is row i
+  std::array<Plane, 6> planes;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int side = 0; side < 2; ++side)
+    {
+      const glm::dvec4 row = side == 0 ? t[3] + t[axis] : t[3] - t[axis];
+      const double length = glm::length(glm::dvec3(row));
+      planes[2 * axis + side] = { glm::dvec3(row) / length, row.w / length };
+    }
+  }
+  return planes;
+}
+
+std::vector<glm::dvec3> IntersectFrustumWithBox(const glm::dmat4& viewProjection, const Aabb& box)
+{
+  std::vector<glm::dvec3> points;
+  if (box.IsEmpty())
+  {
+    return points;
+  }
+  const auto frustumCorners = FrustumCorners(viewProjection);
+  const auto frustumPlanes = FrustumPlanes(viewProjection);
+  const auto boxCorners = box.Corners();
+  const auto boxPlanes = BoxPlanes(box);
+  const double tolerance = 1e-9 * std::max(box.Diagonal(), 1e-300);
+
+  for (const auto& p : frustumCorners)
+  {
+    if (InsideAll(boxPlanes, p, tolerance))
+    {
+      points.push_back(p);
+    }
+  }
+  for (const auto& p : boxCorners)
+  {
+    if (InsideAll(frustumPlanes, p, tolerance))
+    {
+      points.push_back(p);
+    }
+  }
+  // A crossing lies on an edge of one body, hence in that body; it is a vertex
+  // of the intersection only if it is also inside the other body.
+  for (const auto& edge : CubeEdges())
+  {
+    AddEdgeCrossings(
+      frustumCorners[edge[0]], frustumCorners[edge[1]], boxPlanes, boxPlanes, tolerance, points);
+    AddEdgeCrossings(
+      boxCorners[edge[0]], boxCorners[edge[1]], frustumPlanes, frustumPlanes, tolerance, points);
+  }
+  points.erase(std::remove_if(points.begin(), points.end(),
+                 [](const glm::dvec3& p) { return !std::isfinite(p.x + p.y + p.z); }),
+    points.end());
+  return points;
+}
+
+glm::dmat4 LightLookAt(const glm::dvec3& eye, const glm::dvec3& direction)
+{
+  const glm::dvec3 d = SafeDirection(direction);
+  const glm::dvec3 up = std::abs(d.z) < 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(0.0, 1.0, 0.0);
+  return glm::lookAt(eye, eye + d, up);
+}
+
+glm::dvec2 ComputeNearAndFar(
+  const glm::dmat4& lightView, const glm::dvec2& xyMin, const glm::dvec2& xyMax, const Aabb& box)
+{
+  if (box.IsEmpty())
+  {
+    return { 0.0, 0.0 };
+  }
+  const auto corners = box.Corners();
+  double zMin = Infinity;
+  double zMax = -Infinity;
+  for (const auto& face : CubeFaces())
+  {
+    std::vector<glm::dvec3> polygon;
+    for (int index : face)
+    {
+      polygon.push_back(Transform(lightView, corners[index]));
+    }
+    polygon = ClipPolygon(polygon, 0, xyMin.x, 1.0);
+    polygon = ClipPolygon(polygon, 0, xyMax.x, -1.0);
+    polygon = ClipPolygon(polygon, 1, xyMin.y, 1.0);
+    polygon = ClipPolygon(polygon, 1, xyMax.y, -1.0);
+    for (const auto& p : polygon)
+    {
+      zMin = std::min(zMin, p.z);
+      zMax = std::max(zMax, p.z);
+    }
+  }
+  if (zMin > zMax)
+  {
+    return { 0.0, 0.0 };
+  }
+  return { -zMax, -zMin };
+}
+
+LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& sceneBounds,
+  const glm::dvec3& lightDirection, int resolution)
+{
+  const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) }
+                                           : Inflated(sceneBounds);
+  const glm::dvec3 d = SafeDirection(lightDirection);
+  const double diagonal = scene.Diagonal();
+  LightView fit;
+  fit.View = LightLookAt(scene.Center() - d * diagonal, d);
+
+  glm::dvec2 lo(Infinity), hi(-Infinity);
+  double bodyFar = 0.0;
+  for (const auto& p : BodyOrScene(cameraViewProjection, scene))
+  {
+    const glm::dvec3 q = Transform(fit.View, p);
+    lo = glm::min(lo, glm::dvec2(q));
+    hi = glm::max(hi, glm::dvec2(q));
+    bodyFar = std::max(bodyFar, -q.z);
+  }
+  // Keep a few texels of margin so that filter kernels at B's rim stay in the map.
+  const double minimumExtent = diagonal * 1e-6;
+  const glm::dvec2 extent = glm::max(hi - lo, glm::dvec2(minimumExtent));
+  const glm::dvec2 margin = extent * (4.0 / std::max(resolution, 1));
+  lo -= margin;
+  hi = lo + extent + 2.0 * margin;
+
+  glm::dvec2 depth = ComputeNearAndFar(fit.View, lo, hi, scene);
+  if (!(depth.y > depth.x))
+  {
+    depth = { 0.0, bodyFar };
+  }
+  const double range = std::max(bodyFar - depth.x, diagonal * 1e-6);
+  const double zNear = depth.x - range * 1e-3;
+  const double zFar = bodyFar + range * 1e-3;
+  fit.Projection = glm::ortho(lo.x, hi.x, lo.y, hi.y, zNear, zFar);
+  fit.Perspective = false;
+  fit.TexelConstant = std::max(hi.x - lo.x, hi.y - lo.y) / std::max(resolution, 1);
+  return fit;
+}
+
+LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& sceneBounds,
+  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
+  int resolution)
+{
+  const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 }
+                                           : Inflated(sceneBounds);
+  LightView fit;
+  fit.View = LightLookAt(position, direction);
+  const double halfAngle = glm::radians(std::min(std::max(coneAngleDegrees, 0.5), 80.0));
+  const double t = std::tan(halfAngle);
+
+  // Crop the cone to B's projection when all of B is in front of the light.
+  glm::dvec2 lo(Infinity), hi(-Infinity);
+  double bodyFar = 0.0;
+  bool cropValid = true;
+  const double diagonal = scene.Diagonal();
+  for (const auto& p : BodyOrScene(cameraViewProjection, scene))
+  {
+    const glm::dvec3 q = Transform(fit.View, p);
+    bodyFar = std::max(bodyFar, -q.z);
+    if (-q.z <= diagonal * 1e-6)
+    {
+      cropValid = false;
+      continue;
+    }
+    const glm::dvec2 tangent = glm::dvec2(q) / -q.z;
+    lo = glm::min(lo, tangent);
+    hi = glm::max(hi, tangent);
+  }
+  lo = glm::max(lo, glm::dvec2(-t));
+  hi = glm::min(hi, glm::dvec2(t));
+  if (!cropValid || !(hi.x > lo.x) || !(hi.y > lo.y))
+  {
+    lo = glm::dvec2(-t);
+    hi = glm::dvec2(t);
+  }
+  const glm::dvec2 margin = (hi - lo) * (4.0 / std::max(resolution, 1));
+  lo = glm::max(lo - margin, glm::dvec2(-t));
+  hi = glm::min(hi + margin, glm::dvec2(t));
+
+  double nearest = Infinity;
+  for (const auto& p : scene.Corners())
+  {
+    nearest = std::min(nearest, -Transform(fit.View, p).z);
+  }
+  const double zFar = std::max(bodyFar, diagonal * 1e-3) * 1.001;
+  const double zNear = std::max(nearest * 0.999, zFar * 1e-3);
+  fit.Projection = glm::frustum(lo.x * zNear, hi.x * zNear, lo.y * zNear, hi.y * zNear, zNear, zFar);
+  fit.Perspective = true;
+  fit.TexelPerUnitDistance = std::max(hi.x - lo.x, hi.y - lo.y) / std::max(resolution, 1);
+  return fit;
+}
+
+std::array<LightView, 6> FitCubeFaces(const Aabb& sceneBounds, const glm::dvec3& position, int resolution)
+{
+  const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 }
+                                           : Inflated(sceneBounds);
+  double farthest = 0.0;
+  for (const auto& p : scene.Corners())
+  {
+    farthest = std::max(farthest, glm::length(p - position));
+  }
+  // A face sees a point at depth = its largest |coordinate| relative to the light
+  // (the face's axis dominates), so the nearest depth any face needs is the
+  // largest per-axis gap to the box, not the Euclidean distance to it.
+  const glm::dvec3 gap = glm::max(glm::max(scene.Min - position, position - scene.Max), 0.0);
+  const double outside = std::max({ gap.x, gap.y, gap.z });
+  const double zFar = std::max(farthest, scene.Diagonal() * 1e-3) * 1.001;
+  const double zNear = std::max(outside * 0.999, zFar * 1e-3);
+  // Slightly wider than 90 degrees so that filter taps at face seams stay in the map.
+  const double t = 1.0 + 8.0 / std::max(resolution, 1);
+  const std::array<glm::dvec3, 6> directions = { { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 },
+    { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } } };
+  std::array<LightView, 6> faces;
+  for (int i = 0; i < 6; ++i)
+  {
+    faces[i].View = LightLookAt(position, directions[i]);
+    faces[i].Projection = glm::frustum(-t * zNear, t * zNear, -t * zNear, t * zNear, zNear, zFar);
+    faces[i].Perspective = true;
+    faces[i].TexelPerUnitDistance = 2.0 * t / std::max(resolution, 1);
+  }
+  return faces;
+}
+
+int CubeFaceIndex(const glm::dvec3& d)
+{
+  const glm::dvec3 a = glm::abs(d);
+  if (a.x >= a.y && a.x >= a.z)
+  {
+    return d.x >= 0.0 ? 0 : 1;
+  }
+  if (a.y >= a.z)
+  {
+    return d.y >= 0.0 ? 2 : 3;
+  }
+  return d.z >= 0.0 ? 4 : 5;
+}
+
+glm::dmat4 ClipToTexture()
+{
+  return glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) * glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
+}
+
+bool IsFinite(const glm::dmat4& m)
+{
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      if (!std::isfinite(m[c][r]))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+} // namespace shadowmaps

@@ -1,0 +1,108 @@
+// Focusing math for shadow maps: plain C++ and GLM, no VTK state.
+//
+// Every function here is pure. Each one builds one explicit quantity (a body of
+// points, a depth range, a view or projection matrix); the passes compose them.
+// All matrices follow OpenGL conventions: right-handed view space looking down
+// -z, clip space z in [-1, 1]. Double precision throughout so that scenes from
+// 1e-4 to 1e5 units keep their texel grids.
+#ifndef ShadowMapFocusing_h
+#define ShadowMapFocusing_h
+
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadowmaps
+{
+
+/// Axis-aligned box. Default-constructed boxes are empty.
+struct Aabb
+{
+  glm::dvec3 Min{ 1.0, 1.0, 1.0 };
+  glm::dvec3 Max{ -1.0, -1.0, -1.0 };
+
+  bool IsEmpty() const;
+  void Add(const glm::dvec3& p);
+  void Add(const Aabb& other);
+  glm::dvec3 Center() const;
+  double Diagonal() const;
+  std::array<glm::dvec3, 8> Corners() const;
+  static Aabb FromBounds(const double bounds[6]);
+};
+
+/// A plane n.p + d = 0; points with n.p + d >= 0 are inside.
+struct Plane
+{
+  glm::dvec3 Normal{ 0.0, 0.0, 1.0 };
+  double Offset = 0.0;
+  double Distance(const glm::dvec3& p) const { return glm::dot(this->Normal, p) + this->Offset; }
+};
+
+/// The eight corners of the frustum whose clip transform is viewProjection
+/// (inverse-projected NDC cube corners).
+std::array<glm::dvec3, 8> FrustumCorners(const glm::dmat4& viewProjection);
+
+/// The six inward planes of the frustum whose clip transform is viewProjection.
+std::array<Plane, 6> FrustumPlanes(const glm::dmat4& viewProjection);
+
+/// Vertices of the convex body frustum ∩ box: frustum corners inside the box,
+/// box corners inside the frustum, and the crossings of each body's edges with
+/// the other's faces. Empty when they do not meet. With the scene bounds as box
+/// this is the focus body B of the survey (§4.1). Extending B toward the light
+/// moves points along light rays, which changes no light-space x/y: the fits
+/// below cover the extension through ComputeNearAndFar alone.
+std::vector<glm::dvec3> IntersectFrustumWithBox(const glm::dmat4& viewProjection, const Aabb& box);
+
+/// Right-handed look-at view for a light looking along direction from eye.
+/// The up vector is chosen stably (world z unless nearly parallel, then world y).
+glm::dmat4 LightLookAt(const glm::dvec3& eye, const glm::dvec3& direction);
+
+/// Depth range along -z of lightView covered by the box clipped to the light
+/// frustum's side planes x in [xyMin.x, xyMax.x], y in [xyMin.y, xyMax.y] (the
+/// Microsoft text's ComputeNearAndFar). Returns {near, far} as positive
+/// distances in front of the light; {0, 0} if nothing of the box lies inside.
+glm::dvec2 ComputeNearAndFar(
+  const glm::dmat4& lightView, const glm::dvec2& xyMin, const glm::dvec2& xyMax, const Aabb& box);
+
+/// One rendered view of a light: the matrices a shadow map is rendered with.
+struct LightView
+{
+  glm::dmat4 View{ 1.0 };
+  glm::dmat4 Projection{ 1.0 };
+  bool Perspective = false;
+  /// World-space size of one texel: Constant + PerUnitDistance * distance to the light.
+  double TexelConstant = 0.0;
+  double TexelPerUnitDistance = 0.0;
+  glm::dmat4 ViewProjection() const { return this->Projection * this->View; }
+};
+
+/// Focused uniform map for a directional light: an orthographic frustum fitted
+/// to B in light space, its near plane pulled back to the nearest scene point
+/// inside the light frustum's side planes. Falls back to the whole scene when B
+/// is empty (camera looking away from the scene).
+LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& scene,
+  const glm::dvec3& lightDirection, int resolution);
+
+/// Spot light: the cone's square frustum (full angle 2 * coneAngleDegrees),
+/// cropped to B's projection; near/far from the scene inside the cone.
+LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& scene,
+  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
+  int resolution);
+
+/// Point light: six 90 degree faces in the order +x, -x, +y, -y, +z, -z, each
+/// with near/far covering the scene.
+std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& position, int resolution);
+
+/// Index of the cube face (order of FitCubeFaces) that sees direction d.
+int CubeFaceIndex(const glm::dvec3& d);
+
+/// Maps clip space [-1, 1]^3 to texture space [0, 1]^3.
+glm::dmat4 ClipToTexture();
+
+/// True when every element of m is finite.
+bool IsFinite(const glm::dmat4& m);
+
+} // namespace shadowmaps
+
+#endif

@@ -1,0 +1,771 @@
+#include "vtkAbstractShadowMapPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkDataObject.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMapper.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpaquePass.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapCasterPass.h"
+#include "vtkShadowMapInternals.h"
+#include "vtkShadowMapsReceiverFS.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkTextureUnitManager.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <random>
+#include <sstream>
+
+#include <glm/gtc/type_ptr.hpp>
+
+vtkInformationKeyMacro(vtkAbstractShadowMapPass, CASTS_SHADOWS, Integer);
+vtkInformationKeyMacro(vtkAbstractShadowMapPass, RECEIVES_SHADOWS, Integer);
+
+using shadowmaps::Aabb;
+using shadowmaps::LightKind;
+using shadowmaps::LightView;
+using shadowmaps::ShadowLight;
+
+namespace
+{
+// Cones wider than this (half angle, degrees) are rendered as six cube faces:
+// one perspective map that wide wastes most of its texels at the rim.
+constexpr double WidestSingleMapCone = 60.0;
+constexpr int NoiseSize = 32;
+
+glm::dmat4 ToGlm(vtkMatrix4x4* m)
+{
+  glm::dmat4 result;
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int column = 0; column < 4; ++column)
+    {
+      result[column][row] = m->GetElement(row, column);
+    }
+  }
+  return result;
+}
+
+void ToVtk(const glm::dmat4& m, vtkMatrix4x4* result)
+{
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int column = 0; column < 4; ++column)
+    {
+      result->SetElement(row, column, m[column][row]);
+    }
+  }
+}
+
+// An absent key means yes.
+bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
+{
+  return !info || !info->Has(key) || info->Get(key) != 0;
+}
+
+glm::dvec3 ToGlm(const double v[3])
+{
+  return { v[0], v[1], v[2] };
+}
+
+// Polydata draws are patched where the mapper applies light i's colour: Phong's
+// diffuse and specular sums and PBR's radiance (vtkOpenGLPolyDataMapper 9.1).
+int InjectShadowFactor(std::string& fragmentShader, int shaderIndex, int lightIndex)
+{
+  const std::string color = "lightColor" + std::to_string(shaderIndex);
+  const std::string factor = "vtkShadowFactor" + std::to_string(lightIndex);
+  const std::pair<std::string, std::string> patterns[] = {
+    { "diffuse += (df * " + color + ");", "diffuse += (df * " + color + " * " + factor + ");" },
+    { "specular += (sf * " + color + ");", "specular += (sf * " + color + " * " + factor + ");" },
+    { "radiance = " + color + ";", "radiance = " + color + " * " + factor + ";" },
+    { "radiance = " + color + " * attenuation;",
+      "radiance = " + color + " * " + factor + " * attenuation;" },
+  };
+  int replaced = 0;
+  for (const auto& pattern : patterns)
+  {
+    for (size_t at = fragmentShader.find(pattern.first); at != std::string::npos;
+         at = fragmentShader.find(pattern.first, at + pattern.second.size()))
+    {
+      fragmentShader.replace(at, pattern.first.size(), pattern.second);
+      ++replaced;
+    }
+  }
+  return replaced;
+}
+
+bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb& box)
+{
+  for (const auto& plane : planes)
+  {
+    const glm::dvec3 farthest(plane.Normal.x >= 0.0 ? box.Max.x : box.Min.x,
+      plane.Normal.y >= 0.0 ? box.Max.y : box.Min.y, plane.Normal.z >= 0.0 ? box.Max.z : box.Min.z);
+    if (plane.Distance(farthest) < 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Modification time of everything a caster's depth depends on, including its
+// mapper's input after bringing the pipeline up to date (composite inputs too).
+vtkMTimeType CasterMTime(vtkProp* prop)
+{
+  vtkMTimeType time = prop->GetRedrawMTime();
+  auto* actor = vtkActor::SafeDownCast(prop);
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  if (mapper && mapper->GetNumberOfInputPorts() > 0 && mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    mapper->GetInputAlgorithm()->Update();
+    if (vtkDataObject* input = mapper->GetInputDataObject(0, 0))
+    {
+      time = std::max(time, input->GetMTime());
+    }
+  }
+  return time;
+}
+} // namespace
+
+struct vtkAbstractShadowMapPass::Resources
+{
+  shadowmaps::TextureArray Maps;
+  vtkNew<vtkShadowMapCasterPass> CasterPass;
+  vtkNew<vtkOpaquePass> OpaquePass;
+  vtkNew<vtkCamera> LightCamera;
+  vtkNew<vtkMatrix4x4> LightProjection;
+  vtkNew<vtkRenderStepsPass> DefaultDelegate;
+  vtkSmartPointer<vtkTextureObject> Noise;
+
+  // What the maps were last rendered for; empty when they must be re-rendered.
+  std::vector<vtkMTimeType> Signature;
+  bool MapsValid = false;
+
+  // Receiver shaders depend on these; GetShaderStageMTime() follows them.
+  std::string ShaderKey;
+  std::vector<vtkProp*> NonReceivers;
+  vtkTimeStamp ShaderKeyTime;
+
+  // Uniform values of the current maps.
+  std::vector<float> WorldToMap;
+  std::vector<float> TexelSizes;
+  std::vector<float> LightPositions;
+  std::vector<float> Attenuations;
+  glm::mat4 ViewToWorld{ 1.0f };
+  int MapUnit = -1;
+
+  bool Active = false;
+  bool WarnedTooManyLights = false;
+  bool WarnedResolution = false;
+  std::string LastGLError;
+};
+
+//------------------------------------------------------------------------------
+vtkAbstractShadowMapPass::vtkAbstractShadowMapPass()
+  : Internal(new Internals)
+  , Resource(new Resources)
+{
+  this->Resource->ShaderKeyTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkAbstractShadowMapPass::~vtkAbstractShadowMapPass()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SetDelegatePass(vtkRenderPass* delegate)
+{
+  if (this->DelegatePass == delegate)
+  {
+    return;
+  }
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->UnRegister(this);
+  }
+  this->DelegatePass = delegate;
+  if (delegate)
+  {
+    delegate->Register(this);
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+size_t vtkAbstractShadowMapPass::GetShadowMapMemory() const
+{
+  return this->Resource->Maps.GetMemoryBytes();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  auto* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkRenderPass* delegate =
+    this->DelegatePass ? this->DelegatePass : this->Resource->DefaultDelegate.Get();
+
+  Resources& r = *this->Resource;
+  r.Active = renderer && this->PrepareShadows(s, renderer);
+  if (r.Active)
+  {
+    this->UpdateReceiverShaderKey(s);
+    this->PreRender(s);
+    this->BindShadowTextures(renderer);
+  }
+  delegate->Render(s);
+  this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
+  if (r.Active)
+  {
+    this->UnbindShadowTextures(renderer);
+    this->PostRender(s);
+  }
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::PrepareShadows(const vtkRenderState*, vtkOpenGLRenderer* renderer)
+{
+  renderer->UpdateLightsGeometryToFollowCamera();
+  this->CollectLights(renderer);
+  this->NumberOfShadowedLights = static_cast<int>(this->Internal->Lights.size());
+  if (this->Internal->Lights.empty())
+  {
+    this->NumberOfShadowMapLayers = 0;
+    return false;
+  }
+  this->CollectPropsAndBounds(renderer);
+  return this->UpdateShadowMaps(renderer);
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::CollectLights(vtkOpenGLRenderer* renderer)
+{
+  auto& lights = this->Internal->Lights;
+  lights.clear();
+  int shaderIndex = 0;
+  vtkCollectionSimpleIterator it;
+  vtkLightCollection* collection = renderer->GetLights();
+  collection->InitTraversal(it);
+  int skipped = 0;
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (!light->GetSwitch())
+    {
+      continue; // switched-off lights get no index in the mappers' shaders
+    }
+    const int index = shaderIndex++;
+    if (light->LightTypeIsHeadlight() || !IsEnabled(light->GetInformation(), CASTS_SHADOWS()))
+    {
+      continue;
+    }
+    if (static_cast<int>(lights.size()) == VTK_MAX_SHADOWED_LIGHTS)
+    {
+      ++skipped;
+      continue;
+    }
+    ShadowLight shadowLight;
+    shadowLight.Light = light;
+    shadowLight.ShaderIndex = index;
+    shadowLight.Position = ToGlm(light->GetTransformedPosition());
+    shadowLight.Direction = ToGlm(light->GetTransformedFocalPoint()) - shadowLight.Position;
+    shadowLight.ConeAngle = light->GetConeAngle();
+    shadowLight.Attenuation = std::min(std::max(light->GetShadowAttenuation(), 0.0f), 1.0f);
+    if (!light->GetPositional())
+    {
+      shadowLight.Kind = LightKind::Directional;
+    }
+    else if (shadowLight.ConeAngle < 90.0)
+    {
+      shadowLight.Kind = LightKind::Spot;
+      shadowLight.Cube = shadowLight.ConeAngle > WidestSingleMapCone;
+    }
+    else
+    {
+      shadowLight.Kind = LightKind::Point;
+      shadowLight.Cube = true;
+    }
+    lights.push_back(shadowLight);
+  }
+  if (skipped > 0 && !this->Resource->WarnedTooManyLights)
+  {
+    vtkWarningMacro(<< skipped << " light(s) beyond the first " << VTK_MAX_SHADOWED_LIGHTS
+                    << " shadowed lights cast no shadows; they still light the scene.");
+  }
+  this->Resource->WarnedTooManyLights = skipped > 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::CollectPropsAndBounds(vtkOpenGLRenderer* renderer)
+{
+  Internals& in = *this->Internal;
+  in.Casters.clear();
+  in.SceneBounds = Aabb();
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    const Aabb bounds = Aabb::FromBounds(prop->GetBounds());
+    if (bounds.IsEmpty() || !std::isfinite(bounds.Diagonal()))
+    {
+      continue;
+    }
+    in.SceneBounds.Add(bounds);
+    if (!prop->GetPropertyKeys())
+    {
+      // Render passes create the keys on first use, which modifies the prop;
+      // create them now so that this first use does not re-render the maps.
+      vtkNew<vtkInformation> keys;
+      prop->SetPropertyKeys(keys);
+    }
+    if (IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()) && prop->HasOpaqueGeometry())
+    {
+      in.Casters.push_back({ prop, bounds });
+    }
+  }
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  in.CameraView = ToGlm(camera->GetViewTransformMatrix());
+  in.CameraProjection =
+    ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
+{
+  Internals& in = *this->Internal;
+  Resources& r = *this->Resource;
+
+  int size[2];
+  int origin[2];
+  renderer->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
+  std::vector<vtkMTimeType> signature = { this->GetMTime(),
+    renderer->GetActiveCamera()->GetMTime(), renderer->GetLights()->GetMTime(),
+    renderer->GetViewProps()->GetMTime(), static_cast<vtkMTimeType>(size[0]),
+    static_cast<vtkMTimeType>(size[1]) };
+  for (const auto& light : in.Lights)
+  {
+    signature.push_back(reinterpret_cast<vtkMTimeType>(light.Light));
+    signature.push_back(light.Light->GetMTime());
+  }
+  for (const auto& caster : in.Casters)
+  {
+    signature.push_back(reinterpret_cast<vtkMTimeType>(caster.Prop));
+    signature.push_back(CasterMTime(caster.Prop));
+  }
+  if (r.MapsValid && signature == r.Signature)
+  {
+    return true;
+  }
+  r.Signature.clear();
+  r.MapsValid = false;
+
+  GLint maximumSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumSize);
+  in.Resolution = std::min(this->Resolution, std::max(static_cast<int>(maximumSize), 64));
+  if (in.Resolution != this->Resolution && !r.WarnedResolution)
+  {
+    vtkWarningMacro(<< "Resolution " << this->Resolution << " exceeds the GL maximum texture size; using "
+                    << in.Resolution << ".");
+    r.WarnedResolution = true;
+  }
+
+  int layers = 0;
+  for (int i = 0; i < static_cast<int>(in.Lights.size()); ++i)
+  {
+    this->ComputeLightViews(in, i);
+    in.Lights[i].FirstLayer = layers;
+    layers += static_cast<int>(in.Lights[i].Views.size());
+  }
+  this->NumberOfShadowMapLayers = layers;
+
+  std::string error;
+  if (!r.Maps.Reserve(in.Resolution, layers, error) || !this->RenderShadowMaps(renderer))
+  {
+    this->ReportGLFailure(error.empty() ? r.LastGLError : error);
+    return false;
+  }
+  this->StoreReceiverUniforms();
+  r.Signature = std::move(signature);
+  r.MapsValid = true;
+  r.LastGLError.clear();
+  ++this->NumberOfShadowMapUpdates;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::FitLightViewsUniform(Internals& in, int lightIndex)
+{
+  ShadowLight& light = in.Lights[lightIndex];
+  light.Views.clear();
+  if (light.Cube)
+  {
+    const auto faces = shadowmaps::FitCubeFaces(in.SceneBounds, light.Position, in.Resolution);
+    light.Views.assign(faces.begin(), faces.end());
+  }
+  else if (light.Kind == LightKind::Spot)
+  {
+    light.Views.push_back(shadowmaps::FitSpot(in.CameraViewProjection(), in.SceneBounds,
+      light.Position, light.Direction, light.ConeAngle, in.Resolution));
+  }
+  else
+  {
+    light.Views.push_back(shadowmaps::FitDirectional(
+      in.CameraViewProjection(), in.SceneBounds, light.Direction, in.Resolution));
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
+{
+  Internals& in = *this->Internal;
+  Resources& r = *this->Resource;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+
+  state->PushFramebufferBindings();
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedOffset(state, GL_POLYGON_OFFSET_FILL);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LEQUAL);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(static_cast<float>(this->SlopeScaledBias), static_cast<float>(this->ConstantBias));
+
+  vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
+  renderer->SetActiveCamera(r.LightCamera);
+  r.CasterPass->SetCasterFaces(this->CasterFaces);
+  this->NumberOfCasterDraws = 0;
+
+  bool ok = true;
+  for (ShadowLight& light : in.Lights)
+  {
+    for (size_t v = 0; v < light.Views.size() && ok; ++v)
+    {
+      ok = r.Maps.BindLayer(state, light.FirstLayer + static_cast<int>(v), r.LastGLError);
+      if (ok)
+      {
+        this->RenderCastersIntoView(renderer, light.Views[v]);
+      }
+    }
+  }
+
+  renderer->SetActiveCamera(userCamera);
+  glPolygonOffset(0.0f, 0.0f);
+  state->PopFramebufferBindings();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::RenderCastersIntoView(
+  vtkOpenGLRenderer* renderer, const LightView& view)
+{
+  Internals& in = *this->Internal;
+  Resources& r = *this->Resource;
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  state->vtkglViewport(0, 0, in.Resolution, in.Resolution);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+
+  // The camera's view is rebuilt from the light view's frame; its projection is
+  // explicit so that VTK's tiled aspect ratio cannot distort the map.
+  const glm::dmat4 frame = glm::inverse(view.View);
+  const glm::dvec3 eye(frame[3]);
+  const glm::dvec3 forward(-frame[2]);
+  const glm::dvec3 up(frame[1]);
+  vtkCamera* camera = r.LightCamera;
+  camera->SetPosition(eye.x, eye.y, eye.z);
+  camera->SetFocalPoint(eye.x + forward.x, eye.y + forward.y, eye.z + forward.z);
+  camera->SetViewUp(up.x, up.y, up.z);
+  camera->SetParallelProjection(!view.Perspective);
+  ToVtk(view.Projection, r.LightProjection);
+  camera->SetExplicitProjectionTransformMatrix(r.LightProjection);
+  camera->UseExplicitProjectionTransformMatrixOn();
+  camera->Modified();
+
+  const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
+  std::vector<vtkProp*> visible;
+  for (const auto& caster : in.Casters)
+  {
+    if (FrustumMeetsBox(planes, caster.Bounds))
+    {
+      visible.push_back(caster.Prop);
+    }
+  }
+  if (visible.empty())
+  {
+    return;
+  }
+  vtkRenderState casterState(renderer);
+  casterState.SetPropArrayAndCount(visible.data(), static_cast<int>(visible.size()));
+  casterState.SetFrameBuffer(nullptr);
+  r.CasterPass->AttachToProps(&casterState);
+  r.OpaquePass->Render(&casterState);
+  r.CasterPass->DetachFromProps(&casterState);
+  this->NumberOfCasterDraws += r.OpaquePass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::StoreReceiverUniforms()
+{
+  Internals& in = *this->Internal;
+  Resources& r = *this->Resource;
+  r.WorldToMap.clear();
+  r.TexelSizes.clear();
+  r.LightPositions.clear();
+  r.Attenuations.clear();
+  const glm::dmat4 toTexture = shadowmaps::ClipToTexture();
+  for (const ShadowLight& light : in.Lights)
+  {
+    for (const LightView& view : light.Views)
+    {
+      const glm::mat4 worldToMap(toTexture * view.ViewProjection());
+      r.WorldToMap.insert(r.WorldToMap.end(), glm::value_ptr(worldToMap), glm::value_ptr(worldToMap) + 16);
+      r.TexelSizes.push_back(static_cast<float>(view.TexelConstant));
+      r.TexelSizes.push_back(static_cast<float>(view.TexelPerUnitDistance));
+    }
+    r.LightPositions.push_back(static_cast<float>(light.Position.x));
+    r.LightPositions.push_back(static_cast<float>(light.Position.y));
+    r.LightPositions.push_back(static_cast<float>(light.Position.z));
+    r.Attenuations.push_back(light.Attenuation);
+  }
+  r.ViewToWorld = glm::mat4(glm::inverse(in.CameraView));
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
+{
+  Resources& r = *this->Resource;
+  std::ostringstream key;
+  key << this->Filter << ' ' << this->KernelSize << ' ' << this->PoissonSamples << ' '
+      << this->NumberOfShadowMapLayers << ';';
+  for (const ShadowLight& light : this->Internal->Lights)
+  {
+    key << light.ShaderIndex << ':' << light.FirstLayer << ':' << light.Cube << ' ';
+  }
+  std::vector<vtkProp*> nonReceivers;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (!IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS()))
+    {
+      nonReceivers.push_back(prop);
+    }
+  }
+  if (key.str() != r.ShaderKey || nonReceivers != r.NonReceivers)
+  {
+    r.ShaderKey = key.str();
+    r.NonReceivers = std::move(nonReceivers);
+    r.ShaderKeyTime.Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
+{
+  Resources& r = *this->Resource;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  if (!r.Noise)
+  {
+    std::mt19937 generator(20261122);
+    std::uniform_real_distribution<float> angle(0.0f, 6.2831853f);
+    std::vector<float> rotations(NoiseSize * NoiseSize * 2);
+    for (size_t i = 0; i < rotations.size(); i += 2)
+    {
+      const float a = angle(generator);
+      rotations[i] = std::cos(a);
+      rotations[i + 1] = std::sin(a);
+    }
+    r.Noise = vtkSmartPointer<vtkTextureObject>::New();
+    r.Noise->SetContext(window);
+    r.Noise->SetWrapS(vtkTextureObject::Repeat);
+    r.Noise->SetWrapT(vtkTextureObject::Repeat);
+    r.Noise->SetMinificationFilter(vtkTextureObject::Nearest);
+    r.Noise->SetMagnificationFilter(vtkTextureObject::Nearest);
+    r.Noise->Create2DFromRaw(NoiseSize, NoiseSize, 2, VTK_FLOAT, rotations.data());
+  }
+  r.Noise->Activate();
+  r.MapUnit = window->GetTextureUnitManager()->Allocate();
+  r.Maps.SetLinearFiltering(this->Filter != HARD);
+  r.Maps.BindToUnit(r.MapUnit);
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::UnbindShadowTextures(vtkOpenGLRenderer* renderer)
+{
+  Resources& r = *this->Resource;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  if (r.MapUnit >= 0)
+  {
+    glActiveTexture(GL_TEXTURE0 + r.MapUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    window->GetTextureUnitManager()->Free(r.MapUnit);
+    r.MapUnit = -1;
+  }
+  r.Noise->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
+{
+  Resources& r = *this->Resource;
+  r.Maps.Release();
+  r.MapsValid = false;
+  this->NumberOfShadowMapLayers = 0;
+  if (error != r.LastGLError || !r.LastGLError.empty())
+  {
+    vtkWarningMacro(<< "Rendering without shadows: " << error);
+  }
+  r.LastGLError = error;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::PreReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  // Markers for PostReplaceShaderValues, which knows whether the mapper
+  // generated per-light code to patch.
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::Light::Dec", "//VTK::Light::Dec\n//VTK::ShadowMaps::Dec", false);
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::Light::Impl", "//VTK::ShadowMaps::Impl\n//VTK::Light::Impl", false);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+{
+  std::ostringstream impl;
+  if (this->Resource->Active && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS()))
+  {
+    const auto& lights = this->Internal->Lights;
+    for (int k = 0; k < static_cast<int>(lights.size()); ++k)
+    {
+      if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, k) > 0)
+      {
+        impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor(vtkShadowPositionWorld, "
+             << "vtkShadowNormalWorld, " << k << ", " << lights[k].FirstLayer << ", "
+             << (lights[k].Cube ? "true" : "false") << ");\n";
+      }
+    }
+  }
+  if (impl.tellp() <= 0)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", "");
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl", "");
+    return true;
+  }
+  std::ostringstream dec;
+  dec << "#define VTK_SHADOW_FILTER " << this->Filter << "\n"
+      << "#define VTK_SHADOW_KERNEL " << this->KernelSize << "\n"
+      << "#define VTK_SHADOW_POISSON_SAMPLES " << this->PoissonSamples << "\n"
+      << "#define VTK_SHADOW_MAX_VIEWS " << std::max(this->NumberOfShadowMapLayers, 1) << "\n"
+      << "#define VTK_SHADOW_MAX_LIGHTS " << this->Internal->Lights.size() << "\n"
+      << vtkShadowMapsReceiverFS;
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", dec.str());
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
+    "  vec3 vtkShadowPositionWorld = (vtkShadowViewToWorld * vec4(vertexVC.xyz, 1.0)).xyz;\n"
+    "  vec3 vtkShadowNormalWorld = normalize(mat3(vtkShadowViewToWorld) * normalVCVSOutput);\n" +
+      impl.str());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  Resources& r = *this->Resource;
+  if (!r.Active || !program->IsUniformUsed("vtkShadowViewToWorld"))
+  {
+    return true;
+  }
+  const int views = static_cast<int>(r.TexelSizes.size() / 2);
+  const int lights = static_cast<int>(r.Attenuations.size());
+  program->SetUniformi("vtkShadowMaps", r.MapUnit);
+  program->SetUniformi("vtkShadowNoise", r.Noise->GetTextureUnit());
+  program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(r.ViewToWorld));
+  program->SetUniformMatrix4x4v("vtkShadowWorldToMap", views, r.WorldToMap.data());
+  program->SetUniform2fv(
+    "vtkShadowTexelSize", views, reinterpret_cast<const float(*)[2]>(r.TexelSizes.data()));
+  program->SetUniform3fv(
+    "vtkShadowLightPosition", lights, reinterpret_cast<const float(*)[3]>(r.LightPositions.data()));
+  program->SetUniform1fv("vtkShadowAttenuation", lights, r.Attenuations.data());
+  program->SetUniformf("vtkShadowMapResolution", static_cast<float>(this->Internal->Resolution));
+  program->SetUniformf("vtkShadowNormalOffset", static_cast<float>(this->NormalOffset));
+  program->SetUniformf("vtkShadowFilterRadius", static_cast<float>(this->FilterRadius));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkAbstractShadowMapPass::GetShaderStageMTime()
+{
+  return this->Resource->ShaderKeyTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  Resources& r = *this->Resource;
+  r.Maps.Release();
+  r.MapsValid = false;
+  r.Signature.clear();
+  if (r.Noise)
+  {
+    r.Noise->ReleaseGraphicsResources(window);
+    r.Noise = nullptr;
+  }
+  r.CasterPass->ReleaseGraphicsResources(window);
+  r.OpaquePass->ReleaseGraphicsResources(window);
+  r.DefaultDelegate->ReleaseGraphicsResources(window);
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(window);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "CasterFaces: " << this->CasterFaces << "\n";
+  os << indent << "Filter: " << this->Filter << "\n";
+  os << indent << "KernelSize: " << this->KernelSize << "\n";
+  os << indent << "FilterRadius: " << this->FilterRadius << "\n";
+  os << indent << "PoissonSamples: " << this->PoissonSamples << "\n";
+  os << indent << "ConstantBias: " << this->ConstantBias << "\n";
+  os << indent << "SlopeScaledBias: " << this->SlopeScaledBias << "\n";
+  os << indent << "NormalOffset: " << this->NormalOffset << "\n";
+  os << indent << "NumberOfShadowedLights: " << this->NumberOfShadowedLights << "\n";
+  os << indent << "NumberOfShadowMapLayers: " << this->NumberOfShadowMapLayers << "\n";
+  os << indent << "NumberOfShadowMapUpdates: " << this->NumberOfShadowMapUpdates << "\n";
+}

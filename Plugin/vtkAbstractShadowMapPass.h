@@ -1,0 +1,266 @@
+/**
+ * @class   vtkAbstractShadowMapPass
+ * @brief   Shared base of the shadow-map passes: lights, casters, receivers, filters, bias.
+ *
+ * A shadow-map pass renders the scene through a delegate (by default a
+ * vtkRenderStepsPass, so opaque, translucent, volume and overlay geometry all
+ * draw) after rendering one depth map per view of every shadowed light. One
+ * line turns shadows on:
+ *
+ * @code
+ * renderer->SetPass(vtkNew<vtkWarpedShadowMapPass>());
+ * @endcode
+ *
+ * Every switched-on light that is not a headlight casts shadows: directional
+ * lights (scene or camera lights), spot lights (cone angle below 90 degrees;
+ * cones wider than 60 degrees use six cube faces) and point lights (positional
+ * with a cone of 90 degrees or more: six cube faces). At most
+ * VTK_MAX_SHADOWED_LIGHTS lights are shadowed; further lights still light the
+ * scene, unshadowed, and a warning says so. A light opts out with
+ * light->GetInformation()->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+ * its ShadowAttenuation scales how dark its shadows are.
+ *
+ * Maps are rendered depth-only (a minimal caster fragment shader) into one
+ * 32-bit float depth texture array, one layer per light view. What a light's
+ * views are is the subclass's choice (ComputeLightViews).
+ *
+ * Receivers: the shadow test is injected into the fragment shaders of
+ * vtkOpenGLPolyDataMapper and its subclasses, per light, scaling that light's
+ * diffuse and specular (Phong) or radiance (PBR) terms. Unlit draws compile
+ * unchanged and render without shadows. Actors opt out through their property
+ * keys: CASTS_SHADOWS() = 0 (not a caster), RECEIVES_SHADOWS() = 0.
+ *
+ * Bias (thesis 000 §3.2, Kozlov 001): constant and slope-scaled depth offset
+ * applied when the casters are rendered (m = max(|dz/dx|, |dz/dy|)), and a
+ * normal offset measured in texels and scaled by the world-space texel size at
+ * the receiver.
+ *
+ * Filtering: hard (1 tap), hardware 2x2 bilinear PCF, N x N PCF of bilinear
+ * taps, and Poisson-disc PCF rotated per texel by a noise texture addressed in
+ * light space, so the pattern stays put while the camera moves.
+ *
+ * The maps are re-rendered only when the camera, a light, a caster, a caster's
+ * input data (including upstream pipeline changes), the window size or a pass
+ * parameter changed.
+ *
+ * If the GL context cannot provide the maps (allocation or framebuffer
+ * failure) the pass warns once and renders the frame without shadows.
+ */
+#ifndef vtkAbstractShadowMapPass_h
+#define vtkAbstractShadowMapPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkRenderingShadowMapsModule.h" // For export macro
+
+#include <memory> // For std::unique_ptr
+
+class vtkCamera;
+class vtkInformationIntegerKey;
+class vtkLight;
+class vtkOpenGLRenderer;
+class vtkRenderPass;
+namespace shadowmaps
+{
+struct LightView;
+}
+
+#define VTK_MAX_SHADOWED_LIGHTS 8
+
+class VTKRENDERINGSHADOWMAPS_EXPORT vtkAbstractShadowMapPass : public vtkOpenGLRenderPass
+{
+public:
+  vtkTypeMacro(vtkAbstractShadowMapPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Set on an actor's property keys (or a light's information) with value 0 to
+   * keep it from casting shadows. Absent means 1.
+   */
+  static vtkInformationIntegerKey* CASTS_SHADOWS();
+
+  /**
+   * Set on an actor's property keys with value 0 to keep it from receiving
+   * shadows. Absent means 1.
+   */
+  static vtkInformationIntegerKey* RECEIVES_SHADOWS();
+
+  /**
+   * The pass that renders the scene with shadows applied. Defaults to a
+   * vtkRenderStepsPass. Setting nullptr restores the default.
+   */
+  virtual void SetDelegatePass(vtkRenderPass* delegate);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+
+  ///@{
+  /**
+   * Width and height of each shadow map in texels. Default 2048, clamped to
+   * [64, 16384] here and to the GL maximum texture size at render time.
+   */
+  vtkSetClampMacro(Resolution, int, 64, 16384);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  enum CasterFacesType
+  {
+    FRONT_FACES = 0,
+    BACK_FACES = 1,
+    BOTH_FACES = 2
+  };
+
+  ///@{
+  /**
+   * Which faces of the casters are rendered into the maps. Back faces alone
+   * (second-depth shadow mapping) need almost no bias on closed objects; both
+   * (the default) suits open surfaces. Clamped to [FRONT_FACES, BOTH_FACES].
+   */
+  vtkSetClampMacro(CasterFaces, int, FRONT_FACES, BOTH_FACES);
+  vtkGetMacro(CasterFaces, int);
+  ///@}
+
+  enum FilterType
+  {
+    HARD = 0,
+    PCF_2X2 = 1,
+    PCF_NXN = 2,
+    POISSON = 3
+  };
+
+  ///@{
+  /**
+   * Shadow filter. HARD: one nearest tap. PCF_2X2: one hardware bilinear
+   * comparison. PCF_NXN: N x N bilinear comparisons (KernelSize). POISSON: a
+   * rotated Poisson disc of PoissonSamples taps within FilterRadius texels.
+   * Clamped to [HARD, POISSON]; default PCF_2X2.
+   */
+  vtkSetClampMacro(Filter, int, HARD, POISSON);
+  vtkGetMacro(Filter, int);
+  ///@}
+
+  ///@{
+  /** N of the N x N PCF filter. Clamped to [2, 7]; default 3. */
+  vtkSetClampMacro(KernelSize, int, 2, 7);
+  vtkGetMacro(KernelSize, int);
+  ///@}
+
+  ///@{
+  /** Radius of the Poisson filter, in texels. Clamped to [0.5, 16]; default 2. */
+  vtkSetClampMacro(FilterRadius, double, 0.5, 16.0);
+  vtkGetMacro(FilterRadius, double);
+  ///@}
+
+  ///@{
+  /** Taps of the Poisson filter. Clamped to [4, 32]; default 16. */
+  vtkSetClampMacro(PoissonSamples, int, 4, 32);
+  vtkGetMacro(PoissonSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * Constant depth offset applied to casters, in units of the smallest
+   * resolvable depth difference (glPolygonOffset units). Clamped to [0, 10000];
+   * default 4.
+   */
+  vtkSetClampMacro(ConstantBias, double, 0.0, 10000.0);
+  vtkGetMacro(ConstantBias, double);
+  ///@}
+
+  ///@{
+  /**
+   * Slope-scaled depth offset applied to casters: the depth offset grows by
+   * this factor times m = max(|dz/dx|, |dz/dy|). Clamped to [0, 100]; default 2.
+   */
+  vtkSetClampMacro(SlopeScaledBias, double, 0.0, 100.0);
+  vtkGetMacro(SlopeScaledBias, double);
+  ///@}
+
+  ///@{
+  /**
+   * Receiver offset along its normal, in shadow-map texels (scaled by the
+   * world-space size of a texel at the receiver). Clamped to [0, 10]; default 1.
+   */
+  vtkSetClampMacro(NormalOffset, double, 0.0, 10.0);
+  vtkGetMacro(NormalOffset, double);
+  ///@}
+
+  /** Number of lights that received shadow maps in the last frame. */
+  vtkGetMacro(NumberOfShadowedLights, int);
+
+  /** Number of map layers (light views) in use in the last frame. */
+  vtkGetMacro(NumberOfShadowMapLayers, int);
+
+  /** How many times the shadow maps were (re-)rendered since creation. */
+  vtkGetMacro(NumberOfShadowMapUpdates, int);
+
+  /** Caster draws (prop renders into maps) in the last map update. */
+  vtkGetMacro(NumberOfCasterDraws, int);
+
+  /** Memory held by the shadow maps, in bytes. */
+  size_t GetShadowMapMemory() const;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  /** Per-frame state: shadowed lights and their views (vtkShadowMapInternals.h). */
+  struct Internals;
+
+  vtkAbstractShadowMapPass();
+  ~vtkAbstractShadowMapPass() override;
+
+  /**
+   * Fill `views` with the views of `light` for this frame. The base class
+   * provides the focused uniform fits (see FitLightViewsUniform).
+   */
+  virtual void ComputeLightViews(Internals& internals, int lightIndex) = 0;
+
+  /** The focused uniform fit for light lightIndex (directional, spot or cube). */
+  void FitLightViewsUniform(Internals& internals, int lightIndex);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  int Resolution = 2048;
+  int CasterFaces = BOTH_FACES;
+  int Filter = PCF_2X2;
+  int KernelSize = 3;
+  double FilterRadius = 2.0;
+  int PoissonSamples = 16;
+  double ConstantBias = 4.0;
+  double SlopeScaledBias = 2.0;
+  double NormalOffset = 1.0;
+
+  int NumberOfShadowedLights = 0;
+  int NumberOfShadowMapLayers = 0;
+  int NumberOfShadowMapUpdates = 0;
+  int NumberOfCasterDraws = 0;
+
+  std::unique_ptr<Internals> Internal;
+
+private:
+  /** GL objects, helper passes and the state of the last map update. */
+  struct Resources;
+  std::unique_ptr<Resources> Resource;
+
+  bool PrepareShadows(const vtkRenderState* s, vtkOpenGLRenderer* renderer);
+  void CollectLights(vtkOpenGLRenderer* renderer);
+  void CollectPropsAndBounds(vtkOpenGLRenderer* renderer);
+  bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
+  bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
+  void RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view);
+  void StoreReceiverUniforms();
+  void UpdateReceiverShaderKey(const vtkRenderState* s);
+  void BindShadowTextures(vtkOpenGLRenderer* renderer);
+  void UnbindShadowTextures(vtkOpenGLRenderer* renderer);
+  void ReportGLFailure(const std::string& error);
+
+  vtkAbstractShadowMapPass(const vtkAbstractShadowMapPass&) = delete;
+  void operator=(const vtkAbstractShadowMapPass&) = delete;
+};
+
+#endif

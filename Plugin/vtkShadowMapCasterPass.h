@@ -1,0 +1,53 @@
+/**
+ * @class   vtkShadowMapCasterPass
+ * @brief   Internal: turns the mappers' shaders into depth-only casters.
+ *
+ * vtkAbstractShadowMapPass appends this pass to the casters' render passes
+ * while it renders the maps. Each mapper keeps its vertex (and geometry) shader,
+ * so instancing, glyphs and clipping planes cast correctly, and gets a minimal
+ * fragment shader. Mappers whose fragment shader shapes its own fragments
+ * (sphere and stick impostors write gl_FragDepth, point Gaussians discard)
+ * keep theirs so their silhouettes stay right.
+ */
+#ifndef vtkShadowMapCasterPass_h
+#define vtkShadowMapCasterPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkRenderingShadowMapsModule.h" // For export macro
+
+class VTKRENDERINGSHADOWMAPS_NO_EXPORT vtkShadowMapCasterPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkShadowMapCasterPass* New();
+  vtkTypeMacro(vtkShadowMapCasterPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** vtkAbstractShadowMapPass::CasterFacesType. */
+  vtkSetClampMacro(CasterFaces, int, 0, 2);
+  vtkGetMacro(CasterFaces, int);
+
+  ///@{
+  /** Add this pass to (remove it from) the render passes of the state's props. */
+  void AttachToProps(const vtkRenderState* s) { this->PreRender(s); }
+  void DetachFromProps(const vtkRenderState* s) { this->PostRender(s); }
+  ///@}
+
+  /** Not used: the owning pass renders the casters itself. */
+  void Render(const vtkRenderState*) override {}
+
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  vtkMTimeType GetShaderStageMTime() override { return this->GetMTime(); }
+
+protected:
+  vtkShadowMapCasterPass() = default;
+  ~vtkShadowMapCasterPass() override = default;
+
+  int CasterFaces = 2;
+
+private:
+  vtkShadowMapCasterPass(const vtkShadowMapCasterPass&) = delete;
+  void operator=(const vtkShadowMapCasterPass&) = delete;
+};
+
+#endif
