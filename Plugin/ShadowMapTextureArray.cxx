@@ -16,6 +16,19 @@ std::string GLErrorText(GLenum code)
   return text.str();
 }
 
+// Restores the array binding of the active unit, which may belong to someone else.
+class ScopedArrayBinding
+{
+public:
+  ScopedArrayBinding() { glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &this->Previous); }
+  ~ScopedArrayBinding() { glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(this->Previous)); }
+  ScopedArrayBinding(const ScopedArrayBinding&) = delete;
+  ScopedArrayBinding& operator=(const ScopedArrayBinding&) = delete;
+
+private:
+  GLint Previous = 0;
+};
+
 void ClearGLErrors()
 {
   while (glGetError() != GL_NO_ERROR)
@@ -32,6 +45,7 @@ bool TextureArray::Reserve(int resolution, int layers, std::string& error)
   }
   this->Release();
   ClearGLErrors();
+  ScopedArrayBinding keep;
 
   glGenTextures(1, &this->Texture);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
@@ -43,7 +57,6 @@ bool TextureArray::Reserve(int resolution, int layers, std::string& error)
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   this->LinearFiltering = 1;
 
   glGenFramebuffers(1, &this->Framebuffer);
@@ -84,10 +97,10 @@ void TextureArray::SetLinearFiltering(bool linear)
     return;
   }
   const GLint filter = linear ? GL_LINEAR : GL_NEAREST;
+  ScopedArrayBinding keep;
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, filter);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, filter);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   this->LinearFiltering = static_cast<int>(linear);
 }
 

@@ -28,6 +28,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cstring>
 #include <random>
 #include <sstream>
 
@@ -121,6 +122,44 @@ bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb&
     }
   }
   return true;
+}
+
+// Per-texel rotations (cos, sin) of the Poisson disc.
+vtkSmartPointer<vtkTextureObject> CreateRotationNoise(vtkOpenGLRenderWindow* window)
+{
+  std::mt19937 generator(20261122);
+  std::uniform_real_distribution<float> angle(0.0f, 6.2831853f);
+  std::vector<float> rotations(NoiseSize * NoiseSize * 2);
+  for (size_t i = 0; i < rotations.size(); i += 2)
+  {
+    const float a = angle(generator);
+    rotations[i] = std::cos(a);
+    rotations[i + 1] = std::sin(a);
+  }
+  auto noise = vtkSmartPointer<vtkTextureObject>::New();
+  noise->SetContext(window);
+  noise->SetWrapS(vtkTextureObject::Repeat);
+  noise->SetWrapT(vtkTextureObject::Repeat);
+  noise->SetMinificationFilter(vtkTextureObject::Nearest);
+  noise->SetMagnificationFilter(vtkTextureObject::Nearest);
+  noise->Create2DFromRaw(NoiseSize, NoiseSize, 2, VTK_FLOAT, rotations.data());
+  return noise;
+}
+
+// The bits of a matrix, so that the signature follows the camera's values
+// rather than its identity or MTime (image-processing passes hand their
+// delegate a fresh copy of the camera every frame).
+void AppendMatrixBits(const glm::dmat4& m, std::vector<vtkMTimeType>& signature)
+{
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      vtkMTimeType bits = 0;
+      std::memcpy(&bits, &m[c][r], sizeof(double));
+      signature.push_back(bits);
+    }
+  }
 }
 
 // Modification time of everything a caster's depth depends on, including its
@@ -361,10 +400,11 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   int size[2];
   int origin[2];
   renderer->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
-  std::vector<vtkMTimeType> signature = { this->GetMTime(),
-    renderer->GetActiveCamera()->GetMTime(), renderer->GetLights()->GetMTime(),
+  std::vector<vtkMTimeType> signature = { this->GetMTime(), renderer->GetLights()->GetMTime(),
     renderer->GetViewProps()->GetMTime(), static_cast<vtkMTimeType>(size[0]),
     static_cast<vtkMTimeType>(size[1]) };
+  AppendMatrixBits(in.CameraView, signature);
+  AppendMatrixBits(in.CameraProjection, signature);
   for (const auto& light : in.Lights)
   {
     signature.push_back(reinterpret_cast<vtkMTimeType>(light.Light));
@@ -592,27 +632,15 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
 {
   Resources& r = *this->Resource;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  // Work on our own unit: creating a texture binds it to the active unit, which
+  // may hold another pass's texture (e.g. the tone-mapping pass's colour).
+  r.MapUnit = window->GetTextureUnitManager()->Allocate();
+  glActiveTexture(GL_TEXTURE0 + r.MapUnit);
   if (!r.Noise)
   {
-    std::mt19937 generator(20261122);
-    std::uniform_real_distribution<float> angle(0.0f, 6.2831853f);
-    std::vector<float> rotations(NoiseSize * NoiseSize * 2);
-    for (size_t i = 0; i < rotations.size(); i += 2)
-    {
-      const float a = angle(generator);
-      rotations[i] = std::cos(a);
-      rotations[i + 1] = std::sin(a);
-    }
-    r.Noise = vtkSmartPointer<vtkTextureObject>::New();
-    r.Noise->SetContext(window);
-    r.Noise->SetWrapS(vtkTextureObject::Repeat);
-    r.Noise->SetWrapT(vtkTextureObject::Repeat);
-    r.Noise->SetMinificationFilter(vtkTextureObject::Nearest);
-    r.Noise->SetMagnificationFilter(vtkTextureObject::Nearest);
-    r.Noise->Create2DFromRaw(NoiseSize, NoiseSize, 2, VTK_FLOAT, rotations.data());
+    r.Noise = CreateRotationNoise(window);
   }
   r.Noise->Activate();
-  r.MapUnit = window->GetTextureUnitManager()->Allocate();
   r.Maps.SetLinearFiltering(this->Filter != HARD);
   r.Maps.BindToUnit(r.MapUnit);
 }

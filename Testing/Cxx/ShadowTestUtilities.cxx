@@ -1,0 +1,275 @@
+#include "ShadowTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+namespace shadowtest
+{
+namespace
+{
+constexpr double SphereRadius = 1.0;
+const glm::dvec3 SphereCenter(0.0, 0.0, 1.5);
+
+vtkSmartPointer<vtkActor> AddActor(vtkRenderer* renderer, vtkAlgorithm* source, const glm::dvec3& color)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(color.x, color.y, color.z);
+  actor->GetProperty()->SetAmbient(0.15);
+  actor->GetProperty()->SetDiffuse(1.0);
+  renderer->AddActor(actor);
+  return actor;
+}
+
+vtkLight* ReplaceLights(vtkRenderer* renderer)
+{
+  renderer->RemoveAllLights();
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  renderer->AddLight(light);
+  return light;
+}
+} // namespace
+
+TestScene::TestScene(int width, int height)
+{
+  this->Window->SetSize(width, height);
+  this->Window->SetOffScreenRendering(1);
+  this->Window->SetMultiSamples(0);
+  this->Window->AddRenderer(this->Renderer);
+  this->Renderer->SetBackground(0.2, 0.3, 0.4);
+
+  vtkNew<vtkPlaneSource> ground;
+  ground->SetOrigin(-10, -10, 0);
+  ground->SetPoint1(10, -10, 0);
+  ground->SetPoint2(-10, 10, 0);
+  ground->SetResolution(20, 20);
+  this->Ground = AddActor(this->Renderer, ground, { 0.9, 0.9, 0.9 });
+
+  this->SphereSource = vtkSmartPointer<vtkSphereSource>::New();
+  this->SphereSource->SetCenter(SphereCenter.x, SphereCenter.y, SphereCenter.z);
+  this->SphereSource->SetRadius(SphereRadius);
+  this->SphereSource->SetThetaResolution(48);
+  this->SphereSource->SetPhiResolution(48);
+  this->Sphere = AddActor(this->Renderer, this->SphereSource, { 1.0, 0.55, 0.3 });
+
+  vtkNew<vtkCubeSource> box;
+  box->SetCenter(4.0, 2.0, 0.75);
+  box->SetXLength(1.5);
+  box->SetYLength(1.5);
+  box->SetZLength(1.5);
+  this->Box = AddActor(this->Renderer, box, { 0.4, 0.7, 1.0 });
+
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  camera->SetPosition(0.0, -16.0, 10.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.5);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetViewAngle(35.0);
+  this->Renderer->ResetCameraClippingRange();
+}
+
+vtkLight* TestScene::SetSun(const glm::dvec3& d)
+{
+  vtkLight* light = ReplaceLights(this->Renderer);
+  light->SetPositional(false);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->SetPosition(-d.x, -d.y, -d.z);
+  return light;
+}
+
+vtkLight* TestScene::SetSpot(const glm::dvec3& position, double coneAngle)
+{
+  vtkLight* light = ReplaceLights(this->Renderer);
+  light->SetPositional(true);
+  light->SetPosition(position.x, position.y, position.z);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->SetConeAngle(coneAngle);
+  light->SetAttenuationValues(1.0, 0.0, 0.0);
+  return light;
+}
+
+vtkLight* TestScene::SetPoint(const glm::dvec3& position)
+{
+  vtkLight* light = this->SetSpot(position, 180.0);
+  return light;
+}
+
+glm::dvec3 GroundShadowOfSphereCenter(const glm::dvec3& direction)
+{
+  return SphereCenter + direction * (SphereCenter.z / -direction.z);
+}
+
+glm::dvec3 GroundShadowOfSphereCenterFrom(const glm::dvec3& lightPosition)
+{
+  return GroundShadowOfSphereCenter(SphereCenter - lightPosition);
+}
+
+vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  capture->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(capture->GetOutput());
+  return image;
+}
+
+double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
+{
+  renderer->SetWorldPoint(world.x, world.y, world.z, 1.0);
+  renderer->WorldToDisplay();
+  const double* display = renderer->GetDisplayPoint();
+  int dims[3];
+  image->GetDimensions(dims);
+  const int cx = static_cast<int>(display[0]);
+  const int cy = static_cast<int>(display[1]);
+  double sum = 0.0;
+  int count = 0;
+  for (int y = cy - 1; y <= cy + 1; ++y)
+  {
+    for (int x = cx - 1; x <= cx + 1; ++x)
+    {
+      if (x < 0 || y < 0 || x >= dims[0] || y >= dims[1])
+      {
+        continue;
+      }
+      const auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      sum += 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+      ++count;
+    }
+  }
+  return count ? sum / count : -1.0;
+}
+
+std::string CompareWithBaseline(vtkImageData* image, const std::string& name)
+{
+  namespace fs = std::filesystem;
+  const fs::path outputDir(SHADOWMAPS_TEST_OUTPUT_DIR);
+  const fs::path baselineDir(SHADOWMAPS_BASELINE_DIR);
+  fs::create_directories(outputDir);
+  const fs::path actual = outputDir / (name + ".png");
+  const fs::path baseline = baselineDir / (name + ".png");
+
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(actual.string().c_str());
+  writer->Write();
+
+  const char* update = std::getenv("SHADOWMAPS_UPDATE_BASELINES");
+  if (update && std::string(update) == "1")
+  {
+    fs::copy_file(actual, baseline, fs::copy_options::overwrite_existing);
+    return "baseline written: " + baseline.string() + " (look at it, then rerun)";
+  }
+  if (!fs::exists(baseline))
+  {
+    return "no baseline " + baseline.string() + "; the frame is at " + actual.string();
+  }
+  OIIO::ImageBuf actualImage(actual.string());
+  OIIO::ImageBuf baselineImage(baseline.string());
+  if (actualImage.spec().width != baselineImage.spec().width ||
+    actualImage.spec().height != baselineImage.spec().height)
+  {
+    return "size differs from the baseline " + baseline.string();
+  }
+  // llvmpipe is bit-identical run to run: any pixel off by more than 1/255 fails.
+  const auto result =
+    OIIO::ImageBufAlgo::compare(actualImage, baselineImage, 1.5 / 255.0, 0.5 / 255.0);
+  if (result.nfail > 0 || result.error)
+  {
+    std::ostringstream text;
+    text << result.nfail << " pixels differ from " << baseline.string() << " (max error "
+         << result.maxerror * 255.0 << "/255 at " << result.maxx << "," << result.maxy
+         << "); the frame is at " << actual.string();
+    return text.str();
+  }
+  return {};
+}
+
+namespace
+{
+class CountingOutputWindow : public vtkOutputWindow
+{
+public:
+  static CountingOutputWindow* New();
+  vtkTypeMacro(CountingOutputWindow, vtkOutputWindow);
+  void DisplayErrorText(const char* text) override
+  {
+    ++this->Errors;
+    this->Log << "ERROR: " << text << "\n";
+  }
+  void DisplayWarningText(const char* text) override
+  {
+    ++this->Warnings;
+    this->Log << "WARNING: " << text << "\n";
+  }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayText(const char* text) override { this->Log << text << "\n"; }
+  int Errors = 0;
+  int Warnings = 0;
+  std::ostringstream Log;
+};
+vtkStandardNewMacro(CountingOutputWindow);
+} // namespace
+
+struct ErrorCounter::Impl
+{
+  vtkNew<CountingOutputWindow> Window;
+  vtkSmartPointer<vtkOutputWindow> Previous;
+};
+
+ErrorCounter::ErrorCounter()
+  : Pimpl(new Impl)
+{
+  this->Pimpl->Previous = vtkOutputWindow::GetInstance();
+  vtkOutputWindow::SetInstance(this->Pimpl->Window);
+}
+
+ErrorCounter::~ErrorCounter()
+{
+  vtkOutputWindow::SetInstance(this->Pimpl->Previous);
+  delete this->Pimpl;
+}
+
+int ErrorCounter::Errors() const
+{
+  return this->Pimpl->Window->Errors;
+}
+
+int ErrorCounter::Warnings() const
+{
+  return this->Pimpl->Window->Warnings;
+}
+
+std::string ErrorCounter::Text() const
+{
+  return this->Pimpl->Window->Log.str();
+}
+
+} // namespace shadowtest

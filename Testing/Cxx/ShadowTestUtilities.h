@@ -1,0 +1,79 @@
+// Helpers for the image tests: a small test scene, capture, strict comparison
+// against committed baselines (OpenImageIO) and world-space probes.
+#ifndef ShadowTestUtilities_h
+#define ShadowTestUtilities_h
+
+#include "vtkNew.h"
+#include "vtkRenderWindow.h" // For TestScene members
+#include "vtkRenderer.h"     // For TestScene members
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+#include <glm/glm.hpp>
+
+class vtkActor;
+class vtkImageData;
+class vtkLight;
+class vtkSphereSource;
+
+namespace shadowtest
+{
+
+/// A window, one renderer and the standard test scene: a 20 x 20 ground at
+/// z = 0, a unit sphere floating at (0, 0, 1.5) and a 1.5 box on the ground at
+/// (4, 2). Ambient 0.15 keeps shadowed areas dark but not black.
+struct TestScene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkActor> Ground;
+  vtkSmartPointer<vtkActor> Sphere;
+  vtkSmartPointer<vtkActor> Box;
+  vtkSmartPointer<vtkSphereSource> SphereSource;
+
+  explicit TestScene(int width = 400, int height = 300);
+  /// Replaces all lights by one light and turns automatic lights off.
+  vtkLight* SetSun(const glm::dvec3& directionToScene);
+  vtkLight* SetSpot(const glm::dvec3& position, double coneAngle);
+  vtkLight* SetPoint(const glm::dvec3& position);
+};
+
+/// Where the sphere's centre casts its shadow on the ground for a light
+/// travelling along `direction`, or from `position` (positional lights).
+glm::dvec3 GroundShadowOfSphereCenter(const glm::dvec3& direction);
+glm::dvec3 GroundShadowOfSphereCenterFrom(const glm::dvec3& lightPosition);
+
+/// Renders and returns the frame as RGB.
+vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window);
+
+/// Mean luminance (0-255) of a 3 x 3 block around the pixel where `world` is seen.
+double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
+
+/// Writes `image` to the test output folder as <name>.png and compares it
+/// strictly with Testing/Data/Baseline/<name>.png. Returns an empty string on a
+/// match, else what differed. With SHADOWMAPS_UPDATE_BASELINES=1 in the
+/// environment it writes the baseline instead (and says so in the result).
+std::string CompareWithBaseline(vtkImageData* image, const std::string& name);
+
+/// Counts VTK errors and warnings (shader compile failures arrive as errors).
+class ErrorCounter
+{
+public:
+  ErrorCounter();
+  ~ErrorCounter();
+  int Errors() const;
+  int Warnings() const;
+  std::string Text() const;
+
+private:
+  struct Impl;
+  Impl* Pimpl;
+};
+
+constexpr double ShadowedBelow = 80.0;
+constexpr double LitAbove = 120.0;
+
+} // namespace shadowtest
+
+#endif

@@ -1,0 +1,324 @@
+// What users rely on beyond the pictures: when maps re-render, per-actor and
+// per-light control, limits, bad input, and the pass inside other passes.
+#include "ShadowTestUtilities.h"
+#include "vtkWarpedShadowMapPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+#include "vtkToneMappingPass.h"
+
+#include <gtest/gtest.h>
+
+using namespace shadowtest;
+
+namespace
+{
+const glm::dvec3 SunDirection = glm::normalize(glm::dvec3(-0.4, 0.3, -1.0));
+
+double ShadowLuminance(TestScene& scene)
+{
+  auto image = RenderAndCapture(scene.Window);
+  return LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection));
+}
+} // namespace
+
+TEST(ShadowBehaviour, MapsRerenderOnlyWhenSomethingChanged)
+{
+  TestScene scene;
+  vtkLight* light = scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  scene.Window->Render();
+  scene.Window->Render();
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 1) << "nothing changed";
+
+  scene.Renderer->GetActiveCamera()->Azimuth(5.0);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 2) << "camera moved";
+
+  light->SetPosition(0.5, -0.2, 1.0);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 3) << "light moved";
+
+  scene.SphereSource->SetRadius(1.2);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 4) << "caster input changed upstream";
+
+  scene.Sphere->SetPosition(0.5, 0.0, 0.0);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 5) << "caster moved";
+
+  pass->SetResolution(1024);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 6) << "pass parameter changed";
+
+  scene.Window->SetSize(420, 300);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 7) << "window resized";
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 7);
+}
+
+TEST(ShadowBehaviour, NonCasterAndNonReceiverKeys)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  EXPECT_LT(ShadowLuminance(scene), ShadowedBelow);
+
+  scene.Sphere->GetPropertyKeys()->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  EXPECT_GT(ShadowLuminance(scene), LitAbove) << "the sphere no longer casts";
+
+  scene.Sphere->GetPropertyKeys()->Remove(vtkAbstractShadowMapPass::CASTS_SHADOWS());
+  scene.Sphere->Modified();
+  EXPECT_LT(ShadowLuminance(scene), ShadowedBelow) << "casts again";
+
+  scene.Ground->GetPropertyKeys()->Set(vtkAbstractShadowMapPass::RECEIVES_SHADOWS(), 0);
+  EXPECT_GT(ShadowLuminance(scene), LitAbove) << "the ground no longer receives";
+}
+
+TEST(ShadowBehaviour, LightOptOutAndAttenuation)
+{
+  TestScene scene;
+  vtkLight* light = scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  const double full = ShadowLuminance(scene);
+
+  light->SetShadowAttenuation(0.5f);
+  const double half = ShadowLuminance(scene);
+  EXPECT_GT(half, full + 40.0);
+
+  vtkNew<vtkInformation> info;
+  info->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  light->SetInformation(info);
+  EXPECT_GT(ShadowLuminance(scene), LitAbove);
+  EXPECT_EQ(pass->GetNumberOfShadowedLights(), 0);
+}
+
+TEST(ShadowBehaviour, MoreThanEightLightsWarnAndStillLight)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.Renderer->RemoveAllLights();
+  scene.Renderer->AutomaticLightCreationOff();
+  for (int i = 0; i < 10; ++i)
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    light->SetPosition(std::cos(i * 0.6), std::sin(i * 0.6), 3.0);
+    light->SetFocalPoint(0, 0, 0);
+    light->SetIntensity(0.15);
+    scene.Renderer->AddLight(light);
+  }
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(pass->GetNumberOfShadowedLights(), 8);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+  EXPECT_GE(errors.Warnings(), 1);
+  EXPECT_NE(errors.Text().find("2 light(s)"), std::string::npos) << errors.Text();
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, { -5, -4, 0 }), 100.0);
+}
+
+TEST(ShadowBehaviour, ParametersClamp)
+{
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  pass->SetResolution(10);
+  EXPECT_EQ(pass->GetResolution(), 64);
+  pass->SetResolution(1 << 20);
+  EXPECT_EQ(pass->GetResolution(), 16384);
+  pass->SetKernelSize(11);
+  EXPECT_EQ(pass->GetKernelSize(), 7);
+  pass->SetFilter(42);
+  EXPECT_EQ(pass->GetFilter(), vtkAbstractShadowMapPass::POISSON);
+  pass->SetNormalOffset(-1.0);
+  EXPECT_EQ(pass->GetNormalOffset(), 0.0);
+  pass->SetCasterFaces(-3);
+  EXPECT_EQ(pass->GetCasterFaces(), vtkAbstractShadowMapPass::FRONT_FACES);
+  pass->SetPoissonSamples(1000);
+  EXPECT_EQ(pass->GetPoissonSamples(), 32);
+}
+
+// A resolution beyond the GL limit is reduced with a warning, and shadows stay.
+TEST(ShadowBehaviour, ResolutionBeyondTheGLLimit)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  pass->SetResolution(16384);
+  scene.Renderer->SetPass(pass);
+  const double shadow = ShadowLuminance(scene);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+  if (errors.Warnings() == 0)
+  {
+    EXPECT_EQ(pass->GetShadowMapMemory(), size_t(16384) * 16384 * 4);
+  }
+  EXPECT_LT(shadow, ShadowedBelow);
+}
+
+TEST(ShadowBehaviour, CasterFacesAllCast)
+{
+  for (int faces : { vtkAbstractShadowMapPass::FRONT_FACES, vtkAbstractShadowMapPass::BACK_FACES,
+         vtkAbstractShadowMapPass::BOTH_FACES })
+  {
+    TestScene scene;
+    scene.SetSun(SunDirection);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    pass->SetCasterFaces(faces);
+    scene.Renderer->SetPass(pass);
+    EXPECT_LT(ShadowLuminance(scene), ShadowedBelow) << faces;
+  }
+}
+
+TEST(ShadowBehaviour, SwitchingPassesAndReleasing)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  EXPECT_LT(ShadowLuminance(scene), ShadowedBelow);
+  EXPECT_GT(pass->GetShadowMapMemory(), 0u);
+  scene.Renderer->SetPass(nullptr);
+  EXPECT_GT(ShadowLuminance(scene), LitAbove);
+  scene.Renderer->SetPass(pass);
+  EXPECT_LT(ShadowLuminance(scene), ShadowedBelow);
+  pass->ReleaseGraphicsResources(scene.Window);
+  EXPECT_EQ(pass->GetShadowMapMemory(), 0u);
+  EXPECT_LT(ShadowLuminance(scene), ShadowedBelow);
+  vtkNew<vtkWarpedShadowMapPass> other;
+  other->SetFilter(vtkAbstractShadowMapPass::POISSON);
+  scene.Renderer->SetPass(other);
+  EXPECT_LT(ShadowLuminance(scene), ShadowedBelow);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+}
+
+TEST(ShadowBehaviour, TwoRenderersAndALayer)
+{
+  ErrorCounter errors;
+  TestScene scene(600, 300);
+  scene.SetSun(SunDirection);
+  scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+  vtkNew<vtkRenderer> right;
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  right->SetActiveCamera(scene.Renderer->GetActiveCamera());
+  right->SetBackground(0.3, 0.3, 0.3);
+  right->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  light->SetPosition(-SunDirection.x, -SunDirection.y, -SunDirection.z);
+  light->SetFocalPoint(0, 0, 0);
+  right->AddLight(light);
+  for (vtkActor* actor : { scene.Ground.Get(), scene.Sphere.Get(), scene.Box.Get() })
+  {
+    right->AddActor(actor);
+  }
+  scene.Window->AddRenderer(right);
+  vtkNew<vtkRenderer> overlay;
+  overlay->SetLayer(1);
+  overlay->InteractiveOff();
+  scene.Window->SetNumberOfLayers(2);
+  scene.Window->AddRenderer(overlay);
+  vtkNew<vtkSphereSource> marker;
+  vtkNew<vtkWarpedShadowMapPass> leftPass;
+  vtkNew<vtkWarpedShadowMapPass> rightPass;
+  scene.Renderer->SetPass(leftPass);
+  right->SetPass(rightPass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+  const glm::dvec3 shadow = GroundShadowOfSphereCenter(SunDirection);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow), ShadowedBelow);
+  EXPECT_LT(LuminanceAt(right, image, shadow), ShadowedBelow);
+  EXPECT_GT(LuminanceAt(right, image, { -5, -4, 0 }), LitAbove);
+}
+
+TEST(ShadowBehaviour, WorksAsADelegateOfToneMapping)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  vtkNew<vtkToneMappingPass> toneMapping;
+  toneMapping->SetToneMappingType(vtkToneMappingPass::Clamp);
+  toneMapping->SetDelegatePass(pass);
+  scene.Renderer->SetPass(toneMapping);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)), ShadowedBelow);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, { -5, -4, 0 }), LitAbove);
+}
+
+// Degenerate scenes render without NaN (a NaN shadow factor shows as black or
+// garbage on lit ground) and without GL errors.
+TEST(ShadowBehaviour, DegenerateScenes)
+{
+  ErrorCounter errors;
+  {
+    TestScene empty;
+    empty.Renderer->RemoveAllViewProps();
+    empty.SetSun(SunDirection);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    empty.Renderer->SetPass(pass);
+    RenderAndCapture(empty.Window);
+  }
+  {
+    TestScene flat;
+    flat.Renderer->RemoveActor(flat.Sphere);
+    flat.Renderer->RemoveActor(flat.Box);
+    flat.SetSun(SunDirection);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    flat.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(flat.Window);
+    EXPECT_GT(LuminanceAt(flat.Renderer, image, { 0, 0, 0 }), LitAbove) << "flat scene";
+  }
+  for (double scale : { 1e-4, 1e5 })
+  {
+    TestScene scaled;
+    for (vtkActor* actor : { scaled.Ground.Get(), scaled.Sphere.Get(), scaled.Box.Get() })
+    {
+      actor->SetScale(scale);
+    }
+    vtkCamera* camera = scaled.Renderer->GetActiveCamera();
+    camera->SetPosition(0.0, -16.0 * scale, 10.0 * scale);
+    camera->SetFocalPoint(0.0, 0.0, 0.5 * scale);
+    scaled.Renderer->ResetCameraClippingRange();
+    scaled.SetSun(SunDirection);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    scaled.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scaled.Window);
+    EXPECT_LT(LuminanceAt(scaled.Renderer, image, GroundShadowOfSphereCenter(SunDirection) * scale),
+      ShadowedBelow)
+      << scale;
+    EXPECT_GT(LuminanceAt(scaled.Renderer, image, glm::dvec3(-5, -4, 0) * scale), LitAbove) << scale;
+  }
+  {
+    // Light exactly along the view direction, and the camera straight above.
+    TestScene along;
+    vtkCamera* camera = along.Renderer->GetActiveCamera();
+    camera->SetPosition(0.0, 0.0, 20.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    along.Renderer->ResetCameraClippingRange();
+    along.SetSun({ 0.0, 0.0, -1.0 });
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    along.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(along.Window);
+    EXPECT_GT(LuminanceAt(along.Renderer, image, { -5, -4, 0 }), LitAbove);
+    // Straight down, the sphere hides its own shadow; the box's top is lit.
+    EXPECT_GT(LuminanceAt(along.Renderer, image, { 4.0, 2.0, 1.5 }), 60.0);
+  }
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+}

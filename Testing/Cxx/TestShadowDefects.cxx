@@ -1,0 +1,272 @@
+// One test per defect of VTK's vtkShadowMapPass (GUIDE list), proving this
+// project does not have it.
+#include "ShadowTestUtilities.h"
+#include "vtkWarpedShadowMapPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightKit.h"
+#include "vtkLineSource.h"
+#include "vtkPointGaussianMapper.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <gtest/gtest.h>
+
+using namespace shadowtest;
+
+namespace
+{
+const glm::dvec3 SunDirection = glm::normalize(glm::dvec3(-0.4, 0.3, -1.0));
+
+vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  return actor;
+}
+} // namespace
+
+// Defect 1: the light camera must not take the window's aspect ratio.
+TEST(ShadowDefects, NonSquareWindows)
+{
+  for (const auto& size : { glm::ivec2(640, 240), glm::ivec2(240, 520) })
+  {
+    TestScene scene(size.x, size.y);
+    scene.SetSun(SunDirection);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    const glm::dvec3 center = GroundShadowOfSphereCenter(SunDirection);
+    // The shadow of a sphere is an ellipse around `center`; its extent along
+    // the ground's x axis (perpendicular to the light's tilt in y) is the
+    // sphere's radius, whatever the window's shape.
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, center + glm::dvec3(0.75, 0, 0)), ShadowedBelow);
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, center - glm::dvec3(0.75, 0, 0)), ShadowedBelow);
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, center + glm::dvec3(1.4, 0, 0)), LitAbove);
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, center - glm::dvec3(1.4, 0, 0)), LitAbove);
+    const std::string name = "NonSquare" + std::to_string(size.x) + "x" + std::to_string(size.y);
+    const std::string difference = CompareWithBaseline(image, name);
+    EXPECT_TRUE(difference.empty()) << difference;
+  }
+}
+
+// Defect 2: unlit draws (lighting off, lines without normals, point Gaussian
+// splats) must compile and render.
+TEST(ShadowDefects, UnlitActorsRender)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  scene.Box->GetProperty()->LightingOff();
+  scene.Box->GetProperty()->SetColor(0.0, 1.0, 0.0);
+  scene.Box->GetProperty()->SetAmbient(0.0);
+
+  vtkNew<vtkLineSource> line;
+  line->SetPoint1(-6, -3, 0.2);
+  line->SetPoint2(-2, -3, 3.0);
+  auto lineActor = AddSourceActor(scene.Renderer, line);
+  lineActor->GetProperty()->SetLineWidth(4.0);
+  lineActor->GetProperty()->SetColor(1, 0, 0);
+
+  vtkNew<vtkSphereSource> points;
+  points->SetCenter(5, -3, 2);
+  vtkNew<vtkPointGaussianMapper> splats;
+  splats->SetInputConnection(points->GetOutputPort());
+  splats->SetScaleFactor(0.2);
+  vtkNew<vtkActor> splatActor;
+  splatActor->SetMapper(splats);
+  scene.Renderer->AddActor(splatActor);
+
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+
+  // The unlit box shows its flat colour: pure green, unshaded.
+  scene.Renderer->SetWorldPoint(4.0, 1.25, 1.0, 1.0);
+  scene.Renderer->WorldToDisplay();
+  const double* d = scene.Renderer->GetDisplayPoint();
+  const auto* rgb = static_cast<unsigned char*>(
+    image->GetScalarPointer(static_cast<int>(d[0]), static_cast<int>(d[1]), 0));
+  EXPECT_LT(rgb[0], 10);
+  EXPECT_GT(rgb[1], 245);
+  // The lit geometry still has its shadow.
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)), ShadowedBelow);
+}
+
+// Defect 3: PBR actors receive shadows from spot and point lights.
+TEST(ShadowDefects, PbrReceivesFromSpotAndPoint)
+{
+  for (bool spot : { true, false })
+  {
+    ErrorCounter errors;
+    TestScene scene;
+    const glm::dvec3 position(-1.0, 0.5, 6.0);
+    if (spot)
+    {
+      scene.SetSpot(position, 45.0);
+    }
+    else
+    {
+      scene.SetPoint(position);
+    }
+    scene.Ground->GetProperty()->SetInterpolationToPBR();
+    scene.Ground->GetProperty()->SetRoughness(0.8);
+    scene.Ground->GetProperty()->SetMetallic(0.0);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+    const double dark = LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenterFrom(position));
+    const double lit = LuminanceAt(scene.Renderer, image, { 2.5, -2.5, 0.0 });
+    EXPECT_LT(dark, 0.3 * lit) << (spot ? "spot" : "point");
+  }
+}
+
+// Defect 4: several camera lights (a light kit) each get their own shadow map.
+TEST(ShadowDefects, LightKitCameraLights)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.Renderer->RemoveAllLights();
+  vtkNew<vtkLightKit> kit;
+  kit->AddLightsToRenderer(scene.Renderer);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+  // Key, fill and two back lights are camera lights; the headlight casts none.
+  EXPECT_EQ(pass->GetNumberOfShadowedLights(), 4);
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4);
+
+  // Each light's shadow darkens the ground: with shadows the frame is darker
+  // on the ground below the sphere than without them.
+  scene.Renderer->SetPass(nullptr);
+  auto unshadowed = RenderAndCapture(scene.Window);
+  const glm::dvec3 below(0.0, 0.3, 0.0);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, below) + 20.0,
+    LuminanceAt(scene.Renderer, unshadowed, below));
+  const std::string difference = CompareWithBaseline(image, "LightKit");
+  EXPECT_TRUE(difference.empty()) << difference;
+}
+
+// Defect 5: translucent geometry is still drawn.
+TEST(ShadowDefects, TranslucentGeometryKept)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkCubeSource> pane;
+  pane->SetCenter(-4.0, -4.0, 1.0);
+  pane->SetXLength(3.0);
+  pane->SetYLength(0.1);
+  pane->SetZLength(2.0);
+  auto glass = AddSourceActor(scene.Renderer, pane);
+  glass->GetProperty()->SetColor(1.0, 0.0, 0.0);
+  glass->GetProperty()->SetOpacity(0.5);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  scene.Renderer->SetWorldPoint(-4.0, -4.1, 1.0, 1.0);
+  scene.Renderer->WorldToDisplay();
+  const double* d = scene.Renderer->GetDisplayPoint();
+  const auto* rgb = static_cast<unsigned char*>(
+    image->GetScalarPointer(static_cast<int>(d[0]), static_cast<int>(d[1]), 0));
+  EXPECT_GT(rgb[0], rgb[1] + 40) << "the red translucent pane tints what is behind it";
+  EXPECT_GT(rgb[1], 20) << "and what is behind it still shows through";
+}
+
+// Defect 6: empty texels are far, not occluders, whatever the background.
+TEST(ShadowDefects, BackgroundIsNotAnOccluder)
+{
+  TestScene scene;
+  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  scene.SetSun(glm::normalize(glm::dvec3(0.6, 0.0, -1.0)));
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  // Ground points near the map's rim where no caster is.
+  for (const glm::dvec3 p :
+    { glm::dvec3(-6, -3, 0), glm::dvec3(6, -3, 0), glm::dvec3(-8, 8, 0), glm::dvec3(8, 8, 0) })
+  {
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, p), LitAbove) << p.x << "," << p.y;
+  }
+}
+
+// Defect 7: a caster outside the view still casts into it.
+TEST(ShadowDefects, CasterOutsideTheViewCastsIntoIt)
+{
+  TestScene scene;
+  // A wall behind the camera, out of its view, lit at a grazing angle from behind.
+  vtkNew<vtkCubeSource> wall;
+  wall->SetCenter(0.0, -12.0, 1.0);
+  wall->SetXLength(30.0);
+  wall->SetYLength(0.5);
+  wall->SetZLength(2.0);
+  AddSourceActor(scene.Renderer, wall);
+  scene.Renderer->GetActiveCamera()->SetPosition(0.0, -9.0, 6.0);
+  scene.Renderer->ResetCameraClippingRange();
+  const glm::dvec3 direction = glm::normalize(glm::dvec3(0.0, 1.0, -0.2));
+  scene.SetSun(direction);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+
+  double wallDisplay[3];
+  scene.Renderer->SetWorldPoint(0.0, -12.0, 1.0, 1.0);
+  scene.Renderer->WorldToView();
+  scene.Renderer->GetViewPoint(wallDisplay);
+  EXPECT_LT(wallDisplay[1], -1.0) << "the wall is below the bottom of the view";
+  // Wall top at z = 2, y = -11.75: its shadow reaches y = -11.75 + 2 / 0.2 = -1.75.
+  const double shadowed = LuminanceAt(scene.Renderer, image, { -3.0, -2.5, 0.0 });
+  const double lit = LuminanceAt(scene.Renderer, image, { -3.0, 1.0, 0.0 });
+  EXPECT_GE(shadowed, 0.0) << "probe on screen";
+  EXPECT_LT(shadowed + 25.0, lit);
+}
+
+// Defect 8: geometry changed upstream in the pipeline re-renders the maps.
+TEST(ShadowDefects, UpstreamChangeMovesTheShadow)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  RenderAndCapture(scene.Window);
+  const glm::dvec3 before = GroundShadowOfSphereCenter(SunDirection);
+  scene.SphereSource->SetCenter(-4.0, 3.0, 1.5);
+  auto image = RenderAndCapture(scene.Window);
+  const glm::dvec3 after = before + glm::dvec3(-4.0, 3.0, 0.0);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, before), LitAbove);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, after), ShadowedBelow);
+}
+
+// Defect 9: point lights and spots of 90 degrees or wider cast shadows; so do
+// wide spots below 90 (rendered as cube faces).
+TEST(ShadowDefects, PointAndWideSpotLights)
+{
+  const glm::dvec3 position(-1.0, 0.5, 5.0);
+  for (double cone : { 75.0, 90.0, 120.0 })
+  {
+    TestScene scene;
+    scene.SetSpot(position, cone);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << cone;
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenterFrom(position)), ShadowedBelow)
+      << cone;
+    if (cone >= 90.0)
+    {
+      EXPECT_GT(LuminanceAt(scene.Renderer, image, { 3.0, -3.0, 0.0 }), LitAbove) << cone;
+    }
+  }
+}

@@ -1,0 +1,58 @@
+"""vtkshadows: renders the default scene to a PNG, and rejects bad input with
+one line on stderr and exit status 2."""
+import os
+import subprocess
+import sys
+
+
+def run(program, *args):
+    return subprocess.run([program, *args], capture_output=True, text=True, timeout=240)
+
+
+def main(program, output_dir):
+    os.makedirs(output_dir, exist_ok=True)
+    failures = []
+    out = os.path.join(output_dir, "cli_default.png")
+    if os.path.exists(out):
+        os.remove(out)
+    result = run(program, "render", "--size", "320x240", "--resolution", "1024", "-o", out)
+    printed = result.stdout.strip()
+    if result.returncode != 0 or not os.path.isfile(out) or os.path.getsize(out) == 0:
+        failures.append(f"render: rc={result.returncode} stderr={result.stderr!r}")
+    elif os.path.realpath(printed) != os.path.realpath(out):
+        failures.append(f"render printed {printed!r}, expected the output path")
+    with open(out, "rb") as png:
+        if png.read(8) != b"\x89PNG\r\n\x1a\n":
+            failures.append("render: output is not a PNG")
+
+    bad_inputs = [
+        [],
+        ["explode"],
+        ["render", "--bogus"],
+        ["render", "--resolution"],
+        ["render", "--resolution", "abc"],
+        ["render", "--resolution", "5"],
+        ["render", "--filter", "pcf:9"],
+        ["render", "--filter", "blur"],
+        ["render", "--size", "100"],
+        ["render", "--light", "moon"],
+        ["render", "--scene", "/nonexistent/model.obj"],
+        ["render", "--scene", __file__],
+    ]
+    for args in bad_inputs:
+        result = run(program, *args)
+        lines = [line for line in result.stderr.splitlines() if line.strip()]
+        if result.returncode != 2:
+            failures.append(f"{args}: exit {result.returncode}, expected 2")
+        elif args and (len(lines) != 1 or "error" not in lines[0]):
+            failures.append(f"{args}: stderr should be one error line, got {result.stderr!r}")
+
+    for failure in failures:
+        print("FAIL:", failure)
+    checks = 2 + len(bad_inputs)
+    print(f"{checks - len(failures)} passed, {len(failures)} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1], sys.argv[2]))

@@ -1,0 +1,88 @@
+"""The Python package imports, turns shadows on in one line and renders them."""
+import os
+import sys
+
+import vtkmodules.vtkInteractionStyle  # noqa: F401
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
+                                         vtkRenderer, vtkRenderWindow,
+                                         vtkWindowToImageFilter)
+
+import vtkshadowmaps
+
+
+def add(renderer, source):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetAmbient(0.15)
+    renderer.AddActor(actor)
+
+
+def luminance(renderer, image, world):
+    renderer.SetWorldPoint(*world, 1.0)
+    renderer.WorldToDisplay()
+    x, y, _ = renderer.GetDisplayPoint()
+    scalars = image.GetPointData().GetScalars()
+    width = image.GetDimensions()[0]
+    r, g, b = scalars.GetTuple3(int(y) * width + int(x))
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+
+def main(output_dir):
+    renderer = vtkRenderer()
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(320, 240)
+    window.AddRenderer(renderer)
+    plane = vtkPlaneSource()
+    plane.SetOrigin(-5, -5, 0)
+    plane.SetPoint1(5, -5, 0)
+    plane.SetPoint2(-5, 5, 0)
+    add(renderer, plane)
+    sphere = vtkSphereSource()
+    sphere.SetCenter(0, 0, 1.5)
+    sphere.SetThetaResolution(32)
+    sphere.SetPhiResolution(32)
+    add(renderer, sphere)
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(False)
+    light.SetPosition(0, 0, 1)
+    light.SetFocalPoint(0, 0, 0)
+    renderer.AutomaticLightCreationOff()
+    renderer.AddLight(light)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, -10, 8)
+    camera.SetFocalPoint(0, 0, 0)
+    camera.SetViewUp(0, 0, 1)
+    renderer.ResetCameraClippingRange()
+
+    renderer.SetPass(vtkshadowmaps.vtkWarpedShadowMapPass())
+    window.Render()
+
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    image = grab.GetOutput()
+    os.makedirs(output_dir, exist_ok=True)
+    writer = vtkPNGWriter()
+    writer.SetInputData(image)
+    writer.SetFileName(os.path.join(output_dir, "python_shadow.png"))
+    writer.Write()
+
+    under = luminance(renderer, image, (0.0, 0.0, 0.0))
+    open_ground = luminance(renderer, image, (3.0, -3.0, 0.0))
+    print(f"under the sphere {under:.1f}, open ground {open_ground:.1f}")
+    assert under < 80, "the sun straight above puts the ground under the sphere in shadow"
+    assert open_ground > 120, "open ground is lit"
+    print("1 passed, 0 failed")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else ".")

@@ -1,0 +1,45 @@
+# Shared by scripts/run.sh and scripts/test.sh: install what is missing, configure, build.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
+
+PACKAGES=(
+  cmake ninja-build g++ pkg-config git
+  libvtk9-dev python3-vtk9 python3-dev
+  libglm-dev
+  libopenimageio-dev openimageio-tools python3-imath
+  libgtest-dev
+  xvfb xauth libgl1-mesa-dri
+)
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+install_missing_packages() {
+  local missing=()
+  for package in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+      missing+=("$package")
+  done
+  if [ "${#missing[@]}" -gt 0 ]; then
+    echo "Installing: ${missing[*]}"
+    as_root apt-get update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+}
+
+configure_and_build() {
+  # Debian's VTK Python bindings belong to /usr/bin/python3; another python3 on
+  # PATH may lack them.
+  cmake -S "$ROOT" -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DPython3_EXECUTABLE=/usr/bin/python3
+  cmake --build "$BUILD_DIR"
+}
+
+# Debian's VTK is X-only. -noreset: Xvfb otherwise resets whenever its last
+# client disconnects, and a test connecting during the reset aborts.
+with_display() {
+  xvfb-run -a -s "-noreset -screen 0 1280x1024x24" "$@"
+}

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs every test (unit, image, Python, CLI).
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+install_missing_packages
+configure_and_build
+cd "$BUILD_DIR"
+with_display ctest --output-on-failure --timeout 600
