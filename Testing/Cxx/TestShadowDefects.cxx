@@ -4,6 +4,13 @@
 #include "vtkWarpedShadowMapPass.h"
 
 #include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkOpenGLSphereMapper.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkImageData.h"
@@ -269,4 +276,73 @@ TEST(ShadowDefects, PointAndWideSpotLights)
       EXPECT_GT(LuminanceAt(scene.Renderer, image, { 3.0, -3.0, 0.0 }), LitAbove) << cone;
     }
   }
+}
+
+// Every kind of polydata mapper casts and receives: composite data, glyphs and
+// sphere impostors (whose fragment shader shapes the sphere).
+TEST(ShadowDefects, CompositeGlyphAndImpostorMappers)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.SetSun({ 0.0, 0.0, -1.0 });
+  scene.Renderer->RemoveActor(scene.Sphere);
+  scene.Renderer->RemoveActor(scene.Box);
+
+  // Composite: two blocks, a caster sphere over (-4, 0) and a small receiver
+  // plate under it raised above the ground.
+  vtkNew<vtkSphereSource> blockSphere;
+  blockSphere->SetCenter(-4.0, 0.0, 2.0);
+  blockSphere->Update();
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(1);
+  blocks->SetBlock(0, blockSphere->GetOutput());
+  vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+  compositeMapper->SetInputDataObject(blocks);
+  vtkNew<vtkActor> composite;
+  composite->SetMapper(compositeMapper);
+  scene.Renderer->AddActor(composite);
+
+  // Glyphs: cubes at two points above (0, 0).
+  vtkNew<vtkPoints> glyphPoints;
+  glyphPoints->InsertNextPoint(0.0, -0.3, 2.0);
+  glyphPoints->InsertNextPoint(0.0, 0.3, 2.0);
+  vtkNew<vtkPolyData> glyphCenters;
+  glyphCenters->SetPoints(glyphPoints);
+  vtkNew<vtkCubeSource> glyphShape;
+  vtkNew<vtkGlyph3DMapper> glyphMapper;
+  glyphMapper->SetInputData(glyphCenters);
+  glyphMapper->SetSourceConnection(glyphShape->GetOutputPort());
+  vtkNew<vtkActor> glyphs;
+  glyphs->SetMapper(glyphMapper);
+  scene.Renderer->AddActor(glyphs);
+
+  // Sphere impostor of radius 1 above (4, 0).
+  vtkNew<vtkPoints> impostorPoints;
+  impostorPoints->InsertNextPoint(4.0, 0.0, 2.0);
+  vtkNew<vtkPolyData> impostorCenters;
+  impostorCenters->SetPoints(impostorPoints);
+  vtkNew<vtkCellArray> impostorVertices;
+  impostorVertices->InsertNextCell(1);
+  impostorVertices->InsertCellPoint(0);
+  impostorCenters->SetVerts(impostorVertices);
+  vtkNew<vtkOpenGLSphereMapper> impostorMapper;
+  impostorMapper->SetInputData(impostorCenters);
+  impostorMapper->SetRadius(1.0);
+  vtkNew<vtkActor> impostor;
+  impostor->SetMapper(impostorMapper);
+  scene.Renderer->AddActor(impostor);
+
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, { -4.0, -0.2, 0.0 }), ShadowedBelow) << "composite";
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, { 0.0, -0.3, 0.0 }), ShadowedBelow) << "glyph";
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, { 4.0, -0.2, 0.0 }), ShadowedBelow) << "impostor";
+  // The impostor casts a disc, not its square proxy: the corner of the square
+  // around its shadow stays lit.
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, { 4.85, -0.85, 0.0 }), LitAbove) << "impostor corner";
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, { 2.0, -3.0, 0.0 }), LitAbove);
+  const std::string difference = CompareWithBaseline(image, "MapperKinds");
+  EXPECT_TRUE(difference.empty()) << difference;
 }

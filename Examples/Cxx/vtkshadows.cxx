@@ -1,0 +1,541 @@
+// vtkshadows: renders a scene with shadows and writes a PNG.
+//
+//   vtkshadows render [options]    see Usage() below
+//
+// Every error prints one line "vtkshadows: error: ..." on stderr and exits
+// with status 2.
+#include "ShadowScenes.h"
+
+#include "vtkWarpedShadowMapPass.h"
+
+#include <vtkCameraPass.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderPassCollection.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSequencePass.h>
+#include <vtkShadowMapBakerPass.h>
+#include <vtkShadowMapPass.h>
+#include <vtkSmartPointer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+constexpr int ExitUsageError = 2;
+
+enum class Technique
+{
+  Uniform, // vtkWarpedShadowMapPass
+  VTK,     // VTK's vtkShadowMapPass
+  None     // VTK's default rendering
+};
+
+enum class Filter
+{
+  Hard,
+  PCF2x2,
+  PCFNxN,
+  Poisson
+};
+
+struct Options
+{
+  std::string command; // "render"
+  bool help = false;
+  std::string scene = "default";
+  std::string light = "sun";
+  double azimuth = 60.0;
+  double elevation = 45.0;
+  Technique technique = Technique::Uniform;
+  int resolution = 2048;
+  Filter filter = Filter::PCF2x2;
+  int kernelSize = 3; // N of pcf:N
+  int width = 800;
+  int height = 600;
+  std::string output = "vtkshadows.png";
+};
+
+void PrintUsage(std::ostream& out)
+{
+  out << "usage: vtkshadows render [options]\n"
+         "       vtkshadows --help\n"
+         "\n"
+         "Renders a scene with shadows and writes a PNG; prints the PNG's absolute path.\n"
+         "\n"
+         "options of render:\n"
+         "  --scene default|FILE     built-in scene or a model (.obj .ply .stl .vtp .gltf .glb)\n"
+         "                           [default]\n"
+         "  --light sun|spot|point   light kind [sun]\n"
+         "  --azimuth A              light azimuth in degrees, from +x towards +y [60]\n"
+         "  --elevation E            light elevation above the ground, -90..90 [45]\n"
+         "  --technique uniform|vtk|none\n"
+         "                           uniform: vtkWarpedShadowMapPass, vtk: VTK's\n"
+         "                           vtkShadowMapPass, none: no shadows [uniform]\n"
+         "  --resolution N           shadow map size in texels, 64..16384 [2048]\n"
+         "  --filter hard|pcf2x2|pcf:N|poisson\n"
+         "                           shadow filter, N of pcf:N in 2..7 [pcf2x2]\n"
+         "  --size WxH               image size, each 16..8192 [800x600]\n"
+         "  -o, --output FILE        output PNG [./vtkshadows.png]\n"
+         "  -h, --help               this help\n";
+}
+
+// --- value parsing -----------------------------------------------------------
+
+/** Whole-string integer; no sign games, no trailing characters. */
+bool ParseInt(const std::string& text, int& value)
+{
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])))
+  {
+    return false;
+  }
+  errno = 0;
+  char* end = nullptr;
+  const long parsed = std::strtol(text.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0' || parsed < -2147483647L || parsed > 2147483647L)
+  {
+    return false;
+  }
+  value = static_cast<int>(parsed);
+  return true;
+}
+
+/** Whole-string finite floating-point number. */
+bool ParseDouble(const std::string& text, double& value)
+{
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])))
+  {
+    return false;
+  }
+  errno = 0;
+  char* end = nullptr;
+  const double parsed = std::strtod(text.c_str(), &end);
+  if (errno != 0 || *end != '\0' || !std::isfinite(parsed))
+  {
+    return false;
+  }
+  value = parsed;
+  return true;
+}
+
+// Each option parser returns an empty string on success, else the error.
+
+std::string ParseScene(const std::string& value, Options& options)
+{
+  if (value.empty())
+  {
+    return "scene file name is empty";
+  }
+  options.scene = value;
+  return {};
+}
+
+std::string ParseLight(const std::string& value, Options& options)
+{
+  if (!shadowscenes::IsLightKind(value))
+  {
+    return "unknown light '" + value + "' (expected sun, spot or point)";
+  }
+  options.light = value;
+  return {};
+}
+
+std::string ParseAzimuth(const std::string& value, Options& options)
+{
+  if (!ParseDouble(value, options.azimuth))
+  {
+    return "azimuth '" + value + "' is not a number";
+  }
+  return {};
+}
+
+std::string ParseElevation(const std::string& value, Options& options)
+{
+  double elevation = 0.0;
+  if (!ParseDouble(value, elevation) || elevation < -90.0 || elevation > 90.0)
+  {
+    return "elevation '" + value + "' is not a number in -90..90";
+  }
+  options.elevation = elevation;
+  return {};
+}
+
+std::string ParseTechnique(const std::string& value, Options& options)
+{
+  static const std::map<std::string, Technique> techniques = { { "uniform", Technique::Uniform },
+    { "vtk", Technique::VTK }, { "none", Technique::None } };
+  const auto found = techniques.find(value);
+  if (found == techniques.end())
+  {
+    return "unknown technique '" + value + "' (expected uniform, vtk or none)";
+  }
+  options.technique = found->second;
+  return {};
+}
+
+std::string ParseResolution(const std::string& value, Options& options)
+{
+  int resolution = 0;
+  if (!ParseInt(value, resolution) || resolution < 64 || resolution > 16384)
+  {
+    return "resolution '" + value + "' is not an integer in 64..16384";
+  }
+  options.resolution = resolution;
+  return {};
+}
+
+std::string ParseFilter(const std::string& value, Options& options)
+{
+  static const std::map<std::string, Filter> namedFilters = { { "hard", Filter::Hard },
+    { "pcf2x2", Filter::PCF2x2 }, { "poisson", Filter::Poisson } };
+  const auto found = namedFilters.find(value);
+  if (found != namedFilters.end())
+  {
+    options.filter = found->second;
+    return {};
+  }
+  const std::string pcfPrefix = "pcf:";
+  if (value.compare(0, pcfPrefix.size(), pcfPrefix) == 0)
+  {
+    int kernelSize = 0;
+    if (!ParseInt(value.substr(pcfPrefix.size()), kernelSize) || kernelSize < 2 ||
+      kernelSize > 7)
+    {
+      return "filter '" + value + "': N of pcf:N must be an integer in 2..7";
+    }
+    options.filter = Filter::PCFNxN;
+    options.kernelSize = kernelSize;
+    return {};
+  }
+  return "unknown filter '" + value + "' (expected hard, pcf2x2, pcf:N or poisson)";
+}
+
+std::string ParseSize(const std::string& value, Options& options)
+{
+  const std::string malformed = "size '" + value + "' is not WxH with W and H in 16..8192";
+  const std::size_t separator = value.find('x');
+  if (separator == std::string::npos)
+  {
+    return malformed;
+  }
+  int width = 0;
+  int height = 0;
+  if (!ParseInt(value.substr(0, separator), width) ||
+    !ParseInt(value.substr(separator + 1), height) || width < 16 || width > 8192 ||
+    height < 16 || height > 8192)
+  {
+    return malformed;
+  }
+  options.width = width;
+  options.height = height;
+  return {};
+}
+
+std::string ParseOutput(const std::string& value, Options& options)
+{
+  if (value.empty())
+  {
+    return "output file name is empty";
+  }
+  options.output = value;
+  return {};
+}
+
+// --- command line --------------------------------------------------------------
+
+using OptionParser = std::function<std::string(const std::string&, Options&)>;
+
+/** Options taking a value, by every name they are spelled with. */
+const std::map<std::string, OptionParser>& RenderOptionParsers()
+{
+  static const std::map<std::string, OptionParser> parsers = {
+    { "--scene", ParseScene },
+    { "--light", ParseLight },
+    { "--azimuth", ParseAzimuth },
+    { "--elevation", ParseElevation },
+    { "--technique", ParseTechnique },
+    { "--resolution", ParseResolution },
+    { "--filter", ParseFilter },
+    { "--size", ParseSize },
+    { "-o", ParseOutput },
+    { "--output", ParseOutput },
+  };
+  return parsers;
+}
+
+bool IsHelpFlag(const std::string& argument)
+{
+  return argument == "-h" || argument == "--help";
+}
+
+/**
+ * Parses the options after the subcommand. Values follow their option
+ * ("--resolution 1024") or are attached to it ("--resolution=1024").
+ */
+bool ParseSubcommandOptions(const std::vector<std::string>& arguments, std::size_t first,
+  const std::map<std::string, OptionParser>& parsers, Options& options, std::string& error)
+{
+  for (std::size_t i = first; i < arguments.size(); ++i)
+  {
+    std::string name = arguments[i];
+    if (IsHelpFlag(name))
+    {
+      options.help = true;
+      return true;
+    }
+    std::string value;
+    bool hasValue = false;
+    const std::size_t equals = name.find('=');
+    if (name.compare(0, 2, "--") == 0 && equals != std::string::npos)
+    {
+      value = name.substr(equals + 1);
+      name = name.substr(0, equals);
+      hasValue = true;
+    }
+    const auto parser = parsers.find(name);
+    if (parser == parsers.end())
+    {
+      error = "unknown option '" + name + "' for " + options.command;
+      return false;
+    }
+    if (!hasValue)
+    {
+      // A following option is not a value ("--scene --light sun"); negative
+      // numbers ("--azimuth -30") are.
+      if (i + 1 >= arguments.size() || arguments[i + 1].compare(0, 2, "--") == 0)
+      {
+        error = "option " + name + " needs a value";
+        return false;
+      }
+      value = arguments[++i];
+    }
+    error = parser->second(value, options);
+    if (!error.empty())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/** Parses everything after the program name. */
+bool ParseCommandLine(
+  const std::vector<std::string>& arguments, Options& options, std::string& error)
+{
+  if (arguments.empty())
+  {
+    error = "missing subcommand (expected render)";
+    return false;
+  }
+  if (IsHelpFlag(arguments[0]) || arguments[0] == "help")
+  {
+    options.help = true;
+    return true;
+  }
+  if (arguments[0] != "render")
+  {
+    error = "unknown subcommand '" + arguments[0] + "' (expected render)";
+    return false;
+  }
+  options.command = arguments[0];
+  return ParseSubcommandOptions(arguments, 1, RenderOptionParsers(), options, error);
+}
+
+// --- rendering -------------------------------------------------------------------
+
+int ToPassFilter(Filter filter)
+{
+  switch (filter)
+  {
+    case Filter::Hard:
+      return vtkAbstractShadowMapPass::HARD;
+    case Filter::PCFNxN:
+      return vtkAbstractShadowMapPass::PCF_NXN;
+    case Filter::Poisson:
+      return vtkAbstractShadowMapPass::POISSON;
+    case Filter::PCF2x2:
+    default:
+      return vtkAbstractShadowMapPass::PCF_2X2;
+  }
+}
+
+vtkSmartPointer<vtkRenderPass> MakeWarpedShadowMapPass(const Options& options)
+{
+  vtkNew<vtkWarpedShadowMapPass> shadows;
+  shadows->SetResolution(options.resolution);
+  shadows->SetFilter(ToPassFilter(options.filter));
+  shadows->SetKernelSize(options.kernelSize);
+  return shadows;
+}
+
+/** VTK's own shadow maps, set up as in VTK's TestShadowMapPass. */
+vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(const Options& options)
+{
+  vtkNew<vtkShadowMapPass> shadows; // its opaque sequence renders lights + opaque geometry
+  shadows->GetShadowMapBakerPass()->SetResolution(static_cast<unsigned int>(options.resolution));
+
+  vtkNew<vtkRenderPassCollection> passes;
+  passes->AddItem(shadows->GetShadowMapBakerPass());
+  passes->AddItem(shadows);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(passes);
+
+  vtkNew<vtkCameraPass> cameraPass;
+  cameraPass->SetDelegatePass(sequence);
+  return cameraPass;
+}
+
+bool BuildScene(vtkRenderer* renderer, const Options& options, std::string& error)
+{
+  if (options.scene == "default")
+  {
+    shadowscenes::BuildDefaultScene(renderer);
+    return true;
+  }
+  return shadowscenes::BuildFileScene(renderer, options.scene, error);
+}
+
+void ApplyTechnique(vtkRenderer* renderer, vtkRenderWindow* window, const Options& options)
+{
+  switch (options.technique)
+  {
+    case Technique::Uniform:
+      renderer->SetPass(MakeWarpedShadowMapPass(options));
+      break;
+    case Technique::VTK:
+      window->SetMultiSamples(0); // as in VTK's test: the pass does not resolve MSAA
+      renderer->SetPass(MakeVTKShadowMapPass(options));
+      break;
+    case Technique::None:
+      break;
+  }
+}
+
+bool WritePNG(vtkRenderWindow* window, const std::string& path, std::string& error)
+{
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->ReadFrontBufferOff();
+  capture->SetInputBufferTypeToRGB();
+
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(capture->GetOutputPort());
+  const int wasOn = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  writer->Write();
+  vtkObject::SetGlobalWarningDisplay(wasOn);
+  if (writer->GetErrorCode() != 0)
+  {
+    error = "cannot write '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+/** The absolute output path, if its directory exists (checked before rendering). */
+bool ResolveOutputPath(const std::string& output, std::string& path, std::string& error)
+{
+  std::error_code pathError;
+  const std::filesystem::path absolute =
+    std::filesystem::absolute(output, pathError).lexically_normal();
+  if (pathError)
+  {
+    error = "cannot resolve output path '" + output + "': " + pathError.message();
+    return false;
+  }
+  if (!std::filesystem::is_directory(absolute.parent_path(), pathError))
+  {
+    error = "cannot write '" + absolute.string() + "': no such directory";
+    return false;
+  }
+  path = absolute.string();
+  return true;
+}
+
+bool RunRender(const Options& options, std::string& error)
+{
+  std::string outputPath;
+  if (!ResolveOutputPath(options.output, outputPath, error))
+  {
+    return false;
+  }
+  vtkNew<vtkRenderer> renderer;
+  if (!BuildScene(renderer, options, error))
+  {
+    return false;
+  }
+  shadowscenes::AddLight(renderer, options.light, options.azimuth, options.elevation);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(options.width, options.height);
+  window->AddRenderer(renderer);
+  ApplyTechnique(renderer, window, options);
+  window->Render();
+
+  if (!WritePNG(window, outputPath, error))
+  {
+    return false;
+  }
+  std::cout << outputPath << std::endl;
+  return true;
+}
+
+int Fail(const std::string& error)
+{
+  std::cerr << "vtkshadows: error: " << error << std::endl;
+  return ExitUsageError;
+}
+
+int Run(const std::vector<std::string>& arguments)
+{
+  if (arguments.empty())
+  {
+    PrintUsage(std::cerr);
+    return ExitUsageError;
+  }
+
+  Options options;
+  std::string error;
+  if (!ParseCommandLine(arguments, options, error))
+  {
+    return Fail(error);
+  }
+  if (options.help)
+  {
+    PrintUsage(std::cout);
+    return EXIT_SUCCESS;
+  }
+  if (!RunRender(options, error))
+  {
+    return Fail(error);
+  }
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  try
+  {
+    return Run(std::vector<std::string>(argv + 1, argv + argc));
+  }
+  catch (const std::exception& exception)
+  {
+    return Fail(exception.what());
+  }
+}
