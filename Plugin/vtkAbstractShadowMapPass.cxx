@@ -254,6 +254,18 @@ size_t vtkAbstractShadowMapPass::GetShadowMapMemory() const
 }
 
 //------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfDepthOnlyCasterShaders() const
+{
+  return this->Resource->CasterPass->GetNumberOfDepthOnlyShaders();
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfOwnFragmentCasterShaders() const
+{
+  return this->Resource->CasterPass->GetNumberOfOwnFragmentShaders();
+}
+
+//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();

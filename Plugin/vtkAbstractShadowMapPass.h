@@ -194,6 +194,15 @@ public:
   /** Caster draws (prop renders into maps) in the last map update. */
   vtkGetMacro(NumberOfCasterDraws, int);
 
+  ///@{
+  /**
+   * Caster shaders built so far: depth-only (minimal fragment shader) and
+   * keeping the mapper's fragment shader (impostors, splats).
+   */
+  int GetNumberOfDepthOnlyCasterShaders() const;
+  int GetNumberOfOwnFragmentCasterShaders() const;
+  ///@}
+
   /** Memory held by the shadow maps, in bytes. */
   size_t GetShadowMapMemory() const;
 

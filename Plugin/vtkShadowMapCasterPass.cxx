@@ -4,6 +4,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsCasterFS.h"
 
+#include <sstream>
+
 vtkStandardNewMacro(vtkShadowMapCasterPass);
 
 namespace
@@ -18,12 +20,24 @@ size_t CountOccurrences(const std::string& text, const std::string& word)
   return count;
 }
 
+std::string WithoutLineComments(const std::string& source)
+{
+  std::string code;
+  std::istringstream lines(source);
+  for (std::string line; std::getline(lines, line);)
+  {
+    code += line.substr(0, line.find("//"));
+    code += '\n';
+  }
+  return code;
+}
+
 // Every VTK polydata fragment shader discards fully transparent fragments once;
 // more discards, or a written depth, mean the shader cuts its own silhouette.
 bool ShapesItsOwnFragments(const std::string& fragmentShader)
 {
-  return fragmentShader.find("gl_FragDepth") != std::string::npos ||
-    CountOccurrences(fragmentShader, "discard") > 1;
+  const std::string code = WithoutLineComments(fragmentShader);
+  return code.find("gl_FragDepth") != std::string::npos || CountOccurrences(code, "discard") > 1;
 }
 } // namespace
 
@@ -32,8 +46,10 @@ bool vtkShadowMapCasterPass::PostReplaceShaderValues(std::string&, std::string&,
 {
   if (ShapesItsOwnFragments(fragmentShader))
   {
+    ++this->NumberOfOwnFragmentShaders;
     return true;
   }
+  ++this->NumberOfDepthOnlyShaders;
   std::string caster = vtkShadowMapsCasterFS;
   const char* faces = this->CasterFaces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
     : this->CasterFaces == 1                 ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"

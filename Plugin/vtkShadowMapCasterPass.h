@@ -32,6 +32,12 @@ public:
   void DetachFromProps(const vtkRenderState* s) { this->PostRender(s); }
   ///@}
 
+  ///@{
+  /** Caster shaders built with the minimal fragment shader, and with the mapper's own. */
+  vtkGetMacro(NumberOfDepthOnlyShaders, int);
+  vtkGetMacro(NumberOfOwnFragmentShaders, int);
+  ///@}
+
   /** Not used: the owning pass renders the casters itself. */
   void Render(const vtkRenderState*) override {}
 
@@ -44,6 +50,8 @@ protected:
   ~vtkShadowMapCasterPass() override = default;
 
   int CasterFaces = 2;
+  int NumberOfDepthOnlyShaders = 0;
+  int NumberOfOwnFragmentShaders = 0;
 
 private:
   vtkShadowMapCasterPass(const vtkShadowMapCasterPass&) = delete;

@@ -336,6 +336,10 @@ TEST(ShadowDefects, CompositeGlyphAndImpostorMappers)
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+  // Ground, composite block and glyphs render depth-only; the impostor keeps its
+  // shader. (Counts are shader builds, not mappers.)
+  EXPECT_GE(pass->GetNumberOfDepthOnlyCasterShaders(), 3);
+  EXPECT_GE(pass->GetNumberOfOwnFragmentCasterShaders(), 1);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, { -4.0, -0.2, 0.0 }), ShadowedBelow) << "composite";
   EXPECT_LT(LuminanceAt(scene.Renderer, image, { 0.0, -0.3, 0.0 }), ShadowedBelow) << "glyph";
   EXPECT_LT(LuminanceAt(scene.Renderer, image, { 4.0, -0.2, 0.0 }), ShadowedBelow) << "impostor";
