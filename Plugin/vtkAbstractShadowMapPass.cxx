@@ -212,6 +212,7 @@ struct vtkAbstractShadowMapPass::Resources
   bool WarnedTooManyLights = false;
   bool WarnedResolution = false;
   std::string LastGLError;
+  std::string WarnedGLError;
 };
 
 //------------------------------------------------------------------------------
@@ -462,7 +463,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   this->StoreReceiverUniforms();
   r.Signature = std::move(signature);
   r.MapsValid = true;
-  r.LastGLError.clear();
+  r.WarnedGLError.clear();
   ++this->NumberOfShadowMapUpdates;
   return true;
 }
@@ -679,11 +680,11 @@ void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
   r.Maps.Release();
   r.MapsValid = false;
   this->NumberOfShadowMapLayers = 0;
-  if (error != r.LastGLError || !r.LastGLError.empty())
+  if (error != r.WarnedGLError)
   {
     vtkWarningMacro(<< "Rendering without shadows: " << error);
+    r.WarnedGLError = error;
   }
-  r.LastGLError = error;
 }
 
 //------------------------------------------------------------------------------
@@ -703,6 +704,8 @@ bool vtkAbstractShadowMapPass::PreReplaceShaderValues(std::string&, std::string&
 bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string&,
   std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
+  // The receiver's position is taken in the fragment shader, not the vertex
+  // shader, because impostor mappers compute their true surface per fragment.
   std::ostringstream impl;
   if (this->Resource->Active && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS()))
   {

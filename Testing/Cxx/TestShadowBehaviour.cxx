@@ -168,6 +168,37 @@ TEST(ShadowBehaviour, ResolutionBeyondTheGLLimit)
   EXPECT_LT(shadow, ShadowedBelow);
 }
 
+// Maps the GL cannot allocate (48 layers of 16384^2 = 48 GiB) leave frames
+// rendered without shadows and one warning.
+TEST(ShadowBehaviour, GLAllocationFailureRendersWithoutShadows)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.SetPoint({ -1.0, 0.5, 5.0 });
+  for (int i = 0; i < 7; ++i)
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(true);
+    light->SetConeAngle(180.0);
+    light->SetPosition(i - 3.0, 2.0, 6.0);
+    light->SetIntensity(0.05);
+    scene.Renderer->AddLight(light);
+  }
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  pass->SetResolution(16384);
+  scene.Renderer->SetPass(pass);
+  scene.Window->Render();
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+  EXPECT_EQ(errors.Warnings(), 1) << errors.Text();
+  EXPECT_NE(errors.Text().find("Rendering without shadows"), std::string::npos);
+  EXPECT_EQ(pass->GetShadowMapMemory(), 0u);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenterFrom({ -1.0, 0.5, 5.0 })),
+    LitAbove)
+    << "no shadow, but lit";
+}
+
 TEST(ShadowBehaviour, CasterFacesAllCast)
 {
   for (int faces : { vtkAbstractShadowMapPass::FRONT_FACES, vtkAbstractShadowMapPass::BACK_FACES,
