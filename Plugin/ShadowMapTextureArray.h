@@ -38,9 +38,6 @@ public:
 
   void Release();
 
-  int GetResolution() const { return this->Resolution; }
-  int GetLayers() const { return this->Layers; }
-  bool IsAllocated() const { return this->Texture != 0; }
   std::size_t GetMemoryBytes() const;
 
 private:

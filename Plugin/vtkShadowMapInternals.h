@@ -6,7 +6,6 @@
 #include "ShadowMapTextureArray.h"
 #include "vtkAbstractShadowMapPass.h"
 
-#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>

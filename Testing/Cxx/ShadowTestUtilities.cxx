@@ -19,6 +19,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -113,8 +114,7 @@ vtkLight* TestScene::SetSpot(const glm::dvec3& position, double coneAngle)
 
 vtkLight* TestScene::SetPoint(const glm::dvec3& position)
 {
-  vtkLight* light = this->SetSpot(position, 180.0);
-  return light;
+  return this->SetSpot(position, 180.0);
 }
 
 glm::dvec3 GroundShadowOfSphereCenter(const glm::dvec3& direction)
@@ -140,31 +140,62 @@ vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window)
   return image;
 }
 
-double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
+namespace
+{
+// Pixel where `world` is seen, or {-1, -1} when off the image.
+glm::ivec2 PixelAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
 {
   renderer->SetWorldPoint(world.x, world.y, world.z, 1.0);
   renderer->WorldToDisplay();
   const double* display = renderer->GetDisplayPoint();
+  const glm::ivec2 pixel(static_cast<int>(display[0]), static_cast<int>(display[1]));
   int dims[3];
   image->GetDimensions(dims);
-  const int cx = static_cast<int>(display[0]);
-  const int cy = static_cast<int>(display[1]);
+  if (pixel.x < 0 || pixel.y < 0 || pixel.x >= dims[0] || pixel.y >= dims[1])
+  {
+    return { -1, -1 };
+  }
+  return pixel;
+}
+
+const unsigned char* RgbAt(vtkImageData* image, int x, int y)
+{
+  return static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+}
+} // namespace
+
+double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
+{
+  const glm::ivec2 center = PixelAt(renderer, image, world);
+  if (center.x < 0)
+  {
+    return -1.0;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
   double sum = 0.0;
   int count = 0;
-  for (int y = cy - 1; y <= cy + 1; ++y)
+  for (int y = std::max(center.y - 1, 0); y <= std::min(center.y + 1, dims[1] - 1); ++y)
   {
-    for (int x = cx - 1; x <= cx + 1; ++x)
+    for (int x = std::max(center.x - 1, 0); x <= std::min(center.x + 1, dims[0] - 1); ++x)
     {
-      if (x < 0 || y < 0 || x >= dims[0] || y >= dims[1])
-      {
-        continue;
-      }
-      const auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      const unsigned char* rgb = RgbAt(image, x, y);
       sum += 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
       ++count;
     }
   }
-  return count ? sum / count : -1.0;
+  return sum / count;
+}
+
+glm::ivec3 ColorAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
+{
+  const glm::ivec2 pixel = PixelAt(renderer, image, world);
+  if (pixel.x < 0)
+  {
+    return glm::ivec3(-1);
+  }
+  const unsigned char* rgb = RgbAt(image, pixel.x, pixel.y);
+  return { rgb[0], rgb[1], rgb[2] };
 }
 
 std::string CompareWithBaseline(vtkImageData* image, const std::string& name)

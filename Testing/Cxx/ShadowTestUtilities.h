@@ -50,6 +50,9 @@ vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window);
 /// Mean luminance (0-255) of a 3 x 3 block around the pixel where `world` is seen.
 double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
 
+/// RGB of the pixel where `world` is seen; -1 components when off the image.
+glm::ivec3 ColorAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
+
 /// Writes `image` to the test output folder as <name>.png and compares it
 /// strictly with Testing/Data/Baseline/<name>.png. Returns an empty string on a
 /// match, else what differed. With SHADOWMAPS_UPDATE_BASELINES=1 in the

@@ -100,11 +100,7 @@ TEST(ShadowDefects, UnlitActorsRender)
   EXPECT_EQ(errors.Errors(), 0) << errors.Text();
 
   // The unlit box shows its flat colour: pure green, unshaded.
-  scene.Renderer->SetWorldPoint(4.0, 1.25, 1.0, 1.0);
-  scene.Renderer->WorldToDisplay();
-  const double* d = scene.Renderer->GetDisplayPoint();
-  const auto* rgb = static_cast<unsigned char*>(
-    image->GetScalarPointer(static_cast<int>(d[0]), static_cast<int>(d[1]), 0));
+  const glm::ivec3 rgb = ColorAt(scene.Renderer, image, { 4.0, 1.25, 1.0 });
   EXPECT_LT(rgb[0], 10);
   EXPECT_GT(rgb[1], 245);
   // The lit geometry still has its shadow.
@@ -183,11 +179,7 @@ TEST(ShadowDefects, TranslucentGeometryKept)
   vtkNew<vtkWarpedShadowMapPass> pass;
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
-  scene.Renderer->SetWorldPoint(-4.0, -4.1, 1.0, 1.0);
-  scene.Renderer->WorldToDisplay();
-  const double* d = scene.Renderer->GetDisplayPoint();
-  const auto* rgb = static_cast<unsigned char*>(
-    image->GetScalarPointer(static_cast<int>(d[0]), static_cast<int>(d[1]), 0));
+  const glm::ivec3 rgb = ColorAt(scene.Renderer, image, { -4.0, -4.1, 1.0 });
   EXPECT_GT(rgb[0], rgb[1] + 40) << "the red translucent pane tints what is behind it";
   EXPECT_GT(rgb[1], 20) << "and what is behind it still shows through";
 }
