@@ -3,6 +3,7 @@
 #include "vtkOpenGLState.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace shadowmaps
@@ -35,29 +36,48 @@ void ClearGLErrors()
   {
   }
 }
+
+
+int MipmapLevels(int resolution)
+{
+  int levels = 1;
+  while ((resolution >>= 1) > 0)
+  {
+    ++levels;
+  }
+  return levels;
+}
 } // namespace
 
-bool TextureArray::Reserve(int resolution, int layers, std::string& error)
+bool TextureArray::Reserve(
+  int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error)
 {
-  if (this->Texture != 0 && this->Resolution == resolution && this->Layers >= layers)
+  mipmaps = mipmaps && format == TexelFormat::TwoFloats;
+  if (this->Texture != 0 && this->Resolution == resolution && this->Layers >= layers &&
+    this->Format == format && this->Mipmaps == mipmaps)
   {
     return true;
   }
   this->Release();
   ClearGLErrors();
   ScopedArrayBinding keep;
+  this->Format = format;
+  this->Mipmaps = mipmaps;
 
   glGenTextures(1, &this->Texture);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, resolution, resolution, layers, 0,
-    GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  if (format == TexelFormat::Depth)
+  {
+    this->AllocateDepthLayers(resolution, layers);
+  }
+  else
+  {
+    this->AllocateValueLayers(resolution, layers);
+  }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  this->LinearFiltering = 1;
+  this->LinearFiltering = -1;
+  this->ApplyFiltering(true);
 
   glGenFramebuffers(1, &this->Framebuffer);
   const GLenum code = glGetError();
@@ -73,12 +93,45 @@ bool TextureArray::Reserve(int resolution, int layers, std::string& error)
   return true;
 }
 
+void TextureArray::AllocateDepthLayers(int resolution, int layers)
+{
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, resolution, resolution, layers, 0,
+    GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+}
+
+void TextureArray::AllocateValueLayers(int resolution, int layers)
+{
+  const int levels = this->Mipmaps ? MipmapLevels(resolution) : 1;
+  for (int level = 0, size = resolution; level < levels; ++level, size = std::max(size / 2, 1))
+  {
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_RG32F, size, size, layers, 0, GL_RG, GL_FLOAT,
+      nullptr);
+  }
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+  glGenRenderbuffers(1, &this->DepthBuffer);
+  glBindRenderbuffer(GL_RENDERBUFFER, this->DepthBuffer);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, resolution, resolution);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+}
+
 bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& error)
 {
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer);
-  glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
-  glDrawBuffer(GL_NONE);
-  glReadBuffer(GL_NONE);
+  if (this->Format == TexelFormat::Depth)
+  {
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+  }
+  else
+  {
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->Texture, 0, layer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->DepthBuffer);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+  }
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
   {
@@ -96,12 +149,33 @@ void TextureArray::SetLinearFiltering(bool linear)
   {
     return;
   }
-  const GLint filter = linear ? GL_LINEAR : GL_NEAREST;
   ScopedArrayBinding keep;
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, filter);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, filter);
+  this->ApplyFiltering(linear);
+}
+
+// Expects the array bound to the active unit.
+void TextureArray::ApplyFiltering(bool linear)
+{
+  GLint minification = linear ? GL_LINEAR : GL_NEAREST;
+  if (linear && this->Mipmaps)
+  {
+    minification = GL_LINEAR_MIPMAP_LINEAR;
+  }
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, minification);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, linear ? GL_LINEAR : GL_NEAREST);
   this->LinearFiltering = static_cast<int>(linear);
+}
+
+void TextureArray::GenerateMipmaps()
+{
+  if (this->Texture == 0 || !this->Mipmaps)
+  {
+    return;
+  }
+  ScopedArrayBinding keep;
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
 }
 
 void TextureArray::BindToUnit(int unit) const
@@ -116,11 +190,16 @@ void TextureArray::Release()
   {
     glDeleteFramebuffers(1, &this->Framebuffer);
   }
+  if (this->DepthBuffer != 0)
+  {
+    glDeleteRenderbuffers(1, &this->DepthBuffer);
+  }
   if (this->Texture != 0)
   {
     glDeleteTextures(1, &this->Texture);
   }
   this->Framebuffer = 0;
+  this->DepthBuffer = 0;
   this->Texture = 0;
   this->Resolution = 0;
   this->Layers = 0;
@@ -129,7 +208,14 @@ void TextureArray::Release()
 
 std::size_t TextureArray::GetMemoryBytes() const
 {
-  return static_cast<std::size_t>(this->Resolution) * this->Resolution * this->Layers * 4;
+  const std::size_t texels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
+  if (this->Format == TexelFormat::Depth)
+  {
+    return texels * this->Layers * 4;
+  }
+  // A full mipmap chain adds a third; the depth buffer is shared by all layers.
+  const std::size_t values = texels * this->Layers * 8;
+  return (this->Mipmaps ? values + values / 3 : values) + texels * 4;
 }
 
 } // namespace shadowmaps

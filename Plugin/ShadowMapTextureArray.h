@@ -1,5 +1,6 @@
-// The GL objects behind the shadow maps: one depth texture array (one layer per
-// light view) and the framebuffer that renders into a layer. vtkTextureObject
+// The GL objects behind the shadow maps: one texture array (one layer per light
+// view) holding either depth or two float values per texel, and the framebuffer
+// that renders into a layer. vtkTextureObject
 // and vtkOpenGLFramebufferObject in VTK 9.1 cannot attach array layers, hence
 // this small owner of raw GL names. Not a VTK class: it holds no VTK state.
 #ifndef ShadowMapTextureArray_h
@@ -13,6 +14,14 @@ class vtkOpenGLState;
 namespace shadowmaps
 {
 
+/// What one texel holds: a depth (sampled with comparison), or two 32-bit
+/// floats in a colour attachment (sampled as values, filterable).
+enum class TexelFormat
+{
+  Depth,
+  TwoFloats
+};
+
 class TextureArray
 {
 public:
@@ -21,17 +30,26 @@ public:
   TextureArray(const TextureArray&) = delete;
   TextureArray& operator=(const TextureArray&) = delete;
 
-  /// Makes room for `layers` layers of resolution^2 32-bit float depth. Keeps
-  /// the current storage when it is big enough. On GL failure releases
+  /// Makes room for `layers` layers of resolution^2 texels of `format`
+  /// (TwoFloats layers share one depth buffer for the depth test and may have
+  /// mipmaps). Keeps the current storage when it fits. On GL failure releases
   /// everything, fills `error` and returns false.
-  bool Reserve(int resolution, int layers, std::string& error);
+  bool Reserve(int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error);
 
-  /// Binds the framebuffer (through the state cache) with `layer` as its depth
-  /// attachment. The caller pushes and pops the framebuffer bindings.
+  /// Binds the framebuffer (through the state cache) with `layer` attached.
+  /// The caller pushes and pops the framebuffer bindings.
   bool BindLayer(vtkOpenGLState* state, int layer, std::string& error);
 
-  /// Nearest (hard) or linear (hardware 2x2 PCF) comparison filtering.
+  /// Depth: nearest (hard) or linear (hardware 2x2 PCF) comparison filtering.
+  /// TwoFloats: nearest or (mipmapped) linear value filtering.
   void SetLinearFiltering(bool linear);
+
+  /// Rebuilds the mipmaps of a mipmapped TwoFloats array from level 0.
+  void GenerateMipmaps();
+
+  TexelFormat GetFormat() const { return this->Format; }
+  unsigned int GetTextureName() const { return this->Texture; }
+  int GetResolution() const { return this->Resolution; }
 
   /// Binds the texture to texture unit `unit`.
   void BindToUnit(int unit) const;
@@ -41,8 +59,15 @@ public:
   std::size_t GetMemoryBytes() const;
 
 private:
+  void AllocateDepthLayers(int resolution, int layers);
+  void AllocateValueLayers(int resolution, int layers);
+  void ApplyFiltering(bool linear);
+
   unsigned int Texture = 0;
   unsigned int Framebuffer = 0;
+  unsigned int DepthBuffer = 0; // TwoFloats only
+  TexelFormat Format = TexelFormat::Depth;
+  bool Mipmaps = false;
   int Resolution = 0;
   int Layers = 0;
   int LinearFiltering = -1;

@@ -2,6 +2,7 @@
 # when vtk_module_build() visits the module directory).
 set(shadowmaps_shaders
   vtkShadowMapsCasterFS
+  vtkShadowMapsDepthLookupFS
   vtkShadowMapsReceiverFS)
 set(shadowmaps_shader_sources)
 set(shadowmaps_shader_headers)

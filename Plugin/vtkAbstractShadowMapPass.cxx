@@ -21,6 +21,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapCasterPass.h"
 #include "vtkShadowMapInternals.h"
+#include "vtkShadowMapsDepthLookupFS.h"
 #include "vtkShadowMapsReceiverFS.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
@@ -29,6 +30,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <random>
 #include <sstream>
 
@@ -184,6 +186,7 @@ vtkMTimeType CasterMTime(vtkProp* prop)
 struct vtkAbstractShadowMapPass::Resources
 {
   shadowmaps::TextureArray Maps;
+  shadowmaps::MapStorage Storage;
   vtkNew<vtkShadowMapCasterPass> CasterPass;
   vtkNew<vtkOpaquePass> OpaquePass;
   vtkNew<vtkCamera> LightCamera;
@@ -454,8 +457,10 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   }
   this->NumberOfShadowMapLayers = layers;
 
+  this->GetMapStorage(r.Storage);
   std::string error;
-  if (!r.Maps.Reserve(in.Resolution, layers, error) || !this->RenderShadowMaps(renderer))
+  if (!r.Maps.Reserve(in.Resolution, layers, r.Storage.Format, r.Storage.Mipmaps, error) ||
+    !this->RenderShadowMaps(renderer))
   {
     this->ReportGLFailure(error.empty() ? r.LastGLError : error);
     return false;
@@ -491,6 +496,24 @@ void vtkAbstractShadowMapPass::FitLightViewsUniform(Internals& in, int lightInde
 }
 
 //------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::GetMapStorage(shadowmaps::MapStorage& storage) const
+{
+  storage = shadowmaps::MapStorage();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAbstractShadowMapPass::GetReceiverLookupCode() const
+{
+  return vtkShadowMapsDepthLookupFS;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::PostProcessShadowMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray&)
+{
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 {
   Internals& in = *this->Internal;
@@ -511,10 +534,20 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(static_cast<float>(this->SlopeScaledBias), static_cast<float>(this->ConstantBias));
+  const bool minimumBlending =
+    r.Storage.Format == shadowmaps::TexelFormat::TwoFloats && r.Storage.MinimumBlending;
+  if (minimumBlending)
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendEquation(GL_MIN);
+  }
 
   vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
   renderer->SetActiveCamera(r.LightCamera);
   r.CasterPass->SetCasterFaces(this->CasterFaces);
+  r.CasterPass->SetStoreCode(
+    r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string());
   this->NumberOfCasterDraws = 0;
 
   bool ok = true;
@@ -532,8 +565,37 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 
   renderer->SetActiveCamera(userCamera);
   glPolygonOffset(0.0f, 0.0f);
+  if (minimumBlending)
+  {
+    state->vtkglBlendEquation(GL_FUNC_ADD);
+  }
   state->PopFramebufferBindings();
+  if (ok)
+  {
+    r.Maps.GenerateMipmaps();
+    ok = this->PostProcessShadowMaps(renderer, r.Maps);
+    if (!ok)
+    {
+      r.LastGLError = "the shadow maps could not be post-processed";
+    }
+  }
   return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer)
+{
+  Resources& r = *this->Resource;
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  state->vtkglViewport(0, 0, this->Internal->Resolution, this->Internal->Resolution);
+  state->vtkglClearDepth(1.0);
+  GLbitfield buffers = GL_DEPTH_BUFFER_BIT;
+  if (r.Storage.Format == shadowmaps::TexelFormat::TwoFloats)
+  {
+    state->vtkglClearColor(r.Storage.ClearValues[0], r.Storage.ClearValues[1], 0.0, 0.0);
+    buffers |= GL_COLOR_BUFFER_BIT;
+  }
+  state->vtkglClear(buffers);
 }
 
 //------------------------------------------------------------------------------
@@ -542,10 +604,7 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
 {
   Internals& in = *this->Internal;
   Resources& r = *this->Resource;
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
-  state->vtkglViewport(0, 0, in.Resolution, in.Resolution);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  this->ClearLayer(renderer);
 
   // The camera's view is rebuilt from the light view's frame; its projection is
   // explicit so that VTK's tiled aspect ratio cannot distort the map.
@@ -618,7 +677,8 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
   Resources& r = *this->Resource;
   std::ostringstream key;
   key << this->Filter << ' ' << this->KernelSize << ' ' << this->PoissonSamples << ' '
-      << this->NumberOfShadowMapLayers << ';';
+      << this->NumberOfShadowMapLayers << ' ' << std::hash<std::string>()(this->GetReceiverLookupCode())
+      << ';';
   for (const ShadowLight& light : this->Internal->Lights)
   {
     key << light.ShaderIndex << ':' << light.FirstLayer << ':' << light.Cube << ' ';
@@ -732,7 +792,7 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
       << "#define VTK_SHADOW_POISSON_SAMPLES " << this->PoissonSamples << "\n"
       << "#define VTK_SHADOW_MAX_VIEWS " << std::max(this->NumberOfShadowMapLayers, 1) << "\n"
       << "#define VTK_SHADOW_MAX_LIGHTS " << this->Internal->Lights.size() << "\n"
-      << vtkShadowMapsReceiverFS;
+      << vtkShadowMapsReceiverFS << this->GetReceiverLookupCode();
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", dec.str());
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
     "  vec3 vtkShadowPositionWorld = (vtkShadowViewToWorld * vec4(vertexVC.xyz, 1.0)).xyz;\n"

@@ -20,9 +20,11 @@
  * light->GetInformation()->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
  * its ShadowAttenuation scales how dark its shadows are.
  *
- * Maps are rendered depth-only (a minimal caster fragment shader) into one
- * 32-bit float depth texture array, one layer per light view. What a light's
- * views are is the subclass's choice (ComputeLightViews).
+ * Maps are rendered with a minimal caster fragment shader into one texture
+ * array, one layer per light view. What a light's views are (ComputeLightViews)
+ * and what a texel stores (GetMapStorage, GetReceiverLookupCode: one depth by
+ * default, or two float values such as two depth layers or moments) are the
+ * subclass's choice.
  *
  * Receivers: the shadow test is injected into the fragment shaders of
  * vtkOpenGLPolyDataMapper and its subclasses, per light, scaling that light's
@@ -53,6 +55,7 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
+#include <string> // For GetReceiverLookupCode
 
 class vtkCamera;
 class vtkInformationIntegerKey;
@@ -62,6 +65,8 @@ class vtkRenderPass;
 namespace shadowmaps
 {
 struct LightView;
+struct MapStorage;
+class TextureArray;
 }
 
 #define VTK_MAX_SHADOWED_LIGHTS 8
@@ -233,6 +238,30 @@ protected:
   /** The focused uniform fit for light lightIndex (directional, spot or cube). */
   void FitLightViewsUniform(Internals& internals, int lightIndex);
 
+  /**
+   * What a texel of the maps holds and how casters write it (see
+   * shadowmaps::MapStorage). Default: one 32-bit depth, written depth-only.
+   */
+  virtual void GetMapStorage(shadowmaps::MapStorage& storage) const;
+
+  /**
+   * GLSL appended to the receivers' shadow code. It declares the sampler
+   * `vtkShadowMaps` (a sampler2DArrayShadow for depth storage, a sampler2DArray
+   * for value storage) and defines `float vtkShadowLookup(vec3 mapCoord, int
+   * layer)`: the visibility in [0, 1] of a receiver at depth mapCoord.z seen at
+   * texture coordinates mapCoord.xy of map layer `layer`. The filter settings
+   * arrive as the VTK_SHADOW_* macros and uniforms of vtkShadowMapsReceiverFS.
+   * Default: the PCF family over depth maps (vtkShadowMapsDepthLookupFS).
+   */
+  virtual std::string GetReceiverLookupCode() const;
+
+  /**
+   * Called after the casters were rendered into all layers (and mipmaps
+   * built), before receivers sample them: blur or other map filtering goes
+   * here. Returning false reports a GL failure: the frame renders unshadowed.
+   */
+  virtual bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps);
+
   vtkRenderPass* DelegatePass = nullptr;
   int Resolution = 2048;
   int CasterFaces = BOTH_FACES;
@@ -262,6 +291,7 @@ private:
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view);
+  void ClearLayer(vtkOpenGLRenderer* renderer);
   void StoreReceiverUniforms();
   void UpdateReceiverShaderKey(const vtkRenderState* s);
   void BindShadowTextures(vtkOpenGLRenderer* renderer);

@@ -39,7 +39,32 @@ bool ShapesItsOwnFragments(const std::string& fragmentShader)
   const std::string code = WithoutLineComments(fragmentShader);
   return code.find("gl_FragDepth") != std::string::npos || CountOccurrences(code, "discard") > 1;
 }
+
+// Appends the store code at the end of main(), the last function of VTK's
+// fragment shaders, reading the depth the shader wrote if it writes one.
+void AppendStoreCode(std::string& fragmentShader, const std::string& storeCode)
+{
+  const size_t end = fragmentShader.rfind('}');
+  if (end == std::string::npos)
+  {
+    return;
+  }
+  const bool writesDepth =
+    WithoutLineComments(fragmentShader).find("gl_FragDepth") != std::string::npos;
+  fragmentShader.insert(end,
+    std::string("  {\n  float vtkShadowCasterDepth = ") +
+      (writesDepth ? "gl_FragDepth" : "gl_FragCoord.z") + ";\n" + storeCode + "\n  }\n");
+}
 } // namespace
+
+void vtkShadowMapCasterPass::SetStoreCode(const std::string& code)
+{
+  if (code != this->StoreCode)
+  {
+    this->StoreCode = code;
+    this->Modified();
+  }
+}
 
 bool vtkShadowMapCasterPass::PostReplaceShaderValues(std::string&, std::string&,
   std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
@@ -47,14 +72,24 @@ bool vtkShadowMapCasterPass::PostReplaceShaderValues(std::string&, std::string&,
   if (ShapesItsOwnFragments(fragmentShader))
   {
     ++this->NumberOfOwnFragmentShaders;
+    if (!this->StoreCode.empty())
+    {
+      AppendStoreCode(fragmentShader, this->StoreCode);
+    }
     return true;
   }
   ++this->NumberOfDepthOnlyShaders;
   std::string caster = vtkShadowMapsCasterFS;
-  const char* faces = this->CasterFaces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
-    : this->CasterFaces == 1                 ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
-                                             : "";
-  vtkShaderProgram::Substitute(caster, "//VTK::ShadowMaps::Dec", faces);
+  std::string defines = this->CasterFaces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
+    : this->CasterFaces == 1                   ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
+                                               : "";
+  std::string store = "  gl_FragData[0] = vec4(1.0);";
+  if (!this->StoreCode.empty())
+  {
+    store = "  float vtkShadowCasterDepth = gl_FragCoord.z;\n" + this->StoreCode;
+  }
+  vtkShaderProgram::Substitute(caster, "//VTK::ShadowMaps::Dec", defines);
+  vtkShaderProgram::Substitute(caster, "//VTK::ShadowMaps::Impl", store);
   fragmentShader = caster;
   return true;
 }

@@ -8,12 +8,18 @@
  * fragment shader. Mappers whose fragment shader shapes its own fragments
  * (sphere and stick impostors write gl_FragDepth, point Gaussians discard)
  * keep theirs so their silhouettes stay right.
+ *
+ * When the maps store values rather than depth (StoreCode set), the fragment
+ * shader writes them: StoreCode is GLSL that reads `float vtkShadowCasterDepth`
+ * (the fragment's window depth) and writes gl_FragData[0].
  */
 #ifndef vtkShadowMapCasterPass_h
 #define vtkShadowMapCasterPass_h
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingShadowMapsModule.h" // For export macro
+
+#include <string> // For StoreCode
 
 class VTKRENDERINGSHADOWMAPS_NO_EXPORT vtkShadowMapCasterPass : public vtkOpenGLRenderPass
 {
@@ -25,6 +31,12 @@ public:
   /** vtkAbstractShadowMapPass::CasterFacesType. */
   vtkSetClampMacro(CasterFaces, int, 0, 2);
   vtkGetMacro(CasterFaces, int);
+
+  ///@{
+  /** GLSL storing the texel's values; empty: depth-only casters. */
+  void SetStoreCode(const std::string& code);
+  const std::string& GetStoreCode() const { return this->StoreCode; }
+  ///@}
 
   ///@{
   /** Add this pass to (remove it from) the render passes of the state's props. */
@@ -50,6 +62,7 @@ protected:
   ~vtkShadowMapCasterPass() override = default;
 
   int CasterFaces = 2;
+  std::string StoreCode;
   int NumberOfDepthOnlyShaders = 0;
   int NumberOfOwnFragmentShaders = 0;
 

@@ -6,6 +6,7 @@
 #include "ShadowMapTextureArray.h"
 #include "vtkAbstractShadowMapPass.h"
 
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -38,6 +39,24 @@ struct ShadowLight
   float Attenuation = 1.0f;
   int FirstLayer = 0;
   std::vector<LightView> Views;
+};
+
+/// What a texel of a pass's maps holds and how the casters write it.
+struct MapStorage
+{
+  TexelFormat Format = TexelFormat::Depth;
+  /// TwoFloats: GLSL statements that read `float vtkShadowCasterDepth` (the
+  /// fragment's window depth; gl_FrontFacing is available too) and write
+  /// gl_FragData[0].xy. Ignored for depth storage.
+  std::string StoreCode;
+  /// TwoFloats: each channel keeps the minimum over all fragments of a texel
+  /// (blending with GL_MIN, no depth test), e.g. nearest front and back faces.
+  /// Otherwise the nearest fragment's values are kept (depth test).
+  bool MinimumBlending = false;
+  /// TwoFloats: values of a texel no caster covers.
+  float ClearValues[2] = { 1.0f, 1.0f };
+  /// TwoFloats: build a mipmap chain after rendering (filterable storage).
+  bool Mipmaps = false;
 };
 
 /// A prop that renders into the maps, with its world bounds.

@@ -1,6 +1,6 @@
 //VTK::System::Dec
-// Depth-only shadow caster. Depth comes from the rasterizer (with the pass's
-// polygon offset); no colour is stored. Face selection is done here rather than
+// Shadow caster. Depth comes from the rasterizer (with the pass's polygon
+// offset); maps that store values get them from the pass's store code. Face selection is done here rather than
 // with GL_CULL_FACE because vtkProperty culling settings override that state.
 //VTK::ShadowMaps::Dec
 //VTK::Output::Dec
@@ -18,5 +18,5 @@ void main()
     discard;
   }
 #endif
-  gl_FragData[0] = vec4(1.0);
+//VTK::ShadowMaps::Impl
 }
