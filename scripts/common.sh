@@ -10,6 +10,7 @@ PACKAGES=(
   libglm-dev
   libopenimageio-dev openimageio-tools python3-imath
   libgtest-dev
+  libembree-dev assimp-testmodels
   xvfb xauth libgl1-mesa-dri
 )
 
