@@ -167,6 +167,18 @@ void TextureArray::ApplyFiltering(bool linear)
   this->LinearFiltering = static_cast<int>(linear);
 }
 
+void TextureArray::SetDepthComparison(bool compare)
+{
+  if (this->Texture == 0 || this->Format != TexelFormat::Depth)
+  {
+    return;
+  }
+  ScopedArrayBinding keep;
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glTexParameteri(
+    GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+}
+
 void TextureArray::GenerateMipmaps()
 {
   if (this->Texture == 0 || !this->Mipmaps)

@@ -44,6 +44,9 @@ public:
   /// TwoFloats: nearest or (mipmapped) linear value filtering.
   void SetLinearFiltering(bool linear);
 
+  /// Depth: whether sampling compares (shadow samplers) or returns the depth.
+  void SetDepthComparison(bool compare);
+
   /// Rebuilds the mipmaps of a mipmapped TwoFloats array from level 0.
   void GenerateMipmaps();
 

@@ -3,7 +3,8 @@
 set(shadowmaps_shaders
   vtkShadowMapsCasterFS
   vtkShadowMapsDepthLookupFS
-  vtkShadowMapsReceiverFS)
+  vtkShadowMapsReceiverFS
+  vtkShadowMapsViewFS)
 set(shadowmaps_shader_sources)
 set(shadowmaps_shader_headers)
 foreach (shader IN LISTS shadowmaps_shaders)

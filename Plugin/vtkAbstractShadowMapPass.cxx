@@ -23,6 +23,9 @@
 #include "vtkShadowMapInternals.h"
 #include "vtkShadowMapsDepthLookupFS.h"
 #include "vtkShadowMapsReceiverFS.h"
+#include "vtkShadowMapsViewFS.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkTextureUnitManager.h"
@@ -193,6 +196,7 @@ struct vtkAbstractShadowMapPass::Resources
   vtkNew<vtkMatrix4x4> LightProjection;
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
   vtkSmartPointer<vtkTextureObject> Noise;
+  std::unique_ptr<vtkOpenGLQuadHelper> MapViewQuad;
 
   // What the maps were last rendered for; empty when they must be re-rendered.
   std::vector<vtkMTimeType> Signature;
@@ -289,6 +293,10 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
   if (r.Active)
   {
+    if (this->AnalysisView == SHADOW_MAP)
+    {
+      this->RenderShadowMapView(renderer);
+    }
     this->UnbindShadowTextures(renderer);
     this->PostRender(s);
   }
@@ -678,7 +686,7 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
   std::ostringstream key;
   key << this->Filter << ' ' << this->KernelSize << ' ' << this->PoissonSamples << ' '
       << this->NumberOfShadowMapLayers << ' ' << std::hash<std::string>()(this->GetReceiverLookupCode())
-      << ';';
+      << ' ' << this->AnalysisView << ' ' << this->AnalysisLight << ';';
   for (const ShadowLight& light : this->Internal->Lights)
   {
     key << light.ShaderIndex << ':' << light.FirstLayer << ':' << light.Cube << ' ';
@@ -786,7 +794,21 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl", "");
     return true;
   }
+  const std::string analysis = this->AnalysisCode();
+  if (!analysis.empty())
+  {
+    // After everything that sets the colour: main() is the last function.
+    const size_t end = fragmentShader.rfind('}');
+    if (end != std::string::npos)
+    {
+      fragmentShader.insert(end, analysis);
+    }
+  }
   std::ostringstream dec;
+  if (!analysis.empty())
+  {
+    dec << "#define VTK_SHADOW_ANALYSIS " << this->AnalysisView << "\n";
+  }
   dec << "#define VTK_SHADOW_FILTER " << this->Filter << "\n"
       << "#define VTK_SHADOW_KERNEL " << this->KernelSize << "\n"
       << "#define VTK_SHADOW_POISSON_SAMPLES " << this->PoissonSamples << "\n"
@@ -799,6 +821,61 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
     "  vec3 vtkShadowNormalWorld = normalize(mat3(vtkShadowViewToWorld) * normalVCVSOutput);\n" +
       impl.str());
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAbstractShadowMapPass::AnalysisCode() const
+{
+  const auto& lights = this->Internal->Lights;
+  if (this->AnalysisView == NO_ANALYSIS || this->AnalysisView == SHADOW_MAP ||
+    this->AnalysisLight >= static_cast<int>(lights.size()))
+  {
+    return std::string();
+  }
+  const ShadowLight& light = lights[this->AnalysisLight];
+  std::ostringstream code;
+  code << "  gl_FragData[0] = vtkShadowAnalysisColor(vtkShadowPositionWorld, vtkShadowNormalWorld, "
+       << this->AnalysisLight << ", " << light.FirstLayer << ", " << (light.Cube ? "true" : "false")
+       << ");\n";
+  return code.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
+{
+  Resources& r = *this->Resource;
+  const auto& lights = this->Internal->Lights;
+  if (this->AnalysisLight >= static_cast<int>(lights.size()))
+  {
+    return;
+  }
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  if (!r.MapViewQuad)
+  {
+    r.MapViewQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, vtkShadowMapsViewFS, ""));
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(r.MapViewQuad->Program);
+  }
+  vtkShaderProgram* program = r.MapViewQuad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    this->ReportGLFailure("the shadow-map view shader did not compile");
+    return;
+  }
+  const ShadowLight& light = lights[this->AnalysisLight];
+  program->SetUniformi("vtkShadowMaps", r.MapUnit);
+  program->SetUniformi("vtkShadowFirstView", light.FirstLayer);
+  program->SetUniformi("vtkShadowViewCount", static_cast<int>(light.Views.size()));
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  r.Maps.SetDepthComparison(false);
+  r.MapViewQuad->Render();
+  r.Maps.SetDepthComparison(true);
 }
 
 //------------------------------------------------------------------------------
@@ -845,6 +922,11 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
     r.Noise->ReleaseGraphicsResources(window);
     r.Noise = nullptr;
   }
+  if (r.MapViewQuad)
+  {
+    r.MapViewQuad->ReleaseGraphicsResources(window);
+    r.MapViewQuad.reset();
+  }
   r.CasterPass->ReleaseGraphicsResources(window);
   r.OpaquePass->ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
@@ -868,6 +950,8 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConstantBias: " << this->ConstantBias << "\n";
   os << indent << "SlopeScaledBias: " << this->SlopeScaledBias << "\n";
   os << indent << "NormalOffset: " << this->NormalOffset << "\n";
+  os << indent << "AnalysisView: " << this->AnalysisView << "\n";
+  os << indent << "AnalysisLight: " << this->AnalysisLight << "\n";
   os << indent << "NumberOfShadowedLights: " << this->NumberOfShadowedLights << "\n";
   os << indent << "NumberOfShadowMapLayers: " << this->NumberOfShadowMapLayers << "\n";
   os << indent << "NumberOfShadowMapUpdates: " << this->NumberOfShadowMapUpdates << "\n";

@@ -187,6 +187,34 @@ public:
   vtkGetMacro(NormalOffset, double);
   ///@}
 
+  enum AnalysisViewType
+  {
+    NO_ANALYSIS = 0,
+    SHADOW_FACTOR = 1,
+    TEXEL_DENSITY = 2,
+    SHADOW_MAP = 3,
+    PARTITION = 4
+  };
+
+  ///@{
+  /**
+   * Analysis view of light AnalysisLight (an index among the shadowed lights,
+   * in the renderer's order): receivers show instead of their shading
+   * - SHADOW_FACTOR: the light's visibility, white lit, black shadowed;
+   * - TEXEL_DENSITY: a heat map of how many screen pixels one map texel
+   *   covers (log scale): blue dense, green 1.5 pixels, orange to red
+   *   undersampled (red channel 255 exactly when over 1.5 pixels);
+   * - PARTITION: a colour per map view (cascade, cube face) that shaded the
+   *   pixel, darker in shadow.
+   * SHADOW_MAP replaces the frame by the light's maps, tiled, depth as grey.
+   * Clamped; default NO_ANALYSIS.
+   */
+  vtkSetClampMacro(AnalysisView, int, NO_ANALYSIS, PARTITION);
+  vtkGetMacro(AnalysisView, int);
+  vtkSetClampMacro(AnalysisLight, int, 0, VTK_MAX_SHADOWED_LIGHTS - 1);
+  vtkGetMacro(AnalysisLight, int);
+  ///@}
+
   /** Number of lights that received shadow maps in the last frame. */
   vtkGetMacro(NumberOfShadowedLights, int);
 
@@ -272,6 +300,8 @@ protected:
   double ConstantBias = 4.0;
   double SlopeScaledBias = 2.0;
   double NormalOffset = 1.0;
+  int AnalysisView = NO_ANALYSIS;
+  int AnalysisLight = 0;
 
   int NumberOfShadowedLights = 0;
   int NumberOfShadowMapLayers = 0;
@@ -297,6 +327,8 @@ private:
   void BindShadowTextures(vtkOpenGLRenderer* renderer);
   void UnbindShadowTextures(vtkOpenGLRenderer* renderer);
   void ReportGLFailure(const std::string& error);
+  void RenderShadowMapView(vtkOpenGLRenderer* renderer);
+  std::string AnalysisCode() const;
 
   vtkAbstractShadowMapPass(const vtkAbstractShadowMapPass&) = delete;
   void operator=(const vtkAbstractShadowMapPass&) = delete;

@@ -38,27 +38,41 @@ int vtkShadowCubeFace(vec3 d)
   return d.z >= 0.0 ? 4 : 5;
 }
 
-// Fraction of light `light` reaching the receiver, in [0, 1]. The light's views
-// start at layer firstView; a cube light has six of them.
-float vtkShadowVisibility(vec3 positionWorld, vec3 normalWorld, int light, int firstView, bool cube)
+// The view of light `light` that covers the receiver. The light's views start
+// at layer firstView; a cube light has six of them.
+int vtkShadowSelectView(vec3 positionWorld, int light, int firstView, bool cube)
 {
   vec3 fromLight = positionWorld - vtkShadowLightPosition[light];
-  int view = cube ? firstView + vtkShadowCubeFace(fromLight) : firstView;
+  return cube ? firstView + vtkShadowCubeFace(fromLight) : firstView;
+}
+
+// Clip coordinates of the receiver in map `view`, moved along its normal by the
+// world-space size of a texel there (normal offset, Kozlov, GPU Gems 14).
+vec4 vtkShadowMapClip(vec3 positionWorld, vec3 normalWorld, int light, int view)
+{
   vec2 texelSize = vtkShadowTexelSize[view];
-  float texel = texelSize.x + texelSize.y * length(fromLight);
-  // Normal offset scaled by the world-space texel size (Kozlov, GPU Gems 14).
+  float texel = texelSize.x + texelSize.y * length(positionWorld - vtkShadowLightPosition[light]);
   vec3 biased = positionWorld + normalWorld * (vtkShadowNormalOffset * texel);
-  vec4 clip = vtkShadowWorldToMap[view] * vec4(biased, 1.0);
-  if (clip.w <= 0.0)
-  {
-    return 1.0;
-  }
+  return vtkShadowWorldToMap[view] * vec4(biased, 1.0);
+}
+
+bool vtkShadowInsideMap(vec4 clip)
+{
   vec3 mapCoord = clip.xyz / clip.w;
-  if (any(lessThan(mapCoord, vec3(0.0))) || any(greaterThan(mapCoord, vec3(1.0))))
+  return clip.w > 0.0 && all(greaterThanEqual(mapCoord, vec3(0.0))) &&
+    all(lessThanEqual(mapCoord, vec3(1.0)));
+}
+
+// Fraction of light `light` reaching the receiver, in [0, 1]; 1 outside the maps.
+float vtkShadowVisibility(vec3 positionWorld, vec3 normalWorld, int light, int firstView, bool cube)
+{
+  int view = vtkShadowSelectView(positionWorld, light, firstView, cube);
+  vec4 clip = vtkShadowMapClip(positionWorld, normalWorld, light, view);
+  if (!vtkShadowInsideMap(clip))
   {
     return 1.0;
   }
-  return vtkShadowLookup(mapCoord, view);
+  return vtkShadowLookup(clip.xyz / clip.w, view);
 }
 
 // Factor that scales the light's diffuse and specular terms.
@@ -67,3 +81,60 @@ float vtkShadowFactor(vec3 positionWorld, vec3 normalWorld, int light, int first
   float visibility = vtkShadowVisibility(positionWorld, normalWorld, light, firstView, cube);
   return 1.0 - vtkShadowAttenuation[light] * (1.0 - visibility);
 }
+
+#ifdef VTK_SHADOW_ANALYSIS
+// Analysis views (vtkAbstractShadowMapPass::AnalysisView) replace the colour of
+// the receivers: 1 the analysed light's visibility as grey; 2 the texel
+// density as a heat map; 4 the map (partition) each pixel was shaded from.
+
+// Screen pixels covered by one map texel, along one side: 1 / sqrt(|det J|)
+// with J the derivative of texel coordinates by window pixels.
+float vtkShadowTexelFootprint(vec4 clip)
+{
+  vec2 texel = clip.xy / clip.w * vtkShadowMapResolution;
+  vec2 dx = dFdx(texel);
+  vec2 dy = dFdy(texel);
+  float texelsPerPixelArea = abs(dx.x * dy.y - dx.y * dy.x);
+  return inversesqrt(max(texelsPerPixelArea, 1e-12));
+}
+
+// Not undersampled (footprint <= 1.5 pixels): blue (dense) to green (1.5), red
+// channel at most 0.5. Undersampled: full red, the green fading from 0.6 as the
+// footprint grows to 64 pixels; the benchmark counts red = 1 as undersampled.
+vec3 vtkShadowDensityColor(float footprint)
+{
+  float octaves = log2(footprint);
+  float limit = log2(1.5);
+  if (octaves <= limit)
+  {
+    float t = clamp((octaves + 4.0) / (limit + 4.0), 0.0, 1.0);
+    return mix(vec3(0.1, 0.2, 1.0), vec3(0.4, 0.9, 0.2), t);
+  }
+  float t = clamp((octaves - limit) / (6.0 - limit), 0.0, 1.0);
+  return vec3(1.0, 0.6 * (1.0 - t), 0.0);
+}
+
+vec3 vtkShadowPartitionColor(int index)
+{
+  const vec3 palette[8] = vec3[8](vec3(0.9, 0.2, 0.2), vec3(0.2, 0.8, 0.2), vec3(0.2, 0.4, 1.0),
+    vec3(0.95, 0.85, 0.2), vec3(0.8, 0.3, 0.9), vec3(0.2, 0.85, 0.85), vec3(1.0, 0.55, 0.1),
+    vec3(0.6, 0.6, 0.6));
+  return palette[index % 8];
+}
+
+vec4 vtkShadowAnalysisColor(vec3 positionWorld, vec3 normalWorld, int light, int firstView, bool cube)
+{
+  int view = vtkShadowSelectView(positionWorld, light, firstView, cube);
+  vec4 clip = vtkShadowMapClip(positionWorld, normalWorld, light, view);
+  float footprint = vtkShadowTexelFootprint(clip);
+  float visibility = vtkShadowVisibility(positionWorld, normalWorld, light, firstView, cube);
+#if VTK_SHADOW_ANALYSIS == 1
+  return vec4(vec3(visibility), 1.0);
+#elif VTK_SHADOW_ANALYSIS == 2
+  return vec4(vtkShadowInsideMap(clip) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
+#else
+  vec3 color = vtkShadowInsideMap(clip) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
+  return vec4(color * (0.5 + 0.5 * visibility), 1.0);
+#endif
+}
+#endif
