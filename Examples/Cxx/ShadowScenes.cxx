@@ -6,17 +6,24 @@
 #include <vtkAlgorithm.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCamera.h>
+#include <vtkColorTransferFunction.h>
 #include <vtkContourFilter.h>
+#include <vtkCutter.h>
 #include <vtkCylinderSource.h>
+#include <vtkDataObject.h>
 #include <vtkDataObjectTreeIterator.h>
+#include <vtkFloatArray.h>
 #include <vtkGLTFReader.h>
+#include <vtkGradientFilter.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
+#include <vtkPlane.h>
 #include <vtkPlaneSource.h>
+#include <vtkPoints.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -28,15 +35,19 @@
 #include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkSphereSource.h>
+#include <vtkStreamTracer.h>
+#include <vtkTubeFilter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <vector>
 
 #if !defined(_WIN32)
 #include <cerrno>
@@ -63,6 +74,7 @@ constexpr Color IsosurfaceColor{ 0.86, 0.38, 0.24 };
 constexpr Color SphereColor{ 0.30, 0.50, 0.85 };
 constexpr Color ModelColor{ 0.75, 0.72, 0.65 };
 constexpr Color BackgroundColor{ 0.62, 0.72, 0.85 };
+constexpr Color StreamTubeColor{ 0.92, 0.92, 0.88 };
 
 void ApplyMaterial(vtkActor* actor, const Color& color, double specular)
 {
@@ -603,6 +615,414 @@ SceneSphere VisibleSceneSphere(vtkRenderer* renderer)
   return sphere;
 }
 
+// --- benchmark scenes: camera --------------------------------------------------
+
+// The camera path (SetCameraPathFrame): forward by this fraction of the
+// initial focal distance, turning left by this angle, over the whole path.
+constexpr double CameraPathDollyFraction = 0.2;
+constexpr double CameraPathYawDeg = 6.0;
+
+/**
+ * Widens a camera's clipping range, as set by ResetCameraClippingRange, so
+ * that what it holds from the initial camera stays in it along the whole
+ * camera path, which brings the camera closer and turns it.
+ */
+void HoldClippingRangeAlongCameraPath(vtkCamera* camera)
+{
+  double range[2];
+  camera->GetClippingRange(range);
+  const double dolly = CameraPathDollyFraction * camera->GetDistance();
+  const double nearPlane = std::max(range[0] - 1.5 * dolly, 0.01 * range[1]);
+  camera->SetClippingRange(std::min(nearPlane, range[0]), range[1] + dolly);
+}
+
+/** Rotates a vector about the +z axis. */
+void RotateAboutZ(double vector[3], double angleRad)
+{
+  const double c = std::cos(angleRad);
+  const double s = std::sin(angleRad);
+  const double x = vector[0];
+  vector[0] = c * x - s * vector[1];
+  vector[1] = s * x + c * vector[1];
+}
+
+// --- outdoor scene ---------------------------------------------------------------
+
+constexpr double OutdoorHalfSide = 200.0; // the ground is 400 x 400
+constexpr double PoleSpacing = 4.0;
+constexpr double PoleJitter = 0.8; // at most, along x and along y
+constexpr double PoleRadius = 0.12;
+constexpr double PoleMinHeight = 3.0;
+constexpr double PoleMaxHeight = 5.0;
+constexpr int PoleSides = 8;
+// The pole columns next to x = 0 stand at x = -2 and x = 2 before jitter,
+// which leaves |x| < 1.08 free: the camera stands in that aisle, looks down
+// it along +y, and the camera path moves it along it.
+constexpr double OutdoorCameraPosition[3] = { 0.0, -170.0, 2.0 };
+constexpr double OutdoorFocalDistance = 20.0;
+constexpr double OutdoorViewAngleDeg = 30.0;
+constexpr double OutdoorNearPlane = 0.2;
+constexpr double OutdoorFarPlane = 300.0;
+
+struct Ball
+{
+  double center[3];
+  double radius;
+};
+
+/**
+ * Near the camera: one resting on the ground, one floating, one resting in
+ * the aisle 30 units ahead (past the camera path's end); then three far ones.
+ */
+const std::vector<Ball>& OutdoorBalls()
+{
+  static const std::vector<Ball> balls = {
+    { { 3.0, -160.0, 0.9 }, 0.9 },
+    { { -2.6, -152.0, 2.3 }, 0.7 },
+    { { 0.0, -140.0, 1.2 }, 1.2 },
+    { { 12.0, -90.0, 4.0 }, 4.0 },
+    { { -25.0, -20.0, 9.0 }, 6.0 },
+    { { 40.0, 60.0, 8.0 }, 8.0 },
+  };
+  return balls;
+}
+
+/** Deterministic value in [0, 1) for a grid cell and a channel (MurmurHash3's finaliser). */
+double CellNoise(int i, int j, int channel)
+{
+  std::uint32_t h = static_cast<std::uint32_t>(i) * 0x9E3779B1u;
+  h ^= static_cast<std::uint32_t>(j) * 0x85EBCA77u;
+  h ^= static_cast<std::uint32_t>(channel) * 0xC2B2AE3Du;
+  h ^= h >> 16;
+  h *= 0x85EBCA6Bu;
+  h ^= h >> 13;
+  h *= 0xC2B2AE35u;
+  h ^= h >> 16;
+  return h / 4294967296.0;
+}
+
+struct Pole
+{
+  double x, y, height;
+};
+
+bool TouchesBall(double x, double y, const std::vector<Ball>& balls)
+{
+  constexpr double clearance = 0.3;
+  return std::any_of(balls.begin(), balls.end(), [&](const Ball& ball) {
+    return std::hypot(x - ball.center[0], y - ball.center[1]) <
+      ball.radius + PoleRadius + clearance;
+  });
+}
+
+/** A jittered grid over the whole ground, less the poles that would touch a ball. */
+std::vector<Pole> PlacePoles(const std::vector<Ball>& balls)
+{
+  const int perSide = static_cast<int>(2.0 * OutdoorHalfSide / PoleSpacing);
+  const double first = -OutdoorHalfSide + 0.5 * PoleSpacing;
+  std::vector<Pole> poles;
+  poles.reserve(static_cast<std::size_t>(perSide) * perSide);
+  for (int j = 0; j < perSide; ++j)
+  {
+    for (int i = 0; i < perSide; ++i)
+    {
+      const double x = first + i * PoleSpacing + PoleJitter * (2.0 * CellNoise(i, j, 0) - 1.0);
+      const double y = first + j * PoleSpacing + PoleJitter * (2.0 * CellNoise(i, j, 1) - 1.0);
+      const double height =
+        PoleMinHeight + (PoleMaxHeight - PoleMinHeight) * CellNoise(i, j, 2);
+      if (!TouchesBall(x, y, balls))
+      {
+        poles.push_back({ x, y, height });
+      }
+    }
+  }
+  return poles;
+}
+
+/**
+ * All poles in one polydata: per pole, the sides of an upright prism with
+ * radial normals and a top cap (no bottom: it stands on the ground), as
+ * counter-clockwise triangles, 3 * PoleSides - 2 of them.
+ */
+vtkSmartPointer<vtkPolyData> MakePoles(const std::vector<Pole>& poles)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  vtkNew<vtkCellArray> triangles;
+  for (const Pole& pole : poles)
+  {
+    // Per side k: bottom, top, top-cap points at ids first + 3k, +1, +2.
+    const vtkIdType first = points->GetNumberOfPoints();
+    for (int k = 0; k < PoleSides; ++k)
+    {
+      const double angle = 2.0 * vtkMath::Pi() * k / PoleSides;
+      const double c = std::cos(angle);
+      const double s = std::sin(angle);
+      const double x = pole.x + PoleRadius * c;
+      const double y = pole.y + PoleRadius * s;
+      points->InsertNextPoint(x, y, 0.0);
+      points->InsertNextPoint(x, y, pole.height);
+      points->InsertNextPoint(x, y, pole.height);
+      normals->InsertNextTuple3(c, s, 0.0);
+      normals->InsertNextTuple3(c, s, 0.0);
+      normals->InsertNextTuple3(0.0, 0.0, 1.0);
+    }
+    for (int k = 0; k < PoleSides; ++k)
+    {
+      const vtkIdType a = first + 3 * k;
+      const vtkIdType b = first + 3 * ((k + 1) % PoleSides);
+      triangles->InsertNextCell({ a, b, b + 1 });
+      triangles->InsertNextCell({ a, b + 1, a + 1 });
+    }
+    for (int k = 1; k + 1 < PoleSides; ++k)
+    {
+      triangles->InsertNextCell({ first + 2, first + 3 * k + 2, first + 3 * (k + 1) + 2 });
+    }
+  }
+  vtkNew<vtkPolyData> polesData;
+  polesData->SetPoints(points);
+  polesData->SetPolys(triangles);
+  polesData->GetPointData()->SetNormals(normals);
+  return polesData;
+}
+
+vtkSmartPointer<vtkPolyData> MakeBalls(const std::vector<Ball>& balls)
+{
+  vtkNew<vtkAppendPolyData> append;
+  for (const Ball& ball : balls)
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetCenter(ball.center[0], ball.center[1], ball.center[2]);
+    sphere->SetRadius(ball.radius);
+    sphere->SetThetaResolution(48);
+    sphere->SetPhiResolution(24);
+    sphere->Update();
+    append->AddInputData(sphere->GetOutput());
+  }
+  append->Update();
+  return append->GetOutput();
+}
+
+// --- ParaView scene ----------------------------------------------------------------
+
+// vtkRTAnalyticSource's default box is [-10, 10]^3, its scalars span [37.4, 276.8].
+constexpr double WaveletScalarRange[2] = { 37.35, 276.83 };
+constexpr double WaveletIsoValue = 215.0; // a two-lobed blob around the maximum
+constexpr double WaveletSliceY = 4.0;     // vertical slice behind the blob's centre
+constexpr double StreamSeedRadius = 9.0;  // seeds on a sphere inside the box
+constexpr double StreamTubeRadius = 0.2;
+constexpr double ParaViewGroundZ = -15.0;        // 5 units below the box
+constexpr double ParaViewGroundHalfSide = 200.0; // fills the view up to its top edge
+constexpr double ParaViewFocalPoint[3] = { 0.0, 0.0, -3.0 };
+constexpr double ParaViewCameraDistance = 60.0;
+constexpr double ParaViewCameraAzimuthDeg = -56.0;
+constexpr double ParaViewCameraElevationDeg = 32.0;
+
+vtkSmartPointer<vtkPolyData> WaveletIsosurface(vtkAlgorithmOutput* wavelet)
+{
+  vtkNew<vtkContourFilter> contour; // with normals, from the image gradient
+  contour->SetInputConnection(wavelet);
+  contour->SetValue(0, WaveletIsoValue);
+  contour->Update();
+  return contour->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> WaveletSlice(vtkAlgorithmOutput* wavelet)
+{
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(0.0, WaveletSliceY, 0.0);
+  plane->SetNormal(0.0, 1.0, 0.0);
+  vtkNew<vtkCutter> cutter; // keeps the interpolated RTData scalars
+  cutter->SetInputConnection(wavelet);
+  cutter->SetCutFunction(plane);
+  cutter->Update();
+  return cutter->GetOutput();
+}
+
+/**
+ * Tubes along streamlines of the wavelet's gradient (it has no vectors of its
+ * own), seeded at the points of a coarse sphere and traced both ways: they
+ * run in towards the maximum and out to the box's faces.
+ */
+vtkSmartPointer<vtkPolyData> GradientStreamTubes(vtkAlgorithmOutput* wavelet)
+{
+  vtkNew<vtkGradientFilter> gradient;
+  gradient->SetInputConnection(wavelet);
+  gradient->SetInputScalars(vtkDataObject::FIELD_ASSOCIATION_POINTS, "RTData");
+  gradient->SetResultArrayName("Gradient");
+
+  vtkNew<vtkSphereSource> seeds; // 34 points
+  seeds->SetRadius(StreamSeedRadius);
+  seeds->SetThetaResolution(8);
+  seeds->SetPhiResolution(6);
+
+  vtkNew<vtkStreamTracer> tracer;
+  tracer->SetInputConnection(gradient->GetOutputPort());
+  tracer->SetSourceConnection(seeds->GetOutputPort());
+  tracer->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Gradient");
+  tracer->SetIntegratorTypeToRungeKutta45();
+  tracer->SetIntegrationDirectionToBoth();
+  tracer->SetMaximumPropagation(60.0);
+  tracer->SetMaximumNumberOfSteps(400);
+  tracer->SetTerminalSpeed(1.0); // stop at the maximum instead of circling it
+
+  vtkNew<vtkTubeFilter> tubes;
+  tubes->SetInputConnection(tracer->GetOutputPort());
+  tubes->SetRadius(StreamTubeRadius);
+  tubes->SetNumberOfSides(8);
+  tubes->CappingOn();
+  tubes->Update();
+  return tubes->GetOutput();
+}
+
+/** Colours by the point scalars with ParaView's "Cool to Warm" map. */
+void AddColorMappedActor(vtkRenderer* renderer, vtkPolyData* data, const double range[2])
+{
+  vtkNew<vtkColorTransferFunction> coolToWarm;
+  coolToWarm->SetColorSpaceToDiverging();
+  coolToWarm->AddRGBPoint(range[0], 0.230, 0.299, 0.754);
+  coolToWarm->AddRGBPoint(range[1], 0.706, 0.016, 0.150);
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  mapper->SetLookupTable(coolToWarm);
+  mapper->SetScalarRange(range[0], range[1]);
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  ApplyMaterial(actor, Color{ 1.0, 1.0, 1.0 }, 0.1); // the scalars give the colour
+  renderer->AddActor(actor);
+}
+
+// --- light set-ups -------------------------------------------------------------------
+
+/** The active camera seen from above. */
+struct ViewFrame
+{
+  double focalPoint[3];
+  double forward[3]; // the view direction projected onto the ground, unit length
+  double left[3];    // forward turned 90 degrees counter-clockwise about +z
+  double distance;   // from the camera to its focal point
+};
+
+ViewFrame ViewFrameOf(vtkCamera* camera)
+{
+  ViewFrame view;
+  camera->GetFocalPoint(view.focalPoint);
+  view.distance = camera->GetDistance();
+  double direction[3];
+  camera->GetDirectionOfProjection(direction);
+  if (std::hypot(direction[0], direction[1]) < 1e-6)
+  {
+    camera->GetViewUp(direction); // looking straight down: "forward" is up the screen
+  }
+  double horizontal = std::hypot(direction[0], direction[1]);
+  if (horizontal < 1e-6)
+  {
+    direction[0] = 0.0;
+    direction[1] = 1.0;
+    horizontal = 1.0;
+  }
+  view.forward[0] = direction[0] / horizontal;
+  view.forward[1] = direction[1] / horizontal;
+  view.forward[2] = 0.0;
+  view.left[0] = -view.forward[1];
+  view.left[1] = view.forward[0];
+  view.left[2] = 0.0;
+  return view;
+}
+
+/**
+ * The point `ahead`, `left` and `up` view distances from the focal point,
+ * along the view frame's forward, left and +z.
+ */
+void PointFromFocus(const ViewFrame& view, double ahead, double left, double up, double point[3])
+{
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    point[axis] = view.focalPoint[axis] +
+      view.distance * (ahead * view.forward[axis] + left * view.left[axis]);
+  }
+  point[2] += view.distance * up;
+}
+
+/** A sun with its azimuth counter-clockwise from the view's forward direction. */
+struct SunSetup
+{
+  const char* name;
+  double azimuthDeg;
+  double elevationDeg;
+};
+
+constexpr double SunElevationDeg = 35.0;
+constexpr double OverheadTiltDeg = 4.0;
+// Exactly behind, the shadows hide behind their casters when the camera looks
+// down about as steeply as the sun shines (the model and ParaView scenes).
+constexpr double BehindSideDeg = 25.0;
+constexpr SunSetup SunSetups[] = {
+  { "overhead", 135.0, 90.0 - OverheadTiltDeg },
+  { "perpendicular", -90.0, SunElevationDeg },
+  { "behind", 180.0 - BehindSideDeg, SunElevationDeg },
+  { "facing", 0.0, SunElevationDeg },
+};
+constexpr double SpotConeAngleDeg = 45.0; // vtkLight's cone angle is the half-angle
+
+/** A white directional scene light shining from `position` towards `focalPoint`. */
+vtkSmartPointer<vtkLight> MakeSceneLight(const double position[3], const double focalPoint[3])
+{
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetColor(1.0, 1.0, 1.0);
+  light->SetIntensity(1.0);
+  light->SetPositional(false);
+  light->SetPosition(position[0], position[1], position[2]);
+  light->SetFocalPoint(focalPoint[0], focalPoint[1], focalPoint[2]);
+  return light;
+}
+
+/** A spot light, or a point light for a cone angle of 180 degrees. */
+vtkSmartPointer<vtkLight> MakePositionalLight(
+  const double position[3], const double focalPoint[3], double coneAngleDeg)
+{
+  vtkSmartPointer<vtkLight> light = MakeSceneLight(position, focalPoint);
+  light->SetPositional(true);
+  light->SetConeAngle(coneAngleDeg);
+  return light;
+}
+
+vtkSmartPointer<vtkLight> MakeSun(const ViewFrame& view, const SunSetup& sun)
+{
+  const double azimuth = vtkMath::RadiansFromDegrees(sun.azimuthDeg);
+  const double elevation = vtkMath::RadiansFromDegrees(sun.elevationDeg);
+  const double ahead = std::cos(elevation) * std::cos(azimuth);
+  const double left = std::cos(elevation) * std::sin(azimuth);
+  double position[3]; // only the direction to the focal point matters
+  PointFromFocus(view, ahead, left, std::sin(elevation), position);
+  return MakeSceneLight(position, view.focalPoint);
+}
+
+vtkSmartPointer<vtkLight> MakeSetupLight(const ViewFrame& view, const std::string& setup)
+{
+  double position[3];
+  if (setup == "spot")
+  {
+    PointFromFocus(view, -0.6, 0.0, 0.8, position);
+    return MakePositionalLight(position, view.focalPoint, SpotConeAngleDeg);
+  }
+  if (setup == "point")
+  {
+    PointFromFocus(view, -0.3, 0.0, 0.5, position);
+    const double below[3] = { position[0], position[1], position[2] - 1.0 };
+    return MakePositionalLight(position, below, 180.0);
+  }
+  const auto sun = std::find_if(std::begin(SunSetups), std::end(SunSetups),
+    [&](const SunSetup& candidate) { return setup == candidate.name; });
+  return MakeSun(view, *sun);
+}
+
 } // namespace
 
 void BuildDefaultScene(vtkRenderer* renderer)
@@ -711,6 +1131,151 @@ bool AddLight(
     scene.center[1] + distance * direction[1], scene.center[2] + distance * direction[2]);
   renderer->AddLight(light);
   return true;
+}
+
+// --- the benchmark's scenes ------------------------------------------------------
+
+void BuildOutdoorScene(vtkRenderer* renderer)
+{
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  AddGround(renderer, -OutdoorHalfSide, OutdoorHalfSide, -OutdoorHalfSide, OutdoorHalfSide, 0.0);
+  const std::vector<Ball>& balls = OutdoorBalls();
+  AddActor(renderer, MakePoles(PlacePoles(balls)), PoleColor, 0.3);
+  AddActor(renderer, MakeBalls(balls), SphereColor, 0.5);
+
+  const double* position = OutdoorCameraPosition;
+  const double focalPoint[3] = { position[0], position[1] + OutdoorFocalDistance, position[2] };
+  SetCamera(renderer, position, focalPoint, OutdoorViewAngleDeg);
+  renderer->GetActiveCamera()->SetClippingRange(OutdoorNearPlane, OutdoorFarPlane);
+}
+
+void BuildParaViewScene(vtkRenderer* renderer)
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  AddGround(renderer, -ParaViewGroundHalfSide, ParaViewGroundHalfSide, -ParaViewGroundHalfSide,
+    ParaViewGroundHalfSide, ParaViewGroundZ);
+  AddActor(renderer, WaveletIsosurface(wavelet->GetOutputPort()), IsosurfaceColor, 0.4);
+  AddColorMappedActor(renderer, WaveletSlice(wavelet->GetOutputPort()), WaveletScalarRange);
+  AddActor(renderer, GradientStreamTubes(wavelet->GetOutputPort()), StreamTubeColor, 0.5);
+
+  double direction[3];
+  DirectionFromAngles(ParaViewCameraAzimuthDeg, ParaViewCameraElevationDeg, direction);
+  double position[3];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    position[axis] = ParaViewFocalPoint[axis] + ParaViewCameraDistance * direction[axis];
+  }
+  SetCamera(renderer, position, ParaViewFocalPoint, 30.0);
+  HoldClippingRangeAlongCameraPath(renderer->GetActiveCamera());
+}
+
+std::string ModelScenePath()
+{
+  return "/usr/share/assimp/models/STL/Spider_binary.stl";
+}
+
+bool BuildModelScene(vtkRenderer* renderer, std::string& error)
+{
+  const std::string path = ModelScenePath();
+  if (!IsReadableFile(path))
+  {
+    error = "cannot read model '" + path +
+      "': no such readable file (it comes with Debian's assimp-testmodels)";
+    return false;
+  }
+  if (!BuildFileScene(renderer, path, error))
+  {
+    return false;
+  }
+  HoldClippingRangeAlongCameraPath(renderer->GetActiveCamera());
+  return true;
+}
+
+std::vector<std::string> BenchmarkSceneNames()
+{
+  return { "outdoor", "paraview", "model" };
+}
+
+bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::string& error)
+{
+  if (name == "default")
+  {
+    BuildDefaultScene(renderer);
+    return true;
+  }
+  if (name == "outdoor")
+  {
+    BuildOutdoorScene(renderer);
+    return true;
+  }
+  if (name == "paraview")
+  {
+    BuildParaViewScene(renderer);
+    return true;
+  }
+  if (name == "model")
+  {
+    return BuildModelScene(renderer, error);
+  }
+  error = "unknown scene '" + name + "' (expected default, outdoor, paraview or model)";
+  return false;
+}
+
+std::vector<std::string> LightSetupNames()
+{
+  return { "overhead", "perpendicular", "behind", "facing", "spot", "point" };
+}
+
+bool IsLightSetup(const std::string& setup)
+{
+  const std::vector<std::string> names = LightSetupNames();
+  return std::find(names.begin(), names.end(), setup) != names.end();
+}
+
+bool AddLightSetup(vtkRenderer* renderer, const std::string& setup)
+{
+  if (!IsLightSetup(setup))
+  {
+    return false;
+  }
+  const ViewFrame view = ViewFrameOf(renderer->GetActiveCamera());
+  renderer->RemoveAllLights();
+  renderer->AutomaticLightCreationOff();
+  renderer->AddLight(MakeSetupLight(view, setup));
+  return true;
+}
+
+void SetCameraPathFrame(vtkCamera* initial, vtkCamera* camera, int frame, int frameCount)
+{
+  if (!initial || !camera || initial == camera)
+  {
+    return;
+  }
+  camera->DeepCopy(initial); // clipping range, view angle, ... stay the initial ones
+  const double t =
+    frameCount > 1 ? std::clamp(static_cast<double>(frame) / (frameCount - 1), 0.0, 1.0) : 0.0;
+
+  double position[3];
+  double direction[3];
+  double viewUp[3];
+  initial->GetPosition(position);
+  initial->GetDirectionOfProjection(direction);
+  initial->GetViewUp(viewUp);
+  const double distance = initial->GetDistance();
+  const double dolly = t * CameraPathDollyFraction * distance;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    position[axis] += dolly * direction[axis];
+  }
+  // Turn about the world's +z axis through the (moved) camera.
+  const double yaw = vtkMath::RadiansFromDegrees(t * CameraPathYawDeg);
+  RotateAboutZ(direction, yaw);
+  RotateAboutZ(viewUp, yaw);
+  camera->SetPosition(position);
+  camera->SetFocalPoint(position[0] + distance * direction[0],
+    position[1] + distance * direction[1], position[2] + distance * direction[2]);
+  camera->SetViewUp(viewUp);
 }
 
 } // namespace shadowscenes

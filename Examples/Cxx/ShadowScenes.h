@@ -5,7 +5,9 @@
 #define ShadowScenes_h
 
 #include <string>
+#include <vector>
 
+class vtkCamera;
 class vtkRenderer;
 
 namespace shadowscenes
@@ -43,6 +45,115 @@ bool IsLightKind(const std::string& kind);
  */
 bool AddLight(vtkRenderer* renderer, const std::string& kind, double azimuthDeg,
   double elevationDeg);
+
+// --- the benchmark's scenes ---------------------------------------------------
+//
+// Every benchmark scene puts its geometry in world coordinates (no actor
+// transforms) and sets a camera and a clipping range that hold for the whole
+// camera path (see SetCameraPathFrame): callers must call neither ResetCamera
+// nor ResetCameraClippingRange afterwards.
+
+/**
+ * A 400 x 400 ground plane centred at the origin (z = 0), about 10,000 thin
+ * poles (radius 0.12, height 3 to 5) on a jittered 4-unit grid over all of
+ * it, and a few spheres: three near the camera (two resting on the ground, one
+ * floating) and three far away. The camera stands 2 units above the ground in
+ * a pole-free aisle and looks horizontally along +y; view angle 30 degrees,
+ * clipping range [0.2, 300] so that the far plane cuts the ground.
+ * ResetCamera would move the camera back until the whole ground is in view and
+ * ResetCameraClippingRange would push the far plane out to the ground's far
+ * corner: callers must call neither.
+ * About 232,000 triangles: one polydata for the 9,977 poles (22 triangles
+ * each), one for the spheres.
+ */
+void BuildOutdoorScene(vtkRenderer* renderer);
+
+/**
+ * ParaView-style visualisation of vtkRTAnalyticSource (its 20-unit box
+ * centred at the origin) floating 5 units above a 400 x 400 ground plane: an
+ * isosurface, a colour-mapped vertical slice and streamline tubes of the
+ * field's gradient, so that they shadow the ground and each other. Elevated
+ * three-quarter camera, view angle 30 degrees, clipping range widened from
+ * ResetCameraClippingRange's for the camera path. About 49,000 triangles.
+ */
+void BuildParaViewScene(vtkRenderer* renderer);
+
+/** The model BuildModelScene loads (from Debian's assimp-testmodels). */
+std::string ModelScenePath();
+
+/**
+ * ModelScenePath() (a spider, +z up, 1,312 triangles) on a ground plane,
+ * framed as by BuildFileScene, with the clipping range widened for the camera
+ * path. Returns false with a one-line `error`, leaving the renderer
+ * untouched, when the model cannot be read.
+ */
+bool BuildModelScene(vtkRenderer* renderer, std::string& error);
+
+/** The benchmark's scenes, in order: "outdoor", "paraview", "model". */
+std::vector<std::string> BenchmarkSceneNames();
+
+/**
+ * Builds a benchmark scene or "default" (BuildDefaultScene) into an empty
+ * renderer. Returns false with a one-line `error` for an unknown name or a
+ * scene that cannot be built.
+ */
+bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::string& error);
+
+// --- light set-ups relative to the camera ----------------------------------------
+
+/**
+ * The light set-ups AddLightSetup understands: "overhead", "perpendicular",
+ * "behind", "facing", "spot", "point".
+ */
+std::vector<std::string> LightSetupNames();
+
+/** True for a name in LightSetupNames(). */
+bool IsLightSetup(const std::string& setup);
+
+/**
+ * Replaces the renderer's lights by one scene light placed relative to the
+ * active camera (call it after building the scene, with the scene's initial
+ * camera). "Forward" is the camera's view direction projected onto the ground,
+ * d the camera's distance to its focal point F. Suns (directional):
+ *  - overhead:      4 degrees off straight down (so not axis-aligned), leaning
+ *                   back and to the left of the view,
+ *  - perpendicular: from the viewer's right, 35 degrees up: light travels at
+ *                   right angles to the view,
+ *  - behind:        from behind the viewer (25 degrees to the left of straight
+ *                   behind, so that the shadows do not all hide behind their
+ *                   casters), 35 degrees up: light travels the way the camera
+ *                   looks,
+ *  - facing:        from in front of the viewer, 35 degrees up, shining
+ *                   towards the camera ("dueling frusta").
+ * Positional lights:
+ *  - spot:  45 degree cone (vtkLight's half-angle), 0.6 d back from F towards
+ *           the camera along the ground and 0.8 d above F (so above and in
+ *           front of the camera), aimed at F: it covers the near part of the
+ *           view,
+ *  - point: 180 degree cone, 0.3 d back from F along the ground and 0.5 d
+ *           above F.
+ * Returns false, changing nothing, for an unknown set-up.
+ */
+bool AddLightSetup(vtkRenderer* renderer, const std::string& setup);
+
+// --- camera path -----------------------------------------------------------------
+
+/**
+ * Sets `camera` to frame `frame` of a smooth, deterministic path of
+ * `frameCount` frames starting at `initial`: the camera moves straight along
+ * the initial view direction by 20% of the initial focal distance in total
+ * while turning left by 6 degrees about the world's +z axis through itself,
+ * both linearly in frame / (frameCount - 1). Frame 0 is `initial`; frames are
+ * clamped to [0, frameCount - 1]. Everything else, the clipping range
+ * included, is copied from `initial`. `initial` must be a separate copy of the
+ * scene's initial camera, kept by the caller for the whole path:
+ *
+ *   vtkNew<vtkCamera> initial;
+ *   initial->DeepCopy(renderer->GetActiveCamera());
+ *   for (int f = 0; f < n; ++f)
+ *     shadowscenes::SetCameraPathFrame(initial, renderer->GetActiveCamera(), f, n);
+ */
+void SetCameraPathFrame(vtkCamera* initial, vtkCamera* camera, int frame, int frameCount);
 
 } // namespace shadowscenes
 
