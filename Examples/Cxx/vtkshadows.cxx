@@ -1,9 +1,13 @@
-// vtkshadows: renders a scene with shadows and writes a PNG.
+// vtkshadows: renders a scene with shadows and writes a PNG, or measures the
+// techniques against ray-traced truth.
 //
-//   vtkshadows render [options]    see Usage() below
+//   vtkshadows render [options]        see PrintUsage() below
+//   vtkshadows bench [options]
+//   vtkshadows analyze FILE [options]
 //
 // Every error prints one line "vtkshadows: error: ..." on stderr and exits
 // with status 2.
+#include "ShadowBench.h"
 #include "ShadowScenes.h"
 
 #include "vtkWarpedShadowMapPass.h"
@@ -20,6 +24,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -28,6 +33,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -53,8 +59,9 @@ enum class Filter
 
 struct Options
 {
-  std::string command; // "render"
+  std::string command; // "render", "bench" or "analyze"
   bool help = false;
+  shadowbench::Options bench = shadowbench::DefaultOptions();
   std::string scene = "default";
   std::string light = "sun";
   double azimuth = 60.0;
@@ -71,9 +78,14 @@ struct Options
 void PrintUsage(std::ostream& out)
 {
   out << "usage: vtkshadows render [options]\n"
+         "       vtkshadows bench [options]\n"
+         "       vtkshadows analyze FILE [options]\n"
          "       vtkshadows --help\n"
          "\n"
-         "Renders a scene with shadows and writes a PNG; prints the PNG's absolute path.\n"
+         "render: renders a scene with shadows and writes a PNG; prints the PNG's absolute path.\n"
+         "bench: measures every technique on the benchmark scenes against ray-traced truth;\n"
+         "prints a markdown table, writes error maps, charts, results.md and results.csv.\n"
+         "analyze: the same for a model file (.obj .ply .stl .vtp .gltf .glb) on a ground.\n"
          "\n"
          "options of render:\n"
          "  --scene default|FILE     built-in scene or a model (.obj .ply .stl .vtp .gltf .glb)\n"
@@ -89,7 +101,20 @@ void PrintUsage(std::ostream& out)
          "                           shadow filter, N of pcf:N in 2..7 [pcf2x2]\n"
          "  --size WxH               image size, each 16..8192 [800x600]\n"
          "  -o, --output FILE        output PNG [./vtkshadows.png]\n"
-         "  -h, --help               this help\n";
+         "  -h, --help               this help\n"
+         "\n"
+         "options of bench and analyze (lists are comma-separated):\n"
+         "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
+         "  --setups LIST            overhead,perpendicular,behind,facing,spot,point [all]\n"
+         "  --techniques LIST        none,vtk,vtk-equal,uniform [all]; none and vtk are\n"
+         "                           always measured (frame-time references)\n"
+         "  --technique NAME         one technique (with none and vtk)\n"
+         "  --resolution N           map size of this project's techniques [2048]\n"
+         "  --size WxH               image size [640x360]\n"
+         "  --flicker-frames N       frames of the camera path, 0 or 2..600 [60]\n"
+         "  --flicker-setups LIST    set-ups measured along the path [perpendicular]\n"
+         "  --timed-frames N         frames per frame-time figure, 1..100 [8]\n"
+         "  --out DIR                output directory [./bench]\n";
 }
 
 // --- value parsing -----------------------------------------------------------
@@ -253,6 +278,120 @@ std::string ParseOutput(const std::string& value, Options& options)
   return {};
 }
 
+std::vector<std::string> SplitList(const std::string& value)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(value);
+  for (std::string item; std::getline(stream, item, ',');)
+  {
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+std::string ParseScenes(const std::string& value, Options& options)
+{
+  const auto names = shadowscenes::BenchmarkSceneNames();
+  for (const std::string& scene : SplitList(value))
+  {
+    if (std::find(names.begin(), names.end(), scene) == names.end())
+    {
+      return "unknown scene '" + scene + "' (expected outdoor, paraview or model)";
+    }
+  }
+  options.bench.Scenes = SplitList(value);
+  return options.bench.Scenes.empty() ? "no scene given" : std::string();
+}
+
+std::string CheckSetups(const std::vector<std::string>& setups)
+{
+  for (const std::string& setup : setups)
+  {
+    if (!shadowscenes::IsLightSetup(setup))
+    {
+      return "unknown light set-up '" + setup +
+        "' (expected overhead, perpendicular, behind, facing, spot or point)";
+    }
+  }
+  return setups.empty() ? "no light set-up given" : std::string();
+}
+
+std::string ParseSetups(const std::string& value, Options& options)
+{
+  options.bench.Setups = SplitList(value);
+  return CheckSetups(options.bench.Setups);
+}
+
+std::string ParseFlickerSetups(const std::string& value, Options& options)
+{
+  options.bench.FlickerSetups = SplitList(value);
+  return CheckSetups(options.bench.FlickerSetups);
+}
+
+std::string ParseTechniques(const std::string& value, Options& options)
+{
+  const auto names = shadowbench::TechniqueNames();
+  for (const std::string& technique : SplitList(value))
+  {
+    if (std::find(names.begin(), names.end(), technique) == names.end())
+    {
+      return "unknown technique '" + technique + "' (expected none, vtk, vtk-equal or uniform)";
+    }
+  }
+  options.bench.Techniques = SplitList(value);
+  return options.bench.Techniques.empty() ? "no technique given" : std::string();
+}
+
+std::string ParseBenchResolution(const std::string& value, Options& options)
+{
+  std::string error = ParseResolution(value, options);
+  options.bench.Resolution = options.resolution;
+  return error;
+}
+
+std::string ParseBenchSize(const std::string& value, Options& options)
+{
+  std::string error = ParseSize(value, options);
+  options.bench.Width = options.width;
+  options.bench.Height = options.height;
+  return error;
+}
+
+std::string ParseFlickerFrames(const std::string& value, Options& options)
+{
+  int frames = 0;
+  if (!ParseInt(value, frames) || frames == 1 || frames < 0 || frames > 600)
+  {
+    return "flicker frames '" + value + "' is not 0 or an integer in 2..600";
+  }
+  options.bench.FlickerFrames = frames;
+  return {};
+}
+
+std::string ParseTimedFrames(const std::string& value, Options& options)
+{
+  int frames = 0;
+  if (!ParseInt(value, frames) || frames < 1 || frames > 100)
+  {
+    return "timed frames '" + value + "' is not an integer in 1..100";
+  }
+  options.bench.TimedFrames = frames;
+  return {};
+}
+
+std::string ParseOutputDirectory(const std::string& value, Options& options)
+{
+  if (value.empty())
+  {
+    return "output directory name is empty";
+  }
+  options.bench.OutputDirectory = value;
+  return {};
+}
+
 // --- command line --------------------------------------------------------------
 
 using OptionParser = std::function<std::string(const std::string&, Options&)>;
@@ -273,6 +412,27 @@ const std::map<std::string, OptionParser>& RenderOptionParsers()
     { "--output", ParseOutput },
   };
   return parsers;
+}
+
+const std::map<std::string, OptionParser>& BenchOptionParsers(bool withScenes)
+{
+  static const std::map<std::string, OptionParser> common = {
+    { "--setups", ParseSetups },
+    { "--techniques", ParseTechniques },
+    { "--technique", ParseTechniques },
+    { "--resolution", ParseBenchResolution },
+    { "--size", ParseBenchSize },
+    { "--flicker-frames", ParseFlickerFrames },
+    { "--flicker-setups", ParseFlickerSetups },
+    { "--timed-frames", ParseTimedFrames },
+    { "--out", ParseOutputDirectory },
+  };
+  static const std::map<std::string, OptionParser> bench = [] {
+    auto parsers = common;
+    parsers["--scenes"] = ParseScenes;
+    return parsers;
+  }();
+  return withScenes ? bench : common;
 }
 
 bool IsHelpFlag(const std::string& argument)
@@ -336,7 +496,7 @@ bool ParseCommandLine(
 {
   if (arguments.empty())
   {
-    error = "missing subcommand (expected render)";
+    error = "missing subcommand (expected render, bench or analyze)";
     return false;
   }
   if (IsHelpFlag(arguments[0]) || arguments[0] == "help")
@@ -344,13 +504,32 @@ bool ParseCommandLine(
     options.help = true;
     return true;
   }
-  if (arguments[0] != "render")
-  {
-    error = "unknown subcommand '" + arguments[0] + "' (expected render)";
-    return false;
-  }
   options.command = arguments[0];
-  return ParseSubcommandOptions(arguments, 1, RenderOptionParsers(), options, error);
+  if (options.command == "render")
+  {
+    return ParseSubcommandOptions(arguments, 1, RenderOptionParsers(), options, error);
+  }
+  if (options.command == "bench")
+  {
+    return ParseSubcommandOptions(arguments, 1, BenchOptionParsers(true), options, error);
+  }
+  if (options.command == "analyze")
+  {
+    if (arguments.size() < 2 || arguments[1].empty() || arguments[1][0] == '-')
+    {
+      if (arguments.size() >= 2 && IsHelpFlag(arguments[1]))
+      {
+        options.help = true;
+        return true;
+      }
+      error = "analyze needs a model FILE";
+      return false;
+    }
+    options.bench.ModelFile = arguments[1];
+    return ParseSubcommandOptions(arguments, 2, BenchOptionParsers(false), options, error);
+  }
+  error = "unknown subcommand '" + arguments[0] + "' (expected render, bench or analyze)";
+  return false;
 }
 
 // --- rendering -------------------------------------------------------------------
@@ -519,7 +698,10 @@ int Run(const std::vector<std::string>& arguments)
     PrintUsage(std::cout);
     return EXIT_SUCCESS;
   }
-  if (!RunRender(options, error))
+  const bool ok = options.command == "render"
+    ? RunRender(options, error)
+    : shadowbench::Run(options.bench, std::cout, std::cerr, error);
+  if (!ok)
   {
     return Fail(error);
   }

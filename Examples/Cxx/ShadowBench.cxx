@@ -1,0 +1,712 @@
+#include "ShadowBench.h"
+
+#include "ShadowMetrics.h"
+#include "ShadowOracle.h"
+#include "ShadowScenes.h"
+
+#include "vtkAbstractShadowMapPass.h"
+#include "vtkWarpedShadowMapPass.h"
+
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
+#include <vtkAxis.h>
+#include <vtkCamera.h>
+#include <vtkCameraPass.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkMapper.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkPNGWriter.h>
+#include <vtkPlot.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkRenderPassCollection.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSequencePass.h>
+#include <vtkShadowMapBakerPass.h>
+#include <vtkShadowMapPass.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace shadowbench
+{
+namespace
+{
+using shadoworacle::Truth;
+constexpr unsigned int VTKDefaultResolution = 1024;
+const double NotMeasured = std::numeric_limits<double>::quiet_NaN();
+
+// --- techniques -------------------------------------------------------------------
+
+/// One technique set up on a renderer: the pass and what the metrics need of it.
+struct TechniqueInstance
+{
+  vtkSmartPointer<vtkRenderPass> Pass; // null: no shadows
+  vtkAbstractShadowMapPass* Ours = nullptr;
+  vtkShadowMapPass* VTK = nullptr;
+  int Resolution = 0;
+};
+
+vtkSmartPointer<vtkRenderPass> MakeVTKPass(unsigned int resolution, vtkShadowMapPass*& shadows)
+{
+  vtkNew<vtkShadowMapPass> pass;
+  pass->GetShadowMapBakerPass()->SetResolution(resolution);
+  vtkNew<vtkRenderPassCollection> passes;
+  passes->AddItem(pass->GetShadowMapBakerPass());
+  passes->AddItem(pass);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(passes);
+  auto camera = vtkSmartPointer<vtkCameraPass>::New();
+  camera->SetDelegatePass(sequence);
+  shadows = pass;
+  return camera;
+}
+
+/// Bytes of this project's maps for one light of the set-up at `resolution`:
+/// one depth layer (sun, spot) or six (point light).
+double OurMapBytes(const std::string& setup, int resolution)
+{
+  const double layers = setup == "point" ? 6.0 : 1.0;
+  return layers * 4.0 * resolution * static_cast<double>(resolution);
+}
+
+/// VTK's pass holds one 32-bit float colour map per shadowed light and one
+/// depth buffer of the same size for rendering them.
+double VTKMapBytes(unsigned int resolution)
+{
+  return 2.0 * 4.0 * resolution * static_cast<double>(resolution);
+}
+
+unsigned int VTKEqualMemoryResolution(const std::string& setup, int resolution)
+{
+  return static_cast<unsigned int>(std::floor(std::sqrt(OurMapBytes(setup, resolution) / 8.0)));
+}
+
+TechniqueInstance MakeTechnique(const std::string& name, const std::string& setup, int resolution)
+{
+  TechniqueInstance technique;
+  if (name == "vtk" || name == "vtk-equal")
+  {
+    technique.Resolution = static_cast<int>(
+      name == "vtk" ? VTKDefaultResolution : VTKEqualMemoryResolution(setup, resolution));
+    technique.Pass = MakeVTKPass(static_cast<unsigned int>(technique.Resolution), technique.VTK);
+  }
+  else if (name == "uniform")
+  {
+    auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    pass->SetResolution(resolution);
+    pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = resolution;
+  }
+  return technique;
+}
+
+double MemoryMiB(const TechniqueInstance& technique)
+{
+  if (technique.Ours)
+  {
+    return technique.Ours->GetShadowMapMemory() / (1024.0 * 1024.0);
+  }
+  if (technique.VTK)
+  {
+    return VTKMapBytes(static_cast<unsigned int>(technique.Resolution)) / (1024.0 * 1024.0);
+  }
+  return 0.0;
+}
+
+// --- rendering and capture --------------------------------------------------------
+
+struct View
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkCamera> InitialCamera;
+  int Width = 0;
+  int Height = 0;
+};
+
+/// White, purely diffuse materials: the ratio of a render with shadows to one
+/// without is then the light's shadow factor at every pixel.
+void UseMeasurementMaterials(vtkRenderer* renderer)
+{
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    vtkProperty* property = actor->GetProperty();
+    property->SetColor(1.0, 1.0, 1.0);
+    property->SetAmbient(0.0);
+    property->SetDiffuse(1.0);
+    property->SetSpecular(0.0);
+    if (actor->GetMapper())
+    {
+      actor->GetMapper()->ScalarVisibilityOff();
+    }
+  }
+  renderer->SetBackground(0.0, 0.0, 0.0);
+}
+
+double Seconds(std::chrono::steady_clock::duration duration)
+{
+  return std::chrono::duration<double>(duration).count();
+}
+
+/// Renders and waits for the GL to finish; returns the wall time.
+double TimedRender(vtkRenderWindow* window)
+{
+  const auto start = std::chrono::steady_clock::now();
+  window->Render();
+  static_cast<vtkOpenGLRenderWindow*>(window)->WaitForCompletion();
+  return Seconds(std::chrono::steady_clock::now() - start);
+}
+
+std::vector<std::uint8_t> CaptureRGB(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  capture->Update();
+  vtkDataArray* scalars = capture->GetOutput()->GetPointData()->GetScalars();
+  auto* bytes = static_cast<std::uint8_t*>(scalars->GetVoidPointer(0));
+  return std::vector<std::uint8_t>(bytes, bytes + scalars->GetNumberOfValues());
+}
+
+std::vector<float> CaptureDepth(View& view)
+{
+  vtkNew<vtkFloatArray> depth;
+  view.Window->GetZbufferData(0, 0, view.Width - 1, view.Height - 1, depth);
+  return std::vector<float>(depth->GetPointer(0), depth->GetPointer(0) + depth->GetNumberOfValues());
+}
+
+bool WritePNG(const std::vector<std::uint8_t>& rgb, int width, int height, const std::string& path)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(rgb.begin(), rgb.end(), static_cast<std::uint8_t*>(image->GetScalarPointer()));
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(image);
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+
+vtkLight* FirstLight(vtkRenderer* renderer)
+{
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  return lights->GetNextItem();
+}
+
+/// The truth of the current view: primary rays, masked where the rasteriser
+/// disagrees, then one shadow ray per pixel.
+std::vector<Truth> TruthOfView(View& view, const shadoworacle::Oracle& oracle,
+  const std::vector<float>& depth, std::vector<std::uint8_t>* valid = nullptr,
+  shadoworacle::Surface* surfaceOut = nullptr)
+{
+  shadoworacle::Surface surface = oracle.Trace(view.Renderer, view.Width, view.Height);
+  shadoworacle::Oracle::MaskRasterMismatch(surface, view.Renderer, depth);
+  if (valid)
+  {
+    *valid = surface.Valid;
+  }
+  std::vector<Truth> truth = oracle.Classify(surface, FirstLight(view.Renderer));
+  if (surfaceOut)
+  {
+    *surfaceOut = std::move(surface);
+  }
+  return truth;
+}
+
+/// Undersampling of VTK's pass, from its light camera: the map texel
+/// coordinates of every pixel's surface point, differentiated across pixels.
+double VTKUndersampled(const TechniqueInstance& technique, const shadoworacle::Surface& surface)
+{
+  auto* cameras = technique.VTK->GetShadowMapBakerPass()->GetLightCameras();
+  if (!cameras || cameras->empty() || !(*cameras)[0])
+  {
+    return NotMeasured;
+  }
+  vtkMatrix4x4* m = (*cameras)[0]->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0);
+  std::vector<glm::dvec2> texel(surface.Position.size());
+  std::vector<std::uint8_t> valid = surface.Valid;
+  for (size_t i = 0; i < texel.size(); ++i)
+  {
+    const glm::dvec3& p = surface.Position[i];
+    double clip[4];
+    for (int r = 0; r < 4; ++r)
+    {
+      clip[r] = m->GetElement(r, 0) * p.x + m->GetElement(r, 1) * p.y + m->GetElement(r, 2) * p.z +
+        m->GetElement(r, 3);
+    }
+    if (!valid[i] || clip[3] <= 0.0)
+    {
+      valid[i] = valid[i] && clip[3] > 0.0;
+      continue;
+    }
+    texel[i] = (glm::dvec2(clip[0], clip[1]) / clip[3] * 0.5 + 0.5) * double(technique.Resolution);
+  }
+  const auto footprint =
+    shadowmetrics::TexelFootprints(texel, valid, surface.Width, surface.Height);
+  return shadowmetrics::UndersampledFromFootprints(footprint, surface.Valid);
+}
+
+double OurUndersampled(View& view, const TechniqueInstance& technique,
+  const std::vector<std::uint8_t>& valid)
+{
+  technique.Ours->SetAnalysisView(vtkAbstractShadowMapPass::TEXEL_DENSITY);
+  view.Window->Render();
+  const auto rgb = CaptureRGB(view.Window);
+  technique.Ours->SetAnalysisView(vtkAbstractShadowMapPass::NO_ANALYSIS);
+  return shadowmetrics::UndersampledFromAnalysis(rgb, valid);
+}
+
+// --- one case ---------------------------------------------------------------------
+
+struct Timing
+{
+  double First = 0.0;
+  double Steady = 0.0;
+  double Moving = 0.0;
+};
+
+struct Row
+{
+  std::string Scene;
+  std::string Setup;
+  std::string Technique;
+  int Resolution = 0;
+  double MemoryMiB = 0.0;
+  shadowmetrics::Classification Errors;
+  double Undersampled = NotMeasured;
+  double Flicker = NotMeasured;
+  double TruthChanges = NotMeasured;
+  Timing Time;
+};
+
+void SetPathFrame(View& view, int frame, int frames)
+{
+  shadowscenes::SetCameraPathFrame(view.InitialCamera, view.Renderer->GetActiveCamera(), frame, frames);
+}
+
+Timing MeasureFrameTimes(View& view, int frames)
+{
+  Timing timing;
+  SetPathFrame(view, 0, 2);
+  timing.First = TimedRender(view.Window);
+  for (int i = 0; i < frames; ++i)
+  {
+    timing.Steady += TimedRender(view.Window) / frames;
+  }
+  // A camera that moves a little every frame: every frame re-renders the maps.
+  for (int i = 0; i < frames; ++i)
+  {
+    SetPathFrame(view, i + 1, 4 * frames);
+    timing.Moving += TimedRender(view.Window) / frames;
+  }
+  SetPathFrame(view, 0, 2);
+  return timing;
+}
+
+/// Flicker along the camera path: the mean over frame pairs of the pixels
+/// whose state changed while the truth did not.
+void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
+  std::vector<TechniqueInstance>& techniques, std::vector<Row>& rows, int frames)
+{
+  std::vector<std::vector<float>> previousFactor(techniques.size());
+  std::vector<Truth> previousTruth;
+  std::vector<double> flicker(techniques.size(), 0.0);
+  double truthChanges = 0.0;
+  for (int frame = 0; frame < frames; ++frame)
+  {
+    SetPathFrame(view, frame, frames);
+    view.Renderer->SetPass(nullptr);
+    view.Window->Render();
+    const auto plain = CaptureRGB(view.Window);
+    const auto truth = TruthOfView(view, oracle, CaptureDepth(view));
+    for (size_t t = 0; t < techniques.size(); ++t)
+    {
+      view.Renderer->SetPass(techniques[t].Pass);
+      view.Window->Render();
+      auto factor = shadowmetrics::FactorFromRenders(
+        CaptureRGB(view.Window), plain, view.Width * view.Height);
+      if (frame > 0)
+      {
+        flicker[t] += shadowmetrics::Flicker(previousTruth, previousFactor[t], truth, factor);
+      }
+      previousFactor[t] = std::move(factor);
+    }
+    if (frame > 0)
+    {
+      truthChanges += shadowmetrics::TruthChanges(previousTruth, truth);
+    }
+    previousTruth = truth;
+  }
+  for (size_t t = 0; t < techniques.size(); ++t)
+  {
+    rows[rows.size() - techniques.size() + t].Flicker = flicker[t] / (frames - 1);
+    rows[rows.size() - techniques.size() + t].TruthChanges = truthChanges / (frames - 1);
+  }
+  view.Renderer->SetPass(nullptr);
+  SetPathFrame(view, 0, 2);
+}
+
+std::string CaseName(const std::string& scene, const std::string& setup)
+{
+  return scene + "-" + setup;
+}
+
+void WriteChart(const std::vector<Row>& rows, const std::string& path, const std::string& title);
+
+bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string& scene,
+  const std::string& setup, const Options& options, std::vector<Row>& rows, std::ostream& log)
+{
+  view.Renderer->GetActiveCamera()->DeepCopy(view.InitialCamera);
+  shadowscenes::AddLightSetup(view.Renderer, setup);
+  view.Renderer->SetPass(nullptr);
+  view.Window->Render();
+  const auto plain = CaptureRGB(view.Window);
+  std::vector<std::uint8_t> valid;
+  shadoworacle::Surface surface;
+  const auto truth = TruthOfView(view, oracle, CaptureDepth(view), &valid, &surface);
+
+  std::vector<TechniqueInstance> techniques;
+  const size_t firstRow = rows.size();
+  for (const std::string& name : options.Techniques)
+  {
+    log << "  " << scene << " / " << setup << " / " << name << std::endl;
+    TechniqueInstance technique = MakeTechnique(name, setup, options.Resolution);
+    view.Renderer->SetPass(technique.Pass);
+    Row row;
+    row.Scene = scene;
+    row.Setup = setup;
+    row.Technique = name;
+    row.Resolution = technique.Resolution;
+    row.Time = MeasureFrameTimes(view, options.TimedFrames);
+    view.Window->Render();
+    const auto factor =
+      shadowmetrics::FactorFromRenders(CaptureRGB(view.Window), plain, view.Width * view.Height);
+    row.Errors = shadowmetrics::Classify(truth, factor, view.Width, view.Height);
+    row.MemoryMiB = MemoryMiB(technique);
+    if (technique.Ours)
+    {
+      row.Undersampled = OurUndersampled(view, technique, valid);
+    }
+    else if (technique.VTK)
+    {
+      row.Undersampled = VTKUndersampled(technique, surface);
+    }
+    const std::string errors = options.OutputDirectory + "/" + CaseName(scene, setup) + "-" + name + "-errors.png";
+    if (!WritePNG(shadowmetrics::ErrorMap(truth, factor), view.Width, view.Height, errors))
+    {
+      log << "  cannot write " << errors << std::endl;
+    }
+    rows.push_back(row);
+    techniques.push_back(technique);
+  }
+  const bool flicker = options.FlickerFrames > 1 &&
+    std::find(options.FlickerSetups.begin(), options.FlickerSetups.end(), setup) !=
+      options.FlickerSetups.end();
+  if (flicker)
+  {
+    log << "  " << scene << " / " << setup << ": flicker over " << options.FlickerFrames
+        << " frames" << std::endl;
+    MeasureFlicker(view, oracle, techniques, rows, options.FlickerFrames);
+  }
+  view.Renderer->SetPass(nullptr);
+  for (TechniqueInstance& technique : techniques)
+  {
+    // VTK's baker pass complains if destroyed with its GL objects alive.
+    if (technique.Pass)
+    {
+      technique.Pass->ReleaseGraphicsResources(view.Window);
+    }
+  }
+  WriteChart(std::vector<Row>(rows.begin() + firstRow, rows.end()),
+    options.OutputDirectory + "/" + CaseName(scene, setup) + "-chart.png",
+    scene + ", " + setup + " light");
+  return true;
+}
+
+bool BuildScene(View& view, const std::string& scene, const Options& options, std::string& error)
+{
+  const bool built = options.ModelFile.empty()
+    ? shadowscenes::BuildSceneByName(view.Renderer, scene, error)
+    : shadowscenes::BuildFileScene(view.Renderer, options.ModelFile, error);
+  if (!built)
+  {
+    return false;
+  }
+  UseMeasurementMaterials(view.Renderer);
+  view.InitialCamera->DeepCopy(view.Renderer->GetActiveCamera());
+  view.Window->SetOffScreenRendering(1);
+  view.Window->SetMultiSamples(0);
+  view.Window->SetSize(view.Width, view.Height);
+  view.Window->AddRenderer(view.Renderer);
+  return true;
+}
+
+// --- output ------------------------------------------------------------------------
+
+std::string Number(double value, int digits = 2)
+{
+  if (std::isnan(value))
+  {
+    return "n/a";
+  }
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(digits) << value;
+  return text.str();
+}
+
+/// Frame time of `row` divided by that of technique `reference` in the same case.
+double Ratio(const std::vector<Row>& rows, const Row& row, const std::string& reference,
+  double Timing::*which)
+{
+  for (const Row& other : rows)
+  {
+    if (other.Scene == row.Scene && other.Setup == row.Setup && other.Technique == reference)
+    {
+      return other.Time.*which > 0.0 ? row.Time.*which / (other.Time.*which) : NotMeasured;
+    }
+  }
+  return NotMeasured;
+}
+
+void PrintTable(const std::vector<Row>& rows, std::ostream& out)
+{
+  out << "| scene | light | technique | map | MiB | misclassified % | false shadow % | leak % | "
+         "inner % | mean abs. diff. | undersampled % | flicker % (truth %) | first frame / none | "
+         "steady / none | steady / vtk | moving / none | moving / vtk |\n"
+      << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Row& row : rows)
+  {
+    out << "| " << row.Scene << " | " << row.Setup << " | " << row.Technique << " | "
+        << (row.Resolution > 0 ? std::to_string(row.Resolution) + "²" : "-") << " | "
+        << Number(row.MemoryMiB, 1) << " | " << Number(row.Errors.Misclassified) << " | "
+        << Number(row.Errors.FalseShadow) << " | " << Number(row.Errors.LightLeak) << " | "
+        << Number(row.Errors.InnerMisclassified) << " | "
+        << Number(row.Errors.MeanAbsoluteDifference, 3) << " | " << Number(row.Undersampled)
+        << " | "
+        << (std::isnan(row.Flicker)
+               ? std::string("-")
+               : Number(row.Flicker, 3) + " (" + Number(row.TruthChanges, 3) + ")")
+        << " | " << Number(Ratio(rows, row, "none", &Timing::First)) << " | "
+        << Number(Ratio(rows, row, "none", &Timing::Steady)) << " | "
+        << Number(Ratio(rows, row, "vtk", &Timing::Steady)) << " | "
+        << Number(Ratio(rows, row, "none", &Timing::Moving)) << " | "
+        << Number(Ratio(rows, row, "vtk", &Timing::Moving)) << " |\n";
+  }
+}
+
+void WriteCSV(const std::vector<Row>& rows, const std::string& path)
+{
+  std::ofstream csv(path);
+  csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,inner,"
+         "mean_abs_diff,undersampled,flicker,truth_changes,first_s,steady_s,moving_s,counted_pixels\n";
+  for (const Row& row : rows)
+  {
+    csv << row.Scene << ',' << row.Setup << ',' << row.Technique << ',' << row.Resolution << ','
+        << row.MemoryMiB << ',' << row.Errors.Misclassified << ',' << row.Errors.FalseShadow << ','
+        << row.Errors.LightLeak << ',' << row.Errors.InnerMisclassified << ','
+        << row.Errors.MeanAbsoluteDifference << ',' << row.Undersampled << ',' << row.Flicker << ','
+        << row.TruthChanges << ',' << row.Time.First << ',' << row.Time.Steady << ','
+        << row.Time.Moving << ',' << row.Errors.Counted << '\n';
+  }
+}
+
+/// Bars per technique: misclassified, inner misclassified, undersampled (%).
+void WriteChart(const std::vector<Row>& rows, const std::string& path, const std::string& title)
+{
+  vtkNew<vtkTable> table;
+  vtkNew<vtkDoubleArray> index;
+  index->SetName("technique");
+  table->AddColumn(index);
+  const char* names[] = { "misclassified %", "inner misclassified %", "undersampled %" };
+  for (const char* name : names)
+  {
+    vtkNew<vtkDoubleArray> column;
+    column->SetName(name);
+    table->AddColumn(column);
+  }
+  table->SetNumberOfRows(static_cast<vtkIdType>(rows.size()));
+  vtkNew<vtkDoubleArray> ticks;
+  vtkNew<vtkStringArray> labels;
+  for (size_t i = 0; i < rows.size(); ++i)
+  {
+    const double values[] = { static_cast<double>(i), rows[i].Errors.Misclassified,
+      rows[i].Errors.InnerMisclassified,
+      std::isnan(rows[i].Undersampled) ? 0.0 : rows[i].Undersampled };
+    for (int c = 0; c < 4; ++c)
+    {
+      table->SetValue(static_cast<vtkIdType>(i), c, values[c]);
+    }
+    ticks->InsertNextValue(static_cast<double>(i));
+    labels->InsertNextValue(rows[i].Technique);
+  }
+  vtkNew<vtkContextView> view;
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(800, 450);
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(title);
+  chart->SetShowLegend(true);
+  chart->SetBarWidthFraction(0.8f);
+  const unsigned char colors[3][3] = { { 200, 60, 50 }, { 240, 150, 40 }, { 60, 110, 200 } };
+  for (int c = 0; c < 3; ++c)
+  {
+    vtkPlot* bars = chart->AddPlot(vtkChart::BAR);
+    bars->SetInputData(table, 0, c + 1);
+    bars->SetColor(colors[c][0], colors[c][1], colors[c][2], 255);
+  }
+  chart->GetAxis(vtkAxis::BOTTOM)->SetCustomTickPositions(ticks, labels);
+  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("");
+  chart->GetAxis(vtkAxis::LEFT)->SetTitle("% of pixels");
+  view->GetRenderWindow()->Render();
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(view->GetRenderWindow());
+  capture->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(capture->GetOutputPort());
+  writer->Write();
+}
+
+bool ValidateOptions(const Options& options, std::string& error)
+{
+  const auto techniques = TechniqueNames();
+  for (const std::string& name : options.Techniques)
+  {
+    if (std::find(techniques.begin(), techniques.end(), name) == techniques.end())
+    {
+      error = "unknown technique '" + name + "'";
+      return false;
+    }
+  }
+  for (const std::string& setup : options.Setups)
+  {
+    if (!shadowscenes::IsLightSetup(setup))
+    {
+      error = "unknown light set-up '" + setup + "'";
+      return false;
+    }
+  }
+  if (options.Scenes.empty() && options.ModelFile.empty())
+  {
+    error = "no scene to measure";
+    return false;
+  }
+  std::error_code ignored;
+  std::filesystem::create_directories(options.OutputDirectory, ignored);
+  if (!std::filesystem::is_directory(options.OutputDirectory))
+  {
+    error = "cannot create output directory '" + options.OutputDirectory + "'";
+    return false;
+  }
+  return true;
+}
+
+/// Frame times are ratios to "none" and "vtk": measure them even if not asked.
+Options WithReferences(Options options)
+{
+  for (const char* reference : { "vtk", "none" })
+  {
+    if (std::find(options.Techniques.begin(), options.Techniques.end(), reference) ==
+      options.Techniques.end())
+    {
+      options.Techniques.insert(options.Techniques.begin(), reference);
+    }
+  }
+  return options;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+std::vector<std::string> TechniqueNames()
+{
+  return { "none", "vtk", "vtk-equal", "uniform" };
+}
+
+//------------------------------------------------------------------------------
+Options DefaultOptions()
+{
+  Options options;
+  options.Scenes = shadowscenes::BenchmarkSceneNames();
+  options.Setups = shadowscenes::LightSetupNames();
+  options.Techniques = TechniqueNames();
+  options.FlickerSetups = { "perpendicular" };
+  return options;
+}
+
+//------------------------------------------------------------------------------
+bool Run(const Options& requested, std::ostream& out, std::ostream& log, std::string& error)
+{
+  if (!ValidateOptions(requested, error))
+  {
+    return false;
+  }
+  const Options options = WithReferences(requested);
+  const std::vector<std::string> scenes =
+    options.ModelFile.empty() ? options.Scenes : std::vector<std::string>{ "file" };
+  std::vector<Row> rows;
+  for (const std::string& scene : scenes)
+  {
+    View view;
+    view.Width = options.Width;
+    view.Height = options.Height;
+    if (!BuildScene(view, scene, options, error))
+    {
+      return false;
+    }
+    shadoworacle::Oracle oracle;
+    if (!oracle.Build(view.Renderer, error))
+    {
+      error = scene + ": " + error;
+      return false;
+    }
+    log << scene << ": " << oracle.GetNumberOfTriangles() << " triangles" << std::endl;
+    for (const std::string& setup : options.Setups)
+    {
+      if (!RunSetup(view, oracle, scene, setup, options, rows, log))
+      {
+        return false;
+      }
+    }
+  }
+  std::ostringstream table;
+  PrintTable(rows, table);
+  out << table.str();
+  std::ofstream(options.OutputDirectory + "/results.md") << table.str();
+  WriteCSV(rows, options.OutputDirectory + "/results.csv");
+  return true;
+}
+
+} // namespace shadowbench

@@ -1,0 +1,249 @@
+#include "ShadowMetrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowmetrics
+{
+namespace
+{
+bool Counted(Truth truth)
+{
+  return truth != Truth::Ignored;
+}
+
+bool IsShadowed(float factor)
+{
+  return factor < ShadowedBelow;
+}
+
+double Percent(std::int64_t part, std::int64_t whole)
+{
+  return whole > 0 ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+std::vector<std::uint8_t> TruthEdges(const std::vector<Truth>& truth, int width, int height)
+{
+  std::vector<std::uint8_t> edges(truth.size(), 0);
+  const int dx[4] = { 1, -1, 0, 0 };
+  const int dy[4] = { 0, 0, 1, -1 };
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const Truth here = truth[y * width + x];
+      if (!Counted(here))
+      {
+        continue;
+      }
+      for (int k = 0; k < 4; ++k)
+      {
+        const int nx = x + dx[k];
+        const int ny = y + dy[k];
+        if (nx < 0 || ny < 0 || nx >= width || ny >= height)
+        {
+          continue;
+        }
+        const Truth there = truth[ny * width + nx];
+        if (Counted(there) && there != here)
+        {
+          edges[y * width + x] = 1;
+          break;
+        }
+      }
+    }
+  }
+  return edges;
+}
+
+//------------------------------------------------------------------------------
+Classification Classify(
+  const std::vector<Truth>& truth, const std::vector<float>& factor, int width, int height)
+{
+  Classification result;
+  const std::vector<std::uint8_t> edges = TruthEdges(truth, width, height);
+  std::int64_t falseShadow = 0;
+  std::int64_t leak = 0;
+  std::int64_t innerWrong = 0;
+  double absoluteDifference = 0.0;
+  for (size_t i = 0; i < truth.size(); ++i)
+  {
+    if (!Counted(truth[i]))
+    {
+      continue;
+    }
+    ++result.Counted;
+    const bool truthShadowed = truth[i] == Truth::Shadowed;
+    const bool techniqueShadowed = IsShadowed(factor[i]);
+    falseShadow += !truthShadowed && techniqueShadowed;
+    leak += truthShadowed && !techniqueShadowed;
+    absoluteDifference += std::abs(factor[i] - (truthShadowed ? 0.0 : 1.0));
+    if (!edges[i])
+    {
+      ++result.Inner;
+      innerWrong += truthShadowed != techniqueShadowed;
+    }
+  }
+  result.FalseShadow = Percent(falseShadow, result.Counted);
+  result.LightLeak = Percent(leak, result.Counted);
+  result.Misclassified = Percent(falseShadow + leak, result.Counted);
+  result.InnerMisclassified = Percent(innerWrong, result.Inner);
+  result.MeanAbsoluteDifference =
+    result.Counted > 0 ? absoluteDifference / static_cast<double>(result.Counted) : 0.0;
+  return result;
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> FactorFromRenders(const std::vector<std::uint8_t>& shadowedRgb,
+  const std::vector<std::uint8_t>& unshadowedRgb, int pixelCount)
+{
+  std::vector<float> factor(pixelCount, 1.0f);
+  for (int i = 0; i < pixelCount; ++i)
+  {
+    const int shadowed = shadowedRgb[3 * i] + shadowedRgb[3 * i + 1] + shadowedRgb[3 * i + 2];
+    const int unshadowed =
+      unshadowedRgb[3 * i] + unshadowedRgb[3 * i + 1] + unshadowedRgb[3 * i + 2];
+    if (unshadowed > 0)
+    {
+      factor[i] = std::min(1.0f, static_cast<float>(shadowed) / static_cast<float>(unshadowed));
+    }
+  }
+  return factor;
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> FactorFromAnalysis(const std::vector<std::uint8_t>& rgb, int pixelCount)
+{
+  std::vector<float> factor(pixelCount);
+  for (int i = 0; i < pixelCount; ++i)
+  {
+    factor[i] = static_cast<float>(rgb[3 * i]) / 255.0f;
+  }
+  return factor;
+}
+
+//------------------------------------------------------------------------------
+double UndersampledFromAnalysis(
+  const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& valid)
+{
+  std::int64_t visible = 0;
+  std::int64_t undersampled = 0;
+  for (size_t i = 0; i < valid.size(); ++i)
+  {
+    if (valid[i])
+    {
+      ++visible;
+      undersampled += rgb[3 * i] == 255;
+    }
+  }
+  return Percent(undersampled, visible);
+}
+
+//------------------------------------------------------------------------------
+double UndersampledFromFootprints(
+  const std::vector<double>& footprint, const std::vector<std::uint8_t>& valid)
+{
+  std::int64_t visible = 0;
+  std::int64_t undersampled = 0;
+  for (size_t i = 0; i < valid.size(); ++i)
+  {
+    if (valid[i])
+    {
+      ++visible;
+      undersampled += footprint[i] > UndersampledAbove;
+    }
+  }
+  return Percent(undersampled, visible);
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> TexelFootprints(const std::vector<glm::dvec2>& texel,
+  const std::vector<std::uint8_t>& valid, int width, int height)
+{
+  std::vector<double> footprint(texel.size(), 0.0);
+  for (int y = 0; y + 1 < height; ++y)
+  {
+    for (int x = 0; x + 1 < width; ++x)
+    {
+      const int i = y * width + x;
+      if (!valid[i] || !valid[i + 1] || !valid[i + width])
+      {
+        continue;
+      }
+      const glm::dvec2 dx = texel[i + 1] - texel[i];
+      const glm::dvec2 dy = texel[i + width] - texel[i];
+      const double texelsPerPixelArea = std::abs(dx.x * dy.y - dx.y * dy.x);
+      footprint[i] = 1.0 / std::sqrt(std::max(texelsPerPixelArea, 1e-24));
+    }
+  }
+  return footprint;
+}
+
+//------------------------------------------------------------------------------
+double Flicker(const std::vector<Truth>& truthBefore, const std::vector<float>& factorBefore,
+  const std::vector<Truth>& truthAfter, const std::vector<float>& factorAfter)
+{
+  std::int64_t counted = 0;
+  std::int64_t flickering = 0;
+  for (size_t i = 0; i < truthBefore.size(); ++i)
+  {
+    if (!Counted(truthBefore[i]) || !Counted(truthAfter[i]))
+    {
+      continue;
+    }
+    ++counted;
+    flickering += truthBefore[i] == truthAfter[i] &&
+      IsShadowed(factorBefore[i]) != IsShadowed(factorAfter[i]);
+  }
+  return Percent(flickering, counted);
+}
+
+//------------------------------------------------------------------------------
+double TruthChanges(const std::vector<Truth>& truthBefore, const std::vector<Truth>& truthAfter)
+{
+  std::int64_t counted = 0;
+  std::int64_t changed = 0;
+  for (size_t i = 0; i < truthBefore.size(); ++i)
+  {
+    if (Counted(truthBefore[i]) && Counted(truthAfter[i]))
+    {
+      ++counted;
+      changed += truthBefore[i] != truthAfter[i];
+    }
+  }
+  return Percent(changed, counted);
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::uint8_t> ErrorMap(const std::vector<Truth>& truth, const std::vector<float>& factor)
+{
+  std::vector<std::uint8_t> rgb(3 * truth.size(), 0);
+  for (size_t i = 0; i < truth.size(); ++i)
+  {
+    std::uint8_t color[3] = { 0, 0, 0 };
+    if (Counted(truth[i]))
+    {
+      const bool truthShadowed = truth[i] == Truth::Shadowed;
+      const bool techniqueShadowed = IsShadowed(factor[i]);
+      if (truthShadowed && !techniqueShadowed)
+      {
+        color[0] = 230; // light leak
+      }
+      else if (!truthShadowed && techniqueShadowed)
+      {
+        color[2] = 230; // false shadow
+        color[1] = 60;
+      }
+      else
+      {
+        color[0] = color[1] = color[2] = truthShadowed ? 90 : 190;
+      }
+    }
+    std::copy(color, color + 3, rgb.begin() + 3 * i);
+  }
+  return rgb;
+}
+
+} // namespace shadowmetrics

@@ -1,0 +1,89 @@
+// Error metrics of a shadow technique against the oracle's truth, per pixel
+// of one view and one light. Pure functions over images stored row by row,
+// row 0 at the bottom (VTK's pixel order), index = y * width + x.
+#ifndef ShadowMetrics_h
+#define ShadowMetrics_h
+
+#include "ShadowOracle.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace shadowmetrics
+{
+using shadoworacle::Truth;
+
+/// A shadow factor below this counts as shadowed.
+constexpr float ShadowedBelow = 0.5f;
+
+/// Texel footprints (screen pixels per map texel, along one side) above this
+/// count as undersampled.
+constexpr double UndersampledAbove = 1.5;
+
+struct Classification
+{
+  /// Pixels where the truth is Lit or Shadowed (visible, lit-facing).
+  std::int64_t Counted = 0;
+  /// Counted pixels not on a truth shadow edge (no 4-neighbour of another state).
+  std::int64_t Inner = 0;
+  /// Percentages of Counted: disagreements, split into false shadows (truth
+  /// lit, technique shadowed) and light leaks (truth shadowed, technique lit).
+  double Misclassified = 0.0;
+  double FalseShadow = 0.0;
+  double LightLeak = 0.0;
+  /// Percentage of Inner pixels that disagree.
+  double InnerMisclassified = 0.0;
+  /// Mean |factor - truth| over Counted pixels (truth 1 lit, 0 shadowed).
+  double MeanAbsoluteDifference = 0.0;
+};
+
+/// Compares the technique's shadow factor (1 lit, 0 shadowed) with the truth.
+Classification Classify(
+  const std::vector<Truth>& truth, const std::vector<float>& factor, int width, int height);
+
+/// True where the truth has a different non-ignored state at a 4-neighbour.
+std::vector<std::uint8_t> TruthEdges(const std::vector<Truth>& truth, int width, int height);
+
+/// The shadow factor of every pixel from two renders of the same view with
+/// white, purely diffuse materials: with the technique and without shadows.
+/// Where the unshadowed render is black the factor is 1.
+std::vector<float> FactorFromRenders(const std::vector<std::uint8_t>& shadowedRgb,
+  const std::vector<std::uint8_t>& unshadowedRgb, int pixelCount);
+
+/// The shadow factor from a SHADOW_FACTOR analysis render (grey = factor).
+std::vector<float> FactorFromAnalysis(const std::vector<std::uint8_t>& rgb, int pixelCount);
+
+/// Percentage of the valid pixels whose texel-density analysis colour is
+/// undersampled (red channel 255; see vtkAbstractShadowMapPass::TEXEL_DENSITY).
+double UndersampledFromAnalysis(
+  const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& valid);
+
+/// Percentage of the valid pixels whose footprint exceeds UndersampledAbove.
+double UndersampledFromFootprints(
+  const std::vector<double>& footprint, const std::vector<std::uint8_t>& valid);
+
+/// Screen pixels covered by one map texel along one side, 1 / sqrt(|det J|),
+/// with J the derivative of map texel coordinates by window pixel, taken by
+/// finite differences of `texel` (the map texel coordinates of every pixel's
+/// surface point) toward the right and upper neighbours. Pixels without valid
+/// neighbours get 0 (never undersampled).
+std::vector<double> TexelFootprints(const std::vector<glm::dvec2>& texel,
+  const std::vector<std::uint8_t>& valid, int width, int height);
+
+/// Flicker between two consecutive frames: percentage of the pixels counted in
+/// both frames whose technique state changed while their truth did not.
+double Flicker(const std::vector<Truth>& truthBefore, const std::vector<float>& factorBefore,
+  const std::vector<Truth>& truthAfter, const std::vector<float>& factorAfter);
+
+/// Percentage of the pixels counted in both frames whose truth changed.
+double TruthChanges(const std::vector<Truth>& truthBefore, const std::vector<Truth>& truthAfter);
+
+/// Error map as RGB bytes: light leaks red, false shadows blue, agreement grey
+/// (light where lit, dark where shadowed), ignored pixels black.
+std::vector<std::uint8_t> ErrorMap(const std::vector<Truth>& truth, const std::vector<float>& factor);
+
+} // namespace shadowmetrics
+
+#endif

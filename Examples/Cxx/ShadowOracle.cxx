@@ -1,0 +1,985 @@
+#include "ShadowOracle.h"
+
+#include "vtkAbstractShadowMapPass.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCompositeDataDisplayAttributes.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkCompositePolyDataMapper2.h>
+#include <vtkDataArray.h>
+#include <vtkDataObjectTree.h>
+#include <vtkDataObjectTreeIterator.h>
+#include <vtkDataSet.h>
+#include <vtkGlyph3D.h>
+#include <vtkGlyph3DMapper.h>
+#include <vtkInformation.h>
+#include <vtkInformationIntegerKey.h>
+#include <vtkLight.h>
+#include <vtkMatrix4x4.h>
+#include <vtkPointData.h>
+#include <vtkPointGaussianMapper.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProp.h>
+#include <vtkPropCollection.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <embree3/rtcore.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <thread>
+
+namespace shadoworacle
+{
+namespace
+{
+
+//------------------------------------------------------------------------------
+// Embree handles
+
+struct DeviceRelease
+{
+  void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
+};
+struct SceneRelease
+{
+  void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
+};
+using DeviceHandle = std::unique_ptr<RTCDeviceTy, DeviceRelease>;
+using SceneHandle = std::unique_ptr<RTCSceneTy, SceneRelease>;
+
+std::string ErrorName(RTCError code)
+{
+  switch (code)
+  {
+    case RTC_ERROR_NONE:
+      return "no error";
+    case RTC_ERROR_INVALID_ARGUMENT:
+      return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION:
+      return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY:
+      return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+      return "unsupported CPU";
+    case RTC_ERROR_CANCELLED:
+      return "cancelled";
+    default:
+      return "unknown error";
+  }
+}
+
+void Warn(const std::string& message)
+{
+  std::cerr << "shadoworacle: warning: " << message << '\n';
+}
+
+//------------------------------------------------------------------------------
+// Triangles in world space, gathered from the renderer's actors
+
+struct Mesh
+{
+  std::vector<float> Points; // x, y, z per point
+  std::vector<unsigned> Triangles;
+};
+
+bool SamePosition(const std::vector<float>& points, vtkIdType a, vtkIdType b)
+{
+  return points[3 * a] == points[3 * b] && points[3 * a + 1] == points[3 * b + 1] &&
+    points[3 * a + 2] == points[3 * b + 2];
+}
+
+// Like VTK's index buffers, drops triangles with two points at the same place.
+void AppendTriangle(Mesh& mesh, vtkIdType a, vtkIdType b, vtkIdType c)
+{
+  if (SamePosition(mesh.Points, a, b) || SamePosition(mesh.Points, b, c) ||
+    SamePosition(mesh.Points, a, c))
+  {
+    return;
+  }
+  mesh.Triangles.insert(mesh.Triangles.end(),
+    { static_cast<unsigned>(a), static_cast<unsigned>(b), static_cast<unsigned>(c) });
+}
+
+template <typename CellFunction>
+void ForEachCell(vtkCellArray* cells, CellFunction&& function)
+{
+  if (!cells)
+  {
+    return;
+  }
+  auto iter = vtk::TakeSmartPointer(cells->NewIterator());
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  {
+    vtkIdType size = 0;
+    const vtkIdType* ids = nullptr;
+    iter->GetCurrentCell(size, ids);
+    function(size, ids);
+  }
+}
+
+// VTK 9.1's OpenGL mappers draw a polygon as a fan around its first point
+// (vtkOpenGLIndexBufferObject::AppendTriangleIndexBuffer): so does the oracle,
+// which matters for non-planar polygons.
+void AppendPolygons(vtkCellArray* polygons, Mesh& mesh)
+{
+  ForEachCell(polygons, [&mesh](vtkIdType size, const vtkIdType* ids) {
+    for (vtkIdType i = 1; i + 1 < size; ++i)
+    {
+      AppendTriangle(mesh, ids[0], ids[i], ids[i + 1]);
+    }
+  });
+}
+
+void AppendStrips(vtkCellArray* strips, Mesh& mesh)
+{
+  ForEachCell(strips, [&mesh](vtkIdType size, const vtkIdType* ids) {
+    for (vtkIdType j = 0; j + 2 < size; ++j)
+    {
+      AppendTriangle(mesh, ids[j], ids[j + 1 + j % 2], ids[j + 1 + (j + 1) % 2]);
+    }
+  });
+}
+
+Mesh WorldMesh(vtkPolyData* polyData, vtkMatrix4x4* matrix)
+{
+  Mesh mesh;
+  vtkPoints* points = polyData->GetPoints();
+  if (!points)
+  {
+    return mesh;
+  }
+  const vtkIdType count = points->GetNumberOfPoints();
+  mesh.Points.reserve(3 * count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+    points->GetPoint(i, p);
+    double world[4];
+    matrix->MultiplyPoint(p, world);
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh.Points.push_back(static_cast<float>(world[k] / world[3]));
+    }
+  }
+  AppendPolygons(polyData->GetPolys(), mesh);
+  AppendStrips(polyData->GetStrips(), mesh);
+  return mesh;
+}
+
+using PolyDataList = std::vector<vtkSmartPointer<vtkPolyData>>;
+
+// vtkCompositePolyDataMapper2 lets a block inherit its parent's visibility and
+// opacity unless it has its own.
+void CollectVisibleLeaves(vtkDataObject* object, vtkCompositeDataDisplayAttributes* attributes,
+  bool visible, double opacity, PolyDataList& leaves)
+{
+  if (!object)
+  {
+    return;
+  }
+  if (attributes && attributes->HasBlockVisibility(object))
+  {
+    visible = attributes->GetBlockVisibility(object);
+  }
+  if (attributes && attributes->HasBlockOpacity(object))
+  {
+    opacity = attributes->GetBlockOpacity(object);
+  }
+  if (auto* tree = vtkDataObjectTree::SafeDownCast(object))
+  {
+    auto iter = vtk::TakeSmartPointer(tree->NewTreeIterator());
+    iter->TraverseSubTreeOff();
+    iter->VisitOnlyLeavesOff();
+    for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
+    {
+      CollectVisibleLeaves(iter->GetCurrentDataObject(), attributes, visible, opacity, leaves);
+    }
+    return;
+  }
+  auto* polyData = vtkPolyData::SafeDownCast(object);
+  if (polyData && visible && opacity >= 1.0)
+  {
+    leaves.emplace_back(polyData);
+  }
+}
+
+PolyDataList CompositeGeometry(vtkCompositePolyDataMapper2* mapper)
+{
+  mapper->Update();
+  PolyDataList leaves;
+  CollectVisibleLeaves(mapper->GetInputDataObject(0, 0),
+    mapper->GetCompositeDataDisplayAttributes(), true, 1.0, leaves);
+  return leaves;
+}
+
+std::vector<vtkDataSet*> DataSetsOf(vtkDataObject* object)
+{
+  std::vector<vtkDataSet*> dataSets;
+  if (auto* dataSet = vtkDataSet::SafeDownCast(object))
+  {
+    dataSets.push_back(dataSet);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(object))
+  {
+    auto iter = vtk::TakeSmartPointer(composite->NewIterator());
+    for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
+    {
+      if (auto* leaf = vtkDataSet::SafeDownCast(iter->GetCurrentDataObject()))
+      {
+        dataSets.push_back(leaf);
+      }
+    }
+  }
+  return dataSets;
+}
+
+// The point array an algorithm's input-array slot selects (by name or by
+// attribute type), as vtkAlgorithm::GetInputArrayToProcess, which is protected.
+vtkDataArray* SelectedPointArray(vtkAlgorithm* algorithm, int slot, vtkDataSet* data)
+{
+  vtkInformation* info = algorithm->GetInputArrayInformation(slot);
+  vtkPointData* pointData = data->GetPointData();
+  if (info->Has(vtkDataObject::FIELD_NAME()))
+  {
+    return pointData->GetArray(info->Get(vtkDataObject::FIELD_NAME()));
+  }
+  if (info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+  {
+    return pointData->GetAttribute(info->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
+  }
+  return nullptr;
+}
+
+// Sets `glyph` up to place glyphs as vtkOpenGLGlyph3DMapper does: translate,
+// rotate by 180 degrees about (v/|v| + x)/2, scale. vtkGlyph3D reads the scale
+// from the active scalars or from the same vectors it orients by, so some
+// mapper settings have no equivalent. Returns why, or an empty string.
+std::string ConfigureGlyph(vtkGlyph3DMapper* mapper, vtkDataSet* points, vtkGlyph3D* glyph)
+{
+  if (mapper->GetUseSourceTableTree() || mapper->GetNumberOfInputConnections(1) > 1)
+  {
+    return "several glyph sources";
+  }
+  if (mapper->GetMasking() && SelectedPointArray(mapper, vtkGlyph3DMapper::MASK, points))
+  {
+    return "masking";
+  }
+  vtkDataArray* orientation = mapper->GetOrient()
+    ? SelectedPointArray(mapper, vtkGlyph3DMapper::ORIENTATION, points)
+    : nullptr;
+  if (orientation &&
+    (mapper->GetOrientationMode() != vtkGlyph3DMapper::DIRECTION ||
+      orientation->GetNumberOfComponents() != 3))
+  {
+    return "orientation by rotation angles or quaternions";
+  }
+  const bool dataScaling =
+    mapper->GetScaling() && mapper->GetScaleMode() != vtkGlyph3DMapper::NO_DATA_SCALING;
+  vtkDataArray* scale =
+    dataScaling ? SelectedPointArray(mapper, vtkGlyph3DMapper::SCALE, points) : nullptr;
+
+  vtkDataArray* scalars = nullptr;
+  vtkDataArray* vectors = orientation;
+  int scaleMode = VTK_DATA_SCALING_OFF;
+  if (scale)
+  {
+    const int components = scale->GetNumberOfComponents();
+    const bool byMagnitude = mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_MAGNITUDE;
+    if (byMagnitude && components == 1)
+    {
+      // The mapper scales by |s|, vtkGlyph3D by s.
+      if (scale->GetRange(0)[0] < 0.0)
+      {
+        return "negative scale factors";
+      }
+      scalars = scale;
+      scaleMode = VTK_SCALE_BY_SCALAR;
+    }
+    else if ((components == 3 || (byMagnitude && components == 2)) &&
+      (!orientation || orientation == scale))
+    {
+      vectors = scale;
+      scaleMode = byMagnitude ? VTK_SCALE_BY_VECTOR : VTK_SCALE_BY_VECTORCOMPONENTS;
+    }
+    else
+    {
+      return "scaling by an array other than the orientation array";
+    }
+  }
+
+  auto input = vtk::TakeSmartPointer(points->NewInstance());
+  input->CopyStructure(points);
+  if (scalars)
+  {
+    input->GetPointData()->SetScalars(scalars);
+  }
+  if (vectors)
+  {
+    input->GetPointData()->SetVectors(vectors);
+  }
+  glyph->SetInputData(input);
+  glyph->SetSourceData(mapper->GetSource(0));
+  glyph->SetScaling(mapper->GetScaling());
+  glyph->SetScaleMode(scaleMode);
+  glyph->SetScaleFactor(mapper->GetScaleFactor());
+  glyph->SetRange(mapper->GetRange());
+  glyph->SetClamping(mapper->GetClamping() && scale != nullptr);
+  glyph->SetOrient(orientation != nullptr);
+  glyph->SetVectorModeToUseVector();
+  glyph->SetIndexModeToOff();
+  glyph->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  return {};
+}
+
+PolyDataList GlyphGeometry(vtkGlyph3DMapper* mapper)
+{
+  mapper->Update();
+  if (!mapper->GetSource(0))
+  {
+    return {}; // the default glyph is a line
+  }
+  PolyDataList glyphs;
+  for (vtkDataSet* points : DataSetsOf(mapper->GetInputDataObject(0, 0)))
+  {
+    vtkNew<vtkGlyph3D> glyph;
+    const std::string unsupported = ConfigureGlyph(mapper, points, glyph);
+    if (!unsupported.empty())
+    {
+      Warn("vtkGlyph3DMapper with " + unsupported + " is not reproduced: skipped");
+      return {};
+    }
+    glyph->Update();
+    glyphs.emplace_back(glyph->GetOutput());
+  }
+  return glyphs;
+}
+
+PolyDataList MapperGeometry(vtkMapper* mapper)
+{
+  if (auto* composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper))
+  {
+    return CompositeGeometry(composite);
+  }
+  if (vtkPointGaussianMapper::SafeDownCast(mapper))
+  {
+    Warn("vtkPointGaussianMapper draws splats, not polygons: skipped");
+    return {};
+  }
+  if (auto* polyDataMapper = vtkPolyDataMapper::SafeDownCast(mapper))
+  {
+    polyDataMapper->Update();
+    if (vtkPolyData* input = polyDataMapper->GetInput())
+    {
+      return { input };
+    }
+    return {};
+  }
+  if (auto* glyphMapper = vtkGlyph3DMapper::SafeDownCast(mapper))
+  {
+    return GlyphGeometry(glyphMapper);
+  }
+  Warn(std::string(mapper->GetClassName()) + " is not supported: skipped");
+  return {};
+}
+
+bool CastsShadows(vtkActor* actor)
+{
+  vtkInformation* keys = actor->GetPropertyKeys();
+  vtkInformationIntegerKey* key = vtkAbstractShadowMapPass::CASTS_SHADOWS();
+  return !keys || !keys->Has(key) || keys->Get(key) != 0;
+}
+
+bool IsOpaqueVisibleCaster(vtkActor* actor)
+{
+  return actor->GetVisibility() && actor->GetMapper() &&
+    actor->GetProperty()->GetOpacity() >= 1.0 && !actor->GetForceTranslucent() &&
+    CastsShadows(actor);
+}
+
+std::vector<Mesh> CasterMeshes(vtkRenderer* renderer)
+{
+  std::vector<Mesh> meshes;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator iter;
+  props->InitTraversal(iter);
+  while (vtkProp* prop = props->GetNextProp(iter))
+  {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    if (!actor)
+    {
+      if (prop->GetVisibility() && prop->IsA("vtkAssembly"))
+      {
+        Warn("vtkAssembly is not supported: skipped");
+      }
+      continue;
+    }
+    if (!IsOpaqueVisibleCaster(actor))
+    {
+      continue;
+    }
+    for (const auto& polyData : MapperGeometry(actor->GetMapper()))
+    {
+      Mesh mesh = WorldMesh(polyData, actor->GetMatrix());
+      if (!mesh.Triangles.empty())
+      {
+        meshes.push_back(std::move(mesh));
+      }
+    }
+  }
+  return meshes;
+}
+
+std::size_t CountTriangles(const std::vector<Mesh>& meshes)
+{
+  std::size_t count = 0;
+  for (const Mesh& mesh : meshes)
+  {
+    count += mesh.Triangles.size() / 3;
+  }
+  return count;
+}
+
+double SurfaceOffsetOf(const std::vector<Mesh>& meshes)
+{
+  glm::dvec3 low(std::numeric_limits<double>::max());
+  glm::dvec3 high(std::numeric_limits<double>::lowest());
+  for (const Mesh& mesh : meshes)
+  {
+    for (std::size_t i = 0; i < mesh.Points.size(); i += 3)
+    {
+      const glm::dvec3 p(mesh.Points[i], mesh.Points[i + 1], mesh.Points[i + 2]);
+      low = glm::min(low, p);
+      high = glm::max(high, p);
+    }
+  }
+  const glm::dvec3 largest = glm::max(glm::abs(low), glm::abs(high));
+  const double size =
+    std::max(glm::length(high - low), std::max(largest.x, std::max(largest.y, largest.z)));
+  return 1e-5 * size;
+}
+
+//------------------------------------------------------------------------------
+// Camera, lights, rays
+
+glm::dmat4 ToGlm(vtkMatrix4x4* matrix)
+{
+  glm::dmat4 result;
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int column = 0; column < 4; ++column)
+    {
+      result[column][row] = matrix->GetElement(row, column);
+    }
+  }
+  return result;
+}
+
+glm::dvec3 ToGlm(const double v[3])
+{
+  return { v[0], v[1], v[2] };
+}
+
+struct CameraFrame
+{
+  glm::dmat4 ClipToWorld;
+  glm::dvec3 Position;
+  glm::dvec3 Direction; // unit direction of projection
+  bool Parallel = false;
+  double DepthRange = 0.0; // far - near clipping distance
+};
+
+// The same matrix vtkOpenGLCamera::GetKeyMatrices gives the rasteriser.
+CameraFrame MakeCameraFrame(vtkRenderer* renderer, int width, int height)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double aspect = static_cast<double>(width) / height;
+  CameraFrame frame;
+  frame.ClipToWorld =
+    glm::inverse(ToGlm(camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0)));
+  frame.Position = ToGlm(camera->GetPosition());
+  frame.Direction = glm::normalize(ToGlm(camera->GetDirectionOfProjection()));
+  frame.Parallel = camera->GetParallelProjection() != 0;
+  const double* range = camera->GetClippingRange();
+  frame.DepthRange = range[1] - range[0];
+  return frame;
+}
+
+glm::dvec3 Unproject(const glm::dmat4& clipToWorld, const glm::dvec3& ndc)
+{
+  const glm::dvec4 p = clipToWorld * glm::dvec4(ndc, 1.0);
+  return glm::dvec3(p) / p.w;
+}
+
+glm::dvec2 PixelCentreNdc(int x, int y, int width, int height)
+{
+  return { 2.0 * (x + 0.5) / width - 1.0, 2.0 * (y + 0.5) / height - 1.0 };
+}
+
+double ViewDepth(const CameraFrame& camera, const glm::dvec3& point)
+{
+  return glm::dot(point - camera.Position, camera.Direction);
+}
+
+// Directions need not be unit length: a hit lies at Origin + t * Direction,
+// 0 <= t <= Far.
+struct Ray
+{
+  glm::dvec3 Origin;
+  glm::dvec3 Direction;
+  double Far;
+};
+
+// From the near to the far clipping plane: t runs from 0 to 1.
+Ray PrimaryRay(const CameraFrame& camera, int x, int y, int width, int height)
+{
+  const glm::dvec2 ndc = PixelCentreNdc(x, y, width, height);
+  const glm::dvec3 nearPoint = Unproject(camera.ClipToWorld, glm::dvec3(ndc, -1.0));
+  const glm::dvec3 farPoint = Unproject(camera.ClipToWorld, glm::dvec3(ndc, 1.0));
+  return { nearPoint, farPoint - nearPoint, 1.0 };
+}
+
+RTCRay ToEmbree(const Ray& ray)
+{
+  RTCRay result{};
+  result.org_x = static_cast<float>(ray.Origin.x);
+  result.org_y = static_cast<float>(ray.Origin.y);
+  result.org_z = static_cast<float>(ray.Origin.z);
+  result.dir_x = static_cast<float>(ray.Direction.x);
+  result.dir_y = static_cast<float>(ray.Direction.y);
+  result.dir_z = static_cast<float>(ray.Direction.z);
+  result.tnear = 0.0f;
+  result.tfar = static_cast<float>(ray.Far);
+  result.mask = 0xFFFFFFFFu;
+  return result;
+}
+
+struct LightFrame
+{
+  bool Usable = false;
+  bool Positional = false;
+  bool Spot = false;
+  glm::dvec3 Position{ 0.0 };    // positional lights
+  glm::dvec3 TowardLight{ 0.0 }; // directional lights: unit vector toward the light
+  glm::dvec3 Axis{ 0.0 };        // spot lights: unit vector from the light to its focal point
+  double CosCone = -1.0;
+};
+
+LightFrame MakeLightFrame(vtkLight* light)
+{
+  LightFrame frame;
+  const glm::dvec3 position = ToGlm(light->GetTransformedPosition());
+  const glm::dvec3 focalPoint = ToGlm(light->GetTransformedFocalPoint());
+  const double length = glm::length(position - focalPoint);
+  frame.Positional = light->GetPositional() != 0;
+  frame.Position = position;
+  // VTK: a positional light with a cone angle (a half angle) of 90 degrees or
+  // more lights every direction.
+  frame.Spot = frame.Positional && light->GetConeAngle() < 90.0;
+  if (length > 0.0)
+  {
+    frame.TowardLight = (position - focalPoint) / length;
+    frame.Axis = -frame.TowardLight;
+  }
+  frame.Usable = frame.Positional ? (!frame.Spot || length > 0.0) : length > 0.0;
+  frame.CosCone = std::cos(glm::radians(light->GetConeAngle()));
+  return frame;
+}
+
+// Runs rowFunction(y) for every row on all cores; each row is computed by
+// one thread, so results do not depend on scheduling.
+template <typename RowFunction>
+void ForEachRow(int height, RowFunction&& rowFunction)
+{
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threadCount = std::min<unsigned>(cores, static_cast<unsigned>(height));
+  std::atomic<int> nextRow{ 0 };
+  auto work = [&]() {
+    for (int y = nextRow++; y < height; y = nextRow++)
+    {
+      rowFunction(y);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (unsigned i = 1; i < threadCount; ++i)
+  {
+    threads.emplace_back(work);
+  }
+  work();
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+}
+
+Surface EmptySurface(int width, int height)
+{
+  Surface surface;
+  surface.Width = std::max(0, width);
+  surface.Height = std::max(0, height);
+  const std::size_t count = static_cast<std::size_t>(surface.Width) * surface.Height;
+  surface.Valid.assign(count, 0);
+  surface.Position.assign(count, glm::dvec3(0.0));
+  surface.Normal.assign(count, glm::dvec3(0.0));
+  surface.ViewDepth.assign(count, 0.0);
+  return surface;
+}
+
+struct Hit
+{
+  glm::dvec3 Position;
+  glm::dvec3 Normal; // unit, facing the ray's origin
+};
+
+// Embree's buffers of one attached geometry.
+struct TriangleBuffers
+{
+  const float* Points = nullptr;
+  const unsigned* Triangles = nullptr;
+};
+
+} // namespace
+
+//------------------------------------------------------------------------------
+struct Oracle::Impl
+{
+  DeviceHandle Device;
+  SceneHandle Scene;
+  std::vector<TriangleBuffers> Geometries; // by geometry id; owned by Scene
+  std::size_t NumberOfTriangles = 0;
+  double SurfaceOffset = 0.0;
+
+  void Clear()
+  {
+    this->Scene.reset();
+    this->Geometries.clear();
+    this->NumberOfTriangles = 0;
+    this->SurfaceOffset = 0.0;
+  }
+
+  bool EnsureDevice(std::string& error)
+  {
+    if (!this->Device)
+    {
+      this->Device.reset(rtcNewDevice(nullptr));
+      if (!this->Device)
+      {
+        error = "Embree: cannot create a device (" + ErrorName(rtcGetDeviceError(nullptr)) + ")";
+        return false;
+      }
+    }
+    return true;
+  }
+
+  bool Attach(RTCScene scene, const Mesh& mesh)
+  {
+    RTCGeometry geometry = rtcNewGeometry(this->Device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (!geometry)
+    {
+      return false;
+    }
+    const std::size_t pointCount = mesh.Points.size() / 3;
+    const std::size_t triangleCount = mesh.Triangles.size() / 3;
+    auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX,
+      0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), pointCount));
+    auto* triangles = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry,
+      RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangleCount));
+    if (!points || !triangles)
+    {
+      rtcReleaseGeometry(geometry);
+      return false;
+    }
+    std::copy(mesh.Points.begin(), mesh.Points.end(), points);
+    std::copy(mesh.Triangles.begin(), mesh.Triangles.end(), triangles);
+    rtcCommitGeometry(geometry);
+    const unsigned id = rtcAttachGeometry(scene, geometry);
+    rtcReleaseGeometry(geometry); // the scene keeps it
+    if (id >= this->Geometries.size())
+    {
+      this->Geometries.resize(id + 1);
+    }
+    this->Geometries[id] = { points, triangles };
+    return true;
+  }
+
+  glm::dvec3 Point(const TriangleBuffers& buffers, unsigned index) const
+  {
+    const float* p = buffers.Points + 3 * static_cast<std::size_t>(index);
+    return { p[0], p[1], p[2] };
+  }
+
+  // Embree's float hit distance is refined in double against the plane of the
+  // triangle it hit, so hit points lie on the surface to double precision and
+  // shadow rays can start a small, scale-relative distance off it.
+  Hit MakeHit(const Ray& ray, const RTCRayHit& rayHit) const
+  {
+    const TriangleBuffers& buffers = this->Geometries[rayHit.hit.geomID];
+    const unsigned* triangle = buffers.Triangles + 3 * static_cast<std::size_t>(rayHit.hit.primID);
+    const glm::dvec3 a = this->Point(buffers, triangle[0]);
+    const glm::dvec3 normal =
+      glm::cross(this->Point(buffers, triangle[1]) - a, this->Point(buffers, triangle[2]) - a);
+    const double facing = glm::dot(ray.Direction, normal);
+    double t = rayHit.ray.tfar;
+    if (std::abs(facing) > 1e-9 * glm::length(ray.Direction) * glm::length(normal))
+    {
+      t = glm::dot(a - ray.Origin, normal) / facing;
+    }
+    Hit hit;
+    hit.Position = ray.Origin + t * ray.Direction;
+    hit.Normal = glm::normalize(facing > 0.0 ? -normal : normal);
+    return hit;
+  }
+
+  bool Intersect(const Ray& ray, Hit& hit) const
+  {
+    RTCRayHit rayHit{};
+    rayHit.ray = ToEmbree(ray);
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcIntersect1(this->Scene.get(), &context, &rayHit);
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+    {
+      return false;
+    }
+    hit = this->MakeHit(ray, rayHit);
+    return true;
+  }
+
+  bool Occluded(const Ray& ray) const
+  {
+    RTCRay shadowRay = ToEmbree(ray);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcOccluded1(this->Scene.get(), &context, &shadowRay);
+    return shadowRay.tfar < 0.0f; // Embree sets -inf on a hit
+  }
+
+  Truth ClassifyPoint(const LightFrame& light, const glm::dvec3& position,
+    const glm::dvec3& normal, double minimumCosine) const
+  {
+    const glm::dvec3 origin = position + this->SurfaceOffset * normal;
+    Ray ray{ origin, light.TowardLight, std::numeric_limits<double>::infinity() };
+    if (light.Positional)
+    {
+      const glm::dvec3 toLight = light.Position - position;
+      const double distance = glm::length(toLight);
+      if (distance <= 0.0)
+      {
+        return Truth::Ignored;
+      }
+      if (light.Spot && glm::dot(-toLight / distance, light.Axis) < light.CosCone)
+      {
+        return Truth::Ignored;
+      }
+      ray.Direction = glm::normalize(light.Position - origin);
+      ray.Far = std::max(0.0, glm::length(light.Position - origin) - this->SurfaceOffset);
+    }
+    const glm::dvec3 towardLight =
+      light.Positional ? glm::normalize(light.Position - position) : light.TowardLight;
+    if (glm::dot(normal, towardLight) <= minimumCosine)
+    {
+      return Truth::Ignored;
+    }
+    return this->Occluded(ray) ? Truth::Shadowed : Truth::Lit;
+  }
+};
+
+//------------------------------------------------------------------------------
+Oracle::Oracle()
+  : Pimpl(new Impl)
+{
+}
+
+Oracle::~Oracle() = default;
+Oracle::Oracle(Oracle&&) noexcept = default;
+Oracle& Oracle::operator=(Oracle&&) noexcept = default;
+
+std::size_t Oracle::GetNumberOfTriangles() const
+{
+  return this->Pimpl ? this->Pimpl->NumberOfTriangles : 0;
+}
+
+double Oracle::GetSurfaceOffset() const
+{
+  return this->Pimpl ? this->Pimpl->SurfaceOffset : 0.0;
+}
+
+//------------------------------------------------------------------------------
+bool Oracle::Build(vtkRenderer* renderer, std::string& error)
+{
+  if (!this->Pimpl)
+  {
+    this->Pimpl.reset(new Impl); // a moved-from oracle can be rebuilt
+  }
+  Impl& impl = *this->Pimpl;
+  impl.Clear();
+  if (!renderer)
+  {
+    error = "no renderer";
+    return false;
+  }
+  const std::vector<Mesh> meshes = CasterMeshes(renderer);
+  if (CountTriangles(meshes) == 0)
+  {
+    error = "the renderer has no visible, opaque, shadow-casting triangles";
+    return false;
+  }
+  if (!impl.EnsureDevice(error))
+  {
+    return false;
+  }
+  SceneHandle scene(rtcNewScene(impl.Device.get()));
+  if (!scene)
+  {
+    error =
+      "Embree: cannot create a scene (" + ErrorName(rtcGetDeviceError(impl.Device.get())) + ")";
+    return false;
+  }
+  // ROBUST: no optimisations that trade accuracy for speed; this is ground truth.
+  rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_HIGH);
+  for (const Mesh& mesh : meshes)
+  {
+    if (!impl.Attach(scene.get(), mesh))
+    {
+      error = "Embree: cannot create a triangle geometry (" +
+        ErrorName(rtcGetDeviceError(impl.Device.get())) + ")";
+      impl.Clear();
+      return false;
+    }
+  }
+  rtcCommitScene(scene.get());
+  const RTCError code = rtcGetDeviceError(impl.Device.get());
+  if (code != RTC_ERROR_NONE)
+  {
+    error = "Embree: cannot build the BVH (" + ErrorName(code) + ")";
+    impl.Clear();
+    return false;
+  }
+  impl.Scene = std::move(scene);
+  impl.NumberOfTriangles = CountTriangles(meshes);
+  impl.SurfaceOffset = SurfaceOffsetOf(meshes);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+Surface Oracle::Trace(vtkRenderer* renderer, int width, int height) const
+{
+  Surface surface = EmptySurface(width, height);
+  if (!renderer || !this->Pimpl || !this->Pimpl->Scene || surface.Valid.empty())
+  {
+    return surface;
+  }
+  const CameraFrame camera = MakeCameraFrame(renderer, width, height);
+  const Impl& impl = *this->Pimpl;
+  ForEachRow(height, [&](int y) {
+    for (int x = 0; x < width; ++x)
+    {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      Hit hit;
+      if (impl.Intersect(PrimaryRay(camera, x, y, width, height), hit))
+      {
+        surface.Valid[i] = 1;
+        surface.Position[i] = hit.Position;
+        surface.Normal[i] = hit.Normal;
+        surface.ViewDepth[i] = ViewDepth(camera, hit.Position);
+      }
+    }
+  });
+  return surface;
+}
+
+//------------------------------------------------------------------------------
+void Oracle::MaskRasterMismatch(Surface& surface, vtkRenderer* renderer,
+  const std::vector<float>& zbuffer, double relativeTolerance)
+{
+  const std::size_t count = surface.Valid.size();
+  if (!renderer || zbuffer.size() != count || count == 0)
+  {
+    std::cerr << "shadoworacle: MaskRasterMismatch: z-buffer of " << zbuffer.size()
+              << " values for " << count << " pixels: every pixel dropped\n";
+    std::fill(surface.Valid.begin(), surface.Valid.end(), 0);
+    return;
+  }
+  const CameraFrame camera = MakeCameraFrame(renderer, surface.Width, surface.Height);
+  for (int y = 0; y < surface.Height; ++y)
+  {
+    for (int x = 0; x < surface.Width; ++x)
+    {
+      const std::size_t i = static_cast<std::size_t>(y) * surface.Width + x;
+      if (!surface.Valid[i])
+      {
+        continue;
+      }
+      if (zbuffer[i] >= 1.0f) // nothing rasterised here
+      {
+        surface.Valid[i] = 0;
+        continue;
+      }
+      const glm::dvec2 ndc = PixelCentreNdc(x, y, surface.Width, surface.Height);
+      const glm::dvec3 rasterPoint =
+        Unproject(camera.ClipToWorld, glm::dvec3(ndc, 2.0 * zbuffer[i] - 1.0));
+      const double scale = camera.Parallel ? camera.DepthRange : surface.ViewDepth[i];
+      if (std::abs(ViewDepth(camera, rasterPoint) - surface.ViewDepth[i]) >
+        relativeTolerance * scale)
+      {
+        surface.Valid[i] = 0;
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<Truth> Oracle::Classify(
+  const Surface& surface, vtkLight* light, double minimumCosine) const
+{
+  std::vector<Truth> truth(surface.Valid.size(), Truth::Ignored);
+  if (!light || !this->Pimpl || !this->Pimpl->Scene)
+  {
+    return truth;
+  }
+  const std::size_t count = static_cast<std::size_t>(std::max(0, surface.Width)) *
+    static_cast<std::size_t>(std::max(0, surface.Height));
+  if (surface.Valid.size() != count || surface.Position.size() != count ||
+    surface.Normal.size() != count)
+  {
+    Warn("Classify: the surface's arrays do not hold Width x Height pixels: every pixel ignored");
+    return truth;
+  }
+  const LightFrame frame = MakeLightFrame(light);
+  if (!frame.Usable)
+  {
+    Warn("light has no direction (position equals focal point): every pixel ignored");
+    return truth;
+  }
+  const Impl& impl = *this->Pimpl;
+  ForEachRow(surface.Height, [&](int y) {
+    for (int x = 0; x < surface.Width; ++x)
+    {
+      const std::size_t i = static_cast<std::size_t>(y) * surface.Width + x;
+      if (surface.Valid[i])
+      {
+        truth[i] =
+          impl.ClassifyPoint(frame, surface.Position[i], surface.Normal[i], minimumCosine);
+      }
+    }
+  });
+  return truth;
+}
+
+} // namespace shadoworacle

@@ -1,0 +1,139 @@
+// An exact shadow-visibility oracle, the ground truth of the shadow-map
+// benchmarks: Embree 3 traces one primary ray through every pixel centre of a
+// VTK view and, per light, one occlusion ray from each visible surface point.
+//
+// Typical use, after the window has rendered the view once (the render sets
+// camera-light transforms and fills the z-buffer):
+//
+//   shadoworacle::Oracle oracle;
+//   std::string error;
+//   if (!oracle.Build(renderer, error)) { ... }
+//   int* size = renderer->GetSize();
+//   auto surface = oracle.Trace(renderer, size[0], size[1]);
+//   shadoworacle::Oracle::MaskRasterMismatch(surface, renderer, zbuffer);
+//   auto truth = oracle.Classify(surface, light);
+#ifndef ShadowOracle_h
+#define ShadowOracle_h
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+class vtkLight;
+class vtkRenderer;
+
+namespace shadoworacle
+{
+
+/// One sample per pixel; row 0 is the bottom row (VTK's pixel order) and the
+/// index of pixel (x, y) is y * Width + x.
+struct Surface
+{
+  int Width = 0, Height = 0;
+  std::vector<unsigned char> Valid;  ///< 1: a primary ray hit geometry and it was kept
+  std::vector<glm::dvec3> Position;  ///< world-space hit point
+  std::vector<glm::dvec3> Normal;    ///< unit geometric normal, flipped to face the camera
+  std::vector<double> ViewDepth;     ///< distance along the camera's view direction
+};
+
+enum class Truth : unsigned char
+{
+  Ignored = 0,
+  Lit = 1,
+  Shadowed = 2
+};
+
+/**
+ * The triangles of a renderer's shadow casters in one Embree BVH.
+ *
+ * Geometry is triangulated exactly as VTK 9.1's OpenGL mapper does (polygons
+ * as fans from their first point, strips with alternating winding), in single
+ * precision like the rasteriser; rays and hit points are computed in double.
+ *
+ * Movable, not copyable. Tracing and classification run on all cores, one row
+ * at a time; every pixel is computed independently, so results do not depend
+ * on the number of threads.
+ */
+class Oracle
+{
+public:
+  Oracle();
+  ~Oracle();
+  Oracle(Oracle&&) noexcept;
+  Oracle& operator=(Oracle&&) noexcept;
+  Oracle(const Oracle&) = delete;
+  Oracle& operator=(const Oracle&) = delete;
+
+  /**
+   * Builds the BVH from the renderer's visible, opaque (opacity 1, not forced
+   * translucent) vtkActors that cast shadows (no vtkAbstractShadowMapPass::
+   * CASTS_SHADOWS() key in their property keys, or a non-zero one), each
+   * placed by actor->GetMatrix(). Mappers: vtkPolyDataMapper (its input after
+   * Update), vtkCompositePolyDataMapper2 (every polydata leaf whose block is
+   * visible and opaque) and vtkGlyph3DMapper (the same glyphs built by
+   * vtkGlyph3D; configurations vtkGlyph3D cannot reproduce are skipped with a
+   * warning on std::cerr, as are other mappers and non-actor props).
+   * Polygons and strips become triangles; lines and vertices are ignored.
+   * Returns false with a one-line `error` when there is nothing to trace or
+   * Embree fails; the previous BVH is then gone.
+   */
+  bool Build(vtkRenderer* renderer, std::string& error);
+
+  /**
+   * One primary ray through each pixel centre of the renderer's active camera
+   * (perspective or parallel) for a view of width x height pixels, which
+   * should be the renderer's size in pixels (its viewport of the window). Rays
+   * run from the near to the far clipping plane, so clipped geometry is not
+   * seen, as in the rasteriser.
+   */
+  Surface Trace(vtkRenderer* renderer, int width, int height) const;
+
+  /**
+   * Marks invalid the pixels where the rasterised depth disagrees with the ray
+   * hit: silhouettes, geometry the oracle skipped, background. `zbuffer` holds
+   * window depths in [0, 1] as returned by vtkRenderWindow::GetZbufferData for
+   * the renderer's pixels, in Surface order. A pixel is kept when the view
+   * depths differ by at most relativeTolerance times the ray's view depth
+   * (perspective) or times the clipping range's length (parallel projection,
+   * where depth resolution is uniform). A z-buffer of the wrong size
+   * invalidates every pixel, with a message on std::cerr.
+   */
+  static void MaskRasterMismatch(Surface& surface, vtkRenderer* renderer,
+    const std::vector<float>& zbuffer, double relativeTolerance = 1e-3);
+
+  /**
+   * Per pixel: Ignored where the surface is not Valid, where N.L <=
+   * minimumCosine (L: unit vector from the point to the light), or outside a
+   * spot light's cone (positional light with a cone angle below 90 degrees,
+   * VTK's convention); otherwise Lit or Shadowed by one occlusion ray from the
+   * point, moved off the surface along its normal by GetSurfaceOffset(), to
+   * the light: to infinity for directional lights, up to the light's position
+   * for positional ones.
+   *
+   * The light is read through vtkLight::GetTransformedPosition and
+   * GetTransformedFocalPoint, which are world coordinates for scene lights at
+   * any time, and for camera lights and headlights only once a render of this
+   * renderer has set the light's transform matrix (or moved it to the camera):
+   * classify after rendering the view.
+   */
+  std::vector<Truth> Classify(
+    const Surface& surface, vtkLight* light, double minimumCosine = 0.1) const;
+
+  /// Triangles in the BVH (0 before a successful Build).
+  std::size_t GetNumberOfTriangles() const;
+
+  /// How far shadow rays start off the surface: 1e-5 of the scene's size
+  /// (the larger of its bounding-box diagonal and its largest coordinate).
+  double GetSurfaceOffset() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> Pimpl;
+};
+
+} // namespace shadoworacle
+
+#endif

@@ -1,0 +1,35 @@
+# Tests of the measurement code: the exact shadow oracle (Examples/Cxx/
+# ShadowOracle.cxx, library ShadowMeasure), the metrics and `vtkshadows bench`. Included from Testing/CMakeLists.txt, so relative paths are
+# relative to Testing/. The tests render, so they run under xvfb-run.
+if (NOT TARGET ShadowMeasure)
+  return ()
+endif ()
+include(GoogleTest)
+
+set(shadoworacle_test_vtk_modules
+  VTK::CommonCore
+  VTK::CommonDataModel
+  VTK::FiltersSources
+  VTK::RenderingCore
+  VTK::RenderingOpenGL2)
+
+add_executable(TestShadowOracle Cxx/TestShadowOracle.cxx)
+target_link_libraries(TestShadowOracle PRIVATE
+  ShadowMeasure
+  ShadowMaps::RenderingShadowMaps   # vtkAbstractShadowMapPass::CASTS_SHADOWS()
+  ${shadoworacle_test_vtk_modules}
+  glm::glm
+  GTest::gtest_main)
+vtk_module_autoinit(TARGETS TestShadowOracle MODULES ${shadoworacle_test_vtk_modules})
+gtest_discover_tests(TestShadowOracle DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
+
+add_executable(TestShadowMetrics Cxx/TestShadowMetrics.cxx)
+target_link_libraries(TestShadowMetrics PRIVATE ShadowMetrics GTest::gtest_main)
+gtest_discover_tests(TestShadowMetrics)
+
+if (TARGET vtkshadows)
+  add_test(NAME CLI.BenchAndAnalyze
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_bench.py"
+            "$<TARGET_FILE:vtkshadows>" "${CMAKE_CURRENT_BINARY_DIR}/Output")
+  set_tests_properties(CLI.BenchAndAnalyze PROPERTIES TIMEOUT 900)
+endif ()

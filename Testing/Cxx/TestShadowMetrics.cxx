@@ -1,0 +1,106 @@
+// The benchmark's error metrics on small hand-made images.
+#include "ShadowMetrics.h"
+
+#include <gtest/gtest.h>
+
+using shadowmetrics::Truth;
+
+namespace
+{
+constexpr Truth L = Truth::Lit;
+constexpr Truth S = Truth::Shadowed;
+constexpr Truth I = Truth::Ignored;
+} // namespace
+
+TEST(ShadowMetrics, ClassifySplitsFalseShadowsAndLeaks)
+{
+  // 4 x 2, bottom row first.
+  const std::vector<Truth> truth = { L, L, S, S, L, L, S, I };
+  const std::vector<float> factor = { 1.0f, 0.2f, 0.0f, 0.9f, 1.0f, 1.0f, 0.0f, 0.0f };
+  const auto c = shadowmetrics::Classify(truth, factor, 4, 2);
+  EXPECT_EQ(c.Counted, 7);
+  EXPECT_NEAR(c.FalseShadow, 100.0 / 7.0, 1e-9);
+  EXPECT_NEAR(c.LightLeak, 100.0 / 7.0, 1e-9);
+  EXPECT_NEAR(c.Misclassified, 200.0 / 7.0, 1e-9);
+  EXPECT_NEAR(c.MeanAbsoluteDifference, (0.8 + 0.9) / 7.0, 1e-6);
+}
+
+TEST(ShadowMetrics, InnerExcludesTruthEdges)
+{
+  // Row of 5: L L | S S S; the two pixels beside the edge are excluded.
+  const std::vector<Truth> truth = { L, L, S, S, S };
+  const auto edges = shadowmetrics::TruthEdges(truth, 5, 1);
+  EXPECT_EQ(edges, (std::vector<std::uint8_t>{ 0, 1, 1, 0, 0 }));
+  // The technique misplaces the edge by one pixel: wrong only at an edge pixel.
+  const std::vector<float> factor = { 1.0f, 0.0f, 0.0f, 0.0f, 0.0f };
+  const auto c = shadowmetrics::Classify(truth, factor, 5, 1);
+  EXPECT_NEAR(c.Misclassified, 20.0, 1e-9);
+  EXPECT_EQ(c.Inner, 3);
+  EXPECT_EQ(c.InnerMisclassified, 0.0);
+}
+
+TEST(ShadowMetrics, IgnoredNeighboursMakeNoEdge)
+{
+  const std::vector<Truth> truth = { L, I, S };
+  EXPECT_EQ(shadowmetrics::TruthEdges(truth, 3, 1), (std::vector<std::uint8_t>{ 0, 0, 0 }));
+}
+
+TEST(ShadowMetrics, FactorFromRendersIsTheRatio)
+{
+  const std::vector<std::uint8_t> shadowed = { 50, 50, 50, 0, 0, 0, 200, 200, 200 };
+  const std::vector<std::uint8_t> unshadowed = { 100, 100, 100, 0, 0, 0, 100, 100, 100 };
+  const auto factor = shadowmetrics::FactorFromRenders(shadowed, unshadowed, 3);
+  EXPECT_FLOAT_EQ(factor[0], 0.5f);
+  EXPECT_FLOAT_EQ(factor[1], 1.0f); // black without shadows: no information, lit
+  EXPECT_FLOAT_EQ(factor[2], 1.0f); // clamped
+}
+
+TEST(ShadowMetrics, TexelFootprintOfAKnownMapping)
+{
+  // Texel coordinates advancing half a texel per pixel: each texel spans two pixels.
+  const int w = 4, h = 3;
+  std::vector<glm::dvec2> texel(w * h);
+  std::vector<std::uint8_t> valid(w * h, 1);
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      texel[y * w + x] = glm::dvec2(0.5 * x, 0.5 * y);
+    }
+  }
+  const auto footprint = shadowmetrics::TexelFootprints(texel, valid, w, h);
+  EXPECT_NEAR(footprint[0], 2.0, 1e-12);
+  EXPECT_EQ(footprint[w * h - 1], 0.0); // no right/upper neighbour
+  EXPECT_NEAR(shadowmetrics::UndersampledFromFootprints(footprint, valid), 100.0 * 6 / 12, 1e-9);
+}
+
+TEST(ShadowMetrics, UndersampledFromAnalysisCountsFullRed)
+{
+  const std::vector<std::uint8_t> rgb = { 255, 10, 0, 254, 0, 0, 255, 150, 0, 255, 0, 0 };
+  const std::vector<std::uint8_t> valid = { 1, 1, 1, 0 };
+  EXPECT_NEAR(shadowmetrics::UndersampledFromAnalysis(rgb, valid), 200.0 / 3.0, 1e-9);
+}
+
+TEST(ShadowMetrics, FlickerCountsChangesTheTruthDoesNotHave)
+{
+  const std::vector<Truth> before = { L, L, S, S, I };
+  const std::vector<Truth> after = { L, S, S, S, L };
+  const std::vector<float> factorBefore = { 1.0f, 1.0f, 0.0f, 0.0f, 1.0f };
+  const std::vector<float> factorAfter = { 0.0f, 0.0f, 0.0f, 1.0f, 0.0f };
+  // Pixel 0 and 3 flicker; pixel 1 follows the truth; pixel 4 is not counted.
+  EXPECT_NEAR(shadowmetrics::Flicker(before, factorBefore, after, factorAfter), 50.0, 1e-9);
+  EXPECT_NEAR(shadowmetrics::TruthChanges(before, after), 25.0, 1e-9);
+}
+
+TEST(ShadowMetrics, ErrorMapColours)
+{
+  const std::vector<Truth> truth = { S, L, L, S, I };
+  const std::vector<float> factor = { 1.0f, 0.0f, 1.0f, 0.0f, 0.0f };
+  const auto rgb = shadowmetrics::ErrorMap(truth, factor);
+  EXPECT_EQ(rgb[0], 230); // leak: red
+  EXPECT_EQ(rgb[2], 0);
+  EXPECT_EQ(rgb[5], 230); // false shadow: blue
+  EXPECT_EQ(rgb[6], rgb[8]); // agreement: grey
+  EXPECT_GT(rgb[6], rgb[9]); // lit lighter than shadowed
+  EXPECT_EQ(rgb[12] + rgb[13] + rgb[14], 0);
+}

@@ -1,0 +1,102 @@
+"""vtkshadows bench and analyze, end to end on a small image.
+
+usage: test_bench.py VTKSHADOWS OUTPUT_DIR
+
+Checks the outputs exist and the measured numbers mean what they should: no
+shadows misclassifies exactly the truly shadowed pixels (all leaks), VTK's pass
+misses point-light shadows entirely, the focused map beats VTK's pass.
+"""
+import csv
+import os
+import subprocess
+import sys
+
+MODEL = "/usr/share/assimp/models/STL/Spider_binary.stl"
+SMALL = ["--size", "192x108", "--timed-frames", "1"]
+
+
+def run(program, *arguments):
+    return subprocess.run([program, *arguments], capture_output=True, text=True, timeout=600)
+
+
+def rows_by_case(path):
+    with open(path, newline="") as stream:
+        return {(r["scene"], r["light"], r["technique"]): r for r in csv.DictReader(stream)}
+
+
+def check(condition, message):
+    if not condition:
+        print("FAIL:", message)
+        sys.exit(1)
+
+
+def test_bench(program, output):
+    directory = os.path.join(output, "bench")
+    result = run(program, "bench", "--scenes", "model", "--setups", "perpendicular,point",
+                 "--flicker-frames", "3", "--out", directory, *SMALL)
+    check(result.returncode == 0, "bench failed: " + result.stderr[-2000:])
+    table = [line for line in result.stdout.splitlines() if line.startswith("| model")]
+    check(len(table) == 8, "expected 8 table rows (2 set-ups x 4 techniques), got %d" % len(table))
+    rows = rows_by_case(os.path.join(directory, "results.csv"))
+    for setup in ("perpendicular", "point"):
+        none = rows[("model", setup, "none")]
+        check(float(none["false_shadow"]) == 0.0, setup + ": no shadows cannot shadow falsely")
+        check(float(none["misclassified"]) > 0.5, setup + ": the scene has shadows to find")
+        check(float(none["misclassified"]) == float(none["leak"]), setup + ": all leaks")
+        uniform = rows[("model", setup, "uniform")]
+        check(float(uniform["misclassified"]) < 0.5 * float(none["misclassified"]),
+              setup + ": the focused map finds the shadows")
+        for technique in ("none", "vtk", "vtk-equal", "uniform"):
+            name = "model-%s-%s-errors.png" % (setup, technique)
+            check(os.path.getsize(os.path.join(directory, name)) > 0, name + " written")
+        check(os.path.getsize(os.path.join(directory, "model-%s-chart.png" % setup)) > 0, "chart")
+    point_vtk = rows[("model", "point", "vtk")]
+    check(point_vtk["misclassified"] == rows[("model", "point", "none")]["misclassified"],
+          "VTK's pass casts no point-light shadows")
+    sun_vtk = rows[("model", "perpendicular", "vtk")]
+    check(float(rows[("model", "perpendicular", "uniform")]["misclassified"])
+          < float(sun_vtk["misclassified"]), "the focused map beats VTK's pass")
+    check(rows[("model", "perpendicular", "uniform")]["flicker"] != "nan", "flicker measured")
+    check(rows[("model", "point", "uniform")]["flicker"] == "nan", "flicker only where asked")
+    check(float(rows[("model", "perpendicular", "uniform")]["memory_mib"]) == 16.0,
+          "one 2048^2 32-bit map is 16 MiB")
+    check(int(rows[("model", "perpendicular", "vtk-equal")]["resolution"]) == 1448,
+          "VTK at equal memory: 1448^2 colour + depth = 16 MiB")
+
+
+def test_analyze(program, output):
+    directory = os.path.join(output, "analyze")
+    result = run(program, "analyze", MODEL, "--setups", "overhead", "--technique", "uniform",
+                 "--flicker-frames", "0", "--out", directory, *SMALL)
+    check(result.returncode == 0, "analyze failed: " + result.stderr[-2000:])
+    rows = rows_by_case(os.path.join(directory, "results.csv"))
+    check(("file", "overhead", "uniform") in rows, "analyze measures the file")
+    check(("file", "overhead", "vtk") in rows, "VTK's pass is always the reference")
+
+
+def test_errors(program):
+    for arguments, expected in [
+        (["bench", "--techniques", "magic"], "unknown technique"),
+        (["bench", "--scenes", "moon"], "unknown scene"),
+        (["bench", "--setups", "sideways"], "unknown light set-up"),
+        (["bench", "--flicker-frames", "1"], "flicker frames"),
+        (["analyze"], "needs a model FILE"),
+        (["analyze", "/nonexistent.stl", "--flicker-frames", "0"], "error"),
+    ]:
+        result = run(program, *arguments)
+        check(result.returncode == 2, "%s: exit 2, got %d" % (arguments, result.returncode))
+        check(expected in result.stderr and result.stderr.startswith("vtkshadows: error:"),
+              "%s: message %r" % (arguments, result.stderr))
+
+
+def main():
+    program, output = sys.argv[1], sys.argv[2]
+    os.makedirs(output, exist_ok=True)
+    test_errors(program)
+    test_bench(program, output)
+    test_analyze(program, output)
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
