@@ -208,7 +208,7 @@ struct vtkAbstractShadowMapPass::Resources
   vtkTimeStamp ShaderKeyTime;
 
   // Uniform values of the current maps.
-  std::vector<float> WorldToMap;
+  std::vector<float> ViewToMap;
   std::vector<float> TexelSizes;
   std::vector<float> LightPositions;
   std::vector<float> Attenuations;
@@ -657,26 +657,28 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
 {
   Internals& in = *this->Internal;
   Resources& r = *this->Resource;
-  r.WorldToMap.clear();
+  r.ViewToMap.clear();
   r.TexelSizes.clear();
   r.LightPositions.clear();
+  const glm::dmat4 viewToWorld = glm::inverse(in.CameraView);
   r.Attenuations.clear();
   const glm::dmat4 toTexture = shadowmaps::ClipToTexture();
   for (const ShadowLight& light : in.Lights)
   {
     for (const LightView& view : light.Views)
     {
-      const glm::mat4 worldToMap(toTexture * view.ViewProjection());
-      r.WorldToMap.insert(r.WorldToMap.end(), glm::value_ptr(worldToMap), glm::value_ptr(worldToMap) + 16);
+      const glm::mat4 viewToMap(toTexture * view.ViewProjection() * viewToWorld);
+      r.ViewToMap.insert(r.ViewToMap.end(), glm::value_ptr(viewToMap), glm::value_ptr(viewToMap) + 16);
       r.TexelSizes.push_back(static_cast<float>(view.TexelConstant));
       r.TexelSizes.push_back(static_cast<float>(view.TexelPerUnitDistance));
     }
-    r.LightPositions.push_back(static_cast<float>(light.Position.x));
-    r.LightPositions.push_back(static_cast<float>(light.Position.y));
-    r.LightPositions.push_back(static_cast<float>(light.Position.z));
+    const glm::dvec3 positionVC(in.CameraView * glm::dvec4(light.Position, 1.0));
+    r.LightPositions.push_back(static_cast<float>(positionVC.x));
+    r.LightPositions.push_back(static_cast<float>(positionVC.y));
+    r.LightPositions.push_back(static_cast<float>(positionVC.z));
     r.Attenuations.push_back(light.Attenuation);
   }
-  r.ViewToWorld = glm::mat4(glm::inverse(in.CameraView));
+  r.ViewToWorld = glm::mat4(viewToWorld);
 }
 
 //------------------------------------------------------------------------------
@@ -782,8 +784,8 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
     {
       if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, k) > 0)
       {
-        impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor(vtkShadowPositionWorld, "
-             << "vtkShadowNormalWorld, " << k << ", " << lights[k].FirstLayer << ", "
+        impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor(vertexVC.xyz, "
+             << "vtkShadowNormalVC, " << k << ", " << lights[k].FirstLayer << ", "
              << (lights[k].Cube ? "true" : "false") << ");\n";
       }
     }
@@ -817,8 +819,7 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
       << vtkShadowMapsReceiverFS << this->GetReceiverLookupCode();
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", dec.str());
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
-    "  vec3 vtkShadowPositionWorld = (vtkShadowViewToWorld * vec4(vertexVC.xyz, 1.0)).xyz;\n"
-    "  vec3 vtkShadowNormalWorld = normalize(mat3(vtkShadowViewToWorld) * normalVCVSOutput);\n" +
+    "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n" +
       impl.str());
   return true;
 }
@@ -834,7 +835,7 @@ std::string vtkAbstractShadowMapPass::AnalysisCode() const
   }
   const ShadowLight& light = lights[this->AnalysisLight];
   std::ostringstream code;
-  code << "  gl_FragData[0] = vtkShadowAnalysisColor(vtkShadowPositionWorld, vtkShadowNormalWorld, "
+  code << "  gl_FragData[0] = vtkShadowAnalysisColor(vertexVC.xyz, vtkShadowNormalVC, "
        << this->AnalysisLight << ", " << light.FirstLayer << ", " << (light.Cube ? "true" : "false")
        << ");\n";
   return code.str();
@@ -883,7 +884,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
   Resources& r = *this->Resource;
-  if (!r.Active || !program->IsUniformUsed("vtkShadowViewToWorld"))
+  if (!r.Active || !program->IsUniformUsed("vtkShadowViewToMap"))
   {
     return true;
   }
@@ -892,11 +893,11 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   program->SetUniformi("vtkShadowMaps", r.MapUnit);
   program->SetUniformi("vtkShadowNoise", r.Noise->GetTextureUnit());
   program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(r.ViewToWorld));
-  program->SetUniformMatrix4x4v("vtkShadowWorldToMap", views, r.WorldToMap.data());
+  program->SetUniformMatrix4x4v("vtkShadowViewToMap", views, r.ViewToMap.data());
   program->SetUniform2fv(
     "vtkShadowTexelSize", views, reinterpret_cast<const float(*)[2]>(r.TexelSizes.data()));
   program->SetUniform3fv(
-    "vtkShadowLightPosition", lights, reinterpret_cast<const float(*)[3]>(r.LightPositions.data()));
+    "vtkShadowLightPositionVC", lights, reinterpret_cast<const float(*)[3]>(r.LightPositions.data()));
   program->SetUniform1fv("vtkShadowAttenuation", lights, r.Attenuations.data());
   program->SetUniformf("vtkShadowMapResolution", static_cast<float>(this->Internal->Resolution));
   program->SetUniformf("vtkShadowNormalOffset", static_cast<float>(this->NormalOffset));

@@ -9,11 +9,13 @@
 // for depth maps).
 
 uniform sampler2D vtkShadowNoise;
+// Receivers are evaluated in the camera's view coordinates (VC): one matrix
+// per map takes a VC point to map texture coordinates and depth.
 uniform mat4 vtkShadowViewToWorld;
-uniform mat4 vtkShadowWorldToMap[VTK_SHADOW_MAX_VIEWS];
+uniform mat4 vtkShadowViewToMap[VTK_SHADOW_MAX_VIEWS];
 // World-space size of one texel of a view: x + y * (distance to the light).
 uniform vec2 vtkShadowTexelSize[VTK_SHADOW_MAX_VIEWS];
-uniform vec3 vtkShadowLightPosition[VTK_SHADOW_MAX_LIGHTS];
+uniform vec3 vtkShadowLightPositionVC[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowMapResolution;
 uniform float vtkShadowNormalOffset;
@@ -40,20 +42,25 @@ int vtkShadowCubeFace(vec3 d)
 
 // The view of light `light` that covers the receiver. The light's views start
 // at layer firstView; a cube light has six of them.
-int vtkShadowSelectView(vec3 positionWorld, int light, int firstView, bool cube)
+int vtkShadowSelectView(vec3 positionVC, int light, int firstView, bool cube)
 {
-  vec3 fromLight = positionWorld - vtkShadowLightPosition[light];
-  return cube ? firstView + vtkShadowCubeFace(fromLight) : firstView;
+  if (!cube)
+  {
+    return firstView;
+  }
+  // Cube faces are aligned with the world axes.
+  vec3 fromLight = mat3(vtkShadowViewToWorld) * (positionVC - vtkShadowLightPositionVC[light]);
+  return firstView + vtkShadowCubeFace(fromLight);
 }
 
 // Clip coordinates of the receiver in map `view`, moved along its normal by the
 // world-space size of a texel there (normal offset, Kozlov, GPU Gems 14).
-vec4 vtkShadowMapClip(vec3 positionWorld, vec3 normalWorld, int light, int view)
+vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view)
 {
   vec2 texelSize = vtkShadowTexelSize[view];
-  float texel = texelSize.x + texelSize.y * length(positionWorld - vtkShadowLightPosition[light]);
-  vec3 biased = positionWorld + normalWorld * (vtkShadowNormalOffset * texel);
-  return vtkShadowWorldToMap[view] * vec4(biased, 1.0);
+  float texel = texelSize.x + texelSize.y * length(positionVC - vtkShadowLightPositionVC[light]);
+  vec3 biased = positionVC + normalVC * (vtkShadowNormalOffset * texel);
+  return vtkShadowViewToMap[view] * vec4(biased, 1.0);
 }
 
 bool vtkShadowInsideMap(vec4 clip)
@@ -64,10 +71,10 @@ bool vtkShadowInsideMap(vec4 clip)
 }
 
 // Fraction of light `light` reaching the receiver, in [0, 1]; 1 outside the maps.
-float vtkShadowVisibility(vec3 positionWorld, vec3 normalWorld, int light, int firstView, bool cube)
+float vtkShadowVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, bool cube)
 {
-  int view = vtkShadowSelectView(positionWorld, light, firstView, cube);
-  vec4 clip = vtkShadowMapClip(positionWorld, normalWorld, light, view);
+  int view = vtkShadowSelectView(positionVC, light, firstView, cube);
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
   if (!vtkShadowInsideMap(clip))
   {
     return 1.0;
@@ -76,9 +83,9 @@ float vtkShadowVisibility(vec3 positionWorld, vec3 normalWorld, int light, int f
 }
 
 // Factor that scales the light's diffuse and specular terms.
-float vtkShadowFactor(vec3 positionWorld, vec3 normalWorld, int light, int firstView, bool cube)
+float vtkShadowFactor(vec3 positionVC, vec3 normalVC, int light, int firstView, bool cube)
 {
-  float visibility = vtkShadowVisibility(positionWorld, normalWorld, light, firstView, cube);
+  float visibility = vtkShadowVisibility(positionVC, normalVC, light, firstView, cube);
   return 1.0 - vtkShadowAttenuation[light] * (1.0 - visibility);
 }
 
@@ -122,12 +129,12 @@ vec3 vtkShadowPartitionColor(int index)
   return palette[index % 8];
 }
 
-vec4 vtkShadowAnalysisColor(vec3 positionWorld, vec3 normalWorld, int light, int firstView, bool cube)
+vec4 vtkShadowAnalysisColor(vec3 positionVC, vec3 normalVC, int light, int firstView, bool cube)
 {
-  int view = vtkShadowSelectView(positionWorld, light, firstView, cube);
-  vec4 clip = vtkShadowMapClip(positionWorld, normalWorld, light, view);
+  int view = vtkShadowSelectView(positionVC, light, firstView, cube);
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
   float footprint = vtkShadowTexelFootprint(clip);
-  float visibility = vtkShadowVisibility(positionWorld, normalWorld, light, firstView, cube);
+  float visibility = vtkShadowVisibility(positionVC, normalVC, light, firstView, cube);
 #if VTK_SHADOW_ANALYSIS == 1
   return vec4(vec3(visibility), 1.0);
 #elif VTK_SHADOW_ANALYSIS == 2

@@ -316,20 +316,59 @@ void SetPathFrame(View& view, int frame, int frames)
   shadowscenes::SetCameraPathFrame(view.InitialCamera, view.Renderer->GetActiveCamera(), frame, frames);
 }
 
-Timing MeasureFrameTimes(View& view, int frames)
+double Median(std::vector<double> values)
 {
-  Timing timing;
-  SetPathFrame(view, 0, 2);
-  timing.First = TimedRender(view.Window);
-  for (int i = 0; i < frames; ++i)
+  if (values.empty())
   {
-    timing.Steady += TimedRender(view.Window) / frames;
+    return NotMeasured;
   }
-  // A camera that moves a little every frame: every frame re-renders the maps.
-  for (int i = 0; i < frames; ++i)
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+/// Frame times of every technique, measured in interleaved rounds so that a
+/// slow patch of the machine affects all techniques alike. First: the first
+/// frame of a fresh pass (maps and shaders built). Steady: the same camera
+/// frame after frame. Moving: the camera moves a little every frame, so maps
+/// are re-rendered every frame. Steady and moving are medians of frames.
+std::vector<Timing> MeasureFrameTimes(
+  View& view, const std::vector<TechniqueInstance>& techniques, int frames)
+{
+  constexpr int Rounds = 3;
+  constexpr int WarmUpFrames = 2; // switching passes rebuilds the mappers' shaders
+  std::vector<Timing> timing(techniques.size());
+  std::vector<std::vector<double>> steady(techniques.size());
+  std::vector<std::vector<double>> moving(techniques.size());
+  for (int round = 0; round < Rounds; ++round)
   {
-    SetPathFrame(view, i + 1, 4 * frames);
-    timing.Moving += TimedRender(view.Window) / frames;
+    for (size_t t = 0; t < techniques.size(); ++t)
+    {
+      view.Renderer->SetPass(techniques[t].Pass);
+      SetPathFrame(view, 0, 2);
+      const double first = TimedRender(view.Window);
+      if (round == 0)
+      {
+        timing[t].First = first;
+      }
+      for (int i = 0; i < WarmUpFrames; ++i)
+      {
+        TimedRender(view.Window);
+      }
+      for (int i = 0; i < frames; ++i)
+      {
+        steady[t].push_back(TimedRender(view.Window));
+      }
+      for (int i = 0; i < frames; ++i)
+      {
+        SetPathFrame(view, round * frames + i + 1, 4 * Rounds * frames);
+        moving[t].push_back(TimedRender(view.Window));
+      }
+    }
+  }
+  for (size_t t = 0; t < techniques.size(); ++t)
+  {
+    timing[t].Steady = Median(steady[t]);
+    timing[t].Moving = Median(moving[t]);
   }
   SetPathFrame(view, 0, 2);
   return timing;
@@ -398,18 +437,25 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   const auto truth = TruthOfView(view, oracle, CaptureDepth(view), &valid, &surface);
 
   std::vector<TechniqueInstance> techniques;
-  const size_t firstRow = rows.size();
   for (const std::string& name : options.Techniques)
   {
+    techniques.push_back(MakeTechnique(name, setup, options.Resolution));
+  }
+  log << "  " << scene << " / " << setup << ": frame times" << std::endl;
+  const std::vector<Timing> timing = MeasureFrameTimes(view, techniques, options.TimedFrames);
+  const size_t firstRow = rows.size();
+  for (size_t t = 0; t < techniques.size(); ++t)
+  {
+    const std::string& name = options.Techniques[t];
+    const TechniqueInstance& technique = techniques[t];
     log << "  " << scene << " / " << setup << " / " << name << std::endl;
-    TechniqueInstance technique = MakeTechnique(name, setup, options.Resolution);
     view.Renderer->SetPass(technique.Pass);
     Row row;
     row.Scene = scene;
     row.Setup = setup;
     row.Technique = name;
     row.Resolution = technique.Resolution;
-    row.Time = MeasureFrameTimes(view, options.TimedFrames);
+    row.Time = timing[t];
     view.Window->Render();
     const auto factor =
       shadowmetrics::FactorFromRenders(CaptureRGB(view.Window), plain, view.Width * view.Height);
@@ -429,7 +475,6 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
       log << "  cannot write " << errors << std::endl;
     }
     rows.push_back(row);
-    techniques.push_back(technique);
   }
   const bool flicker = options.FlickerFrames > 1 &&
     std::find(options.FlickerSetups.begin(), options.FlickerSetups.end(), setup) !=
