@@ -190,6 +190,7 @@ struct vtkAbstractShadowMapPass::Resources
 {
   shadowmaps::TextureArray Maps;
   shadowmaps::MapStorage Storage;
+  std::string LookupCode; // GetReceiverLookupCode() of the current maps
   vtkNew<vtkShadowMapCasterPass> CasterPass;
   vtkNew<vtkOpaquePass> OpaquePass;
   vtkNew<vtkCamera> LightCamera;
@@ -466,6 +467,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   this->NumberOfShadowMapLayers = layers;
 
   this->GetMapStorage(r.Storage);
+  r.LookupCode = this->GetReceiverLookupCode();
   std::string error;
   if (!r.Maps.Reserve(in.Resolution, layers, r.Storage.Format, r.Storage.Mipmaps, error) ||
     !this->RenderShadowMaps(renderer))
@@ -687,7 +689,7 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
   Resources& r = *this->Resource;
   std::ostringstream key;
   key << this->Filter << ' ' << this->KernelSize << ' ' << this->PoissonSamples << ' '
-      << this->NumberOfShadowMapLayers << ' ' << std::hash<std::string>()(this->GetReceiverLookupCode())
+      << this->NumberOfShadowMapLayers << ' ' << std::hash<std::string>()(r.LookupCode)
       << ' ' << this->AnalysisView << ' ' << this->AnalysisLight << ';';
   for (const ShadowLight& light : this->Internal->Lights)
   {
@@ -816,7 +818,7 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
       << "#define VTK_SHADOW_POISSON_SAMPLES " << this->PoissonSamples << "\n"
       << "#define VTK_SHADOW_MAX_VIEWS " << std::max(this->NumberOfShadowMapLayers, 1) << "\n"
       << "#define VTK_SHADOW_MAX_LIGHTS " << this->Internal->Lights.size() << "\n"
-      << vtkShadowMapsReceiverFS << this->GetReceiverLookupCode();
+      << vtkShadowMapsReceiverFS << this->Resource->LookupCode;
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", dec.str());
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
     "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n" +
