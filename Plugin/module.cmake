@@ -25,11 +25,17 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/vtkShadowMapCasterPass
   SOURCES
     Plugin/ShadowMapFocusing.cxx
+    Plugin/ShadowMapPerspective.cxx
     Plugin/ShadowMapTextureArray.cxx
+    Plugin/ShadowMapTrapezoid.cxx
+    Plugin/ShadowMapWarping.cxx
     ${shadowmaps_shader_sources}
   PRIVATE_HEADERS
     Plugin/ShadowMapFocusing.h
+    Plugin/ShadowMapPerspective.h
     Plugin/ShadowMapTextureArray.h
+    Plugin/ShadowMapTrapezoid.h
+    Plugin/ShadowMapWarping.h
     Plugin/vtkShadowMapInternals.h
     ${shadowmaps_shader_headers})
 vtk_module_include(ShadowMaps::RenderingShadowMaps

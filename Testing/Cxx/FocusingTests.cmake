@@ -1,4 +1,4 @@
-# Unit tests of the focusing math (Plugin/ShadowMapFocusing.cxx). Included from
+# Unit tests of the focusing and warping math (Plugin/ShadowMap*.cxx). Included from
 # Testing/CMakeLists.txt, so relative paths are relative to Testing/. The math
 # source is compiled into the test directly: the test needs GLM and GoogleTest
 # only, not the VTK module.
@@ -7,7 +7,13 @@ find_package(glm REQUIRED)
 
 add_executable(TestShadowMapFocusing
   Cxx/TestShadowMapFocusing.cxx
-  ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapFocusing.cxx)
+  Cxx/TestShadowMapWarping.cxx
+  Cxx/TestShadowMapTrapezoid.cxx
+  Cxx/TestShadowMapPerspective.cxx
+  ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapFocusing.cxx
+  ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapWarping.cxx
+  ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapTrapezoid.cxx
+  ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapPerspective.cxx)
 target_include_directories(TestShadowMapFocusing PRIVATE ${PROJECT_SOURCE_DIR}/Plugin)
 target_compile_features(TestShadowMapFocusing PRIVATE cxx_std_17)
 target_link_libraries(TestShadowMapFocusing PRIVATE glm::glm GTest::gtest_main)

@@ -1,0 +1,74 @@
+// Perspective shadow maps (Stamminger & Drettakis 2002) for directional
+// lights, with Kozlov's fixes (GPU Gems ch. 14, literature/001): the inverse
+// light projection for lights behind the viewer, the virtual near-plane
+// slide-back and unit-cube clipping (focus on B in post-perspective space).
+// Plain C++ and GLM, pure functions.
+#ifndef ShadowMapPerspective_h
+#define ShadowMapPerspective_h
+
+#include "ShadowMapFocusing.h"
+
+#include <glm/glm.hpp>
+
+namespace shadowmaps
+{
+
+/// How the directional light looks in the camera's post-perspective space.
+enum class PsmLightKind
+{
+  Uniform,     ///< parallel-projection camera: no warp, FitDirectional
+  Directional, ///< light perpendicular to the view: stays directional (ortho light camera)
+  Point,       ///< light in front of the viewer: point light beyond the far plane
+  Inverse      ///< light behind the viewer: Kozlov's inverse projection (near -a, far +a)
+};
+
+struct PerspectiveMap
+{
+  /// View = light-camera view * camera post-perspective transform; the
+  /// composition ViewProjection() maps world points of B into [-1, 1]^2 with w > 0.
+  LightView Light;
+  PsmLightKind Kind = PsmLightKind::Uniform;
+  /// Camera post-perspective transform (with slide-back) the map was built in.
+  glm::dmat4 PostPerspective{ 1.0 };
+  /// Light position in post-perspective space (Point / Inverse), or the
+  /// direction light travels (Directional).
+  glm::dvec3 LightPosition{ 0.0 };
+  /// Kozlov's a for the inverse projection (0 otherwise).
+  double InverseNear = 0.0;
+};
+
+/// Virtual slide-back (Kozlov Fig. 14-6): the camera moved back by slideBack
+/// along its axis with near' = near + slideBack, so that the near-plane quads of
+/// the real and virtual cameras lie on the same plane. Returns the virtual
+/// camera's projection * view. cameraProjection must be a perspective frustum
+/// (OpenGL convention); slideBack <= 0 returns projection * view.
+glm::dmat4 SlideBackPostPerspective(
+  const glm::dmat4& cameraView, const glm::dmat4& cameraProjection, double slideBack);
+
+/// Kozlov's inverse light projection in light-view space (looking down -z,
+/// Z = -z_view): the usual projection with near = -a, far = +a. NDC x, y from
+/// the tangent window [lo, hi]; NDC z = a / Z, i.e. depth in [0, 1]
+/// Z_psm = 1/2 (1 + a/Z) (thesis literature/000; Kozlov §14.1.2).
+glm::dmat4 InverseProjection(const glm::dvec2& lo, const glm::dvec2& hi, double a);
+
+/// The PSM for a directional light travelling along lightDirection.
+/// B = camera frustum ∩ scene is focused in post-perspective space (unit-cube
+/// clipping). Parallel-projection cameras return the uniform FitDirectional map.
+PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& scene, const glm::dvec3& lightDirection, int resolution, double slideBack = 0.0);
+
+/// Kozlov's world-space texel size L_texel at a world point: map it to the
+/// shadow map, shift by one texel in x and y keeping its depth, map back to
+/// world space, and measure the displacement (his text takes its squared length;
+/// this returns the length, in world units).
+double WorldTexelSize(const LightView& light, const glm::dvec3& world, int resolution);
+
+/// Kozlov's world-space bias: P_biased = P + L (a + b L_texel), L the unit
+/// vector toward the light (minus the direction it travels). The biased point
+/// is then transformed with the map's matrix as usual.
+glm::dvec3 KozlovBiasedPoint(const glm::dvec3& world, const glm::dvec3& lightDirection, double a,
+  double b, double texelSize);
+
+} // namespace shadowmaps
+
+#endif

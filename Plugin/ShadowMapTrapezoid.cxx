@@ -1,0 +1,326 @@
+#include "ShadowMapTrapezoid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shadowmaps
+{
+namespace
+{
+
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+// Beyond this ratio eta / lambda the trapezoid is treated as a rectangle: the
+// chain's residual warp there is below 1e-6 of the map.
+constexpr double RectangleRatio = 1e6;
+
+glm::dvec3 ToPoint(const glm::dmat4& m, const glm::dvec3& p)
+{
+  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+  return glm::dvec3(q) / q.w;
+}
+
+glm::dvec2 Apply(const glm::dmat3& m, const glm::dvec2& p)
+{
+  const glm::dvec3 q = m * glm::dvec3(p, 1.0);
+  return glm::dvec2(q) / q.z;
+}
+
+double Cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
+{
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+glm::dmat3 Translation2D(const glm::dvec2& t)
+{
+  glm::dmat3 m(1.0);
+  m[2] = glm::dvec3(t, 1.0);
+  return m;
+}
+
+glm::dmat3 Scale2D(const glm::dvec2& s)
+{
+  glm::dmat3 m(1.0);
+  m[0][0] = s.x;
+  m[1][1] = s.y;
+  return m;
+}
+
+// Light-space xy -> (lateral, axial) coordinates of the centre-line frame.
+glm::dmat3 FrameRows(const glm::dvec2& lateral, const glm::dvec2& axial)
+{
+  return glm::transpose(glm::dmat3(glm::dvec3(lateral, 0.0), glm::dvec3(axial, 0.0), glm::dvec3(0.0, 0.0, 1.0)));
+}
+
+// The eight-matrix chain of the thesis (literature/000, "Trapéz shadow map-ek",
+// steps 1-8), written for column vectors. a, b: top corners (left, right);
+// c: a base corner; q: the vanishing point; axial: the centre-line direction.
+// The last two steps put the top edge on Y = -1 and the base on Y = +1.
+glm::dmat3 TrapezoidChain(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c,
+  const glm::dvec2& q, const glm::dvec2& axial)
+{
+  // 1. T1: centre of the top edge to the origin.
+  const glm::dmat3 t1 = Translation2D(-0.5 * (a + b));
+  // 2. R: top edge along x, base toward +y.
+  const glm::dmat3 r = FrameRows(glm::normalize(b - a), axial);
+  // 3. T2: intersection of the side edges (q) to the origin.
+  glm::dmat3 m = r * t1;
+  const glm::dmat3 t2 = Translation2D(-Apply(m, q));
+  m = t2 * m;
+  // 4. H: shear so that the trapezoid is symmetric about the y axis.
+  const glm::dvec2 topCentre = Apply(m, 0.5 * (a + b));
+  glm::dmat3 h(1.0);
+  h[1][0] = -topCentre.x / topCentre.y;
+  m = h * m;
+  // 5. S1: top corner b to (1, 1): sides at 45 degrees, top of unit half-length.
+  const glm::dvec2 corner = Apply(m, b);
+  m = Scale2D(1.0 / corner) * m;
+  // 6. N: (x, y, w) -> (x, y + w, y), the trapezoid becomes a rectangle.
+  const glm::dmat3 n(glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.0, 1.0), glm::dvec3(0.0, 1.0, 0.0));
+  m = n * m;
+  // 7. T3: centre the rectangle vertically; 8. S2: stretch it to [-1, 1].
+  const double yTop = Apply(m, a).y;
+  const double yBase = Apply(m, c).y;
+  const glm::dmat3 t3 = Translation2D(glm::dvec2(0.0, -0.5 * (yTop + yBase)));
+  const glm::dmat3 s2 = Scale2D(glm::dvec2(1.0, 2.0 / (yBase - yTop)));
+  return s2 * t3 * m;
+}
+
+// Affine map of the rectangle [tMin, tMax] x [sTop, sBase] of the centre-line
+// frame onto [-1, 1]^2: the degenerate trapezoid (q at infinity).
+glm::dmat3 RectangleMap(const glm::dvec2& lateral, const glm::dvec2& axial, double tMin, double tMax,
+  double sTop, double sBase)
+{
+  const glm::dmat3 toSquare = Translation2D(glm::dvec2(-1.0)) *
+    Scale2D(glm::dvec2(2.0 / (tMax - tMin), 2.0 / (sBase - sTop))) *
+    Translation2D(-glm::dvec2(tMin, sTop));
+  return toSquare * FrameRows(lateral, axial);
+}
+
+} // namespace
+
+std::vector<glm::dvec2> ConvexHull2D(std::vector<glm::dvec2> points)
+{
+  std::sort(points.begin(), points.end(),
+    [](const glm::dvec2& p, const glm::dvec2& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3)
+  {
+    return points;
+  }
+  std::vector<glm::dvec2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) // lower chain
+  {
+    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) // upper chain
+  {
+    while (k >= lower && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sceneBounds,
+  const glm::dvec3& lightDirection, double focusDistance, double focusFraction,
+  double fadeAngleDegrees)
+{
+  const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) } : sceneBounds;
+  const double lightLength = glm::length(lightDirection);
+  const glm::dvec3 d = lightLength > 0.0 && std::isfinite(lightLength) ? lightDirection / lightLength
+                                                                          : glm::dvec3(0.0, 0.0, -1.0);
+  const double diagonal = std::max(scene.Diagonal(), 1e-300);
+  TrapezoidMap map;
+  map.LightView = LightLookAt(scene.Center() - d * diagonal, d);
+
+  // Step 1 (thesis): B in light space; B = frustum ∩ scene (survey §4.1).
+  std::vector<glm::dvec3> body = IntersectFrustumWithBox(cameraViewProjection, scene);
+  if (body.empty())
+  {
+    const auto corners = scene.Corners();
+    body.assign(corners.begin(), corners.end());
+  }
+  std::vector<glm::dvec2> projected;
+  double bodyFar = 0.0;
+  for (const auto& p : body)
+  {
+    const glm::dvec3 q = ToPoint(map.LightView, p);
+    projected.emplace_back(q);
+    bodyFar = std::max(bodyFar, -q.z);
+  }
+  // Step 3: the 2D convex hull.
+  map.Hull = ConvexHull2D(projected);
+
+  // Step 2: the centre line, from the projected near-plane centre along the
+  // projected view axis. Its length per unit of view axis is sin(light, view).
+  const glm::dmat4 inverse = glm::inverse(cameraViewProjection);
+  const glm::dvec3 nearCentre = ToPoint(inverse, glm::dvec3(0.0, 0.0, -1.0));
+  const glm::dvec3 midCentre = ToPoint(inverse, glm::dvec3(0.0, 0.0, 0.0));
+  glm::dvec3 viewAxis = midCentre - nearCentre;
+  viewAxis = glm::length(viewAxis) > 0.0 ? glm::normalize(viewAxis) : glm::dvec3(0.0, 0.0, -1.0);
+  const glm::dvec2 axisInLight = glm::dvec2(glm::dmat3(map.LightView) * viewAxis);
+  const double sine = glm::length(axisInLight);
+  const glm::dvec2 axial = sine > 1e-12 ? axisInLight / sine : glm::dvec2(0.0, 1.0);
+  const glm::dvec2 lateral(axial.y, -axial.x);
+  const glm::dvec2 nearInLight = glm::dvec2(ToPoint(map.LightView, nearCentre));
+  const double tCentre = glm::dot(nearInLight, lateral);
+
+  // Step 4: top and base perpendicular to the centre line, touching the hull.
+  double sTop = Infinity, sBase = -Infinity, tMin = Infinity, tMax = -Infinity;
+  for (const auto& p : map.Hull)
+  {
+    sTop = std::min(sTop, glm::dot(p, axial));
+    sBase = std::max(sBase, glm::dot(p, axial));
+    tMin = std::min(tMin, glm::dot(p, lateral));
+    tMax = std::max(tMax, glm::dot(p, lateral));
+  }
+  const double minimumExtent = diagonal * 1e-9;
+  if (sBase - sTop < minimumExtent)
+  {
+    sBase = sTop + minimumExtent;
+  }
+  if (tMax - tMin < minimumExtent)
+  {
+    tMin -= 0.5 * minimumExtent;
+    tMax += 0.5 * minimumExtent;
+  }
+  const double lambda = sBase - sTop;
+
+  // The focus point P_L: delta from the near plane on the view axis [MT04];
+  // delta' is its distance from the top edge along the centre line, kept
+  // inside the trapezoid.
+  const glm::dvec2 focusInLight =
+    glm::dvec2(ToPoint(map.LightView, nearCentre + viewAxis * std::max(focusDistance, 0.0)));
+  const double deltaRaw = glm::dot(focusInLight, axial) - sTop;
+  const double delta = std::min(std::max(deltaRaw, 1e-3 * lambda), lambda);
+  map.FocusPoint = focusInLight + axial * (delta - deltaRaw);
+
+  // Target line of the focus point, NDC Y (top -1, base +1): the paper's
+  // 2 * fraction - 1 (0.6 for the 80% line), faded toward the unwarped value
+  // 2 delta'/lambda - 1 as the light approaches the view axis.
+  const double yUnwarped = 2.0 * delta / lambda - 1.0;
+  const double yPaper = 2.0 * std::min(std::max(focusFraction, 0.0), 0.999) - 1.0;
+  const double fade = std::sin(glm::radians(std::min(std::max(fadeAngleDegrees, 1e-6), 90.0)));
+  map.WarpWeight = sine > 1e-12 ? std::min(sine / fade, 1.0) : 0.0;
+  const double yTarget = yUnwarped + map.WarpWeight * (yPaper - yUnwarped);
+
+  // Distance eta from the top edge to q: the 1D projective map y(s) = A + B/s
+  // (s from q) with y(eta) = -1, y(eta + lambda) = 1, y(eta + delta') = yTarget
+  // gives eta = lambda delta' (1 - y) / (lambda - 2 delta' + lambda y), the
+  // [MT04] formula with xi = -y (top and base swapped).
+  const double denominator = lambda * (yTarget - yUnwarped);
+  const double eta = denominator > 0.0 ? delta * (1.0 - yTarget) * lambda / denominator : Infinity;
+
+  if (!(eta < RectangleRatio * lambda))
+  {
+    map.VanishingDistance = Infinity;
+    map.FocusLine = 0.5 * (yUnwarped + 1.0);
+    map.TrapezoidToSquare = RectangleMap(lateral, axial, tMin, tMax, sTop, sBase);
+    map.Corners = { lateral * tMin + axial * sTop, lateral * tMax + axial * sTop,
+      lateral * tMax + axial * sBase, lateral * tMin + axial * sBase };
+  }
+  else
+  {
+    // Side edges: the two lines through q on the centre line that enclose the hull.
+    const double sQ = sTop - eta;
+    double kMin = Infinity, kMax = -Infinity;
+    for (const auto& p : map.Hull)
+    {
+      const double k = (glm::dot(p, lateral) - tCentre) / (glm::dot(p, axial) - sQ);
+      kMin = std::min(kMin, k);
+      kMax = std::max(kMax, k);
+    }
+    const double minimumSlope = 1e-9 * (tMax - tMin) / (eta + lambda);
+    if (kMax - kMin < minimumSlope)
+    {
+      kMin -= 0.5 * minimumSlope;
+      kMax += 0.5 * minimumSlope;
+    }
+    const auto onSide = [&](double k, double s) { return lateral * (tCentre + k * (s - sQ)) + axial * s; };
+    map.Corners = { onSide(kMin, sTop), onSide(kMax, sTop), onSide(kMax, sBase), onSide(kMin, sBase) };
+    const glm::dvec2 q = lateral * tCentre + axial * sQ;
+    map.VanishingDistance = eta;
+    map.FocusLine = 0.5 * (yTarget + 1.0);
+    map.TrapezoidToSquare = TrapezoidChain(map.Corners[0], map.Corners[1], map.Corners[3], q, axial);
+  }
+
+  // Linear light-space depth: casters from the scene inside the trapezoid's
+  // bounding rectangle (ComputeNearAndFar), receivers up to B's far end.
+  glm::dvec2 lo(Infinity), hi(-Infinity);
+  for (const auto& c : map.Corners)
+  {
+    lo = glm::min(lo, c);
+    hi = glm::max(hi, c);
+  }
+  glm::dvec2 depth = ComputeNearAndFar(map.LightView, lo, hi, scene);
+  if (!(depth.y > depth.x))
+  {
+    depth = { 0.0, bodyFar };
+  }
+  const double range = std::max(bodyFar - depth.x, diagonal * 1e-6);
+  map.DepthNear = depth.x - range * 1e-3;
+  map.DepthFar = bodyFar + range * 1e-3;
+  return map;
+}
+
+glm::dvec2 TrapezoidToNdc(const TrapezoidMap& map, const glm::dvec2& lightXY)
+{
+  return Apply(map.TrapezoidToSquare, lightXY);
+}
+
+glm::dvec4 DepthRow(const TrapezoidMap& map)
+{
+  const glm::dmat4& v = map.LightView;
+  const glm::dvec4 lightZ(v[0][2], v[1][2], v[2][2], v[3][2]); // row 2: world -> light z
+  const double range = map.DepthFar - map.DepthNear;
+  return (-lightZ - glm::dvec4(0.0, 0.0, 0.0, map.DepthNear)) / range;
+}
+
+glm::dvec3 MapToTexture(const TrapezoidMap& map, const glm::dvec3& world)
+{
+  const glm::dvec3 light = ToPoint(map.LightView, world);
+  const glm::dvec2 ndc = TrapezoidToNdc(map, glm::dvec2(light));
+  const double depth = glm::dot(DepthRow(map), glm::dvec4(world, 1.0));
+  return { 0.5 * ndc.x + 0.5, 0.5 * ndc.y + 0.5, depth };
+}
+
+LightView TrapezoidLightView(const TrapezoidMap& map, int resolution)
+{
+  const glm::dmat3& h = map.TrapezoidToSquare;
+  const double range = map.DepthFar - map.DepthNear;
+  LightView view;
+  view.View = map.LightView;
+  // Columns act on light-space x, y, z, 1; rows give clip X, Y, Z, W.
+  view.Projection = glm::dmat4(glm::dvec4(h[0][0], h[0][1], 0.0, h[0][2]),
+    glm::dvec4(h[1][0], h[1][1], 0.0, h[1][2]), glm::dvec4(0.0, 0.0, -2.0 / range, 0.0),
+    glm::dvec4(h[2][0], h[2][1], -(map.DepthFar + map.DepthNear) / range, h[2][2]));
+  view.Perspective = true;
+
+  // Largest world-space texel edge over the trapezoid: the inverse Jacobian of
+  // the homography (A p + b) / (c.p + d) is W (A - h c^T)^-1.
+  const glm::dmat2 a{ glm::dvec2(h[0].x, h[0].y), glm::dvec2(h[1].x, h[1].y) };
+  const glm::dvec2 c(h[0][2], h[1][2]);
+  const double step = 2.0 / std::max(resolution, 1);
+  double texel = 0.0;
+  for (const auto& corner : map.Corners)
+  {
+    const glm::dvec3 clip = h * glm::dvec3(corner, 1.0);
+    const glm::dvec2 ndc = glm::dvec2(clip) / clip.z;
+    const glm::dmat2 jacobian = (a - glm::outerProduct(ndc, c)) / clip.z;
+    const glm::dmat2 inverseJacobian = glm::inverse(jacobian);
+    texel = std::max({ texel, glm::length(inverseJacobian[0]) * step, glm::length(inverseJacobian[1]) * step });
+  }
+  view.TexelConstant = texel;
+  return view;
+}
+
+} // namespace shadowmaps

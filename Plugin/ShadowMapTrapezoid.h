@@ -1,0 +1,97 @@
+// Trapezoidal shadow maps (Martin & Tan, EGSR 2004 [MT04]) for directional
+// lights: plain C++ and GLM, pure functions.
+//
+// Construction as described in the thesis (literature/000, section "Trapéz
+// shadow map-ek"): in light space the focus body B (survey, literature/003
+// §4.1) is projected onto the light's image plane, its 2D convex hull is
+// enclosed by a trapezoid whose top and base are perpendicular to the
+// projected view axis (the centre line), and the trapezoid is mapped onto the
+// square by N_T = T1 R T2 H S1 N T3 S2. The side edges meet in the vanishing
+// point q, placed so that the point at distance delta from the near plane maps
+// to the 80% line of the map.
+//
+// Depth stays linear in light space (thesis: "z is not transformed, it stays in
+// light space"): TrapezoidToSquare acts on light-space x, y only, and depth is
+// the affine DepthRow.
+#ifndef ShadowMapTrapezoid_h
+#define ShadowMapTrapezoid_h
+
+#include "ShadowMapFocusing.h"
+
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadowmaps
+{
+
+/// A trapezoidal shadow map for a directional light.
+///
+/// Texture space: u across the centre line, v along it; v = 0 on the top edge
+/// (nearest the camera's near plane), v = 1 on the base edge. The focus point
+/// maps to v = FocusLine (0.8 with the paper's 80% rule when fully warped).
+struct TrapezoidMap
+{
+  /// World -> light space: orthographic view looking along the light (-z).
+  glm::dmat4 LightView{ 1.0 };
+  /// N_T: homogeneous light-space (x, y, 1) -> homogeneous NDC (X, Y, W),
+  /// X/W and Y/W in [-1, 1] over the trapezoid; W >= 1 on the trapezoid.
+  glm::dmat3 TrapezoidToSquare{ 1.0 };
+  /// Linear light-space depth range: distances along the light direction.
+  double DepthNear = 0.0;
+  double DepthFar = 1.0;
+  /// Trapezoid corners in light-space xy, in the order that maps to NDC
+  /// (-1,-1), (1,-1), (1,1), (-1,1): top edge first, then base edge.
+  std::array<glm::dvec2, 4> Corners{};
+  /// 2D convex hull (counter-clockwise) of B projected on the light's plane.
+  std::vector<glm::dvec2> Hull;
+  /// The focus point P_L (on the centre line, delta from the near plane) in light xy.
+  glm::dvec2 FocusPoint{ 0.0 };
+  /// Texture v that the focus point maps to.
+  double FocusLine = 0.8;
+  /// 1: paper's warp; 0: degenerate trapezoid = rectangle = uniform map.
+  double WarpWeight = 1.0;
+  /// Distance from the top edge to q along the centre line (eta); infinite for a rectangle.
+  double VanishingDistance = 0.0;
+};
+
+/// 2D convex hull, counter-clockwise, without collinear points (monotone chain).
+std::vector<glm::dvec2> ConvexHull2D(std::vector<glm::dvec2> points);
+
+/// Builds the trapezoid map for a directional light.
+///
+/// focusDistance is delta of [MT04]: distance from the camera's near plane
+/// along the view axis whose shadows must be sharp; focusFraction is the share
+/// of the map given to it (0.8 = the 80% line). The warp fades out continuously
+/// (FocusLine -> the unwarped position, q -> infinity) as the light turns
+/// within fadeAngleDegrees of the view axis, so that light along or against the
+/// view gives the uniform, focused rectangle (thesis: TSM degrades to a
+/// standard map there). Parallel-projection cameras work the same way.
+TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& scene,
+  const glm::dvec3& lightDirection, double focusDistance, double focusFraction = 0.8,
+  double fadeAngleDegrees = 15.0);
+
+/// Light-space xy -> NDC xy of the trapezoid map (projective division by W).
+glm::dvec2 TrapezoidToNdc(const TrapezoidMap& map, const glm::dvec2& lightXY);
+
+/// World point -> (u, v, linear depth), each in [0, 1] for points of B.
+glm::dvec3 MapToTexture(const TrapezoidMap& map, const glm::dvec3& world);
+
+/// World -> linear depth in [0, 1]: depth = dot(DepthRow(map), (world, 1)).
+glm::dvec4 DepthRow(const TrapezoidMap& map);
+
+/// A LightView whose ViewProjection() gives clip (X, Y, Z, W) with X/W, Y/W the
+/// trapezoid mapping. Z = (linear NDC depth) is affine, so Z/W is depth divided
+/// by W: monotone along each light ray (W depends on x, y only) and inside the
+/// clip volume (|Z| <= 1 <= W), so hardware depth testing orders casters
+/// correctly, but Z/W is NOT the linear depth. A caster shader that wants linear
+/// depth passes dot(DepthRow, world) as a varying and writes it to
+/// gl_FragDepth (thesis: multiply z back by w in the pixel shader); receivers
+/// compare against MapToTexture's z. Texel sizes: the largest world-space texel
+/// edge over the trapezoid (TexelConstant), for bias.
+LightView TrapezoidLightView(const TrapezoidMap& map, int resolution);
+
+} // namespace shadowmaps
+
+#endif

@@ -1,0 +1,384 @@
+#include "ShadowMapWarping.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowmaps
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+glm::dvec3 Apply(const glm::dmat4& m, const glm::dvec3& p)
+{
+  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+  return glm::dvec3(q) / q.w;
+}
+
+bool IsFiniteVector(const glm::dvec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// The focused uniform map, used wherever a warp is not possible.
+LightView Uniform(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection, const Aabb& scene,
+  const glm::dvec3& lightDirection, int resolution)
+{
+  return FitDirectional(cameraProjection * cameraView, scene, lightDirection, resolution);
+}
+
+// Zero-size axes get a small extent so that every fit stays invertible.
+Aabb NonDegenerate(const Aabb& box)
+{
+  Aabb result = box;
+  const glm::dvec3 size = box.Max - box.Min;
+  const double largest = std::max({ size.x, size.y, size.z });
+  const double minimum =
+    largest > 0.0 ? largest * 1e-3 : std::max(1.0, glm::length(box.Max) * 1e-3);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (size[axis] < minimum)
+    {
+      result.Min[axis] -= 0.5 * minimum;
+      result.Max[axis] += 0.5 * minimum;
+    }
+  }
+  return result;
+}
+
+// Maps the box [lo, hi] onto [-1, 1]^3 (scale and translate, no flip).
+glm::dmat4 BoxToClip(const glm::dvec3& lo, const glm::dvec3& hi)
+{
+  const glm::dvec3 scale = 2.0 / (hi - lo);
+  glm::dmat4 m(1.0);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    m[axis][axis] = scale[axis];
+    m[3][axis] = -1.0 - lo[axis] * scale[axis];
+  }
+  return m;
+}
+
+// Half angle of the camera frustum in the plane of the view direction and the
+// camera-space direction `inPlane` (x, y): tan(phi) is the frustum's support along it
+// at unit depth, so that P_f - P_n of 002 Eq. 9 is exactly B's warp-axis extent.
+double HalfAngleAlong(const glm::dmat4& cameraProjection, const glm::dvec2& inPlane)
+{
+  const glm::dmat4 inverse = glm::inverse(cameraProjection);
+  double tangent = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    const glm::dvec3 ndc((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, -1.0);
+    const glm::dvec3 q = Apply(inverse, ndc);
+    if (-q.z > 0.0)
+    {
+      tangent = std::max(tangent, std::abs(glm::dot(inPlane, glm::dvec2(q)) / -q.z));
+    }
+  }
+  return std::atan(tangent);
+}
+
+// Smallest singular value of the 2x2 matrix with columns a and b.
+double SmallestSingularValue(const glm::dvec2& a, const glm::dvec2& b)
+{
+  const double trace = glm::dot(a, a) + glm::dot(b, b);
+  const double determinant = std::abs(a.x * b.y - a.y * b.x);
+  const double largest2 = 0.5 * (trace + std::sqrt(std::max(trace * trace - 4.0 * determinant * determinant, 0.0)));
+  return largest2 > 0.0 ? determinant / std::sqrt(largest2) : 0.0;
+}
+} // namespace
+
+double ViewLightAngle(const glm::dvec3& viewDirection, const glm::dvec3& lightDirection)
+{
+  const double lengths = glm::length(viewDirection) * glm::length(lightDirection);
+  if (!(lengths > 0.0) || !std::isfinite(lengths))
+  {
+    return 0.0;
+  }
+  // atan2 of |cross| and |dot| is accurate near 0 and pi/2, and folds theta to [0, pi/2].
+  const double sine = glm::length(glm::cross(viewDirection, lightDirection));
+  const double cosine = std::abs(glm::dot(viewDirection, lightDirection));
+  return std::atan2(sine, cosine);
+}
+
+double LiSPSMFreeParameter(double zNear, double zFar, double gammaRadians, double phiRadians, bool lloyd)
+{
+  // 003 / 000: n_opt = z_n + sqrt(z_f z_n); original LiSPSM falloff n_opt / sin(gamma).
+  const double nOpt = zNear + std::sqrt(zFar * zNear);
+  const double sine = std::abs(std::sin(gammaRadians));
+  if (!(sine > 0.0))
+  {
+    return Infinity;
+  }
+  double n = nOpt / sine;
+  const double phiSine = std::abs(std::sin(phiRadians));
+  if (lloyd && sine < phiSine)
+  {
+    n *= phiSine / sine; // faster than 1/sin below phi, continuous at phi (our choice).
+  }
+  return n;
+}
+
+double GMNPRLambda(double theta, double phi, double n, double f)
+{
+  theta = std::min(std::abs(theta), 0.5 * Pi);
+  if (theta >= phi)
+  {
+    // 002 Eq. 8, first branch (lambda_1 of Eq. 4).
+    const double ratio = std::tan(phi) / std::tan(theta);
+    return (n + std::sqrt(f * n) - n * ratio) / (f - n + (f + n) * ratio);
+  }
+  // 002 Eq. 7 / Eq. 8 second branch: lambda_2* = sqrt(f n) / (2 f) / tan(theta pi / (4 phi)).
+  const double t = std::tan(theta * Pi / (4.0 * phi));
+  return t > 0.0 ? std::sqrt(f * n) / (2.0 * f) / t : Infinity;
+}
+
+double WarpDepthOfFrustum(double theta, double phi, double n, double f)
+{
+  theta = std::min(std::abs(theta), 0.5 * Pi);
+  if (theta >= phi)
+  {
+    return (f - n + (f + n) * std::tan(phi) / std::tan(theta)) * std::sin(theta);
+  }
+  return 2.0 * f * std::tan(phi) * std::cos(theta);
+}
+
+double LiSPSMLambda(double theta, double phi, double n, double f)
+{
+  // 002 Eq. 9: P_n = (n + sqrt(f n)) / sin(theta) over the frustum's warp depth.
+  const double nearDistance = LiSPSMFreeParameter(n, f, theta, phi, false);
+  return LambdaFromWarpNear(nearDistance, WarpDepthOfFrustum(theta, phi, n, f));
+}
+
+double GMNPRAliasing(double lambda, double theta, double phi, double n, double f, double z)
+{
+  theta = std::min(std::abs(theta), 0.5 * Pi);
+  const double tanPhi = std::tan(phi);
+  double psi = 0.0;
+  double varphi = 0.0;
+  if (theta >= phi)
+  {
+    // 002 Eq. 2, theta in [phi, pi/2].
+    const double ratio = tanPhi / std::tan(theta);
+    const double span = f - n + (f + n) * ratio;
+    psi = 1.0 / tanPhi / (span * lambda * (lambda + 1.0));
+    varphi = span * lambda + n * ratio - n;
+  }
+  else
+  {
+    // 002 Eq. 2, theta in [0, phi].
+    const double ratio = std::tan(theta) / tanPhi;
+    psi = 1.0 / tanPhi / (2.0 * f * lambda * (lambda + 1.0) * ratio);
+    varphi = f * (2.0 * lambda + 1.0) / ratio - f;
+  }
+  return psi * (z + varphi) * (z + varphi) / z;
+}
+
+double WarpNearFromLambda(double lambda, double warpDepth)
+{
+  return lambda * warpDepth;
+}
+
+double LambdaFromWarpNear(double warpNear, double warpDepth)
+{
+  return warpDepth > 0.0 ? warpNear / warpDepth : Infinity;
+}
+
+double WarpFade(double gammaRadians, const WarpOptions& options)
+{
+  const double low = glm::radians(std::min(std::max(options.UniformBelowDegrees, 0.0), 89.0));
+  const double high =
+    glm::radians(std::min(std::max(options.FullWarpAboveDegrees, glm::degrees(low)), 90.0));
+  const double gamma = std::min(std::abs(gammaRadians), 0.5 * Pi);
+  if (gamma <= low)
+  {
+    return 0.0;
+  }
+  if (gamma >= high)
+  {
+    return 1.0;
+  }
+  const double t = (gamma - low) / (high - low);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+LightView FitDirectionalWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& sceneBounds, const glm::dvec3& lightDirection, int resolution, DirectionalWarp warp,
+  const WarpOptions& options)
+{
+  const double lightLength = glm::length(lightDirection);
+  const bool parallelCamera = std::abs(cameraProjection[2][3]) < 1e-12;
+  if (warp == DirectionalWarp::Uniform || parallelCamera || sceneBounds.IsEmpty() ||
+    !IsFinite(cameraView) || !IsFinite(cameraProjection) || !(lightLength > 0.0) ||
+    !std::isfinite(lightLength))
+  {
+    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
+  }
+  const Aabb scene = NonDegenerate(sceneBounds);
+  const std::vector<glm::dvec3> body =
+    IntersectFrustumWithBox(cameraProjection * cameraView, scene);
+  const glm::dmat4 cameraToWorld = glm::inverse(cameraView);
+  const glm::dvec3 viewRaw = -glm::dvec3(cameraToWorld[2]);
+  if (body.empty() || !IsFinite(cameraToWorld) || !(glm::length(viewRaw) > 0.0))
+  {
+    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
+  }
+  const int texels = std::max(resolution, 1);
+  const glm::dvec3 d = lightDirection / lightLength;
+  const glm::dvec3 view = glm::normalize(viewRaw);
+  const glm::dvec3 eye(cameraToWorld[3]);
+  const double gamma = ViewLightAngle(view, d);
+
+  // Light space (000, 003): -z along the light, y = view direction projected
+  // perpendicular to the light (the warp axis). Where that projection vanishes
+  // (gamma = 0) the warp is faded out and the axis only names a frame.
+  const glm::dvec3 cameraUp = glm::normalize(glm::dvec3(cameraToWorld[1]));
+  const glm::dvec3 upAcross = cameraUp - glm::dot(cameraUp, d) * d;
+  const glm::dvec3 projected = view - glm::dot(view, d) * d;
+  const glm::dvec3 warpAxis = glm::length(projected) > 1e-12 ? glm::normalize(projected)
+                                                             : glm::normalize(upAcross);
+  const double diagonal = scene.Diagonal();
+  const glm::dvec3 lightEye = scene.Center() - d * diagonal;
+  const glm::dmat4 lightView = glm::lookAt(lightEye, lightEye + d, warpAxis);
+  const glm::dvec3 right = glm::cross(d, warpAxis);
+
+  // B in light space, and in camera space for its view-depth range [z_n, z_f].
+  glm::dvec2 lo(Infinity), hi(-Infinity);
+  double bodyNear = Infinity, bodyFar = -Infinity;
+  double zNear = Infinity, zFar = 0.0;
+  for (const auto& p : body)
+  {
+    const glm::dvec3 q = Apply(lightView, p);
+    lo = glm::min(lo, glm::dvec2(q));
+    hi = glm::max(hi, glm::dvec2(q));
+    bodyNear = std::min(bodyNear, -q.z);
+    bodyFar = std::max(bodyFar, -q.z);
+    const double depth = -Apply(cameraView, p).z;
+    zNear = std::min(zNear, depth);
+    zFar = std::max(zFar, depth);
+  }
+  const double minimumExtent = diagonal * 1e-6;
+  hi = glm::max(hi, lo + minimumExtent);
+  // Casters between B and the light: nearest scene point over B's footprint.
+  const glm::dvec2 depthRange = ComputeNearAndFar(lightView, lo, hi, scene);
+  const double casterNear = depthRange.y > depthRange.x ? std::min(depthRange.x, bodyNear) : bodyNear;
+  bodyFar = std::max(bodyFar, casterNear + minimumExtent);
+
+  // Warp near distance n (world units).
+  const double warpDepth = hi.y - lo.y;
+  double warpNear = Infinity;
+  if (options.FreeParameterN > 0.0)
+  {
+    warpNear = options.FreeParameterN;
+  }
+  else if (zNear > 0.0 && zFar > zNear)
+  {
+    const glm::dvec3 axisInCamera = glm::dmat3(cameraView) * warpAxis;
+    const glm::dvec2 inPlane = glm::length(glm::dvec2(axisInCamera)) > 1e-12
+      ? glm::normalize(glm::dvec2(axisInCamera))
+      : glm::dvec2(0.0, 1.0);
+    const double phi = HalfAngleAlong(cameraProjection, inPlane);
+    if (warp == DirectionalWarp::LiSPSM)
+    {
+      warpNear = LiSPSMFreeParameter(zNear, zFar, gamma, phi, options.LloydFalloff);
+    }
+    else if (phi > 0.0)
+    {
+      // 002: lambda = P_n / (P_f - P_n), P_f - P_n = B's extent along the warp axis.
+      warpNear = WarpNearFromLambda(GMNPRLambda(gamma, phi, zNear, zFar), warpDepth);
+    }
+  }
+  // Fade: the strength k = (P_f - P_n) / n times a smoothstep in gamma, so that
+  // n -> infinity continuously as the view and light lines become parallel (003, 000).
+  const double fade = WarpFade(gamma, options);
+  const double rawStrength = warpNear > 0.0 ? fade * warpDepth / warpNear : 0.0;
+  const double strength = std::isfinite(rawStrength) ? rawStrength : 0.0;
+  const bool warped = strength > 0.0;
+
+  // The warp P with apex n behind B's near side along y, written so that it is the
+  // identity at k = 0: with y' = y - y_near,
+  //   (x, y', z) -> (x, y', z) / (1 + y' / n)  =  (n x, n y', n z) / (n + y'),
+  // i.e. the division by the distance to the apex of a perspective frustum along y;
+  // y' / (1 + y'/n) = n - n^2 / (n + y') is its hyperbolic depth. In homogeneous form
+  // only the w row changes: w = 1 + (k / (P_f - P_n)) y'.
+  const glm::dvec3 apexFoot(Apply(lightView, eye).x, lo.y, -0.5 * (casterNear + bodyFar));
+  glm::dmat4 warpMatrix(1.0);
+  warpMatrix[1][3] = warpDepth > 0.0 ? strength / warpDepth : 0.0;
+  warpMatrix = warpMatrix * glm::translate(glm::dmat4(1.0), -apexFoot);
+
+  // The map's in-plane orientation rho (map up = (-sin rho, cos rho) in light x/y):
+  // with the warp, the multiple of 90 degrees nearest the camera's up (projected
+  // perpendicular to the light), which keeps the map axes on the warp axis (a quarter
+  // turn maps the texel grid onto itself); without it (fade 0), the camera's up itself,
+  // which is continuous where the warp axis reverses (gamma = 0 or pi). The fade blends
+  // the two. Known limit: inside the fade band a light crossing the diagonal azimuth
+  // (warp axis at 45 degrees to the camera's up) turns the map by 90 * min(fade, 1 - fade).
+  const glm::dvec2 upInLight(glm::dot(upAcross, right), glm::dot(upAcross, warpAxis));
+  const double upAngle =
+    glm::length(upInLight) > 1e-9 ? std::atan2(-upInLight.x, upInLight.y) : 0.0;
+  const double quarter = 0.5 * Pi * std::round(upAngle / (0.5 * Pi));
+  const double rho = upAngle + fade * (quarter - upAngle);
+  glm::dmat4 turn(1.0);
+  turn[0][0] = std::cos(rho);
+  turn[1][0] = std::sin(rho);
+  turn[0][1] = -std::sin(rho);
+  turn[1][1] = std::cos(rho);
+  glm::dmat4 flipDepth(1.0);
+  flipDepth[2][2] = -1.0; // map depth grows away from the light
+  const glm::dmat4 toMap = flipDepth * turn * warpMatrix;
+
+  // Final orthographic fit: x, y over B, depth over B's footprint from the nearest
+  // caster to B's far end (light-space box; w > 0 on it, so its corners bound the image).
+  glm::dvec3 mapLo(Infinity), mapHi(-Infinity);
+  for (const auto& p : body)
+  {
+    const glm::dvec3 m = Apply(toMap * lightView, p);
+    mapLo = glm::min(mapLo, m);
+    mapHi = glm::max(mapHi, m);
+  }
+  for (int i = 0; i < 8; ++i)
+  {
+    const glm::dvec3 q((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? -casterNear : -bodyFar);
+    const glm::dvec3 m = Apply(toMap, q);
+    mapLo.z = std::min(mapLo.z, m.z);
+    mapHi.z = std::max(mapHi.z, m.z);
+  }
+  const glm::dvec3 extent = glm::max(mapHi - mapLo, 1e-9 * (glm::abs(mapHi) + glm::abs(mapLo)) + 1e-300);
+  const glm::dvec3 margin(extent.x * 4.0 / texels, extent.y * 4.0 / texels, extent.z * 1e-3);
+  LightView fit;
+  fit.View = lightView;
+  fit.Projection = BoxToClip(mapLo - margin, mapLo + extent + margin) * toMap;
+  fit.Perspective = warped;
+  if (!IsFinite(fit.Projection) || !IsFiniteVector(mapLo) || !IsFiniteVector(mapHi))
+  {
+    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
+  }
+
+  // Conservative texel: the largest world-space texel edge over B's vertices (the
+  // far end of the warp is the coarsest part): (2 / resolution) / sigma_min of the
+  // Jacobian of clip x/y with respect to the light-perpendicular world directions.
+  const glm::dmat4 clip = fit.ViewProjection();
+  const double step = diagonal * 1e-5;
+  double texel = 0.0;
+  for (const auto& p : body)
+  {
+    const glm::dvec2 dx = (glm::dvec2(Apply(clip, p + right * step)) - glm::dvec2(Apply(clip, p - right * step))) / (2.0 * step);
+    const glm::dvec2 dy = (glm::dvec2(Apply(clip, p + warpAxis * step)) - glm::dvec2(Apply(clip, p - warpAxis * step))) / (2.0 * step);
+    const double sigma = SmallestSingularValue(dx, dy);
+    if (sigma > 0.0 && std::isfinite(sigma))
+    {
+      texel = std::max(texel, 2.0 / texels / sigma);
+    }
+  }
+  fit.TexelConstant = texel > 0.0 ? texel : std::max(hi.x - lo.x, hi.y - lo.y) / texels;
+  fit.TexelPerUnitDistance = 0.0;
+  return fit;
+}
+
+} // namespace shadowmaps

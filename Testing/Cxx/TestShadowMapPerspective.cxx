@@ -1,0 +1,193 @@
+// Unit tests for the perspective shadow map math (Plugin/ShadowMapPerspective.{h,cxx}).
+#include "ShadowMapPerspective.h"
+
+#include <cmath>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+namespace
+{
+using shadowmaps::Aabb;
+using shadowmaps::PerspectiveMap;
+using shadowmaps::PsmLightKind;
+
+constexpr double ClipTolerance = 1e-9;
+
+Aabb Ground()
+{
+  Aabb box;
+  box.Min = { -50.0, -50.0, 0.0 };
+  box.Max = { 50.0, 50.0, 10.0 };
+  return box;
+}
+
+const glm::dvec3 Eye(0.0, -45.0, 5.0);
+const glm::dvec3 Target(0.0, 0.0, 5.0); // looks along +y
+
+glm::dmat4 CameraView()
+{
+  return glm::lookAt(Eye, Target, glm::dvec3(0.0, 0.0, 1.0));
+}
+
+glm::dmat4 CameraProjection(bool parallel = false)
+{
+  return parallel ? glm::ortho(-15.0, 15.0, -10.0, 10.0, 0.5, 80.0)
+                  : glm::perspective(glm::radians(45.0), 1.5, 0.5, 80.0);
+}
+
+void ExpectBodyInsideMap(const PerspectiveMap& map, const glm::dmat4& camera)
+{
+  const glm::dmat4 vp = map.Light.ViewProjection();
+  ASSERT_TRUE(shadowmaps::IsFinite(vp));
+  const auto body = shadowmaps::IntersectFrustumWithBox(camera, Ground());
+  ASSERT_FALSE(body.empty());
+  for (const auto& p : body)
+  {
+    const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
+    EXPECT_GT(clip.w, 0.0);
+    EXPECT_LE(std::abs(clip.x / clip.w), 1.0 + ClipTolerance);
+    EXPECT_LE(std::abs(clip.y / clip.w), 1.0 + ClipTolerance);
+    EXPECT_LE(std::abs(clip.z / clip.w), 1.0 + ClipTolerance);
+  }
+}
+
+double Depth01(const glm::dmat4& m, const glm::dvec4& p)
+{
+  const glm::dvec4 clip = m * p;
+  return 0.5 * clip.z / clip.w + 0.5;
+}
+
+} // namespace
+
+TEST(PerspectivePSM, InverseProjectionDepthFollowsTheThesisFormula)
+{
+  const double a = 0.25;
+  const glm::dmat4 m = shadowmaps::InverseProjection({ -1.0, -1.0 }, { 1.0, 1.0 }, a);
+  // Light-view space looks down -z: Z = -z.
+  const auto depthAt = [&](double z) { return Depth01(m, glm::dvec4(0.0, 0.0, -z, 1.0)); };
+  EXPECT_NEAR(depthAt(-a), 0.0, 1e-15);
+  EXPECT_NEAR(depthAt(a), 1.0, 1e-15);
+  EXPECT_NEAR(depthAt(-1e15), 0.5, 1e-12);
+  EXPECT_NEAR(depthAt(1e15), 0.5, 1e-12);
+  // Points at infinity (w = 0) on either side: exactly 1/2.
+  EXPECT_NEAR(Depth01(m, glm::dvec4(0.0, 0.0, -1.0, 0.0)), 0.5, 1e-15);
+  EXPECT_NEAR(Depth01(m, glm::dvec4(0.0, 0.0, 1.0, 0.0)), 0.5, 1e-15);
+  for (double z : { -3.0, -0.5, 0.4, 7.0 })
+  {
+    EXPECT_NEAR(depthAt(z), 0.5 * (1.0 + a / z), 1e-15);
+  }
+}
+
+TEST(PerspectivePSM, InverseLightKeepsDepthOrderThroughTheInfinityPlane)
+{
+  // Light behind the viewer, shining forward and down: a ray from a caster
+  // behind the camera through the camera plane (the infinity plane of
+  // post-perspective space) into the view frustum.
+  const glm::dvec3 light = glm::normalize(glm::dvec3(0.1, 1.0, -0.35));
+  const PerspectiveMap map =
+    shadowmaps::FitPerspective(CameraView(), CameraProjection(), Ground(), light, 2048);
+  ASSERT_EQ(map.Kind, PsmLightKind::Inverse);
+  EXPECT_GT(map.InverseNear, 0.0);
+  const glm::dmat4 vp = map.Light.ViewProjection();
+  const glm::dvec3 receiver(0.5, -30.0, 0.0); // in the frustum, on the ground
+  double previous = -1.0;
+  int crossed = 0;
+  // From far behind the camera toward the receiver, in the light's travel order.
+  for (double t = 40.0; t >= 0.0; t -= 0.25)
+  {
+    const glm::dvec3 p = receiver - light * t;
+    const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
+    if (!(std::abs(clip.z) <= clip.w)) // outside the depth range (|Z| < a): skipped
+    {
+      continue;
+    }
+    crossed += (CameraView() * glm::dvec4(p, 1.0)).z > 0.0 ? 1 : 0; // behind the viewer
+    const double depth = 0.5 * clip.z / clip.w + 0.5;
+    EXPECT_GT(clip.w, 0.0) << t;
+    EXPECT_GT(depth, previous) << t;
+    previous = depth;
+  }
+  EXPECT_GT(crossed, 10); // the ray really came from behind the viewer
+}
+
+TEST(PerspectivePSM, BodyMapsInsideForLightsInFrontPerpendicularAndBehind)
+{
+  const glm::dmat4 camera = CameraProjection() * CameraView();
+  struct Case
+  {
+    glm::dvec3 Light;
+    PsmLightKind Kind;
+  };
+  const Case cases[] = {
+    { { 0.2, -1.0, -0.5 }, PsmLightKind::Point },     // toward the viewer: light in front
+    { { 0.0, 0.0, -1.0 }, PsmLightKind::Directional }, // straight down: perpendicular
+    { { 0.3, 0.0, -1.0 }, PsmLightKind::Directional },
+    { { 0.1, 1.0, -0.35 }, PsmLightKind::Inverse },    // from behind the viewer
+    { { -0.5, 0.7, -0.6 }, PsmLightKind::Inverse },
+  };
+  for (const auto& c : cases)
+  {
+    for (double slideBack : { 0.0, 5.0 })
+    {
+      const PerspectiveMap map =
+        shadowmaps::FitPerspective(CameraView(), CameraProjection(), Ground(), c.Light, 2048, slideBack);
+      EXPECT_EQ(map.Kind, c.Kind);
+      EXPECT_TRUE(map.Light.Perspective);
+      EXPECT_GT(map.Light.TexelConstant, 0.0);
+      ExpectBodyInsideMap(map, camera);
+    }
+  }
+}
+
+TEST(PerspectivePSM, SlideBackKeepsTheNearPlaneQuad)
+{
+  const glm::dmat4 real = CameraProjection() * CameraView();
+  const glm::dmat4 slid = shadowmaps::SlideBackPostPerspective(CameraView(), CameraProjection(), 5.0);
+  for (const auto& ndc : { glm::dvec3(-1, -1, -1), glm::dvec3(1, -1, -1), glm::dvec3(1, 1, -1), glm::dvec3(-1, 1, -1) })
+  {
+    const glm::dvec4 w = glm::inverse(real) * glm::dvec4(ndc, 1.0);
+    const glm::dvec4 q = slid * (w / w.w);
+    EXPECT_NEAR(q.x / q.w, ndc.x, 1e-12);
+    EXPECT_NEAR(q.y / q.w, ndc.y, 1e-12);
+    EXPECT_NEAR(q.z / q.w, -1.0, 1e-12);
+  }
+}
+
+TEST(PerspectivePSM, NoNaNForLightAlongAgainstViewAndParallelCameras)
+{
+  const glm::dvec3 view = glm::normalize(Target - Eye);
+  for (bool parallel : { false, true })
+  {
+    const glm::dmat4 camera = CameraProjection(parallel) * CameraView();
+    for (const glm::dvec3& light : { view, -view, view + glm::dvec3(0.0, 0.0, -1e-9),
+           -view + glm::dvec3(1e-7, 0.0, 0.0), glm::dvec3(0.0, 0.0, -1.0), glm::dvec3(1.0, 1.0, -1.0) })
+    {
+      const PerspectiveMap map =
+        shadowmaps::FitPerspective(CameraView(), CameraProjection(parallel), Ground(), light, 1024);
+      if (parallel)
+      {
+        EXPECT_EQ(map.Kind, PsmLightKind::Uniform);
+      }
+      EXPECT_TRUE(std::isfinite(map.Light.TexelConstant));
+      ExpectBodyInsideMap(map, camera);
+    }
+  }
+}
+
+TEST(PerspectivePSM, KozlovBiasScalesWithWorldTexelSize)
+{
+  const glm::dvec3 light(0.2, -1.0, -0.5);
+  const PerspectiveMap map =
+    shadowmaps::FitPerspective(CameraView(), CameraProjection(), Ground(), light, 2048);
+  // PSM texels grow with distance from the viewer.
+  const double nearTexel = shadowmaps::WorldTexelSize(map.Light, { 0.0, -40.0, 0.0 }, 2048);
+  const double farTexel = shadowmaps::WorldTexelSize(map.Light, { 0.0, 30.0, 0.0 }, 2048);
+  EXPECT_GT(nearTexel, 0.0);
+  EXPECT_GT(farTexel, 2.0 * nearTexel);
+  const glm::dvec3 p(1.0, 2.0, 3.0);
+  const glm::dvec3 biased = shadowmaps::KozlovBiasedPoint(p, light, 0.01, 2.0, farTexel);
+  EXPECT_NEAR(glm::length(biased - p), 0.01 + 2.0 * farTexel, 1e-12);
+  EXPECT_LT(glm::dot(biased - p, light), 0.0); // moved toward the light
+}

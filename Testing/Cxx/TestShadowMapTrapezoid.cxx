@@ -1,0 +1,299 @@
+// Unit tests for the trapezoidal shadow map math (Plugin/ShadowMapTrapezoid.{h,cxx}).
+#include "ShadowMapTrapezoid.h"
+
+#include <cmath>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+namespace
+{
+using shadowmaps::Aabb;
+using shadowmaps::TrapezoidMap;
+
+constexpr double Tolerance = 1e-9;
+
+Aabb Ground()
+{
+  Aabb box;
+  box.Min = { -50.0, -50.0, 0.0 };
+  box.Max = { 50.0, 50.0, 10.0 };
+  return box;
+}
+
+glm::dmat4 Camera(const glm::dvec3& eye, const glm::dvec3& target, bool parallel = false)
+{
+  const glm::dvec3 d = glm::normalize(target - eye);
+  const glm::dvec3 up = std::abs(d.z) > 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dmat4 view = glm::lookAt(eye, target, up);
+  const glm::dmat4 projection = parallel ? glm::ortho(-15.0, 15.0, -10.0, 10.0, 0.5, 80.0)
+                                         : glm::perspective(glm::radians(45.0), 1.5, 0.5, 80.0);
+  return projection * view;
+}
+
+// Horizontal camera looking along +y; the sun straight down is perpendicular to it.
+glm::dmat4 HorizontalCamera()
+{
+  return Camera({ 0.0, -45.0, 5.0 }, { 0.0, 0.0, 5.0 });
+}
+
+glm::dvec3 LightSpace(const TrapezoidMap& map, const glm::dvec3& world)
+{
+  const glm::dvec4 q = map.LightView * glm::dvec4(world, 1.0);
+  return glm::dvec3(q) / q.w;
+}
+
+void ExpectInsideUnitCube(const glm::dvec3& t)
+{
+  EXPECT_GE(t.x, -Tolerance);
+  EXPECT_LE(t.x, 1.0 + Tolerance);
+  EXPECT_GE(t.y, -Tolerance);
+  EXPECT_LE(t.y, 1.0 + Tolerance);
+  EXPECT_GE(t.z, -Tolerance);
+  EXPECT_LE(t.z, 1.0 + Tolerance);
+}
+
+bool IsFinite(const TrapezoidMap& map)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      if (!std::isfinite(map.TrapezoidToSquare[c][r]))
+      {
+        return false;
+      }
+    }
+  }
+  for (const auto& c : map.Corners)
+  {
+    if (!std::isfinite(c.x) || !std::isfinite(c.y))
+    {
+      return false;
+    }
+  }
+  return std::isfinite(map.DepthNear) && std::isfinite(map.DepthFar) &&
+    shadowmaps::IsFinite(map.LightView);
+}
+
+struct Setup
+{
+  glm::dmat4 Camera;
+  glm::dvec3 Light;
+};
+
+std::vector<Setup> Sweep()
+{
+  std::vector<Setup> setups;
+  const glm::dvec3 eye(0.0, -45.0, 5.0);
+  const std::vector<glm::dvec3> targets = { { 0.0, 0.0, 5.0 }, { 10.0, 0.0, 0.0 }, { 0.0, -44.0, 0.0 },
+    { -20.0, 10.0, 2.0 } };
+  for (bool parallel : { false, true })
+  {
+    for (const auto& target : targets)
+    {
+      const glm::dmat4 camera = Camera(eye, target, parallel);
+      const glm::dvec3 view = glm::normalize(target - eye);
+      std::vector<glm::dvec3> lights = { view, -view, { 0.0, 0.0, -1.0 }, { 1.0, 1.0, -1.0 },
+        { -1.0, 0.3, -0.2 }, view + glm::dvec3(1e-9, 0.0, 0.0), -view + glm::dvec3(0.0, 0.0, 1e-7),
+        glm::normalize(view) * 10.0 + glm::dvec3(0.5, 0.0, 0.5) };
+      for (const auto& light : lights)
+      {
+        setups.push_back({ camera, light });
+      }
+    }
+  }
+  return setups;
+}
+
+} // namespace
+
+TEST(TrapezoidTSM, ConvexHullDropsInteriorAndCollinearPoints)
+{
+  const auto hull = shadowmaps::ConvexHull2D(
+    { { 0, 0 }, { 2, 0 }, { 1, 0 }, { 2, 2 }, { 0, 2 }, { 1, 1 }, { 0.5, 1.5 }, { 2, 2 } });
+  ASSERT_EQ(hull.size(), 4u);
+  double area = 0.0;
+  for (size_t i = 0; i < hull.size(); ++i)
+  {
+    const auto& p = hull[i];
+    const auto& q = hull[(i + 1) % hull.size()];
+    area += p.x * q.y - p.y * q.x;
+  }
+  EXPECT_DOUBLE_EQ(0.5 * area, 4.0); // counter-clockwise, the full square
+}
+
+TEST(TrapezoidTSM, CornersMapToUnitSquareCorners)
+{
+  const glm::dvec2 expected[4] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+  for (const auto& setup : Sweep())
+  {
+    const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, Ground(), setup.Light, 10.0);
+    for (int i = 0; i < 4; ++i)
+    {
+      const glm::dvec2 ndc = shadowmaps::TrapezoidToNdc(map, map.Corners[i]);
+      EXPECT_NEAR(ndc.x, expected[i].x, Tolerance) << "corner " << i;
+      EXPECT_NEAR(ndc.y, expected[i].y, Tolerance) << "corner " << i;
+    }
+  }
+}
+
+TEST(TrapezoidTSM, FocusPointMapsToThe80PercentLine)
+{
+  const glm::dmat4 camera = HorizontalCamera();
+  const double delta = 10.0;
+  const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, Ground(), { 0.0, 0.0, -1.0 }, delta);
+  EXPECT_DOUBLE_EQ(map.WarpWeight, 1.0);
+  EXPECT_TRUE(std::isfinite(map.VanishingDistance));
+  EXPECT_GT(map.VanishingDistance, 0.0);
+  EXPECT_NEAR(map.FocusLine, 0.8, 1e-12);
+  const glm::dvec2 ndc = shadowmaps::TrapezoidToNdc(map, map.FocusPoint);
+  EXPECT_NEAR(0.5 * ndc.y + 0.5, 0.8, Tolerance);
+  // The same from the world point delta past the near plane centre (eye at
+  // y = -45, near 0.5): the focus was not clamped.
+  const glm::dvec3 focusWorld(0.0, -45.0 + 0.5 + delta, 5.0);
+  EXPECT_NEAR(shadowmaps::MapToTexture(map, focusWorld).y, 0.8, Tolerance);
+  // Without warping that point would sit at delta'/lambda of the map: the warp
+  // gave the focus region much more than its share.
+  const double lambda = glm::length(map.Corners[3] - map.Corners[0]); // symmetric here
+  EXPECT_LT(delta / lambda, 0.3);
+  // A non-perpendicular light in front of the fade angle keeps the 80% rule.
+  const TrapezoidMap oblique = shadowmaps::FitTrapezoid(camera, Ground(), { 0.3, 0.6, -1.0 }, delta);
+  EXPECT_DOUBLE_EQ(oblique.WarpWeight, 1.0);
+  EXPECT_NEAR(0.5 * shadowmaps::TrapezoidToNdc(oblique, oblique.FocusPoint).y + 0.5, 0.8, Tolerance);
+}
+
+TEST(TrapezoidTSM, EveryHullAndBodyPointMapsInsideTheSquare)
+{
+  for (const auto& setup : Sweep())
+  {
+    const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, Ground(), setup.Light, 10.0);
+    ASSERT_TRUE(IsFinite(map));
+    for (const auto& p : map.Hull)
+    {
+      const glm::dvec2 ndc = shadowmaps::TrapezoidToNdc(map, p);
+      EXPECT_LE(std::abs(ndc.x), 1.0 + Tolerance);
+      EXPECT_LE(std::abs(ndc.y), 1.0 + Tolerance);
+    }
+    for (const auto& p : shadowmaps::IntersectFrustumWithBox(setup.Camera, Ground()))
+    {
+      ExpectInsideUnitCube(shadowmaps::MapToTexture(map, p));
+    }
+  }
+}
+
+TEST(TrapezoidTSM, DepthIsLinearInLightSpaceZ)
+{
+  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), Ground(), { 0.2, 0.5, -1.0 }, 10.0);
+  ASSERT_TRUE(std::isfinite(map.VanishingDistance)); // a real trapezoid
+  const glm::dvec3 a(3.0, -20.0, 1.0), b(-7.0, 5.0, 9.0);
+  const double za = LightSpace(map, a).z, zb = LightSpace(map, b).z;
+  const double da = shadowmaps::MapToTexture(map, a).z, db = shadowmaps::MapToTexture(map, b).z;
+  for (double t : { -0.5, 0.1, 0.37, 0.9, 1.5 })
+  {
+    const glm::dvec3 p = a + t * (b - a);
+    const double z = LightSpace(map, p).z;
+    const double expected = da + (db - da) * (z - za) / (zb - za);
+    EXPECT_NEAR(shadowmaps::MapToTexture(map, p).z, expected, 1e-12);
+    // and equal to the documented formula
+    EXPECT_NEAR(shadowmaps::MapToTexture(map, p).z, (-z - map.DepthNear) / (map.DepthFar - map.DepthNear), 1e-12);
+  }
+}
+
+TEST(TrapezoidTSM, LightViewMatrixMatchesTheMapping)
+{
+  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), Ground(), { 0.2, 0.5, -1.0 }, 10.0);
+  const shadowmaps::LightView view = shadowmaps::TrapezoidLightView(map, 2048);
+  EXPECT_TRUE(view.Perspective);
+  EXPECT_GT(view.TexelConstant, 0.0);
+  const glm::dmat4 vp = view.ViewProjection();
+  for (const auto& p : shadowmaps::IntersectFrustumWithBox(HorizontalCamera(), Ground()))
+  {
+    const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
+    const glm::dvec3 t = shadowmaps::MapToTexture(map, p);
+    EXPECT_GE(clip.w, 1.0 - Tolerance);
+    EXPECT_NEAR(0.5 * clip.x / clip.w + 0.5, t.x, Tolerance);
+    EXPECT_NEAR(0.5 * clip.y / clip.w + 0.5, t.y, Tolerance);
+    EXPECT_NEAR(0.5 * clip.z + 0.5, t.z, Tolerance); // linear depth before the divide
+    EXPECT_LE(std::abs(clip.z), clip.w);             // never depth-clipped
+  }
+}
+
+TEST(TrapezoidTSM, LightAlongTheViewGivesTheUniformFocusedMap)
+{
+  const glm::dvec3 eye(0.0, -45.0, 30.0), target(0.0, 0.0, 0.0);
+  const glm::dmat4 camera = Camera(eye, target);
+  const glm::dvec3 view = glm::normalize(target - eye);
+  for (const glm::dvec3& light : { view, -view })
+  {
+    const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, Ground(), light, 10.0);
+    ASSERT_TRUE(IsFinite(map));
+    EXPECT_EQ(map.WarpWeight, 0.0);
+    EXPECT_TRUE(std::isinf(map.VanishingDistance));
+    // Affine: W is 1 everywhere.
+    for (const auto& c : map.Corners)
+    {
+      EXPECT_NEAR((map.TrapezoidToSquare * glm::dvec3(c, 1.0)).z, 1.0, 1e-15);
+    }
+    // Same extent as the focused uniform fit (which adds 4 texels each side).
+    const shadowmaps::LightView uniform = shadowmaps::FitDirectional(camera, Ground(), light, 2048);
+    const double width = glm::length(map.Corners[1] - map.Corners[0]);
+    const double height = glm::length(map.Corners[3] - map.Corners[0]);
+    const double uniformWidth = 2.0 / uniform.Projection[0][0];
+    const double uniformHeight = 2.0 / uniform.Projection[1][1];
+    EXPECT_NEAR(std::max(width, height) * (1.0 + 8.0 / 2048), std::max(uniformWidth, uniformHeight), 1e-9 * uniformWidth);
+    EXPECT_NEAR(std::min(width, height) * (1.0 + 8.0 / 2048), std::min(uniformWidth, uniformHeight), 1e-9 * uniformWidth);
+  }
+}
+
+TEST(TrapezoidTSM, WarpFadesContinuouslyTowardTheViewAxis)
+{
+  // Tilt the light away from the view axis in a fixed plane: the map of a
+  // fixed point and the warp strength W_base / W_top move continuously to the
+  // uniform limit.
+  const glm::dvec3 eye(0.0, -45.0, 30.0), target(0.0, 0.0, 0.0);
+  const glm::dmat4 camera = Camera(eye, target);
+  const glm::dvec3 view = glm::normalize(target - eye);
+  const glm::dvec3 side(1.0, 0.0, 0.0);
+  const glm::dvec3 probe(2.0, -10.0, 1.0);
+  double previousRatio = 1e300;
+  glm::dvec3 previous(0.0);
+  for (double degrees : { 20.0, 10.0, 5.0, 1.0, 1e-2, 1e-4, 1e-6, 1e-8 })
+  {
+    const double angle = glm::radians(degrees);
+    const glm::dvec3 light = std::cos(angle) * view + std::sin(angle) * side;
+    const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, Ground(), light, 10.0);
+    ASSERT_TRUE(IsFinite(map));
+    const double wTop = (map.TrapezoidToSquare * glm::dvec3(map.Corners[0], 1.0)).z;
+    const double wBase = (map.TrapezoidToSquare * glm::dvec3(map.Corners[3], 1.0)).z;
+    const double ratio = wBase / wTop;
+    EXPECT_LE(ratio, previousRatio + 1e-12) << degrees;
+    previousRatio = ratio;
+    const glm::dvec3 t = shadowmaps::MapToTexture(map, probe);
+    if (degrees <= 1e-4)
+    {
+      EXPECT_LT(glm::length(glm::dvec2(t - previous)), 1e-3) << degrees;
+    }
+    previous = t;
+  }
+  EXPECT_NEAR(previousRatio, 1.0, 1e-6);
+}
+
+TEST(TrapezoidTSM, NoNaNOverCameraLightSweep)
+{
+  int count = 0;
+  for (const auto& setup : Sweep())
+  {
+    for (double delta : { 0.0, 1.0, 10.0, 1e4 })
+    {
+      const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, Ground(), setup.Light, delta);
+      ASSERT_TRUE(IsFinite(map));
+      const shadowmaps::LightView view = shadowmaps::TrapezoidLightView(map, 1024);
+      ASSERT_TRUE(shadowmaps::IsFinite(view.ViewProjection()));
+      ASSERT_TRUE(std::isfinite(view.TexelConstant));
+      ++count;
+    }
+  }
+  EXPECT_EQ(count, 256);
+}
