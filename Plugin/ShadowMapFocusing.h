@@ -74,6 +74,9 @@ struct LightView
   /// World-space size of one texel: Constant + PerUnitDistance * distance to the light.
   double TexelConstant = 0.0;
   double TexelPerUnitDistance = 0.0;
+  /// Warped maps: texels vary too much across the map for the formula above;
+  /// receivers take the texel size from the map's local derivative instead.
+  bool TexelSizeFromGradient = false;
   glm::dmat4 ViewProjection() const { return this->Projection * this->View; }
 };
 

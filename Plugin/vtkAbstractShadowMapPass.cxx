@@ -671,7 +671,9 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
     {
       const glm::mat4 viewToMap(toTexture * view.ViewProjection() * viewToWorld);
       r.ViewToMap.insert(r.ViewToMap.end(), glm::value_ptr(viewToMap), glm::value_ptr(viewToMap) + 16);
-      r.TexelSizes.push_back(static_cast<float>(view.TexelConstant));
+      // A negative constant tells the receiver to use the map's local gradient.
+      r.TexelSizes.push_back(
+        view.TexelSizeFromGradient ? -1.0f : static_cast<float>(view.TexelConstant));
       r.TexelSizes.push_back(static_cast<float>(view.TexelPerUnitDistance));
     }
     const glm::dvec3 positionVC(in.CameraView * glm::dvec4(light.Position, 1.0));

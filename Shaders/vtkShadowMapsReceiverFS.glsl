@@ -13,7 +13,8 @@ uniform sampler2D vtkShadowNoise;
 // per map takes a VC point to map texture coordinates and depth.
 uniform mat4 vtkShadowViewToWorld;
 uniform mat4 vtkShadowViewToMap[VTK_SHADOW_MAX_VIEWS];
-// World-space size of one texel of a view: x + y * (distance to the light).
+// World-space size of one texel of a view: x + y * (distance to the light);
+// x < 0: warped map, size from the map's local gradient (vtkShadowGradientTexel).
 uniform vec2 vtkShadowTexelSize[VTK_SHADOW_MAX_VIEWS];
 uniform vec3 vtkShadowLightPositionVC[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_MAX_LIGHTS];
@@ -55,10 +56,26 @@ int vtkShadowSelectView(vec3 positionVC, int light, int firstView, bool cube)
 
 // Clip coordinates of the receiver in map `view`, moved along its normal by the
 // world-space size of a texel there (normal offset, Kozlov, GPU Gems 14).
+// World (= VC) length of one texel along the map's coarser axis at positionVC:
+// 1 / (resolution * |grad t|), with grad t = (row_t - t row_w) / w the gradient of
+// the projective map coordinate t in {u, v}.
+float vtkShadowGradientTexel(vec3 positionVC, int view)
+{
+  mat4 m = vtkShadowViewToMap[view];
+  vec4 q = m * vec4(positionVC, 1.0);
+  vec3 rowW = vec3(m[0][3], m[1][3], m[2][3]);
+  vec3 gradU = (vec3(m[0][0], m[1][0], m[2][0]) - (q.x / q.w) * rowW) / q.w;
+  vec3 gradV = (vec3(m[0][1], m[1][1], m[2][1]) - (q.y / q.w) * rowW) / q.w;
+  float slowest = min(length(gradU), length(gradV));
+  return 1.0 / (vtkShadowMapResolution * max(slowest, 1e-20));
+}
+
 vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view)
 {
   vec2 texelSize = vtkShadowTexelSize[view];
-  float texel = texelSize.x + texelSize.y * length(positionVC - vtkShadowLightPositionVC[light]);
+  float texel = texelSize.x < 0.0
+    ? vtkShadowGradientTexel(positionVC, view)
+    : texelSize.x + texelSize.y * length(positionVC - vtkShadowLightPositionVC[light]);
   vec3 biased = positionVC + normalVC * (vtkShadowNormalOffset * texel);
   return vtkShadowViewToMap[view] * vec4(biased, 1.0);
 }

@@ -114,11 +114,14 @@ TechniqueInstance MakeTechnique(const std::string& name, const std::string& setu
       name == "vtk" ? VTKDefaultResolution : VTKEqualMemoryResolution(setup, resolution));
     technique.Pass = MakeVTKPass(static_cast<unsigned int>(technique.Resolution), technique.VTK);
   }
-  else if (name == "uniform")
+  else if (name == "uniform" || name == "lispsm" || name == "gmnpr")
   {
     auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
     pass->SetResolution(resolution);
     pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
+    pass->SetWarpMode(name == "lispsm" ? vtkWarpedShadowMapPass::LISPSM
+        : name == "gmnpr"             ? vtkWarpedShadowMapPass::GMNPR
+                                      : vtkWarpedShadowMapPass::UNIFORM);
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;
@@ -697,7 +700,7 @@ Options WithReferences(Options options)
 //------------------------------------------------------------------------------
 std::vector<std::string> TechniqueNames()
 {
-  return { "none", "vtk", "vtk-equal", "uniform" };
+  return { "none", "vtk", "vtk-equal", "uniform", "lispsm", "gmnpr" };
 }
 
 //------------------------------------------------------------------------------

@@ -42,7 +42,8 @@ Options DefaultOptions();
 
 /// "none", "vtk" (VTK's vtkShadowMapPass at its default 1024^2), "vtk-equal"
 /// (the same at the memory of "uniform"), "uniform" (vtkWarpedShadowMapPass,
-/// focused uniform map, 2x2 PCF).
+/// focused uniform map, 2x2 PCF), "lispsm" and "gmnpr" (the same pass warped,
+/// 2x2 PCF).
 std::vector<std::string> TechniqueNames();
 
 /// Runs the benchmark: prints the markdown table on `out` and writes into the

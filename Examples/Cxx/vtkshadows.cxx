@@ -106,8 +106,8 @@ void PrintUsage(std::ostream& out)
          "options of bench and analyze (lists are comma-separated):\n"
          "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
          "  --setups LIST            overhead,perpendicular,behind,facing,spot,point [all]\n"
-         "  --techniques LIST        none,vtk,vtk-equal,uniform [all]; none and vtk are\n"
-         "                           always measured (frame-time references)\n"
+         "  --techniques LIST        none,vtk,vtk-equal,uniform,lispsm,gmnpr [all]; none\n"
+         "                           and vtk are always measured (frame-time references)\n"
          "  --technique NAME         one technique (with none and vtk)\n"
          "  --resolution N           map size of this project's techniques [2048]\n"
          "  --size WxH               image size [640x360]\n"
@@ -338,7 +338,8 @@ std::string ParseTechniques(const std::string& value, Options& options)
   {
     if (std::find(names.begin(), names.end(), technique) == names.end())
     {
-      return "unknown technique '" + technique + "' (expected none, vtk, vtk-equal or uniform)";
+      return "unknown technique '" + technique +
+        "' (expected none, vtk, vtk-equal, uniform, lispsm or gmnpr)";
     }
   }
   options.bench.Techniques = SplitList(value);
