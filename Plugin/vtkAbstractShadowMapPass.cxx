@@ -191,6 +191,7 @@ struct vtkAbstractShadowMapPass::Resources
   shadowmaps::TextureArray Maps;
   shadowmaps::MapStorage Storage;
   std::string LookupCode; // GetReceiverLookupCode() of the current maps
+  size_t LookupCodeHash = 0;
   vtkNew<vtkShadowMapCasterPass> CasterPass;
   vtkNew<vtkOpaquePass> OpaquePass;
   vtkNew<vtkCamera> LightCamera;
@@ -468,6 +469,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 
   this->GetMapStorage(r.Storage);
   r.LookupCode = this->GetReceiverLookupCode();
+  r.LookupCodeHash = r.LookupCodeHash;
   std::string error;
   if (!r.Maps.Reserve(in.Resolution, layers, r.Storage.Format, r.Storage.Mipmaps, error) ||
     !this->RenderShadowMaps(renderer))
@@ -691,7 +693,7 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
   Resources& r = *this->Resource;
   std::ostringstream key;
   key << this->Filter << ' ' << this->KernelSize << ' ' << this->PoissonSamples << ' '
-      << this->NumberOfShadowMapLayers << ' ' << std::hash<std::string>()(r.LookupCode)
+      << this->NumberOfShadowMapLayers << ' ' << r.LookupCodeHash
       << ' ' << this->AnalysisView << ' ' << this->AnalysisLight << ';';
   for (const ShadowLight& light : this->Internal->Lights)
   {

@@ -17,19 +17,28 @@ namespace
 {
 const glm::dvec3 SunDirection = glm::normalize(glm::dvec3(-0.4, 0.3, -1.0));
 
-/// Stores (depth, depth^2) with mipmaps and looks up with Chebyshev's bound.
-class vtkTestMomentsShadowMapPass : public vtkAbstractShadowMapPass
+/// The focused uniform views; the subclasses below choose only the storage.
+class vtkTestUniformViewsPass : public vtkAbstractShadowMapPass
 {
 public:
-  static vtkTestMomentsShadowMapPass* New();
-  vtkTypeMacro(vtkTestMomentsShadowMapPass, vtkAbstractShadowMapPass);
-  int PostProcessCalls = 0;
+  vtkTypeMacro(vtkTestUniformViewsPass, vtkAbstractShadowMapPass);
 
 protected:
   void ComputeLightViews(Internals& internals, int lightIndex) override
   {
     this->FitLightViewsUniform(internals, lightIndex);
   }
+};
+
+/// Stores (depth, depth^2) with mipmaps and looks up with Chebyshev's bound.
+class vtkTestMomentsShadowMapPass : public vtkTestUniformViewsPass
+{
+public:
+  static vtkTestMomentsShadowMapPass* New();
+  vtkTypeMacro(vtkTestMomentsShadowMapPass, vtkTestUniformViewsPass);
+  int PostProcessCalls = 0;
+
+protected:
   void GetMapStorage(shadowmaps::MapStorage& storage) const override
   {
     storage = shadowmaps::MapStorage();
@@ -65,17 +74,13 @@ vtkStandardNewMacro(vtkTestMomentsShadowMapPass);
 
 /// Keeps the nearest front face and the nearest back face of every texel and
 /// compares receivers with their midpoint: no bias needed on closed casters.
-class vtkTestFrontBackShadowMapPass : public vtkAbstractShadowMapPass
+class vtkTestFrontBackShadowMapPass : public vtkTestUniformViewsPass
 {
 public:
   static vtkTestFrontBackShadowMapPass* New();
-  vtkTypeMacro(vtkTestFrontBackShadowMapPass, vtkAbstractShadowMapPass);
+  vtkTypeMacro(vtkTestFrontBackShadowMapPass, vtkTestUniformViewsPass);
 
 protected:
-  void ComputeLightViews(Internals& internals, int lightIndex) override
-  {
-    this->FitLightViewsUniform(internals, lightIndex);
-  }
   void GetMapStorage(shadowmaps::MapStorage& storage) const override
   {
     storage = shadowmaps::MapStorage();
