@@ -317,6 +317,27 @@ glm::dvec2 ComputeNearAndFar(
   return { -zMax, -zMin };
 }
 
+glm::dvec2 VisibleDepthRange(
+  const glm::dmat4& cameraView, const glm::dmat4& cameraProjection, const std::vector<Aabb>& boxes)
+{
+  const glm::dmat4 viewProjection = cameraProjection * cameraView;
+  double nearest = Infinity, farthest = -Infinity;
+  for (const Aabb& box : boxes)
+  {
+    for (const auto& p : IntersectFrustumWithBox(viewProjection, box))
+    {
+      const double depth = -(cameraView * glm::dvec4(p, 1.0)).z;
+      nearest = std::min(nearest, depth);
+      farthest = std::max(farthest, depth);
+    }
+  }
+  if (!(farthest >= nearest) || !std::isfinite(farthest - nearest))
+  {
+    return { 0.0, 0.0 };
+  }
+  return { nearest, farthest };
+}
+
 LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& sceneBounds,
   const glm::dvec3& lightDirection, int resolution)
 {

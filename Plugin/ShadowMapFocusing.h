@@ -54,6 +54,14 @@ std::array<Plane, 6> FrustumPlanes(const glm::dmat4& viewProjection);
 /// below cover the extension through ComputeNearAndFar alone.
 std::vector<glm::dvec3> IntersectFrustumWithBox(const glm::dmat4& viewProjection, const Aabb& box);
 
+/// Range {nearest, farthest} of view depths (distance along -z of cameraView) at
+/// which any of the boxes is inside the camera frustum: each box is clipped to the
+/// frustum on its own, so the empty space between boxes does not count (a camera
+/// inside the scene's bounds still sees its nearest object some way off).
+/// {0, 0} when no box is in view.
+glm::dvec2 VisibleDepthRange(
+  const glm::dmat4& cameraView, const glm::dmat4& cameraProjection, const std::vector<Aabb>& boxes);
+
 /// Right-handed look-at view for a light looking along direction from eye.
 /// The up vector is chosen stably (world z unless nearly parallel, then world y).
 glm::dmat4 LightLookAt(const glm::dvec3& eye, const glm::dvec3& direction);
@@ -77,6 +85,10 @@ struct LightView
   /// Warped maps: texels vary too much across the map for the formula above;
   /// receivers take the texel size from the map's local derivative instead.
   bool TexelSizeFromGradient = false;
+  /// Depth linear in light space (TSM): clip Z is affine in world space and is the
+  /// stored depth itself, not Z / W. Clip X, Y, W must not depend on light-space z,
+  /// so that W can be recovered from the NDC position (see NdcToInverseW).
+  bool LinearDepth = false;
   glm::dmat4 ViewProjection() const { return this->Projection * this->View; }
 };
 

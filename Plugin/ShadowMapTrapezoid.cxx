@@ -272,6 +272,23 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
   return map;
 }
 
+glm::dvec3 NdcToInverseW(const LightView& view)
+{
+  // Clip (X, Y, W) as a function of light-space (x, y, 1): rows X, Y, W and
+  // columns x, y, 1 of the projection. Its inverse applied to (x_ndc, y_ndc, 1)
+  // = (X, Y, W) / W gives (x, y, 1) / W, whose last component is 1 / W.
+  const glm::dmat4& p = view.Projection;
+  const glm::dmat3 xyw(glm::dvec3(p[0][0], p[0][1], p[0][3]), glm::dvec3(p[1][0], p[1][1], p[1][3]),
+    glm::dvec3(p[3][0], p[3][1], p[3][3]));
+  const double determinant = glm::determinant(xyw);
+  if (!(std::abs(determinant) > 1e-300) || !std::isfinite(determinant))
+  {
+    return { 0.0, 0.0, 1.0 };
+  }
+  const glm::dmat3 inverse = glm::inverse(xyw);
+  return { inverse[0][2], inverse[1][2], inverse[2][2] };
+}
+
 glm::dvec2 TrapezoidToNdc(const TrapezoidMap& map, const glm::dvec2& lightXY)
 {
   return Apply(map.TrapezoidToSquare, lightXY);
@@ -304,6 +321,7 @@ LightView TrapezoidLightView(const TrapezoidMap& map, int resolution)
     glm::dvec4(h[1][0], h[1][1], 0.0, h[1][2]), glm::dvec4(0.0, 0.0, -2.0 / range, 0.0),
     glm::dvec4(h[2][0], h[2][1], -(map.DepthFar + map.DepthNear) / range, h[2][2]));
   view.Perspective = true;
+  view.LinearDepth = true;
 
   // Largest world-space texel edge over the trapezoid: the inverse Jacobian of
   // the homography (A p + b) / (c.p + d) is W (A - h c^T)^-1.

@@ -85,12 +85,18 @@ glm::dvec4 DepthRow(const TrapezoidMap& map);
 /// trapezoid mapping. Z = (linear NDC depth) is affine, so Z/W is depth divided
 /// by W: monotone along each light ray (W depends on x, y only) and inside the
 /// clip volume (|Z| <= 1 <= W), so hardware depth testing orders casters
-/// correctly, but Z/W is NOT the linear depth. A caster shader that wants linear
-/// depth passes dot(DepthRow, world) as a varying and writes it to
-/// gl_FragDepth (thesis: multiply z back by w in the pixel shader); receivers
-/// compare against MapToTexture's z. Texel sizes: the largest world-space texel
+/// correctly, but Z/W is NOT the linear depth. LinearDepth is set: casters
+/// write Z itself to gl_FragDepth, W recovered with NdcToInverseW (thesis:
+/// multiply z back by w in the pixel shader); receivers compare against
+/// MapToTexture's z. Texel sizes: the largest world-space texel
 /// edge over the trapezoid (TexelConstant), for bias.
 LightView TrapezoidLightView(const TrapezoidMap& map, int resolution);
+
+/// For a LinearDepth view: the row r with 1 / W = dot(r, (x_ndc, y_ndc, 1)), which
+/// lets a caster's fragment shader turn its window depth Z / W back into the
+/// linear Z (the thesis's "multiply z back by w"). (0, 0, 1) for views whose W is 1
+/// and for singular projections.
+glm::dvec3 NdcToInverseW(const LightView& view);
 
 } // namespace shadowmaps
 

@@ -3,6 +3,7 @@
 set(shadowmaps_shaders
   vtkShadowMapsCasterFS
   vtkShadowMapsDepthLookupFS
+  vtkShadowMapsLinearDepthFS
   vtkShadowMapsReceiverFS
   vtkShadowMapsViewFS)
 set(shadowmaps_shader_sources)
@@ -24,6 +25,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
   PRIVATE_CLASSES
     Plugin/vtkShadowMapCasterPass
   SOURCES
+    Plugin/ShadowMapCascades.cxx
     Plugin/ShadowMapFocusing.cxx
     Plugin/ShadowMapPerspective.cxx
     Plugin/ShadowMapTextureArray.cxx
@@ -31,6 +33,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/ShadowMapWarping.cxx
     ${shadowmaps_shader_sources}
   PRIVATE_HEADERS
+    Plugin/ShadowMapCascades.h
     Plugin/ShadowMapFocusing.h
     Plugin/ShadowMapPerspective.h
     Plugin/ShadowMapTextureArray.h

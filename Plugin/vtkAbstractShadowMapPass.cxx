@@ -24,6 +24,7 @@
 #include "vtkShadowMapsDepthLookupFS.h"
 #include "vtkShadowMapsReceiverFS.h"
 #include "vtkShadowMapsViewFS.h"
+#include "ShadowMapTrapezoid.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkSmartPointer.h"
@@ -32,6 +33,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <functional>
 #include <random>
@@ -129,6 +131,55 @@ bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb&
   return true;
 }
 
+bool IsRigid(const glm::dmat4& m)
+{
+  const glm::dmat3 rotation(m);
+  const glm::dmat3 error = glm::transpose(rotation) * rotation - glm::dmat3(1.0);
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    largest = std::max({ largest, std::abs(error[c].x), std::abs(error[c].y), std::abs(error[c].z) });
+  }
+  return largest < 1e-9 && m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0;
+}
+
+// Points the VTK camera at a light view. A rigid view becomes the camera's frame
+// and the projection is explicit, so VTK's tiled aspect ratio cannot distort the
+// map. A non-rigid view (PSM: the light camera times the viewer's post-
+// perspective transform) cannot be a camera frame; the camera then sits at the
+// origin looking down -z and the whole transform is its projection.
+void SetCameraToView(vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view)
+{
+  const bool rigid = IsRigid(view.View);
+  const glm::dmat4 frame = rigid ? glm::inverse(view.View) : glm::dmat4(1.0);
+  const glm::dvec3 eye(frame[3]);
+  const glm::dvec3 forward(-frame[2]);
+  const glm::dvec3 up(frame[1]);
+  camera->SetPosition(eye.x, eye.y, eye.z);
+  camera->SetFocalPoint(eye.x + forward.x, eye.y + forward.y, eye.z + forward.z);
+  camera->SetViewUp(up.x, up.y, up.z);
+  camera->SetParallelProjection(!view.Perspective);
+  ToVtk(rigid ? view.Projection : view.ViewProjection(), projection);
+  camera->SetExplicitProjectionTransformMatrix(projection);
+  camera->UseExplicitProjectionTransformMatrixOn();
+  camera->Modified();
+}
+
+// 1 / W as a plane over window coordinates (gl_FragCoord.xy) of a map of
+// `resolution` texels, for casters of linear-depth views.
+std::array<float, 3> WindowToInverseW(const LightView& view, int resolution)
+{
+  if (!view.LinearDepth)
+  {
+    return { { 0.0f, 0.0f, 1.0f } };
+  }
+  // x_ndc = 2 x_window / resolution - 1.
+  const glm::dvec3 r = shadowmaps::NdcToInverseW(view);
+  const double scale = 2.0 / std::max(resolution, 1);
+  return { { static_cast<float>(r.x * scale), static_cast<float>(r.y * scale),
+    static_cast<float>(r.z - r.x - r.y) } };
+}
+
 // Per-texel rotations (cos, sin) of the Poisson disc.
 vtkSmartPointer<vtkTextureObject> CreateRotationNoise(vtkOpenGLRenderWindow* window)
 {
@@ -212,6 +263,7 @@ struct vtkAbstractShadowMapPass::Resources
   // Uniform values of the current maps.
   std::vector<float> ViewToMap;
   std::vector<float> TexelSizes;
+  std::vector<float> DepthLinear;
   std::vector<float> LightPositions;
   std::vector<float> Attenuations;
   glm::mat4 ViewToWorld{ 1.0f };
@@ -382,6 +434,7 @@ void vtkAbstractShadowMapPass::CollectPropsAndBounds(vtkOpenGLRenderer* renderer
 {
   Internals& in = *this->Internal;
   in.Casters.clear();
+  in.PropBounds.clear();
   in.SceneBounds = Aabb();
   vtkCollectionSimpleIterator it;
   vtkPropCollection* props = renderer->GetViewProps();
@@ -398,6 +451,7 @@ void vtkAbstractShadowMapPass::CollectPropsAndBounds(vtkOpenGLRenderer* renderer
       continue;
     }
     in.SceneBounds.Add(bounds);
+    in.PropBounds.push_back(bounds);
     if (!prop->GetPropertyKeys())
     {
       // Render passes create the keys on first use, which modifies the prop;
@@ -560,6 +614,9 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   r.CasterPass->SetCasterFaces(this->CasterFaces);
   r.CasterPass->SetStoreCode(
     r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string());
+  r.CasterPass->SetLinearDepth(std::any_of(in.Lights.begin(), in.Lights.end(), [](const ShadowLight& l) {
+    return std::any_of(l.Views.begin(), l.Views.end(), [](const LightView& v) { return v.LinearDepth; });
+  }));
   this->NumberOfCasterDraws = 0;
 
   bool ok = true;
@@ -618,21 +675,8 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
   Resources& r = *this->Resource;
   this->ClearLayer(renderer);
 
-  // The camera's view is rebuilt from the light view's frame; its projection is
-  // explicit so that VTK's tiled aspect ratio cannot distort the map.
-  const glm::dmat4 frame = glm::inverse(view.View);
-  const glm::dvec3 eye(frame[3]);
-  const glm::dvec3 forward(-frame[2]);
-  const glm::dvec3 up(frame[1]);
-  vtkCamera* camera = r.LightCamera;
-  camera->SetPosition(eye.x, eye.y, eye.z);
-  camera->SetFocalPoint(eye.x + forward.x, eye.y + forward.y, eye.z + forward.z);
-  camera->SetViewUp(up.x, up.y, up.z);
-  camera->SetParallelProjection(!view.Perspective);
-  ToVtk(view.Projection, r.LightProjection);
-  camera->SetExplicitProjectionTransformMatrix(r.LightProjection);
-  camera->UseExplicitProjectionTransformMatrixOn();
-  camera->Modified();
+  SetCameraToView(r.LightCamera, r.LightProjection, view);
+  r.CasterPass->SetWindowToInverseW(WindowToInverseW(view, in.Resolution));
 
   const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
   std::vector<vtkProp*> visible;
@@ -663,6 +707,7 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
   Resources& r = *this->Resource;
   r.ViewToMap.clear();
   r.TexelSizes.clear();
+  r.DepthLinear.clear();
   r.LightPositions.clear();
   const glm::dmat4 viewToWorld = glm::inverse(in.CameraView);
   r.Attenuations.clear();
@@ -671,7 +716,18 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
   {
     for (const LightView& view : light.Views)
     {
-      const glm::mat4 viewToMap(toTexture * view.ViewProjection() * viewToWorld);
+      glm::dmat4 viewToMapD = toTexture * view.ViewProjection() * viewToWorld;
+      if (view.LinearDepth)
+      {
+        // Texture depth 0.5 Z + 0.5 without the divide by W: Z is affine.
+        const glm::dmat4 clip = view.ViewProjection() * viewToWorld;
+        for (int c = 0; c < 4; ++c)
+        {
+          viewToMapD[c][2] = 0.5 * clip[c][2] + (c == 3 ? 0.5 : 0.0);
+        }
+      }
+      r.DepthLinear.push_back(view.LinearDepth ? 1.0f : 0.0f);
+      const glm::mat4 viewToMap(viewToMapD);
       r.ViewToMap.insert(r.ViewToMap.end(), glm::value_ptr(viewToMap), glm::value_ptr(viewToMap) + 16);
       // A negative constant tells the receiver to use the map's local gradient.
       r.TexelSizes.push_back(
@@ -902,6 +958,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   program->SetUniformMatrix4x4v("vtkShadowViewToMap", views, r.ViewToMap.data());
   program->SetUniform2fv(
     "vtkShadowTexelSize", views, reinterpret_cast<const float(*)[2]>(r.TexelSizes.data()));
+  program->SetUniform1fv("vtkShadowDepthLinear", views, r.DepthLinear.data());
   program->SetUniform3fv(
     "vtkShadowLightPositionVC", lights, reinterpret_cast<const float(*)[3]>(r.LightPositions.data()));
   program->SetUniform1fv("vtkShadowAttenuation", lights, r.Attenuations.data());

@@ -3,6 +3,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsCasterFS.h"
+#include "vtkShadowMapsLinearDepthFS.h"
 
 #include <sstream>
 
@@ -40,22 +41,48 @@ bool ShapesItsOwnFragments(const std::string& fragmentShader)
   return code.find("gl_FragDepth") != std::string::npos || CountOccurrences(code, "discard") > 1;
 }
 
-// Appends the store code at the end of main(), the last function of VTK's
-// fragment shaders, reading the depth the shader wrote if it writes one.
-void AppendStoreCode(std::string& fragmentShader, const std::string& storeCode)
+// The statements that end a caster's main(): depth (the rasterizer's, or the one
+// the shader wrote) made linear when asked, then the store code.
+std::string CasterEpilogue(const std::string& rawDepth, bool linear, const std::string& storeCode)
+{
+  std::string code = "  {\n  float vtkShadowCasterDepth = ";
+  code += linear ? "vtkShadowLinearDepth(" + rawDepth + ");\n  gl_FragDepth = vtkShadowCasterDepth;\n"
+                 : rawDepth + ";\n";
+  code += storeCode.empty() ? "  gl_FragData[0] = vec4(1.0);" : storeCode;
+  code += "\n  }\n";
+  return code;
+}
+
+// Shaders that shape their own fragments keep their code; the epilogue goes at the
+// end of main(), the last function of VTK's fragment shaders, and reads the depth
+// the shader wrote if it writes one.
+void AppendEpilogue(std::string& fragmentShader, bool linear, const std::string& storeCode)
 {
   const size_t end = fragmentShader.rfind('}');
-  if (end == std::string::npos)
+  const size_t main = fragmentShader.find("void main");
+  if (end == std::string::npos || main == std::string::npos)
   {
     return;
   }
   const bool writesDepth =
     WithoutLineComments(fragmentShader).find("gl_FragDepth") != std::string::npos;
-  fragmentShader.insert(end,
-    std::string("  {\n  float vtkShadowCasterDepth = ") +
-      (writesDepth ? "gl_FragDepth" : "gl_FragCoord.z") + ";\n" + storeCode + "\n  }\n");
+  fragmentShader.insert(
+    end, CasterEpilogue(writesDepth ? "gl_FragDepth" : "gl_FragCoord.z", linear, storeCode));
+  if (linear)
+  {
+    fragmentShader.insert(main, std::string(vtkShadowMapsLinearDepthFS) + "\n");
+  }
 }
 } // namespace
+
+void vtkShadowMapCasterPass::SetLinearDepth(bool linear)
+{
+  if (linear != this->LinearDepth)
+  {
+    this->LinearDepth = linear;
+    this->Modified();
+  }
+}
 
 void vtkShadowMapCasterPass::SetStoreCode(const std::string& code)
 {
@@ -72,9 +99,9 @@ bool vtkShadowMapCasterPass::PostReplaceShaderValues(std::string&, std::string&,
   if (ShapesItsOwnFragments(fragmentShader))
   {
     ++this->NumberOfOwnFragmentShaders;
-    if (!this->StoreCode.empty())
+    if (this->LinearDepth || !this->StoreCode.empty())
     {
-      AppendStoreCode(fragmentShader, this->StoreCode);
+      AppendEpilogue(fragmentShader, this->LinearDepth, this->StoreCode);
     }
     return true;
   }
@@ -83,14 +110,24 @@ bool vtkShadowMapCasterPass::PostReplaceShaderValues(std::string&, std::string&,
   std::string defines = this->CasterFaces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
     : this->CasterFaces == 1                   ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
                                                : "";
-  std::string store = "  gl_FragData[0] = vec4(1.0);";
-  if (!this->StoreCode.empty())
+  if (this->LinearDepth)
   {
-    store = "  float vtkShadowCasterDepth = gl_FragCoord.z;\n" + this->StoreCode;
+    defines += vtkShadowMapsLinearDepthFS;
   }
   vtkShaderProgram::Substitute(caster, "//VTK::ShadowMaps::Dec", defines);
-  vtkShaderProgram::Substitute(caster, "//VTK::ShadowMaps::Impl", store);
+  vtkShaderProgram::Substitute(
+    caster, "//VTK::ShadowMaps::Impl", CasterEpilogue("gl_FragCoord.z", this->LinearDepth, this->StoreCode));
   fragmentShader = caster;
+  return true;
+}
+
+bool vtkShadowMapCasterPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  if (this->LinearDepth && program->IsUniformUsed("vtkShadowWindowToInverseW"))
+  {
+    program->SetUniform3f("vtkShadowWindowToInverseW", this->WindowToInverseW.data());
+  }
   return true;
 }
 
@@ -98,4 +135,5 @@ void vtkShadowMapCasterPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "CasterFaces: " << this->CasterFaces << "\n";
+  os << indent << "LinearDepth: " << this->LinearDepth << "\n";
 }

@@ -12,6 +12,10 @@
  * When the maps store values rather than depth (StoreCode set), the fragment
  * shader writes them: StoreCode is GLSL that reads `float vtkShadowCasterDepth`
  * (the fragment's window depth) and writes gl_FragData[0].
+ *
+ * With LinearDepth on, every caster writes gl_FragDepth = Z (linear light-space
+ * depth) instead of Z / W, W taken from the window position through
+ * SetWindowToInverseW; views whose W is 1 set (0, 0, 1) and keep their depth.
  */
 #ifndef vtkShadowMapCasterPass_h
 #define vtkShadowMapCasterPass_h
@@ -19,6 +23,7 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 
+#include <array>  // For WindowToInverseW
 #include <string> // For StoreCode
 
 class VTKRENDERINGSHADOWMAPS_NO_EXPORT vtkShadowMapCasterPass : public vtkOpenGLRenderPass
@@ -39,6 +44,18 @@ public:
   ///@}
 
   ///@{
+  /** Casters write linear depth (see the class description). Default off. */
+  void SetLinearDepth(bool linear);
+  bool GetLinearDepth() const { return this->LinearDepth; }
+  ///@}
+
+  /**
+   * The row r with 1 / W = dot(r, (gl_FragCoord.xy, 1)) for the view being
+   * rendered. A uniform: changing it rebuilds no shader.
+   */
+  void SetWindowToInverseW(const std::array<float, 3>& row) { this->WindowToInverseW = row; }
+
+  ///@{
   /** Add this pass to (remove it from) the render passes of the state's props. */
   void AttachToProps(const vtkRenderState* s) { this->PreRender(s); }
   void DetachFromProps(const vtkRenderState* s) { this->PostRender(s); }
@@ -55,6 +72,8 @@ public:
 
   bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO) override;
   vtkMTimeType GetShaderStageMTime() override { return this->GetMTime(); }
 
 protected:
@@ -63,6 +82,8 @@ protected:
 
   int CasterFaces = 2;
   std::string StoreCode;
+  bool LinearDepth = false;
+  std::array<float, 3> WindowToInverseW{ { 0.0f, 0.0f, 1.0f } };
   int NumberOfDepthOnlyShaders = 0;
   int NumberOfOwnFragmentShaders = 0;
 

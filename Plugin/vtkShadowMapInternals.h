@@ -73,6 +73,8 @@ struct vtkAbstractShadowMapPass::Internals
   glm::dmat4 CameraView{ 1.0 };
   glm::dmat4 CameraProjection{ 1.0 };
   shadowmaps::Aabb SceneBounds;
+  /// Bounds of every visible prop (SceneBounds is their union).
+  std::vector<shadowmaps::Aabb> PropBounds;
   std::vector<shadowmaps::ShadowLight> Lights;
   std::vector<shadowmaps::Caster> Casters;
   int Resolution = 0;

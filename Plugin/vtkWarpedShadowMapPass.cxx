@@ -1,10 +1,86 @@
 #include "vtkWarpedShadowMapPass.h"
 
+#include "ShadowMapCascades.h"
+#include "ShadowMapPerspective.h"
+#include "ShadowMapTrapezoid.h"
 #include "ShadowMapWarping.h"
 #include "vtkObjectFactory.h"
 #include "vtkShadowMapInternals.h"
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkWarpedShadowMapPass);
+
+namespace
+{
+using shadowmaps::LightView;
+
+// Distance along the view axis from the camera's near plane to the farthest
+// point of the focus body B (0 when B is empty).
+double FocusBodyDepth(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const shadowmaps::Aabb& scene)
+{
+  const glm::dmat4 inverse = glm::inverse(cameraProjection);
+  const glm::dvec4 nearCentre = inverse * glm::dvec4(0.0, 0.0, -1.0, 1.0);
+  const double nearDistance = -nearCentre.z / nearCentre.w;
+  double farthest = nearDistance;
+  for (const auto& p : shadowmaps::IntersectFrustumWithBox(cameraProjection * cameraView, scene))
+  {
+    farthest = std::max(farthest, -(cameraView * glm::dvec4(p, 1.0)).z);
+  }
+  return std::isfinite(farthest - nearDistance) ? farthest - nearDistance : 0.0;
+}
+// The camera's projection with its near and far planes moved to the nearest and
+// farthest visible prop. PSM spends its map in proportion to 1 / depth from the
+// near plane (Stamminger and Drettakis push the near plane as far as the scene
+// allows); a camera standing inside the scene's bounds would otherwise give the
+// empty space in front of it nearly the whole map.
+glm::dmat4 TightProjection(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<shadowmaps::Aabb>& props)
+{
+  const glm::dvec2 planes = shadowmaps::ProjectionDepthRange(cameraProjection);
+  const glm::dvec2 visible = shadowmaps::VisibleDepthRange(cameraView, cameraProjection, props);
+  if (!(visible.y > visible.x) || !(planes.y > planes.x))
+  {
+    return cameraProjection;
+  }
+  const double nearPlane = std::max(planes.x, 0.99 * visible.x);
+  const double farPlane = std::min(planes.y, 1.01 * visible.y);
+  return farPlane > nearPlane ? shadowmaps::SubFrustumProjection(cameraProjection, nearPlane, farPlane)
+                              : cameraProjection;
+}
+} // namespace
+
+LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int lightIndex) const
+{
+  const glm::dvec3& direction = in.Lights[lightIndex].Direction;
+  if (this->WarpMode == PSM)
+  {
+    return shadowmaps::FitPerspective(in.CameraView, TightProjection(in.CameraView, in.CameraProjection, in.PropBounds), in.SceneBounds, direction,
+      in.Resolution, this->PSMSlideBack)
+      .Light;
+  }
+  if (this->WarpMode == TSM)
+  {
+    // Martin and Tan measure delta from the near plane of a focused frustum: one
+    // whose near plane is far in front of everything visible would put the
+    // focus point before the trapezoid's top edge.
+    const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
+    const double delta = this->TSMFocusDistance > 0.0
+      ? this->TSMFocusDistance
+      : 0.2 * FocusBodyDepth(in.CameraView, projection, in.SceneBounds);
+    const shadowmaps::TrapezoidMap map = shadowmaps::FitTrapezoid(
+      projection * in.CameraView, in.SceneBounds, direction, delta, this->TSMFocusFraction);
+    return shadowmaps::TrapezoidLightView(map, in.Resolution);
+  }
+  shadowmaps::WarpOptions options;
+  options.FreeParameterN = this->LiSPSMFreeParameter;
+  options.LloydFalloff = this->LloydFalloff;
+  const auto warp = this->WarpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR
+                                            : shadowmaps::DirectionalWarp::LiSPSM;
+  return shadowmaps::FitDirectionalWarped(in.CameraView, in.CameraProjection, in.SceneBounds,
+    direction, in.Resolution, warp, options);
+}
 
 void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIndex)
 {
@@ -14,15 +90,13 @@ void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIn
     this->FitLightViewsUniform(internals, lightIndex);
     return;
   }
-  shadowmaps::WarpOptions options;
-  options.FreeParameterN = this->LiSPSMFreeParameter;
-  options.LloydFalloff = this->LloydFalloff;
-  const auto warp = this->WarpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR
-                                            : shadowmaps::DirectionalWarp::LiSPSM;
-  shadowmaps::LightView view = shadowmaps::FitDirectionalWarped(internals.CameraView,
-    internals.CameraProjection, internals.SceneBounds, light.Direction, internals.Resolution, warp,
-    options);
-  // The warped map's TexelConstant bounds the coarsest texel over B; as a normal
+  LightView view = this->FitDirectionalLight(internals, lightIndex);
+  if (!shadowmaps::IsFinite(view.ViewProjection()))
+  {
+    this->FitLightViewsUniform(internals, lightIndex);
+    return;
+  }
+  // A warped map's TexelConstant bounds the coarsest texel over B; as a normal
   // offset near the viewer it would be many texels too large.
   view.TexelSizeFromGradient = view.Perspective;
   light.Views = { view };
@@ -34,4 +108,7 @@ void vtkWarpedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "WarpMode: " << this->WarpMode << "\n";
   os << indent << "LiSPSMFreeParameter: " << this->LiSPSMFreeParameter << "\n";
   os << indent << "LloydFalloff: " << this->LloydFalloff << "\n";
+  os << indent << "PSMSlideBack: " << this->PSMSlideBack << "\n";
+  os << indent << "TSMFocusDistance: " << this->TSMFocusDistance << "\n";
+  os << indent << "TSMFocusFraction: " << this->TSMFocusFraction << "\n";
 }

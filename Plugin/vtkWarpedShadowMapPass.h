@@ -1,6 +1,6 @@
 /**
  * @class   vtkWarpedShadowMapPass
- * @brief   Warped shadow maps: focused uniform, LiSPSM and GMNPR.
+ * @brief   Warped shadow maps: focused uniform, PSM, LiSPSM, TSM and GMNPR.
  *
  * WarpMode chooses how a directional light's map is parameterised:
  * - UNIFORM (default): an orthographic map fitted to the focus body B;
@@ -10,11 +10,20 @@
  *   faster falloff, or a user-set free parameter n;
  * - GMNPR (Zhang et al., seed 002 Eq. 8): the same warp with the
  *   direction-adaptive lambda that equalises the aliasing at the near and far
- *   planes.
- * As the view direction approaches the light direction the warps fade
- * continuously into the uniform map; parallel-projection cameras get the
- * uniform map. Spot and point lights use the uniform fits below. PSM and TSM
- * are not implemented yet (the math is in ShadowMapPerspective/Trapezoid).
+ *   planes;
+ * - PSM (Stamminger and Drettakis, with Kozlov's fixes, seed 001): the map is
+ *   rendered in the camera's post-perspective space, focused on the receivers
+ *   there (unit-cube clipping); a light behind the viewer uses the inverse
+ *   projection; PSMSlideBack moves the virtual camera back to trade near for
+ *   far quality. Bias is the normal offset scaled by the world-space texel size
+ *   at the receiver, taken from the map's local gradient;
+ * - TSM (Martin and Tan; thesis 000): the trapezoid around the focus body's
+ *   light-space hull mapped to the square, with the point TSMFocusDistance
+ *   beyond the near plane on the TSMFocusFraction line; depth stays linear in
+ *   light space, so one bias serves the whole map.
+ * As the view direction approaches the light direction LiSPSM, GMNPR and TSM
+ * fade continuously into the uniform map; parallel-projection cameras get the
+ * uniform map. Point lights use the uniform cube faces.
  *
  * Uniform fit: directional lights get an orthographic map fitted to the focus body B
  * (view frustum ∩ scene bounds, survey 003 §4.1) with its near plane pulled back
@@ -44,12 +53,14 @@ public:
   {
     UNIFORM = 0,
     LISPSM = 1,
-    GMNPR = 2
+    GMNPR = 2,
+    PSM = 3,
+    TSM = 4
   };
 
   ///@{
-  /** How directional maps are warped. Clamped to [UNIFORM, GMNPR]; default UNIFORM. */
-  vtkSetClampMacro(WarpMode, int, UNIFORM, GMNPR);
+  /** How directional maps are warped. Clamped to [UNIFORM, TSM]; default UNIFORM. */
+  vtkSetClampMacro(WarpMode, int, UNIFORM, TSM);
   vtkGetMacro(WarpMode, int);
   ///@}
 
@@ -70,15 +81,45 @@ public:
   vtkBooleanMacro(LloydFalloff, bool);
   ///@}
 
+  ///@{
+  /**
+   * PSM: Kozlov's virtual slide-back, how far (world units) the virtual camera
+   * is moved back behind the real one. 0 (default): none. Clamped to [0, 1e30].
+   */
+  vtkSetClampMacro(PSMSlideBack, double, 0.0, 1e30);
+  vtkGetMacro(PSMSlideBack, double);
+  ///@}
+
+  ///@{
+  /**
+   * TSM: the focus distance delta beyond the camera's near plane (world units)
+   * whose shadows get TSMFocusFraction of the map. 0 (default): a fifth of the
+   * depth the focus body reaches. Clamped to [0, 1e30].
+   */
+  vtkSetClampMacro(TSMFocusDistance, double, 0.0, 1e30);
+  vtkGetMacro(TSMFocusDistance, double);
+  ///@}
+
+  ///@{
+  /** TSM: the share of the map given to the focus region (the paper's 80% line). Clamped to [0.05, 0.95]; default 0.8. */
+  vtkSetClampMacro(TSMFocusFraction, double, 0.05, 0.95);
+  vtkGetMacro(TSMFocusFraction, double);
+  ///@}
+
 protected:
   vtkWarpedShadowMapPass() = default;
   ~vtkWarpedShadowMapPass() override = default;
 
   void ComputeLightViews(Internals& internals, int lightIndex) override;
+  /** The warped map of directional light lightIndex for the chosen WarpMode. */
+  shadowmaps::LightView FitDirectionalLight(const Internals& internals, int lightIndex) const;
 
   int WarpMode = UNIFORM;
   double LiSPSMFreeParameter = 0.0;
   bool LloydFalloff = false;
+  double PSMSlideBack = 0.0;
+  double TSMFocusDistance = 0.0;
+  double TSMFocusFraction = 0.8;
 
 private:
   vtkWarpedShadowMapPass(const vtkWarpedShadowMapPass&) = delete;

@@ -16,6 +16,9 @@ uniform mat4 vtkShadowViewToMap[VTK_SHADOW_MAX_VIEWS];
 // World-space size of one texel of a view: x + y * (distance to the light);
 // x < 0: warped map, size from the map's local gradient (vtkShadowGradientTexel).
 uniform vec2 vtkShadowTexelSize[VTK_SHADOW_MAX_VIEWS];
+// 1: the view's depth is linear in light space (TSM) and its matrix gives the
+// texture depth without the divide by w; 0: depth is z / w.
+uniform float vtkShadowDepthLinear[VTK_SHADOW_MAX_VIEWS];
 uniform vec3 vtkShadowLightPositionVC[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowMapResolution;
@@ -80,9 +83,20 @@ vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view)
   return vtkShadowViewToMap[view] * vec4(biased, 1.0);
 }
 
-bool vtkShadowInsideMap(vec4 clip)
+// Texture coordinates and depth of the receiver in map `view`.
+vec3 vtkShadowMapCoord(vec4 clip, int view)
 {
   vec3 mapCoord = clip.xyz / clip.w;
+  if (vtkShadowDepthLinear[view] > 0.5)
+  {
+    mapCoord.z = clip.z;
+  }
+  return mapCoord;
+}
+
+bool vtkShadowInsideMap(vec4 clip, int view)
+{
+  vec3 mapCoord = vtkShadowMapCoord(clip, view);
   return clip.w > 0.0 && all(greaterThanEqual(mapCoord, vec3(0.0))) &&
     all(lessThanEqual(mapCoord, vec3(1.0)));
 }
@@ -92,11 +106,11 @@ float vtkShadowVisibility(vec3 positionVC, vec3 normalVC, int light, int firstVi
 {
   int view = vtkShadowSelectView(positionVC, light, firstView, cube);
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
-  if (!vtkShadowInsideMap(clip))
+  if (!vtkShadowInsideMap(clip, view))
   {
     return 1.0;
   }
-  return vtkShadowLookup(clip.xyz / clip.w, view);
+  return vtkShadowLookup(vtkShadowMapCoord(clip, view), view);
 }
 
 // Factor that scales the light's diffuse and specular terms.
@@ -155,9 +169,9 @@ vec4 vtkShadowAnalysisColor(vec3 positionVC, vec3 normalVC, int light, int first
 #if VTK_SHADOW_ANALYSIS == 1
   return vec4(vec3(visibility), 1.0);
 #elif VTK_SHADOW_ANALYSIS == 2
-  return vec4(vtkShadowInsideMap(clip) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
+  return vec4(vtkShadowInsideMap(clip, view) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
 #else
-  vec3 color = vtkShadowInsideMap(clip) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
+  vec3 color = vtkShadowInsideMap(clip, view) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
   return vec4(color * (0.5 + 0.5 * visibility), 1.0);
 #endif
 }

@@ -105,6 +105,16 @@ unsigned int VTKEqualMemoryResolution(const std::string& setup, int resolution)
   return static_cast<unsigned int>(std::floor(std::sqrt(OurMapBytes(setup, resolution) / 8.0)));
 }
 
+// The vtkWarpedShadowMapPass mode a technique name stands for; -1 if none.
+int WarpModeOf(const std::string& name)
+{
+  static const std::map<std::string, int> modes = { { "uniform", vtkWarpedShadowMapPass::UNIFORM },
+    { "psm", vtkWarpedShadowMapPass::PSM }, { "lispsm", vtkWarpedShadowMapPass::LISPSM },
+    { "tsm", vtkWarpedShadowMapPass::TSM }, { "gmnpr", vtkWarpedShadowMapPass::GMNPR } };
+  const auto found = modes.find(name);
+  return found == modes.end() ? -1 : found->second;
+}
+
 TechniqueInstance MakeTechnique(const std::string& name, const std::string& setup, int resolution)
 {
   TechniqueInstance technique;
@@ -114,14 +124,12 @@ TechniqueInstance MakeTechnique(const std::string& name, const std::string& setu
       name == "vtk" ? VTKDefaultResolution : VTKEqualMemoryResolution(setup, resolution));
     technique.Pass = MakeVTKPass(static_cast<unsigned int>(technique.Resolution), technique.VTK);
   }
-  else if (name == "uniform" || name == "lispsm" || name == "gmnpr")
+  else if (WarpModeOf(name) >= 0)
   {
     auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
     pass->SetResolution(resolution);
     pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
-    pass->SetWarpMode(name == "lispsm" ? vtkWarpedShadowMapPass::LISPSM
-        : name == "gmnpr"             ? vtkWarpedShadowMapPass::GMNPR
-                                      : vtkWarpedShadowMapPass::UNIFORM);
+    pass->SetWarpMode(WarpModeOf(name));
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;
@@ -700,7 +708,7 @@ Options WithReferences(Options options)
 //------------------------------------------------------------------------------
 std::vector<std::string> TechniqueNames()
 {
-  return { "none", "vtk", "vtk-equal", "uniform", "lispsm", "gmnpr" };
+  return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr" };
 }
 
 //------------------------------------------------------------------------------

@@ -44,7 +44,7 @@ constexpr int ExitUsageError = 2;
 
 enum class Technique
 {
-  Uniform, // vtkWarpedShadowMapPass
+  Warped, // vtkWarpedShadowMapPass in Options::warpMode
   VTK,     // VTK's vtkShadowMapPass
   None     // VTK's default rendering
 };
@@ -66,7 +66,8 @@ struct Options
   std::string light = "sun";
   double azimuth = 60.0;
   double elevation = 45.0;
-  Technique technique = Technique::Uniform;
+  Technique technique = Technique::Warped;
+  int warpMode = vtkWarpedShadowMapPass::UNIFORM;
   int resolution = 2048;
   Filter filter = Filter::PCF2x2;
   int kernelSize = 3; // N of pcf:N
@@ -93,9 +94,9 @@ void PrintUsage(std::ostream& out)
          "  --light sun|spot|point   light kind [sun]\n"
          "  --azimuth A              light azimuth in degrees, from +x towards +y [60]\n"
          "  --elevation E            light elevation above the ground, -90..90 [45]\n"
-         "  --technique uniform|vtk|none\n"
-         "                           uniform: vtkWarpedShadowMapPass, vtk: VTK's\n"
-         "                           vtkShadowMapPass, none: no shadows [uniform]\n"
+         "  --technique uniform|psm|lispsm|tsm|gmnpr|vtk|none\n"
+         "                           uniform..gmnpr: vtkWarpedShadowMapPass's warp modes,\n"
+         "                           vtk: VTK's vtkShadowMapPass, none: no shadows [uniform]\n"
          "  --resolution N           shadow map size in texels, 64..16384 [2048]\n"
          "  --filter hard|pcf2x2|pcf:N|poisson\n"
          "                           shadow filter, N of pcf:N in 2..7 [pcf2x2]\n"
@@ -106,7 +107,7 @@ void PrintUsage(std::ostream& out)
          "options of bench and analyze (lists are comma-separated):\n"
          "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
          "  --setups LIST            overhead,perpendicular,behind,facing,spot,point [all]\n"
-         "  --techniques LIST        none,vtk,vtk-equal,uniform,lispsm,gmnpr [all]; none\n"
+         "  --techniques LIST        none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr [all]; none\n"
          "                           and vtk are always measured (frame-time references)\n"
          "  --technique NAME         one technique (with none and vtk)\n"
          "  --resolution N           map size of this project's techniques [2048]\n"
@@ -199,14 +200,21 @@ std::string ParseElevation(const std::string& value, Options& options)
 
 std::string ParseTechnique(const std::string& value, Options& options)
 {
-  static const std::map<std::string, Technique> techniques = { { "uniform", Technique::Uniform },
-    { "vtk", Technique::VTK }, { "none", Technique::None } };
-  const auto found = techniques.find(value);
-  if (found == techniques.end())
+  static const std::map<std::string, int> warps = { { "uniform", vtkWarpedShadowMapPass::UNIFORM },
+    { "psm", vtkWarpedShadowMapPass::PSM }, { "lispsm", vtkWarpedShadowMapPass::LISPSM },
+    { "tsm", vtkWarpedShadowMapPass::TSM }, { "gmnpr", vtkWarpedShadowMapPass::GMNPR } };
+  if (value == "vtk" || value == "none")
   {
-    return "unknown technique '" + value + "' (expected uniform, vtk or none)";
+    options.technique = value == "vtk" ? Technique::VTK : Technique::None;
+    return {};
   }
-  options.technique = found->second;
+  const auto found = warps.find(value);
+  if (found == warps.end())
+  {
+    return "unknown technique '" + value + "' (expected uniform, psm, lispsm, tsm, gmnpr, vtk or none)";
+  }
+  options.technique = Technique::Warped;
+  options.warpMode = found->second;
   return {};
 }
 
@@ -339,7 +347,7 @@ std::string ParseTechniques(const std::string& value, Options& options)
     if (std::find(names.begin(), names.end(), technique) == names.end())
     {
       return "unknown technique '" + technique +
-        "' (expected none, vtk, vtk-equal, uniform, lispsm or gmnpr)";
+        "' (expected none, vtk, vtk-equal, uniform, psm, lispsm, tsm or gmnpr)";
     }
   }
   options.bench.Techniques = SplitList(value);
@@ -557,6 +565,7 @@ vtkSmartPointer<vtkRenderPass> MakeWarpedShadowMapPass(const Options& options)
   shadows->SetResolution(options.resolution);
   shadows->SetFilter(ToPassFilter(options.filter));
   shadows->SetKernelSize(options.kernelSize);
+  shadows->SetWarpMode(options.warpMode);
   return shadows;
 }
 
@@ -591,7 +600,7 @@ void ApplyTechnique(vtkRenderer* renderer, vtkRenderWindow* window, const Option
 {
   switch (options.technique)
   {
-    case Technique::Uniform:
+    case Technique::Warped:
       renderer->SetPass(MakeWarpedShadowMapPass(options));
       break;
     case Technique::VTK:

@@ -10,10 +10,12 @@ add_executable(TestShadowMapFocusing
   Cxx/TestShadowMapWarping.cxx
   Cxx/TestShadowMapTrapezoid.cxx
   Cxx/TestShadowMapPerspective.cxx
+  Cxx/TestShadowMapCascades.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapFocusing.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapWarping.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapTrapezoid.cxx
-  ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapPerspective.cxx)
+  ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapPerspective.cxx
+  ${PROJECT_SOURCE_DIR}/Plugin/ShadowMapCascades.cxx)
 target_include_directories(TestShadowMapFocusing PRIVATE ${PROJECT_SOURCE_DIR}/Plugin)
 target_compile_features(TestShadowMapFocusing PRIVATE cxx_std_17)
 target_link_libraries(TestShadowMapFocusing PRIVATE glm::glm GTest::gtest_main)

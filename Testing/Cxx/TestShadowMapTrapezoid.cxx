@@ -220,6 +220,31 @@ TEST(TrapezoidTSM, LightViewMatrixMatchesTheMapping)
   }
 }
 
+TEST(TrapezoidTSM, CasterRecoversLinearDepthFromTheNdcPosition)
+{
+  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), Ground(), { 0.2, 0.5, -1.0 }, 10.0);
+  const shadowmaps::LightView view = shadowmaps::TrapezoidLightView(map, 2048);
+  EXPECT_TRUE(view.LinearDepth);
+  const glm::dvec3 inverseW = shadowmaps::NdcToInverseW(view);
+  const glm::dmat4 vp = view.ViewProjection();
+  for (const auto& p : shadowmaps::IntersectFrustumWithBox(HorizontalCamera(), Ground()))
+  {
+    // What a caster's fragment shader sees: NDC x, y and the window depth Z / W.
+    const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
+    const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+    const double w = 1.0 / glm::dot(inverseW, glm::dvec3(ndc.x, ndc.y, 1.0));
+    EXPECT_NEAR(w, clip.w, 1e-9 * clip.w);
+    EXPECT_NEAR(0.5 * ndc.z * w + 0.5, shadowmaps::MapToTexture(map, p).z, 1e-9);
+  }
+  // W = 1 (an orthographic map) gives the identity.
+  shadowmaps::LightView ortho;
+  ortho.Projection = glm::ortho(-2.0, 3.0, -1.0, 4.0, 0.5, 9.0);
+  const glm::dvec3 identity = shadowmaps::NdcToInverseW(ortho);
+  EXPECT_NEAR(identity.x, 0.0, 1e-15);
+  EXPECT_NEAR(identity.y, 0.0, 1e-15);
+  EXPECT_NEAR(identity.z, 1.0, 1e-15);
+}
+
 TEST(TrapezoidTSM, LightAlongTheViewGivesTheUniformFocusedMap)
 {
   const glm::dvec3 eye(0.0, -45.0, 30.0), target(0.0, 0.0, 0.0);

@@ -1,6 +1,7 @@
-// vtkWarpedShadowMapPass's LiSPSM and GMNPR modes on the standard test scene:
-// strict baselines, probes near and far from the camera, and the warp's
-// effect on texel density seen through the TEXEL_DENSITY analysis view.
+// vtkWarpedShadowMapPass's warp modes (PSM, LiSPSM, TSM, GMNPR) on the standard
+// test scene with the sun perpendicular to the view, behind the viewer and
+// facing it: strict baselines, probes near and far from the camera, and the
+// warp's effect on texel density seen through the TEXEL_DENSITY analysis view.
 #include "ShadowTestUtilities.h"
 #include "vtkWarpedShadowMapPass.h"
 
@@ -9,12 +10,19 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+#include <tuple>
+
 using namespace shadowtest;
 
 namespace
 {
-// Light at right angles to the view (the camera looks along +y).
+// The camera looks along +y, 1.2 above the ground. Light at right angles to the
+// view; travelling with the view (sun behind the viewer); toward the viewer
+// (sun facing it, the dueling frusta).
 const glm::dvec3 SunDirection = glm::normalize(glm::dvec3(1.0, 0.15, -0.8));
+const glm::dvec3 SunBehind = glm::normalize(glm::dvec3(0.25, 1.0, -0.9));
+const glm::dvec3 SunFacing = glm::normalize(glm::dvec3(0.25, -1.0, -0.9));
 
 void LookAlongTheGround(TestScene& scene)
 {
@@ -24,6 +32,31 @@ void LookAlongTheGround(TestScene& scene)
   camera->SetViewUp(0.0, 0.0, 1.0);
   camera->SetClippingRange(0.1, 40.0);
 }
+
+struct SetUp
+{
+  const char* Name;
+  glm::dvec3 Direction;
+  // Ground points lit by this sun near and far from the camera.
+  glm::dvec3 LitNear;
+  glm::dvec3 LitFar;
+};
+
+const SetUp SetUps[] = {
+  { "Perpendicular", SunDirection, { -2.0, -3.0, 0.0 }, { -3.0, 6.0, 0.0 } },
+  { "Behind", SunBehind, { -2.0, -3.0, 0.0 }, { -3.0, 6.0, 0.0 } },
+  { "Facing", SunFacing, { -2.0, -3.0, 0.0 }, { -3.0, 6.0, 0.0 } },
+};
+
+struct Mode
+{
+  int Value;
+  const char* Name;
+};
+
+const Mode WarpModes[] = { { vtkWarpedShadowMapPass::PSM, "PSM" },
+  { vtkWarpedShadowMapPass::LISPSM, "LiSPSM" }, { vtkWarpedShadowMapPass::TSM, "TSM" },
+  { vtkWarpedShadowMapPass::GMNPR, "GMNPR" } };
 
 int CountUndersampled(vtkImageData* image)
 {
@@ -40,49 +73,54 @@ int CountUndersampled(vtkImageData* image)
   return count;
 }
 
-void CheckMode(int mode, const std::string& name)
+// The sphere's shadow (and, when the light allows, the box's) is dark and the
+// lit ground near and far from the camera is lit; the frame matches its baseline.
+void CheckMode(const Mode& mode, const SetUp& setUp)
 {
+  const std::string name = std::string("Warp") + mode.Name + setUp.Name;
   TestScene scene;
   LookAlongTheGround(scene);
-  scene.SetSun(SunDirection);
+  scene.SetSun(setUp.Direction);
   vtkNew<vtkWarpedShadowMapPass> pass;
-  pass->SetWarpMode(mode);
+  pass->SetWarpMode(mode.Value);
   pass->SetResolution(512);
   scene.Renderer->SetPass(pass);
   ErrorCounter errors;
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  // The sphere's shadow, lit ground near the camera and far from it.
-  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(SunDirection);
-  const glm::dvec3 litNear(-2.0, -3.0, 0.0);
-  const glm::dvec3 litFar(-3.0, 6.0, 0.0);
-  for (const glm::dvec3& probe : { shadowed, litNear, litFar })
+  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(setUp.Direction);
+  for (const glm::dvec3& probe : { shadowed, setUp.LitNear, setUp.LitFar })
   {
     ASSERT_GE(ColorAt(scene.Renderer, image, probe).r, 0) << name << ": probe off the image";
   }
   EXPECT_LT(LuminanceAt(scene.Renderer, image, shadowed), ShadowedBelow) << name;
-  EXPECT_GT(LuminanceAt(scene.Renderer, image, litNear), LitAbove) << name;
-  EXPECT_GT(LuminanceAt(scene.Renderer, image, litFar), LitAbove) << name;
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, setUp.LitNear), LitAbove) << name;
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, setUp.LitFar), LitAbove) << name;
   const std::string difference = CompareWithBaseline(image, name);
   EXPECT_TRUE(difference.empty()) << difference;
 }
+
+class WarpModeAndSetUp : public ::testing::TestWithParam<std::tuple<int, int>>
+{
+};
+
+TEST_P(WarpModeAndSetUp, ShadowsNearAndFarMatchTheBaseline)
+{
+  CheckMode(WarpModes[std::get<0>(GetParam())], SetUps[std::get<1>(GetParam())]);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShadowWarps, WarpModeAndSetUp,
+  ::testing::Combine(::testing::Range(0, 4), ::testing::Range(0, 3)),
+  [](const ::testing::TestParamInfo<std::tuple<int, int>>& info) {
+    return std::string(WarpModes[std::get<0>(info.param)].Name) +
+      SetUps[std::get<1>(info.param)].Name;
+  });
 } // namespace
-
-TEST(ShadowWarps, LiSPSMPerpendicularSun)
-{
-  CheckMode(vtkWarpedShadowMapPass::LISPSM, "WarpLiSPSM");
-}
-
-TEST(ShadowWarps, GMNPRPerpendicularSun)
-{
-  CheckMode(vtkWarpedShadowMapPass::GMNPR, "WarpGMNPR");
-}
 
 TEST(ShadowWarps, WarpsUndersampleFewerPixelsThanTheUniformMap)
 {
-  int undersampled[3] = { 0, 0, 0 };
-  for (int mode : { vtkWarpedShadowMapPass::UNIFORM, vtkWarpedShadowMapPass::LISPSM,
-         vtkWarpedShadowMapPass::GMNPR })
+  int undersampled[5] = { 0, 0, 0, 0, 0 };
+  for (int mode = vtkWarpedShadowMapPass::UNIFORM; mode <= vtkWarpedShadowMapPass::TSM; ++mode)
   {
     TestScene scene;
     LookAlongTheGround(scene);
@@ -95,6 +133,9 @@ TEST(ShadowWarps, WarpsUndersampleFewerPixelsThanTheUniformMap)
     scene.Renderer->SetPass(pass);
     undersampled[mode] = CountUndersampled(RenderAndCapture(scene.Window));
   }
+  std::cout << "undersampled pixels: uniform " << undersampled[0] << ", LiSPSM " << undersampled[1]
+            << ", GMNPR " << undersampled[2] << ", PSM " << undersampled[3] << ", TSM "
+            << undersampled[4] << "\n";
   EXPECT_GT(undersampled[vtkWarpedShadowMapPass::UNIFORM], 1000);
   EXPECT_LT(undersampled[vtkWarpedShadowMapPass::LISPSM],
     undersampled[vtkWarpedShadowMapPass::UNIFORM] / 2);
@@ -106,20 +147,31 @@ TEST(ShadowWarps, WarpModeClampsAndParallelCameraRenders)
 {
   vtkNew<vtkWarpedShadowMapPass> pass;
   pass->SetWarpMode(99);
-  EXPECT_EQ(pass->GetWarpMode(), vtkWarpedShadowMapPass::GMNPR);
+  EXPECT_EQ(pass->GetWarpMode(), vtkWarpedShadowMapPass::TSM);
   pass->SetWarpMode(-1);
   EXPECT_EQ(pass->GetWarpMode(), vtkWarpedShadowMapPass::UNIFORM);
   pass->SetLiSPSMFreeParameter(-5.0);
   EXPECT_EQ(pass->GetLiSPSMFreeParameter(), 0.0);
+  pass->SetPSMSlideBack(-1.0);
+  EXPECT_EQ(pass->GetPSMSlideBack(), 0.0);
+  pass->SetTSMFocusDistance(-1.0);
+  EXPECT_EQ(pass->GetTSMFocusDistance(), 0.0);
+  pass->SetTSMFocusFraction(1.5);
+  EXPECT_EQ(pass->GetTSMFocusFraction(), 0.95);
 
-  TestScene scene;
-  scene.Renderer->GetActiveCamera()->ParallelProjectionOn();
-  scene.SetSun(SunDirection);
-  pass->SetWarpMode(vtkWarpedShadowMapPass::LISPSM);
-  scene.Renderer->SetPass(pass);
-  ErrorCounter errors;
-  auto image = RenderAndCapture(scene.Window);
-  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
-    ShadowedBelow);
+  // Every mode degrades to the uniform map for a parallel-projection camera.
+  for (const Mode& mode : WarpModes)
+  {
+    TestScene scene;
+    scene.Renderer->GetActiveCamera()->ParallelProjectionOn();
+    scene.SetSun(SunDirection);
+    pass->SetWarpMode(mode.Value);
+    scene.Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << mode.Name << ": " << errors.Text();
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
+      ShadowedBelow)
+      << mode.Name;
+  }
 }

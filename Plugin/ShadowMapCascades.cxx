@@ -1,0 +1,479 @@
+#include "ShadowMapCascades.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace shadowmaps
+{
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+// Smallest positive depth a perspective near plane is raised to.
+constexpr double TinyDepth = 1e-12;
+
+bool Finite(double x)
+{
+  return std::isfinite(x);
+}
+
+// Smallest gap accepted between zNear and zFar.
+double MinimumRange(double zNear)
+{
+  return std::max(1e-6 * std::abs(zNear), 1e-9);
+}
+
+// zNear/zFar made finite with zFar > zNear. Returns true if anything changed.
+bool RepairRange(double& zNear, double& zFar)
+{
+  bool changed = false;
+  if (!Finite(zNear))
+  {
+    zNear = 0.0;
+    changed = true;
+  }
+  if (!Finite(zFar))
+  {
+    zFar = zNear + 1.0;
+    changed = true;
+  }
+  if (!(zFar - zNear >= MinimumRange(zNear)))
+  {
+    zFar = zNear + MinimumRange(zNear);
+    changed = true;
+  }
+  return changed;
+}
+
+glm::dvec3 Project(const glm::dmat4& m, const glm::dvec3& p)
+{
+  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+  return glm::dvec3(q) / q.w;
+}
+
+glm::dvec3 UnitOrDefault(const glm::dvec3& direction)
+{
+  const double length = glm::length(direction);
+  if (!(length > 0.0) || !Finite(length))
+  {
+    return { 0.0, 0.0, -1.0 };
+  }
+  return direction / length;
+}
+
+// r rounded up to a multiple of 2^(floor(log2 r) - 4). Exact in binary floating point:
+// the quantum is a power of two, so r / q, ceil and * q round nothing.
+double RoundRadiusUp(double r)
+{
+  if (!(r > 0.0) || !Finite(r))
+  {
+    return 1.0;
+  }
+  int exponent = 0;
+  std::frexp(r, &exponent); // r = f 2^exponent, f in [0.5, 1)
+  const double quantum = std::ldexp(1.0, exponent - 1 - 4);
+  const double rounded = std::ceil(r / quantum) * quantum;
+  return Finite(rounded) ? rounded : r;
+}
+
+// Orthographic projection of half-extent h around (cx, cy), depths [zNear, zFar] in
+// front of the view (glm::ortho written out so that the x/y scale is exactly 1/h,
+// bitwise the same for every centre).
+glm::dmat4 CenteredOrtho(double cx, double cy, double h, double zNear, double zFar)
+{
+  glm::dmat4 p(1.0);
+  p[0][0] = 1.0 / h;
+  p[1][1] = 1.0 / h;
+  p[3][0] = -cx / h;
+  p[3][1] = -cy / h;
+  p[2][2] = -2.0 / (zFar - zNear);
+  p[3][2] = -(zFar + zNear) / (zFar - zNear);
+  return p;
+}
+} // namespace
+
+std::vector<double> PracticalSplits(double zNear, double zFar, int cascades, double lambda)
+{
+  RepairRange(zNear, zFar);
+  const int m = std::max(cascades, 1);
+  const double l = Finite(lambda) ? std::min(std::max(lambda, 0.0), 1.0) : 0.5;
+  // The logarithmic term needs a positive start.
+  const double logNear = zNear > 0.0 ? zNear : std::max(1e-3 * zFar, TinyDepth);
+  const double logFar = std::max(zFar, logNear);
+  std::vector<double> splits(m + 1);
+  splits[0] = zNear;
+  splits[m] = zFar;
+  for (int i = 1; i < m; ++i)
+  {
+    const double t = double(i) / double(m);
+    const double logarithmic = logNear * std::pow(logFar / logNear, t);
+    const double uniform = zNear + (zFar - zNear) * t;
+    const double c = l * logarithmic + (1.0 - l) * uniform;
+    // Keep the list ordered even where the repaired log start lies beyond zNear.
+    splits[i] = std::min(std::max(c, splits[i - 1]), zFar);
+  }
+  return splits;
+}
+
+std::vector<double> SanitizeSplits(
+  const std::vector<double>& explicitSplits, double zNear, double zFar, std::string* problem)
+{
+  std::ostringstream report;
+  report.precision(17);
+  const double givenNear = zNear;
+  const double givenFar = zFar;
+  if (RepairRange(zNear, zFar))
+  {
+    report << "the depth range [" << givenNear << ", " << givenFar
+           << "] is not a valid range; using [" << zNear << ", " << zFar
+           << "] as a single cascade. ";
+    if (problem)
+    {
+      *problem = report.str();
+      problem->pop_back();
+    }
+    return { zNear, zFar };
+  }
+
+  std::vector<double> kept;
+  std::vector<double> dropped;
+  for (double s : explicitSplits)
+  {
+    if (Finite(s) && s > zNear && s < zFar)
+    {
+      kept.push_back(s);
+    }
+    else
+    {
+      dropped.push_back(s);
+    }
+  }
+  const bool sorted = std::is_sorted(kept.begin(), kept.end());
+  std::sort(kept.begin(), kept.end());
+  const double tolerance = 1e-9 * (zFar - zNear);
+  std::vector<double> splits{ zNear };
+  int duplicates = 0;
+  for (double s : kept)
+  {
+    if (s - splits.back() <= tolerance)
+    {
+      ++duplicates;
+      continue;
+    }
+    splits.push_back(s);
+  }
+  // The last interior split may sit within the tolerance of zFar.
+  if (splits.size() > 1 && zFar - splits.back() <= tolerance)
+  {
+    splits.pop_back();
+    ++duplicates;
+  }
+  splits.push_back(zFar);
+
+  if (!dropped.empty())
+  {
+    report << "ignored " << dropped.size() << " split distance(s) not strictly inside the depth range ("
+           << zNear << ", " << zFar << "):";
+    for (double s : dropped)
+    {
+      report << ' ' << s;
+    }
+    report << ". ";
+  }
+  if (!sorted)
+  {
+    report << "split distances were not in increasing order and have been sorted. ";
+  }
+  if (duplicates > 0)
+  {
+    report << "removed " << duplicates << " duplicate split distance(s). ";
+  }
+  if (problem)
+  {
+    *problem = report.str();
+    if (!problem->empty())
+    {
+      problem->pop_back(); // trailing space
+      std::ostringstream summary;
+      summary << *problem << " Using " << splits.size() - 1 << " cascade(s).";
+      *problem = summary.str();
+    }
+  }
+  return splits;
+}
+
+glm::dvec2 ProjectionDepthRange(const glm::dmat4& projection)
+{
+  // View depth z maps to clip z = A z + B, clip w = c z + d (w row (0, 0, c, d)).
+  const double a = projection[2][2];
+  const double b = projection[3][2];
+  const double c = projection[2][3];
+  const double d = projection[3][3];
+  // Near: A z + B = -(c z + d); far: A z + B = c z + d. Depth = -z.
+  const double nearDenominator = a + c;
+  const double farDenominator = a - c;
+  if (nearDenominator == 0.0 || farDenominator == 0.0)
+  {
+    return { 0.0, 0.0 };
+  }
+  const glm::dvec2 range((b + d) / nearDenominator, (b - d) / farDenominator);
+  if (!Finite(range.x) || !Finite(range.y))
+  {
+    return { 0.0, 0.0 };
+  }
+  return range;
+}
+
+glm::dmat4 SubFrustumProjection(
+  const glm::dmat4& cameraProjection, double nearDistance, double farDistance)
+{
+  glm::dmat4 p = cameraProjection;
+  const bool usable = IsFinite(cameraProjection) &&
+    (cameraProjection[2][3] != 0.0 || cameraProjection[3][3] != 0.0);
+  if (!usable)
+  {
+    p = glm::dmat4(1.0); // parallel, unit square
+  }
+  const double c = p[2][3];
+  const double d = p[3][3];
+  RepairRange(nearDistance, farDistance);
+  if (c != 0.0 && nearDistance <= 0.0)
+  {
+    // A perspective frustum ends at the eye: its near plane must be in front of it.
+    nearDistance = std::max(TinyDepth, 1e-9 * std::abs(farDistance));
+    RepairRange(nearDistance, farDistance);
+  }
+  const double n = nearDistance;
+  const double f = farDistance;
+  // Solve (A z + B) / (c z + d) = -1 at z = -n and +1 at z = -f:
+  //   -A n + B = c n - d,   -A f + B = d - c f.
+  const double a = (c * (n + f) - 2.0 * d) / (f - n);
+  const double b = c * n - d + a * n;
+  p[0][2] = 0.0;
+  p[1][2] = 0.0;
+  p[2][2] = a;
+  p[3][2] = b;
+  return p;
+}
+
+BoundingSphere CascadeBoundingSphere(const glm::dmat4& subProjection)
+{
+  const BoundingSphere fallback{ glm::dvec3(0.0), 1.0 };
+  if (!IsFinite(subProjection))
+  {
+    return fallback;
+  }
+  const glm::dmat4 inverse = glm::inverse(subProjection);
+  if (!IsFinite(inverse))
+  {
+    return fallback;
+  }
+  std::array<glm::dvec3, 8> corners;
+  glm::dvec3 nearCentre(0.0), farCentre(0.0);
+  for (int i = 0; i < 8; ++i)
+  {
+    const glm::dvec3 ndc((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
+    corners[i] = Project(inverse, ndc);
+    ((i & 4) ? farCentre : nearCentre) += 0.25 * corners[i];
+  }
+  for (const auto& p : corners)
+  {
+    if (!Finite(p.x + p.y + p.z))
+    {
+      return fallback;
+    }
+  }
+  // Centre a + t e; |a + t e - p_i|^2 = E t^2 + beta_i t + gamma_i.
+  const glm::dvec3 a = nearCentre;
+  const glm::dvec3 e = farCentre - nearCentre;
+  const double curvature = glm::dot(e, e);
+  std::array<double, 8> beta, gamma;
+  for (int i = 0; i < 8; ++i)
+  {
+    beta[i] = 2.0 * glm::dot(e, a - corners[i]);
+    gamma[i] = glm::dot(a - corners[i], a - corners[i]);
+  }
+  auto squaredRadius = [&](double t) {
+    double worst = 0.0;
+    for (int i = 0; i < 8; ++i)
+    {
+      worst = std::max(worst, curvature * t * t + beta[i] * t + gamma[i]);
+    }
+    return worst;
+  };
+  std::vector<double> candidates{ 0.0, 0.5, 1.0 };
+  if (curvature > 0.0)
+  {
+    for (int i = 0; i < 8; ++i)
+    {
+      candidates.push_back(-beta[i] / (2.0 * curvature));
+      for (int j = i + 1; j < 8; ++j)
+      {
+        if (beta[i] != beta[j])
+        {
+          candidates.push_back((gamma[j] - gamma[i]) / (beta[i] - beta[j]));
+        }
+      }
+    }
+  }
+  double bestT = 0.0;
+  double best = Infinity;
+  for (double t : candidates)
+  {
+    if (!Finite(t))
+    {
+      continue;
+    }
+    const double value = squaredRadius(t);
+    if (value < best)
+    {
+      best = value;
+      bestT = t;
+    }
+  }
+  BoundingSphere sphere;
+  sphere.Center = a + bestT * e;
+  // Recompute from the chosen centre so rounding in the parabola form cannot shrink it.
+  double radius = 0.0;
+  for (const auto& p : corners)
+  {
+    radius = std::max(radius, glm::length(p - sphere.Center));
+  }
+  sphere.Radius = radius;
+  if (!(radius > 0.0) || !Finite(radius))
+  {
+    return fallback;
+  }
+  return sphere;
+}
+
+LightView FitCascadeTight(const glm::dmat4& cameraView, const glm::dmat4& subProjection,
+  const Aabb& scene, const glm::dvec3& lightDirection, int resolution)
+{
+  return FitDirectional(subProjection * cameraView, scene, lightDirection, resolution);
+}
+
+LightView FitCascadeStable(const glm::dmat4& cameraView, const glm::dmat4& subProjection,
+  const Aabb& scene, const glm::dvec3& lightDirection, int resolution)
+{
+  const double texels = double(std::max(resolution, 1));
+  const BoundingSphere sphere = CascadeBoundingSphere(subProjection);
+
+  // Sphere centre in the world.
+  glm::dmat4 viewToWorld(1.0);
+  if (IsFinite(cameraView))
+  {
+    const glm::dmat4 inverse = glm::inverse(cameraView);
+    if (IsFinite(inverse))
+    {
+      viewToWorld = inverse;
+    }
+  }
+  glm::dvec3 centre = Project(viewToWorld, sphere.Center);
+  if (!Finite(centre.x + centre.y + centre.z))
+  {
+    centre = glm::dvec3(0.0);
+  }
+
+  LightView fit;
+  fit.View = LightLookAt(glm::dvec3(0.0), UnitOrDefault(lightDirection));
+  fit.Perspective = false;
+
+  // Map size: depends on the projection only.
+  const double margin = std::min(4.0, texels / 4.0);
+  const double half = RoundRadiusUp(sphere.Radius) * texels / (texels - 2.0 * margin);
+  const double texel = 2.0 * half / texels;
+
+  // Snap the centre to whole texels of the world-fixed light grid.
+  const glm::dvec3 c = Project(fit.View, centre);
+  const double cx = std::floor(c.x / texel + 0.5) * texel;
+  const double cy = std::floor(c.y / texel + 0.5) * texel;
+
+  // Depth: the scene inside the map's side planes, bounded behind by the sphere.
+  const double sphereNear = -c.z - half;
+  const double sphereFar = -c.z + half;
+  double zNear = sphereNear;
+  double zFar = sphereFar;
+  if (!scene.IsEmpty())
+  {
+    const glm::dvec2 depth = ComputeNearAndFar(
+      fit.View, glm::dvec2(cx - half, cy - half), glm::dvec2(cx + half, cy + half), scene);
+    if (depth.y > depth.x)
+    {
+      zNear = depth.x;
+      zFar = std::min(depth.y, sphereFar);
+      if (!(zFar > zNear))
+      {
+        zFar = depth.y;
+      }
+    }
+  }
+  const double range = std::max(zFar - zNear, half * 1e-6);
+  zNear -= range * 1e-3;
+  zFar = zNear + range * 1.002;
+  if (!Finite(zNear) || !Finite(zFar) || !(zFar > zNear))
+  {
+    zNear = -1.0;
+    zFar = 1.0;
+  }
+  fit.Projection = CenteredOrtho(cx, cy, half, zNear, zFar);
+  fit.TexelConstant = texel;
+  return fit;
+}
+
+int SelectCascadeByDepth(const std::vector<double>& splits, double viewDepth)
+{
+  const int m = int(splits.size()) - 1;
+  if (m < 1 || !Finite(viewDepth))
+  {
+    return 0;
+  }
+  // Number of interior boundaries at or before viewDepth.
+  int index = 0;
+  for (int i = 1; i < m; ++i)
+  {
+    if (viewDepth >= splits[i])
+    {
+      index = i;
+    }
+  }
+  return index;
+}
+
+double CascadeBlendWeight(
+  const std::vector<double>& splits, int index, double viewDepth, double blendFraction)
+{
+  const int m = int(splits.size()) - 1;
+  if (index < 0 || index >= m - 1 || !Finite(viewDepth) || !Finite(blendFraction))
+  {
+    return 0.0;
+  }
+  const double fraction = std::min(std::max(blendFraction, 0.0), 1.0);
+  const double end = splits[index + 1];
+  const double band = fraction * (end - splits[index]);
+  if (!(band > 0.0))
+  {
+    return 0.0;
+  }
+  const double w = (viewDepth - (end - band)) / band;
+  return Finite(w) ? std::min(std::max(w, 0.0), 1.0) : 0.0;
+}
+
+glm::dvec2 CascadeDepthRange(const std::vector<double>& splits, int index, double blendFraction)
+{
+  const int m = int(splits.size()) - 1;
+  if (index < 0 || index >= m)
+  {
+    return { 0.0, 0.0 };
+  }
+  double zNear = splits[index];
+  if (index > 0 && Finite(blendFraction))
+  {
+    const double fraction = std::min(std::max(blendFraction, 0.0), 1.0);
+    zNear = splits[index] - fraction * (splits[index] - splits[index - 1]);
+  }
+  return { zNear, splits[index + 1] };
+}
+
+} // namespace shadowmaps
