@@ -56,8 +56,15 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
   const glm::dvec3& direction = in.Lights[lightIndex].Direction;
   if (this->WarpMode == PSM)
   {
-    return shadowmaps::FitPerspective(in.CameraView, TightProjection(in.CameraView, in.CameraProjection, in.PropBounds), in.SceneBounds, direction,
-      in.Resolution, this->PSMSlideBack)
+    const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
+    double slideBack = this->PSMSlideBack;
+    if (slideBack < 0.0)
+    {
+      const glm::dvec2 planes = shadowmaps::ProjectionDepthRange(projection);
+      slideBack = std::sqrt(std::max(planes.x * planes.y, 0.0));
+    }
+    return shadowmaps::FitPerspective(
+      in.CameraView, projection, in.SceneBounds, direction, in.Resolution, slideBack)
       .Light;
   }
   if (this->WarpMode == TSM)

@@ -15,7 +15,7 @@
  *   rendered in the camera's post-perspective space, focused on the receivers
  *   there (unit-cube clipping); a light behind the viewer uses the inverse
  *   projection; PSMSlideBack moves the virtual camera back to trade near for
- *   far quality. Bias is the normal offset scaled by the world-space texel size
+ *   far quality (automatic by default). Bias is the normal offset scaled by the world-space texel size
  *   at the receiver, taken from the map's local gradient;
  * - TSM (Martin and Tan; thesis 000): the trapezoid around the focus body's
  *   light-space hull mapped to the square, with the point TSMFocusDistance
@@ -84,9 +84,13 @@ public:
   ///@{
   /**
    * PSM: Kozlov's virtual slide-back, how far (world units) the virtual camera
-   * is moved back behind the real one. 0 (default): none. Clamped to [0, 1e30].
+   * is moved back behind the real one; more trades near for far quality.
+   * Negative (default -1): automatic, sqrt(z_n z_f) of the visible depth range,
+   * which puts the virtual near plane at LiSPSM's n_opt = z_n + sqrt(z_n z_f)
+   * where near and far aliasing balance. 0: the original PSM, which gives most
+   * of the map to the first few depth units. Clamped to [-1, 1e30].
    */
-  vtkSetClampMacro(PSMSlideBack, double, 0.0, 1e30);
+  vtkSetClampMacro(PSMSlideBack, double, -1.0, 1e30);
   vtkGetMacro(PSMSlideBack, double);
   ///@}
 
@@ -117,7 +121,7 @@ protected:
   int WarpMode = UNIFORM;
   double LiSPSMFreeParameter = 0.0;
   bool LloydFalloff = false;
-  double PSMSlideBack = 0.0;
+  double PSMSlideBack = -1.0;
   double TSMFocusDistance = 0.0;
   double TSMFocusFraction = 0.8;
 

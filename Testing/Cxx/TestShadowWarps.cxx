@@ -117,6 +117,64 @@ INSTANTIATE_TEST_SUITE_P(ShadowWarps, WarpModeAndSetUp,
   });
 } // namespace
 
+TEST(ShadowWarps, PSMWithoutSlideBackAndWithALongOneStillShadows)
+{
+  for (double slideBack : { 0.0, 30.0 })
+  {
+    TestScene scene;
+    LookAlongTheGround(scene);
+    scene.SetSun(SunBehind);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    pass->SetWarpMode(vtkWarpedShadowMapPass::PSM);
+    pass->SetPSMSlideBack(slideBack);
+    pass->SetResolution(512);
+    scene.Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunBehind)), ShadowedBelow)
+      << "slide-back " << slideBack;
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, { -2.0, -3.0, 0.0 }), LitAbove) << "slide-back " << slideBack;
+  }
+}
+
+// Light exactly along and against the view line, and a camera inside the
+// sphere: every mode renders without warnings, and the lit ground stays lit.
+TEST(ShadowWarps, DegenerateViewsRenderCleanly)
+{
+  const glm::dvec3 eye(0.0, -10.0, 10.0);
+  const glm::dvec3 along = glm::normalize(-eye);
+  for (const Mode& mode : WarpModes)
+  {
+    for (const glm::dvec3& sun : { along, glm::dvec3(0.0, 0.0, -1.0) })
+    {
+      TestScene scene;
+      vtkCamera* camera = scene.Renderer->GetActiveCamera();
+      camera->SetPosition(eye.x, eye.y, eye.z);
+      camera->SetFocalPoint(0.0, 0.0, 0.0);
+      camera->SetClippingRange(0.1, 60.0);
+      if (sun.y == 0.0)
+      {
+        // Looking straight down along the sun, from inside the sphere.
+        camera->SetPosition(0.0, 0.0, 1.5);
+        camera->SetViewUp(0.0, 1.0, 0.0);
+      }
+      scene.SetSun(sun);
+      vtkNew<vtkWarpedShadowMapPass> pass;
+      pass->SetWarpMode(mode.Value);
+      scene.Renderer->SetPass(pass);
+      ErrorCounter errors;
+      auto image = RenderAndCapture(scene.Window);
+      EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << mode.Name << ": " << errors.Text();
+      EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 1) << mode.Name;
+      if (sun.y != 0.0)
+      {
+        EXPECT_GT(LuminanceAt(scene.Renderer, image, { -4.0, -2.0, 0.0 }), LitAbove) << mode.Name;
+      }
+    }
+  }
+}
+
 TEST(ShadowWarps, WarpsUndersampleFewerPixelsThanTheUniformMap)
 {
   int undersampled[5] = { 0, 0, 0, 0, 0 };
@@ -152,8 +210,9 @@ TEST(ShadowWarps, WarpModeClampsAndParallelCameraRenders)
   EXPECT_EQ(pass->GetWarpMode(), vtkWarpedShadowMapPass::UNIFORM);
   pass->SetLiSPSMFreeParameter(-5.0);
   EXPECT_EQ(pass->GetLiSPSMFreeParameter(), 0.0);
-  pass->SetPSMSlideBack(-1.0);
-  EXPECT_EQ(pass->GetPSMSlideBack(), 0.0);
+  EXPECT_EQ(pass->GetPSMSlideBack(), -1.0); // automatic
+  pass->SetPSMSlideBack(-7.0);
+  EXPECT_EQ(pass->GetPSMSlideBack(), -1.0);
   pass->SetTSMFocusDistance(-1.0);
   EXPECT_EQ(pass->GetTSMFocusDistance(), 0.0);
   pass->SetTSMFocusFraction(1.5);
