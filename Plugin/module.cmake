@@ -21,6 +21,7 @@ endforeach ()
 vtk_module_add_module(ShadowMaps::RenderingShadowMaps
   CLASSES
     Plugin/vtkAbstractShadowMapPass
+    Plugin/vtkCascadedShadowMapPass
     Plugin/vtkWarpedShadowMapPass
   PRIVATE_CLASSES
     Plugin/vtkShadowMapCasterPass

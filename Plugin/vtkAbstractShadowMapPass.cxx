@@ -264,6 +264,8 @@ struct vtkAbstractShadowMapPass::Resources
   std::vector<float> ViewToMap;
   std::vector<float> TexelSizes;
   std::vector<float> DepthLinear;
+  std::vector<float> Cascades;
+  std::vector<float> CascadeLights;
   std::vector<float> LightPositions;
   std::vector<float> Attenuations;
   glm::mat4 ViewToWorld{ 1.0f };
@@ -708,6 +710,8 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
   r.ViewToMap.clear();
   r.TexelSizes.clear();
   r.DepthLinear.clear();
+  r.Cascades.clear();
+  r.CascadeLights.clear();
   r.LightPositions.clear();
   const glm::dmat4 viewToWorld = glm::inverse(in.CameraView);
   r.Attenuations.clear();
@@ -727,6 +731,13 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
         }
       }
       r.DepthLinear.push_back(view.LinearDepth ? 1.0f : 0.0f);
+      const size_t cascade = static_cast<size_t>(&view - light.Views.data());
+      const double firstTexel = light.Views.front().TexelConstant;
+      const glm::vec4 depths = light.Cascaded && cascade < light.CascadeDepths.size()
+        ? glm::vec4(glm::vec3(light.CascadeDepths[cascade]),
+            firstTexel > 0.0 && view.TexelConstant > 0.0 ? firstTexel / view.TexelConstant : 1.0)
+        : glm::vec4(0.0f, 1e38f, 1e38f, 1.0f);
+      r.Cascades.insert(r.Cascades.end(), glm::value_ptr(depths), glm::value_ptr(depths) + 4);
       const glm::mat4 viewToMap(viewToMapD);
       r.ViewToMap.insert(r.ViewToMap.end(), glm::value_ptr(viewToMap), glm::value_ptr(viewToMap) + 16);
       // A negative constant tells the receiver to use the map's local gradient.
@@ -739,6 +750,9 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
     r.LightPositions.push_back(static_cast<float>(positionVC.y));
     r.LightPositions.push_back(static_cast<float>(positionVC.z));
     r.Attenuations.push_back(light.Attenuation);
+    r.CascadeLights.push_back(static_cast<float>(light.Fade.x));
+    r.CascadeLights.push_back(static_cast<float>(light.Fade.y));
+    r.CascadeLights.push_back(light.SelectCascadeByCoverage ? 1.0f : 0.0f);
   }
   r.ViewToWorld = glm::mat4(viewToWorld);
 }
@@ -753,7 +767,8 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
       << ' ' << this->AnalysisView << ' ' << this->AnalysisLight << ';';
   for (const ShadowLight& light : this->Internal->Lights)
   {
-    key << light.ShaderIndex << ':' << light.FirstLayer << ':' << light.Cube << ' ';
+    key << light.ShaderIndex << ':' << light.FirstLayer << ':' << light.ViewKind() << ':'
+        << light.Views.size() << ' ';
   }
   std::vector<vtkProp*> nonReceivers;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -848,7 +863,7 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
       {
         impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor(vertexVC.xyz, "
              << "vtkShadowNormalVC, " << k << ", " << lights[k].FirstLayer << ", "
-             << (lights[k].Cube ? "true" : "false") << ");\n";
+             << lights[k].ViewKind() << ", " << lights[k].Views.size() << ");\n";
       }
     }
   }
@@ -898,7 +913,8 @@ std::string vtkAbstractShadowMapPass::AnalysisCode() const
   const ShadowLight& light = lights[this->AnalysisLight];
   std::ostringstream code;
   code << "  gl_FragData[0] = vtkShadowAnalysisColor(vertexVC.xyz, vtkShadowNormalVC, "
-       << this->AnalysisLight << ", " << light.FirstLayer << ", " << (light.Cube ? "true" : "false")
+       << this->AnalysisLight << ", " << light.FirstLayer << ", " << light.ViewKind() << ", "
+       << light.Views.size()
        << ");\n";
   return code.str();
 }
@@ -959,6 +975,9 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   program->SetUniform2fv(
     "vtkShadowTexelSize", views, reinterpret_cast<const float(*)[2]>(r.TexelSizes.data()));
   program->SetUniform1fv("vtkShadowDepthLinear", views, r.DepthLinear.data());
+  program->SetUniform4fv("vtkShadowCascade", views, reinterpret_cast<const float(*)[4]>(r.Cascades.data()));
+  program->SetUniform3fv(
+    "vtkShadowCascadeLight", lights, reinterpret_cast<const float(*)[3]>(r.CascadeLights.data()));
   program->SetUniform3fv(
     "vtkShadowLightPositionVC", lights, reinterpret_cast<const float(*)[3]>(r.LightPositions.data()));
   program->SetUniform1fv("vtkShadowAttenuation", lights, r.Attenuations.data());

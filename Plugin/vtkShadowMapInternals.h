@@ -39,6 +39,17 @@ struct ShadowLight
   float Attenuation = 1.0f;
   int FirstLayer = 0;
   std::vector<LightView> Views;
+  /// Cascaded lights: Views are depth partitions of the camera frustum, picked
+  /// per receiver by view depth (or map coverage) and blended at their splits.
+  bool Cascaded = false;
+  /// Per cascade: {first view depth it shades, its far split, start of its blend band}.
+  std::vector<glm::dvec3> CascadeDepths;
+  /// View depths over which the shadows fade out; no fade unless y > x.
+  glm::dvec2 Fade{ 0.0, 0.0 };
+  bool SelectCascadeByCoverage = false;
+
+  /// Shader code of how the views cover receivers (vtkShadowMapsReceiverFS).
+  int ViewKind() const { return this->Cascaded ? 2 : this->Cube ? 1 : 0; }
 };
 
 /// What a texel of a pass's maps holds and how the casters write it.

@@ -49,7 +49,7 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
 #if VTK_SHADOW_FILTER <= 1
   return vtkShadowCompare(mapCoord.xy, mapCoord.z, layer);
 #elif VTK_SHADOW_FILTER == 2
-  float texel = 1.0 / vtkShadowMapResolution;
+  float texel = vtkShadowCascade[layer].w / vtkShadowMapResolution;
   float center = 0.5 * float(VTK_SHADOW_KERNEL - 1);
   float lit = 0.0;
   for (int j = 0; j < VTK_SHADOW_KERNEL; ++j)
@@ -66,7 +66,7 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
   // the light and does not crawl when the camera moves (thesis 000, jittered PCF).
   vec2 rotation = texture(vtkShadowNoise, mapCoord.xy * vtkShadowMapResolution / 32.0).xy;
   mat2 rotate = mat2(rotation.x, rotation.y, -rotation.y, rotation.x);
-  float radius = vtkShadowFilterRadius / vtkShadowMapResolution;
+  float radius = vtkShadowFilterRadius * vtkShadowCascade[layer].w / vtkShadowMapResolution;
   float lit = 0.0;
   for (int i = 0; i < VTK_SHADOW_POISSON_SAMPLES; ++i)
   {

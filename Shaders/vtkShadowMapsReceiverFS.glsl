@@ -19,6 +19,14 @@ uniform vec2 vtkShadowTexelSize[VTK_SHADOW_MAX_VIEWS];
 // 1: the view's depth is linear in light space (TSM) and its matrix gives the
 // texture depth without the divide by w; 0: depth is z / w.
 uniform float vtkShadowDepthLinear[VTK_SHADOW_MAX_VIEWS];
+// Cascades: per view, x = first view depth (-z in VC) it shades, y = its last
+// (the next split), z = where the blend band into the next cascade starts,
+// w = its texel size over the first cascade's (filter offsets are multiplied by
+// its inverse so the kernel keeps its world size). Other views: (0, 1e38, 1e38, 1).
+uniform vec4 vtkShadowCascade[VTK_SHADOW_MAX_VIEWS];
+// Per light: x, y = view depths over which shadows fade out (x >= y: no fade);
+// z = 1 to select cascades by map coverage instead of depth.
+uniform vec3 vtkShadowCascadeLight[VTK_SHADOW_MAX_LIGHTS];
 uniform vec3 vtkShadowLightPositionVC[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowMapResolution;
@@ -44,11 +52,49 @@ int vtkShadowCubeFace(vec3 d)
   return d.z >= 0.0 ? 4 : 5;
 }
 
-// The view of light `light` that covers the receiver. The light's views start
-// at layer firstView; a cube light has six of them.
-int vtkShadowSelectView(vec3 positionVC, int light, int firstView, bool cube)
+// How a light's views cover the receivers (vtkAbstractShadowMapPass's LightViews).
+const int vtkShadowSingleView = 0;
+const int vtkShadowCubeViews = 1;
+const int vtkShadowCascadeViews = 2;
+
+vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view);
+bool vtkShadowInsideMap(vec4 clip, int view);
+
+// The cascade that shades the receiver: by view depth, or the first (finest)
+// whose map contains it.
+int vtkShadowSelectCascade(vec3 positionVC, vec3 normalVC, int light, int firstView, int count)
 {
-  if (!cube)
+  if (vtkShadowCascadeLight[light].z > 0.5)
+  {
+    for (int i = 0; i < count - 1; ++i)
+    {
+      if (vtkShadowInsideMap(vtkShadowMapClip(positionVC, normalVC, light, firstView + i), firstView + i))
+      {
+        return firstView + i;
+      }
+    }
+    return firstView + count - 1;
+  }
+  float depth = -positionVC.z;
+  for (int i = 0; i < count - 1; ++i)
+  {
+    if (depth < vtkShadowCascade[firstView + i].y)
+    {
+      return firstView + i;
+    }
+  }
+  return firstView + count - 1;
+}
+
+// The view of light `light` that covers the receiver. The light's views start
+// at layer firstView; a cube light has six of them, a cascaded light `count`.
+int vtkShadowSelectView(vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count)
+{
+  if (kind == vtkShadowCascadeViews)
+  {
+    return vtkShadowSelectCascade(positionVC, normalVC, light, firstView, count);
+  }
+  if (kind != vtkShadowCubeViews)
   {
     return firstView;
   }
@@ -101,10 +147,8 @@ bool vtkShadowInsideMap(vec4 clip, int view)
     all(lessThanEqual(mapCoord, vec3(1.0)));
 }
 
-// Fraction of light `light` reaching the receiver, in [0, 1]; 1 outside the maps.
-float vtkShadowVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, bool cube)
+float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view)
 {
-  int view = vtkShadowSelectView(positionVC, light, firstView, cube);
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
   if (!vtkShadowInsideMap(clip, view))
   {
@@ -113,10 +157,35 @@ float vtkShadowVisibility(vec3 positionVC, vec3 normalVC, int light, int firstVi
   return vtkShadowLookup(vtkShadowMapCoord(clip, view), view);
 }
 
-// Factor that scales the light's diffuse and specular terms.
-float vtkShadowFactor(vec3 positionVC, vec3 normalVC, int light, int firstView, bool cube)
+// Fraction of light `light` reaching the receiver, in [0, 1]; 1 outside the maps.
+// Cascades blend into the next one over the band before their split, and fade
+// out toward the light's maximum shadow distance.
+float vtkShadowVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count)
 {
-  float visibility = vtkShadowVisibility(positionVC, normalVC, light, firstView, cube);
+  int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, kind, count);
+  float visibility = vtkShadowViewVisibility(positionVC, normalVC, light, view);
+  if (kind == vtkShadowCascadeViews)
+  {
+    float depth = -positionVC.z;
+    vec4 cascade = vtkShadowCascade[view];
+    if (view < firstView + count - 1 && depth > cascade.z)
+    {
+      float next = vtkShadowViewVisibility(positionVC, normalVC, light, view + 1);
+      visibility = mix(visibility, next, clamp((depth - cascade.z) / max(cascade.y - cascade.z, 1e-30), 0.0, 1.0));
+    }
+    vec3 fade = vtkShadowCascadeLight[light];
+    if (fade.y > fade.x)
+    {
+      visibility = mix(visibility, 1.0, smoothstep(fade.x, fade.y, depth));
+    }
+  }
+  return visibility;
+}
+
+// Factor that scales the light's diffuse and specular terms.
+float vtkShadowFactor(vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count)
+{
+  float visibility = vtkShadowVisibility(positionVC, normalVC, light, firstView, kind, count);
   return 1.0 - vtkShadowAttenuation[light] * (1.0 - visibility);
 }
 
@@ -160,12 +229,12 @@ vec3 vtkShadowPartitionColor(int index)
   return palette[index % 8];
 }
 
-vec4 vtkShadowAnalysisColor(vec3 positionVC, vec3 normalVC, int light, int firstView, bool cube)
+vec4 vtkShadowAnalysisColor(vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count)
 {
-  int view = vtkShadowSelectView(positionVC, light, firstView, cube);
+  int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, kind, count);
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
   float footprint = vtkShadowTexelFootprint(clip);
-  float visibility = vtkShadowVisibility(positionVC, normalVC, light, firstView, cube);
+  float visibility = vtkShadowVisibility(positionVC, normalVC, light, firstView, kind, count);
 #if VTK_SHADOW_ANALYSIS == 1
   return vec4(vec3(visibility), 1.0);
 #elif VTK_SHADOW_ANALYSIS == 2

@@ -5,6 +5,7 @@
 #include "ShadowScenes.h"
 
 #include "vtkAbstractShadowMapPass.h"
+#include "vtkCascadedShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
 
 #include <vtkActor.h>
@@ -133,6 +134,17 @@ TechniqueInstance MakeTechnique(const std::string& name, const std::string& setu
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;
+  }
+  else if (name == "csm" || name == "csm-tight")
+  {
+    // Four cascades of half the resolution: the memory of one map.
+    auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
+    pass->SetResolution(std::max(resolution / 2, 64));
+    pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
+    pass->SetFitMode(name == "csm" ? vtkCascadedShadowMapPass::STABLE : vtkCascadedShadowMapPass::TIGHT);
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = pass->GetResolution();
   }
   return technique;
 }
@@ -708,7 +720,8 @@ Options WithReferences(Options options)
 //------------------------------------------------------------------------------
 std::vector<std::string> TechniqueNames()
 {
-  return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr" };
+  return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
+    "csm-tight" };
 }
 
 //------------------------------------------------------------------------------

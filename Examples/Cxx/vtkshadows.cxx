@@ -107,7 +107,8 @@ void PrintUsage(std::ostream& out)
          "options of bench and analyze (lists are comma-separated):\n"
          "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
          "  --setups LIST            overhead,perpendicular,behind,facing,spot,point [all]\n"
-         "  --techniques LIST        none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr [all]; none\n"
+         "  --techniques LIST        none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
+         "                           csm-tight [all] (csm: 4 cascades of N/2, stable or tight); none\n"
          "                           and vtk are always measured (frame-time references)\n"
          "  --technique NAME         one technique (with none and vtk)\n"
          "  --resolution N           map size of this project's techniques [2048]\n"
@@ -347,7 +348,7 @@ std::string ParseTechniques(const std::string& value, Options& options)
     if (std::find(names.begin(), names.end(), technique) == names.end())
     {
       return "unknown technique '" + technique +
-        "' (expected none, vtk, vtk-equal, uniform, psm, lispsm, tsm or gmnpr)";
+        "' (expected none, vtk, vtk-equal, uniform, psm, lispsm, tsm, gmnpr, csm or csm-tight)";
     }
   }
   options.bench.Techniques = SplitList(value);

@@ -1,0 +1,227 @@
+#include "vtkCascadedShadowMapPass.h"
+
+#include "ShadowMapCascades.h"
+#include "ShadowMapWarping.h"
+#include "vtkObjectFactory.h"
+#include "vtkShadowMapInternals.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkCascadedShadowMapPass);
+
+namespace
+{
+constexpr int MaximumCascades = 8;
+constexpr double NoBlend = 1e38;
+
+// The camera's depth range that cascades split: the near and far planes
+// tightened to the visible props.
+glm::dvec2 VisibleRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<shadowmaps::Aabb>& props)
+{
+  glm::dvec2 range = shadowmaps::ProjectionDepthRange(cameraProjection);
+  const glm::dvec2 visible = shadowmaps::VisibleDepthRange(cameraView, cameraProjection, props);
+  if (visible.y > visible.x)
+  {
+    range = { std::max(range.x, visible.x), std::min(range.y, visible.y) };
+  }
+  if (!(range.y > range.x) || !std::isfinite(range.y - range.x))
+  {
+    range = { std::max(range.x, 0.0), std::max(range.x, 0.0) + 1.0 };
+  }
+  return range;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
+{
+  this->Resolution = 1024;
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::SetNumberOfCascades(int count)
+{
+  const int clamped = std::min(std::max(count, 1), MaximumCascades);
+  if (clamped != count)
+  {
+    vtkWarningMacro(<< "NumberOfCascades " << count << " is outside [1, " << MaximumCascades
+                    << "]; using " << clamped << ".");
+  }
+  if (clamped != this->NumberOfCascades)
+  {
+    this->NumberOfCascades = clamped;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::SetSplitLambda(double lambda)
+{
+  const double clamped = std::isnan(lambda) ? 0.75 : std::min(std::max(lambda, 0.0), 1.0);
+  if (clamped != lambda)
+  {
+    vtkWarningMacro(<< "SplitLambda " << lambda << " is outside [0, 1]; using " << clamped << ".");
+  }
+  if (clamped != this->SplitLambda)
+  {
+    this->SplitLambda = clamped;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::AddSplitDistance(double distance)
+{
+  this->SplitDistances.push_back(distance);
+  this->SplitProblemReported = false;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::RemoveAllSplitDistances()
+{
+  if (!this->SplitDistances.empty())
+  {
+    this->SplitDistances.clear();
+    this->SplitProblemReported = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkCascadedShadowMapPass::GetSplit(int i) const
+{
+  return i >= 0 && i < static_cast<int>(this->LastSplits.size()) ? this->LastSplits[i] : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::SetMaximumShadowDistance(double distance)
+{
+  const double clamped = std::isfinite(distance) && distance > 0.0 ? distance : 0.0;
+  if (clamped != distance)
+  {
+    vtkWarningMacro(<< "MaximumShadowDistance " << distance
+                    << " is not a positive distance; using the visible depth (0).");
+  }
+  if (clamped != this->MaximumShadowDistance)
+  {
+    this->MaximumShadowDistance = clamped;
+    this->SplitProblemReported = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
+{
+  shadowmaps::ShadowLight& light = in.Lights[lightIndex];
+  if (light.Kind != shadowmaps::LightKind::Directional)
+  {
+    this->FitLightViewsUniform(in, lightIndex);
+    return;
+  }
+  glm::dvec2 range = VisibleRange(in.CameraView, in.CameraProjection, in.PropBounds);
+  std::string problem;
+  bool fade = false;
+  if (this->MaximumShadowDistance > 0.0)
+  {
+    if (this->MaximumShadowDistance <= range.x)
+    {
+      problem = "MaximumShadowDistance is not beyond the nearest visible depth; shadows end there.";
+      range.y = range.x * (1.0 + 1e-6) + 1e-9;
+    }
+    else if (this->MaximumShadowDistance < range.y)
+    {
+      range.y = this->MaximumShadowDistance;
+      fade = this->FadeFraction > 0.0;
+    }
+  }
+
+  std::vector<double> splits;
+  if (this->SplitDistances.empty())
+  {
+    splits = shadowmaps::PracticalSplits(range.x, range.y, this->NumberOfCascades, this->SplitLambda);
+  }
+  else
+  {
+    std::string splitProblem;
+    splits = shadowmaps::SanitizeSplits(this->SplitDistances, range.x, range.y, &splitProblem);
+    if (!splitProblem.empty())
+    {
+      problem += (problem.empty() ? "" : " ") + splitProblem;
+    }
+    if (static_cast<int>(splits.size()) > MaximumCascades + 1)
+    {
+      splits.erase(splits.begin() + MaximumCascades, splits.end() - 1);
+      problem += " More than " + std::to_string(MaximumCascades) + " cascades; the last ones are merged.";
+    }
+  }
+  // Once per setting: the repaired values depend on the visible depth, which
+  // changes from frame to frame.
+  if (!problem.empty() && !this->SplitProblemReported)
+  {
+    vtkWarningMacro(<< problem);
+    this->SplitProblemReported = true;
+  }
+  const auto firstDirectional = std::find_if(in.Lights.begin(), in.Lights.end(),
+    [](const shadowmaps::ShadowLight& l) { return l.Kind == shadowmaps::LightKind::Directional; });
+  if (firstDirectional - in.Lights.begin() == lightIndex)
+  {
+    this->LastSplits = splits;
+  }
+
+  light.Views.clear();
+  light.CascadeDepths.clear();
+  const int cascades = static_cast<int>(splits.size()) - 1;
+  for (int c = 0; c < cascades; ++c)
+  {
+    const glm::dvec2 depths = shadowmaps::CascadeDepthRange(splits, c, this->BlendFraction);
+    const glm::dmat4 sub = shadowmaps::SubFrustumProjection(in.CameraProjection, depths.x, depths.y);
+    shadowmaps::LightView view;
+    if (this->FitMode == STABLE)
+    {
+      view = shadowmaps::FitCascadeStable(in.CameraView, sub, in.SceneBounds, light.Direction, in.Resolution);
+    }
+    else if (this->CascadeWarp != NO_WARP)
+    {
+      view = shadowmaps::FitDirectionalWarped(in.CameraView, sub, in.SceneBounds, light.Direction,
+        in.Resolution,
+        this->CascadeWarp == GMNPR_WARP ? shadowmaps::DirectionalWarp::GMNPR
+                                        : shadowmaps::DirectionalWarp::LiSPSM);
+      view.TexelSizeFromGradient = view.Perspective;
+    }
+    else
+    {
+      view = shadowmaps::FitCascadeTight(in.CameraView, sub, in.SceneBounds, light.Direction, in.Resolution);
+    }
+    light.Views.push_back(view);
+    const double blendStart = splits[c + 1] - this->BlendFraction * (splits[c + 1] - splits[c]);
+    light.CascadeDepths.emplace_back(
+      splits[c], splits[c + 1], this->BlendFraction > 0.0 && c + 1 < cascades ? blendStart : NoBlend);
+  }
+  light.Cascaded = true;
+  light.SelectCascadeByCoverage = this->Selection == BY_COVERAGE;
+  light.Fade = fade ? glm::dvec2(range.y * (1.0 - this->FadeFraction), range.y) : glm::dvec2(0.0);
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfCascades: " << this->NumberOfCascades << "\n";
+  os << indent << "SplitLambda: " << this->SplitLambda << "\n";
+  os << indent << "SplitDistances:";
+  for (double d : this->SplitDistances)
+  {
+    os << " " << d;
+  }
+  os << "\n";
+  os << indent << "MaximumShadowDistance: " << this->MaximumShadowDistance << "\n";
+  os << indent << "FadeFraction: " << this->FadeFraction << "\n";
+  os << indent << "BlendFraction: " << this->BlendFraction << "\n";
+  os << indent << "FitMode: " << this->FitMode << "\n";
+  os << indent << "CascadeWarp: " << this->CascadeWarp << "\n";
+  os << indent << "Selection: " << this->Selection << "\n";
+}

@@ -1,0 +1,165 @@
+/**
+ * @class   vtkCascadedShadowMapPass
+ * @brief   Cascaded shadow maps for directional lights.
+ *
+ * The camera's view depth up to MaximumShadowDistance is split into
+ * NumberOfCascades partitions (survey 003 §4.3.1, PSSM's practical scheme, or
+ * explicit split depths), each with its own map, one layer of a 2D texture
+ * array. A cascade is fitted either STABLE (default: a sphere around its
+ * sub-frustum in a light frame fixed in the world, moved in whole texels, so
+ * that shadow edges do not shimmer as the camera moves; seed 004) or TIGHT
+ * (sub-frustum ∩ scene, the sharpest texels). Each cascade's depth range reaches
+ * the casters between its sub-frustum and the light. Optionally each cascade is
+ * warped with LiSPSM or GMNPR (vtkWarpedShadowMapPass's warps).
+ *
+ * Receivers pick their cascade by view depth (or by map coverage: the finest
+ * cascade whose map contains them, better when the light is near the view
+ * direction), blend into the next cascade over the last BlendFraction of each
+ * cascade, and fade out over the last FadeFraction before MaximumShadowDistance
+ * when that distance cuts the visible scene. Filter kernels keep their world
+ * size in every cascade. Spot and point lights use the foundation's maps.
+ *
+ * Resolution is per cascade (default 1024: four cascades hold the memory of one
+ * 2048² map).
+ *
+ * @code
+ * vtkNew<vtkCascadedShadowMapPass> shadows;
+ * shadows->SetMaximumShadowDistance(200.0);
+ * renderer->SetPass(shadows);
+ * @endcode
+ */
+#ifndef vtkCascadedShadowMapPass_h
+#define vtkCascadedShadowMapPass_h
+
+#include "vtkAbstractShadowMapPass.h"
+#include "vtkRenderingShadowMapsModule.h" // For export macro
+
+#include <vector> // For SplitDistances
+
+class VTKRENDERINGSHADOWMAPS_EXPORT vtkCascadedShadowMapPass : public vtkAbstractShadowMapPass
+{
+public:
+  static vtkCascadedShadowMapPass* New();
+  vtkTypeMacro(vtkCascadedShadowMapPass, vtkAbstractShadowMapPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Number of cascades, 1 to 8 (default 4); out-of-range values clamp with a warning. */
+  void SetNumberOfCascades(int count);
+  vtkGetMacro(NumberOfCascades, int);
+  ///@}
+
+  ///@{
+  /**
+   * Practical split weight: 0 uniform splits, 1 logarithmic (default 0.75).
+   * Values outside [0, 1] clamp with a warning. Ignored while explicit split
+   * distances are set.
+   */
+  void SetSplitLambda(double lambda);
+  vtkGetMacro(SplitLambda, double);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit split depths (view-space distances): the boundaries between
+   * cascades, one fewer than the cascades wanted. Unsorted, negative, duplicate
+   * or out-of-range values are repaired with a warning at render time. With
+   * none (default) the splits follow SplitLambda and NumberOfCascades.
+   */
+  void AddSplitDistance(double distance);
+  void RemoveAllSplitDistances();
+  int GetNumberOfSplitDistances() const { return static_cast<int>(this->SplitDistances.size()); }
+  ///@}
+
+  ///@{
+  /**
+   * Depth up to which shadows are drawn. 0 (default): the camera's far plane,
+   * tightened to the farthest visible prop. Values below the near plane clamp to
+   * it with a warning at render time; negative values clamp to 0 with a warning.
+   */
+  void SetMaximumShadowDistance(double distance);
+  vtkGetMacro(MaximumShadowDistance, double);
+  ///@}
+
+  ///@{
+  /** Share of MaximumShadowDistance over which shadows fade out, [0, 1], default 0.1. */
+  vtkSetClampMacro(FadeFraction, double, 0.0, 1.0);
+  vtkGetMacro(FadeFraction, double);
+  ///@}
+
+  ///@{
+  /** Share of each cascade's depth range blended into the next, [0, 1], default 0.1. */
+  vtkSetClampMacro(BlendFraction, double, 0.0, 1.0);
+  vtkGetMacro(BlendFraction, double);
+  ///@}
+
+  enum FitModeType
+  {
+    STABLE = 0,
+    TIGHT = 1
+  };
+
+  ///@{
+  /** STABLE (default) or TIGHT cascade fitting. */
+  vtkSetClampMacro(FitMode, int, STABLE, TIGHT);
+  vtkGetMacro(FitMode, int);
+  ///@}
+
+  enum CascadeWarpType
+  {
+    NO_WARP = 0,
+    LISPSM_WARP = 1,
+    GMNPR_WARP = 2
+  };
+
+  ///@{
+  /** Warp inside each cascade (TIGHT fitting only; stable cascades stay uniform). Default NO_WARP. */
+  vtkSetClampMacro(CascadeWarp, int, NO_WARP, GMNPR_WARP);
+  vtkGetMacro(CascadeWarp, int);
+  ///@}
+
+  enum SelectionType
+  {
+    BY_DEPTH = 0,
+    BY_COVERAGE = 1
+  };
+
+  ///@{
+  /** How receivers pick their cascade. Default BY_DEPTH. */
+  vtkSetClampMacro(Selection, int, BY_DEPTH, BY_COVERAGE);
+  vtkGetMacro(Selection, int);
+  ///@}
+
+  ///@{
+  /**
+   * Split depths the last frame used for the first directional light: cascade i
+   * shades view depths from GetSplit(i) to GetSplit(i + 1).
+   */
+  int GetNumberOfSplits() const { return static_cast<int>(this->LastSplits.size()); }
+  double GetSplit(int i) const;
+  ///@}
+
+protected:
+  vtkCascadedShadowMapPass();
+  ~vtkCascadedShadowMapPass() override = default;
+
+  void ComputeLightViews(Internals& internals, int lightIndex) override;
+
+  int NumberOfCascades = 4;
+  double SplitLambda = 0.75;
+  std::vector<double> SplitDistances;
+  double MaximumShadowDistance = 0.0;
+  double FadeFraction = 0.1;
+  double BlendFraction = 0.1;
+  int FitMode = STABLE;
+  int CascadeWarp = NO_WARP;
+  int Selection = BY_DEPTH;
+  std::vector<double> LastSplits;
+  bool SplitProblemReported = false;
+
+private:
+  vtkCascadedShadowMapPass(const vtkCascadedShadowMapPass&) = delete;
+  void operator=(const vtkCascadedShadowMapPass&) = delete;
+};
+
+#endif

@@ -1,0 +1,237 @@
+// vtkCascadedShadowMapPass on the standard test scene seen along the ground:
+// floating cubes whose shadows land at chosen view depths probe the first and
+// last cascade, a blend band and the maximum shadow distance; a pole behind the
+// camera must shadow into the first cascade; bad input clamps with warnings.
+#include "ShadowTestUtilities.h"
+#include "vtkCascadedShadowMapPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkImageData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+using namespace shadowtest;
+
+namespace
+{
+const glm::dvec3 Eye(0.0, -9.5, 1.2);
+const glm::dvec3 Target(0.0, 0.0, 0.8);
+const glm::dvec3 Sun = glm::normalize(glm::dvec3(1.0, 0.15, -0.8));
+
+void LookAlongTheGround(TestScene& scene)
+{
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetPosition(Eye.x, Eye.y, Eye.z);
+  camera->SetFocalPoint(Target.x, Target.y, Target.z);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetClippingRange(0.1, 40.0);
+}
+
+// The ground point at view depth `depth` on the line x = `x`.
+glm::dvec3 GroundAtDepth(double depth, double x)
+{
+  const glm::dvec3 v = glm::normalize(Target - Eye);
+  const double y = (depth - (x - Eye.x) * v.x + Eye.z * v.z) / v.y + Eye.y;
+  return { x, y, 0.0 };
+}
+
+void AddBox(TestScene& scene, const glm::dvec3& center, const glm::dvec3& size)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(center.x, center.y, center.z);
+  cube->SetXLength(size.x);
+  cube->SetYLength(size.y);
+  cube->SetZLength(size.z);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.5, 0.8, 0.5);
+  scene.Renderer->AddActor(actor);
+}
+
+// A box floating 1 above the ground whose centre's shadow falls on `ground`,
+// long along the view so that its shadow stays several pixels tall far away.
+void AddFloatingCubeShadowingAt(TestScene& scene, const glm::dvec3& ground)
+{
+  AddBox(scene, ground - Sun * (1.0 / -Sun.z), { 0.6, 2.5, 0.6 });
+}
+
+// Explicit splits 6, 11, 15.5; shadows end at 18.5 (fading from 16.65).
+const double ProbeDepths[] = { 5.0, 10.75, 14.0, 16.0, 19.0 };
+constexpr double ProbeX = -1.0;
+
+vtkSmartPointer<vtkCascadedShadowMapPass> MakeProbedPass()
+{
+  auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
+  pass->AddSplitDistance(6.0);
+  pass->AddSplitDistance(11.0);
+  pass->AddSplitDistance(15.5);
+  pass->SetMaximumShadowDistance(18.5);
+  pass->SetResolution(512);
+  return pass;
+}
+
+void BuildProbedScene(TestScene& scene)
+{
+  LookAlongTheGround(scene);
+  scene.SetSun(Sun);
+  for (double depth : ProbeDepths)
+  {
+    AddFloatingCubeShadowingAt(scene, GroundAtDepth(depth, ProbeX));
+  }
+}
+
+double DepthOf(const glm::dvec3& p)
+{
+  return glm::dot(p - Eye, glm::normalize(Target - Eye));
+}
+} // namespace
+
+TEST(ShadowCascades, ProbesInEveryCascadeTheBlendBandAndPastTheMaximumDistance)
+{
+  for (int fit : { vtkCascadedShadowMapPass::STABLE, vtkCascadedShadowMapPass::TIGHT })
+  {
+    TestScene scene;
+    BuildProbedScene(scene);
+    auto pass = MakeProbedPass();
+    pass->SetFitMode(fit);
+    scene.Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    const std::string name = fit == vtkCascadedShadowMapPass::STABLE ? "CascadesStable" : "CascadesTight";
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+    ASSERT_EQ(pass->GetNumberOfSplits(), 5);
+    EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4);
+    EXPECT_DOUBLE_EQ(pass->GetSplit(1), 6.0);
+    EXPECT_DOUBLE_EQ(pass->GetSplit(4), 18.5);
+    // First cascade, blend band of the second, third, last, past the maximum distance.
+    EXPECT_LT(DepthOf(GroundAtDepth(ProbeDepths[0], ProbeX)), pass->GetSplit(1));
+    EXPECT_GT(ProbeDepths[1], 11.0 - 0.1 * (11.0 - 6.0));
+    EXPECT_GT(ProbeDepths[3], pass->GetSplit(3));
+    for (int i = 0; i < 4; ++i)
+    {
+      const glm::dvec3 probe = GroundAtDepth(ProbeDepths[i], ProbeX);
+      ASSERT_GE(ColorAt(scene.Renderer, image, probe).r, 0) << "probe " << i << " off the image";
+      EXPECT_LT(LuminanceAt(scene.Renderer, image, probe), ShadowedBelow) << name << " probe " << i;
+    }
+    // Past the maximum shadow distance shadows are gone.
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundAtDepth(ProbeDepths[4], ProbeX)), LitAbove) << name;
+    // Lit ground beside the shadows, near and far.
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundAtDepth(5.0, 0.8)), LitAbove) << name;
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundAtDepth(14.0, -3.5)), LitAbove) << name;
+    const std::string difference = CompareWithBaseline(image, name);
+    EXPECT_TRUE(difference.empty()) << difference;
+  }
+}
+
+TEST(ShadowCascades, PartitionViewShowsTheCascades)
+{
+  TestScene scene;
+  BuildProbedScene(scene);
+  auto pass = MakeProbedPass();
+  pass->SetAnalysisView(vtkAbstractShadowMapPass::PARTITION);
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  // Palette: cascade 0 red, 1 green, 2 blue, 3 yellow (see vtkShadowPartitionColor).
+  const glm::ivec3 first = ColorAt(scene.Renderer, image, GroundAtDepth(4.5, 0.8));
+  const glm::ivec3 third = ColorAt(scene.Renderer, image, GroundAtDepth(13.0, -3.5));
+  EXPECT_GT(first.r, 2 * first.g);
+  EXPECT_GT(first.r, 2 * first.b);
+  EXPECT_GT(third.b, 2 * third.r);
+  EXPECT_GT(third.b, third.g);
+}
+
+TEST(ShadowCascades, CasterBehindTheCameraShadowsTheFirstCascade)
+{
+  TestScene scene;
+  LookAlongTheGround(scene);
+  const glm::dvec3 sunBehind = glm::normalize(glm::dvec3(0.25, 1.0, -0.9));
+  scene.SetSun(sunBehind);
+  // A pole 8 high behind the camera, outside every sub-frustum.
+  const glm::dvec3 foot(-2.0, -12.0, 0.0);
+  AddBox(scene, foot + glm::dvec3(0.0, 0.0, 4.0), { 0.4, 0.4, 8.0 });
+  auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
+  pass->SetResolution(512);
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  // The shadow of the pole's point 7 up.
+  const glm::dvec3 shadow = foot + glm::dvec3(sunBehind.x, sunBehind.y, 0.0) * (7.0 / -sunBehind.z);
+  ASSERT_GE(ColorAt(scene.Renderer, image, shadow).r, 0);
+  EXPECT_LT(DepthOf(shadow), pass->GetSplit(1)) << "the shadow is in the first cascade";
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow), ShadowedBelow);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, shadow + glm::dvec3(1.5, 0.0, 0.0)), LitAbove);
+}
+
+TEST(ShadowCascades, EachCascadeDrawsOnlyTheCastersItSees)
+{
+  TestScene scene;
+  BuildProbedScene(scene);
+  auto single = MakeProbedPass();
+  single->RemoveAllSplitDistances();
+  single->SetNumberOfCascades(1);
+  scene.Renderer->SetPass(single);
+  RenderAndCapture(scene.Window);
+  const int casters = single->GetNumberOfCasterDraws();
+  EXPECT_EQ(casters, 3 + 5) << "ground, sphere, box and five cubes";
+
+  auto four = MakeProbedPass();
+  scene.Renderer->SetPass(four);
+  RenderAndCapture(scene.Window);
+  EXPECT_GE(four->GetNumberOfCasterDraws(), casters);
+  EXPECT_LT(four->GetNumberOfCasterDraws(), 4 * casters);
+}
+
+TEST(ShadowCascades, BadInputClampsWithWarningsAndRenders)
+{
+  vtkNew<vtkCascadedShadowMapPass> pass;
+  {
+    ErrorCounter errors;
+    pass->SetNumberOfCascades(0);
+    EXPECT_EQ(pass->GetNumberOfCascades(), 1);
+    pass->SetNumberOfCascades(9);
+    EXPECT_EQ(pass->GetNumberOfCascades(), 8);
+    pass->SetSplitLambda(-0.5);
+    EXPECT_EQ(pass->GetSplitLambda(), 0.0);
+    pass->SetSplitLambda(1.5);
+    EXPECT_EQ(pass->GetSplitLambda(), 1.0);
+    pass->SetMaximumShadowDistance(-3.0);
+    EXPECT_EQ(pass->GetMaximumShadowDistance(), 0.0);
+    EXPECT_EQ(errors.Warnings(), 5) << errors.Text();
+  }
+  TestScene scene;
+  LookAlongTheGround(scene);
+  scene.SetSun(Sun);
+  scene.Renderer->SetPass(pass);
+  pass->SetNumberOfCascades(4);
+  for (double split : { 14.0, -2.0, 7.0, 7.0, 500.0 })
+  {
+    pass->AddSplitDistance(split);
+  }
+  {
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+    EXPECT_EQ(errors.Warnings(), 1) << errors.Text();
+    ASSERT_EQ(pass->GetNumberOfSplits(), 4) << "splits 7 and 14 kept";
+    EXPECT_EQ(pass->GetSplit(1), 7.0);
+    EXPECT_EQ(pass->GetSplit(2), 14.0);
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(Sun)), ShadowedBelow);
+  }
+  // A maximum distance before the nearest visible ground.
+  pass->RemoveAllSplitDistances();
+  pass->SetMaximumShadowDistance(0.5);
+  {
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+    EXPECT_EQ(errors.Warnings(), 1) << errors.Text();
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundAtDepth(8.0, -3.0)), LitAbove);
+  }
+}
