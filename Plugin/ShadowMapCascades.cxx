@@ -225,6 +225,18 @@ glm::dvec2 ProjectionDepthRange(const glm::dmat4& projection)
   return range;
 }
 
+glm::dvec2 TightDepthRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<Aabb>& props, double margin)
+{
+  const glm::dvec2 planes = ProjectionDepthRange(cameraProjection);
+  const glm::dvec2 visible = VisibleDepthRange(cameraView, cameraProjection, props);
+  if (!(visible.y > visible.x))
+  {
+    return planes;
+  }
+  return { std::max(planes.x, (1.0 - margin) * visible.x), std::min(planes.y, (1.0 + margin) * visible.y) };
+}
+
 glm::dmat4 SubFrustumProjection(
   const glm::dmat4& cameraProjection, double nearDistance, double farDistance)
 {

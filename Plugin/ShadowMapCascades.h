@@ -60,6 +60,13 @@ std::vector<double> SanitizeSplits(
 /// included, whose clip w row is (0, 0, c, d). {0, 0} if the planes are undefined.
 glm::dvec2 ProjectionDepthRange(const glm::dmat4& projection);
 
+/// The camera's depth range {near, far} tightened to the visible props: the
+/// projection's planes (ProjectionDepthRange) clamped to VisibleDepthRange widened
+/// by `margin` (a fraction) on both sides. The projection's planes when no prop is
+/// visible. May be empty (far <= near) for degenerate projections.
+glm::dvec2 TightDepthRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<Aabb>& props, double margin = 0.0);
+
 /// The same projection (perspective or parallel, possibly off-axis) with its near and
 /// far planes moved to the depths nearDistance and farDistance (positive along -z).
 /// Only the clip z row changes: x, y and w are those of cameraProjection, so the

@@ -20,12 +20,7 @@ constexpr double NoBlend = 1e38;
 glm::dvec2 VisibleRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const std::vector<shadowmaps::Aabb>& props)
 {
-  glm::dvec2 range = shadowmaps::ProjectionDepthRange(cameraProjection);
-  const glm::dvec2 visible = shadowmaps::VisibleDepthRange(cameraView, cameraProjection, props);
-  if (visible.y > visible.x)
-  {
-    range = { std::max(range.x, visible.x), std::min(range.y, visible.y) };
-  }
+  glm::dvec2 range = shadowmaps::TightDepthRange(cameraView, cameraProjection, props);
   if (!(range.y > range.x) || !std::isfinite(range.y - range.x))
   {
     range = { std::max(range.x, 0.0), std::max(range.x, 0.0) + 1.0 };

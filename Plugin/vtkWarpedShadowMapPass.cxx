@@ -38,16 +38,12 @@ double FocusBodyDepth(const glm::dmat4& cameraView, const glm::dmat4& cameraProj
 glm::dmat4 TightProjection(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const std::vector<shadowmaps::Aabb>& props)
 {
-  const glm::dvec2 planes = shadowmaps::ProjectionDepthRange(cameraProjection);
-  const glm::dvec2 visible = shadowmaps::VisibleDepthRange(cameraView, cameraProjection, props);
-  if (!(visible.y > visible.x) || !(planes.y > planes.x))
+  const glm::dvec2 range = shadowmaps::TightDepthRange(cameraView, cameraProjection, props, 0.01);
+  if (!(range.y > range.x) || range == shadowmaps::ProjectionDepthRange(cameraProjection))
   {
     return cameraProjection;
   }
-  const double nearPlane = std::max(planes.x, 0.99 * visible.x);
-  const double farPlane = std::min(planes.y, 1.01 * visible.y);
-  return farPlane > nearPlane ? shadowmaps::SubFrustumProjection(cameraProjection, nearPlane, farPlane)
-                              : cameraProjection;
+  return shadowmaps::SubFrustumProjection(cameraProjection, range.x, range.y);
 }
 } // namespace
 
