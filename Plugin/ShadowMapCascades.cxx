@@ -237,6 +237,23 @@ glm::dvec2 TightDepthRange(const glm::dmat4& cameraView, const glm::dmat4& camer
   return { std::max(planes.x, (1.0 - margin) * visible.x), std::min(planes.y, (1.0 + margin) * visible.y) };
 }
 
+glm::dvec2 QuantizedDepthRange(const glm::dvec2& range, int stepsPerOctave)
+{
+  if (stepsPerOctave < 1 || !(range.y > range.x) || !Finite(range.x) || !Finite(range.y) ||
+    !(range.y > 0.0))
+  {
+    return range;
+  }
+  const double steps = double(stepsPerOctave);
+  const auto level = [steps](double d) { return std::log2(d) * steps; };
+  const auto depth = [steps](double k) { return std::exp2(k / steps); };
+  // The small tolerance keeps a range that sits exactly on a level there.
+  const double nearLevel = std::floor(level(range.x) + 1e-9);
+  const double farLevel = std::ceil(level(range.y) - 1e-9);
+  const glm::dvec2 quantized(range.x > 0.0 ? depth(nearLevel) : range.x, depth(farLevel));
+  return Finite(quantized.x) && Finite(quantized.y) && quantized.y > quantized.x ? quantized : range;
+}
+
 glm::dmat4 SubFrustumProjection(
   const glm::dmat4& cameraProjection, double nearDistance, double farDistance)
 {

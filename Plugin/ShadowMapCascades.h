@@ -67,6 +67,14 @@ glm::dvec2 ProjectionDepthRange(const glm::dmat4& projection);
 glm::dvec2 TightDepthRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const std::vector<Aabb>& props, double margin = 0.0);
 
+/// A depth range widened to the nearest levels of the geometric grid
+/// 2^(k / stepsPerOctave): near rounded down, far rounded up. Stable cascades split
+/// this range instead of the visible one, so that the splits (and with them each
+/// cascade's sphere and texel size) stay put while the camera moves, and change
+/// only when the visible range crosses a level. Ranges with near <= 0 keep their
+/// near; invalid ranges and stepsPerOctave < 1 are returned unchanged.
+glm::dvec2 QuantizedDepthRange(const glm::dvec2& range, int stepsPerOctave);
+
 /// The same projection (perspective or parallel, possibly off-axis) with its near and
 /// far planes moved to the depths nearDistance and farDistance (positive along -z).
 /// Only the clip z row changes: x, y and w are those of cameraProjection, so the

@@ -752,7 +752,7 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
     r.Attenuations.push_back(light.Attenuation);
     r.CascadeLights.push_back(static_cast<float>(light.Fade.x));
     r.CascadeLights.push_back(static_cast<float>(light.Fade.y));
-    r.CascadeLights.push_back(light.SelectCascadeByCoverage ? 1.0f : 0.0f);
+    r.CascadeLights.push_back(static_cast<float>(light.CoverageBlendFraction));
   }
   r.ViewToWorld = glm::mat4(viewToWorld);
 }

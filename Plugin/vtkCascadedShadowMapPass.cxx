@@ -15,12 +15,24 @@ namespace
 constexpr int MaximumCascades = 8;
 constexpr double NoBlend = 1e38;
 
+// Stable cascades round the visible depth range out to levels 2^(1/4) apart.
+constexpr int StableRangeStepsPerOctave = 4;
+
 // The camera's depth range that cascades split: the near and far planes
-// tightened to the visible props.
-glm::dvec2 VisibleRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
-  const std::vector<shadowmaps::Aabb>& props)
+// tightened to the visible props; for stable cascades widened to the nearest
+// levels of a fixed grid (still inside the planes), so that the splits do not
+// follow every small change of the visible depth.
+glm::dvec2 SplitRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<shadowmaps::Aabb>& props, bool stable)
 {
   glm::dvec2 range = shadowmaps::TightDepthRange(cameraView, cameraProjection, props);
+  if (stable)
+  {
+    const glm::dvec2 planes = shadowmaps::ProjectionDepthRange(cameraProjection);
+    const glm::dvec2 quantized = shadowmaps::QuantizedDepthRange(range, StableRangeStepsPerOctave);
+    range = { std::max(quantized.x, std::min(planes.x, range.x)),
+      std::min(quantized.y, std::max(planes.y, range.y)) };
+  }
   if (!(range.y > range.x) || !std::isfinite(range.y - range.x))
   {
     range = { std::max(range.x, 0.0), std::max(range.x, 0.0) + 1.0 };
@@ -117,7 +129,8 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
     this->FitLightViewsUniform(in, lightIndex);
     return;
   }
-  glm::dvec2 range = VisibleRange(in.CameraView, in.CameraProjection, in.PropBounds);
+  glm::dvec2 range =
+    SplitRange(in.CameraView, in.CameraProjection, in.PropBounds, this->FitMode == STABLE);
   std::string problem;
   bool fade = false;
   if (this->MaximumShadowDistance > 0.0)
@@ -197,7 +210,7 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
       splits[c], splits[c + 1], this->BlendFraction > 0.0 && c + 1 < cascades ? blendStart : NoBlend);
   }
   light.Cascaded = true;
-  light.SelectCascadeByCoverage = this->Selection == BY_COVERAGE;
+  light.CoverageBlendFraction = this->Selection == BY_COVERAGE ? this->BlendFraction : -1.0;
   light.Fade = fade ? glm::dvec2(range.y * (1.0 - this->FadeFraction), range.y) : glm::dvec2(0.0);
 }
 

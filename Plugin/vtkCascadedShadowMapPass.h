@@ -88,7 +88,11 @@ public:
   ///@}
 
   ///@{
-  /** Share of each cascade's depth range blended into the next, [0, 1], default 0.1. */
+  /**
+   * Share of each cascade blended into the next, [0, 1], default 0.1: of its
+   * depth range when cascades are selected BY_DEPTH, of its map's half-width
+   * (along the border) BY_COVERAGE.
+   */
   vtkSetClampMacro(BlendFraction, double, 0.0, 1.0);
   vtkGetMacro(BlendFraction, double);
   ///@}
@@ -100,7 +104,11 @@ public:
   };
 
   ///@{
-  /** STABLE (default) or TIGHT cascade fitting. */
+  /**
+   * STABLE (default) or TIGHT cascade fitting. Stable cascades also split a
+   * depth range rounded out to levels 2^(1/4) apart (inside the camera's
+   * planes), so that small camera moves do not move the splits.
+   */
   vtkSetClampMacro(FitMode, int, STABLE, TIGHT);
   vtkGetMacro(FitMode, int);
   ///@}

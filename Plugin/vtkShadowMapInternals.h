@@ -46,7 +46,10 @@ struct ShadowLight
   std::vector<glm::dvec3> CascadeDepths;
   /// View depths over which the shadows fade out; no fade unless y > x.
   glm::dvec2 Fade{ 0.0, 0.0 };
-  bool SelectCascadeByCoverage = false;
+  /// Cascades picked by map coverage instead of view depth: the finest map that
+  /// holds the receiver, blended into the next over this outer fraction of the
+  /// map's half-width. Negative: picked by depth.
+  double CoverageBlendFraction = -1.0;
 
   /// Shader code of how the views cover receivers (vtkShadowMapsReceiverFS).
   int ViewKind() const { return this->Cascaded ? 2 : this->Cube ? 1 : 0; }

@@ -25,7 +25,8 @@ uniform float vtkShadowDepthLinear[VTK_SHADOW_MAX_VIEWS];
 // its inverse so the kernel keeps its world size). Other views: (0, 1e38, 1e38, 1).
 uniform vec4 vtkShadowCascade[VTK_SHADOW_MAX_VIEWS];
 // Per light: x, y = view depths over which shadows fade out (x >= y: no fade);
-// z = 1 to select cascades by map coverage instead of depth.
+// z >= 0: cascades selected by map coverage instead of depth, and blended into
+// the next over this outer fraction of the map's half-width; z < 0: by depth.
 uniform vec3 vtkShadowCascadeLight[VTK_SHADOW_MAX_LIGHTS];
 uniform vec3 vtkShadowLightPositionVC[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_MAX_LIGHTS];
@@ -64,7 +65,7 @@ bool vtkShadowInsideMap(vec4 clip, int view);
 // whose map contains it.
 int vtkShadowSelectCascade(vec3 positionVC, vec3 normalVC, int light, int firstView, int count)
 {
-  if (vtkShadowCascadeLight[light].z > 0.5)
+  if (vtkShadowCascadeLight[light].z >= 0.0)
   {
     for (int i = 0; i < count - 1; ++i)
     {
@@ -157,6 +158,27 @@ float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int vie
   return vtkShadowLookup(vtkShadowMapCoord(clip, view), view);
 }
 
+// Weight of the next cascade in the blend band of cascade `view`: by depth over
+// the band before its split; by coverage over the band along its map's border
+// (a receiver the depth rule would give to a farther cascade is not blended:
+// its own map is the finest that holds it).
+float vtkShadowBlendIntoNext(vec3 positionVC, vec3 normalVC, int light, int view, float depth)
+{
+  float band = vtkShadowCascadeLight[light].z;
+  if (band < 0.0)
+  {
+    vec4 cascade = vtkShadowCascade[view];
+    return clamp((depth - cascade.z) / max(cascade.y - cascade.z, 1e-30), 0.0, 1.0);
+  }
+  if (band <= 0.0)
+  {
+    return 0.0;
+  }
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
+  vec2 ndc = abs(clip.xy / clip.w);
+  return clamp((max(ndc.x, ndc.y) - (1.0 - band)) / band, 0.0, 1.0);
+}
+
 // Fraction of light `light` reaching the receiver, in [0, 1]; 1 outside the maps.
 // Cascades blend into the next one over the band before their split, and fade
 // out toward the light's maximum shadow distance.
@@ -167,11 +189,11 @@ float vtkShadowVisibility(vec3 positionVC, vec3 normalVC, int light, int firstVi
   if (kind == vtkShadowCascadeViews)
   {
     float depth = -positionVC.z;
-    vec4 cascade = vtkShadowCascade[view];
-    if (view < firstView + count - 1 && depth > cascade.z)
+    float weight = vtkShadowBlendIntoNext(positionVC, normalVC, light, view, depth);
+    if (view < firstView + count - 1 && weight > 0.0)
     {
       float next = vtkShadowViewVisibility(positionVC, normalVC, light, view + 1);
-      visibility = mix(visibility, next, clamp((depth - cascade.z) / max(cascade.y - cascade.z, 1e-30), 0.0, 1.0));
+      visibility = mix(visibility, next, weight);
     }
     vec3 fade = vtkShadowCascadeLight[light];
     if (fade.y > fade.x)

@@ -330,6 +330,7 @@ struct Row
   shadowmetrics::Classification Errors;
   double Undersampled = NotMeasured;
   double Flicker = NotMeasured;
+  double Changes = NotMeasured;
   double TruthChanges = NotMeasured;
   Timing Time;
 };
@@ -405,6 +406,7 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
   std::vector<std::vector<float>> previousFactor(techniques.size());
   std::vector<Truth> previousTruth;
   std::vector<double> flicker(techniques.size(), 0.0);
+  std::vector<double> changes(techniques.size(), 0.0);
   double truthChanges = 0.0;
   for (int frame = 0; frame < frames; ++frame)
   {
@@ -422,6 +424,7 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
       if (frame > 0)
       {
         flicker[t] += shadowmetrics::Flicker(previousTruth, previousFactor[t], truth, factor);
+        changes[t] += shadowmetrics::StateChanges(previousTruth, previousFactor[t], truth, factor);
       }
       previousFactor[t] = std::move(factor);
     }
@@ -434,6 +437,7 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
   for (size_t t = 0; t < techniques.size(); ++t)
   {
     rows[rows.size() - techniques.size() + t].Flicker = flicker[t] / (frames - 1);
+    rows[rows.size() - techniques.size() + t].Changes = changes[t] / (frames - 1);
     rows[rows.size() - techniques.size() + t].TruthChanges = truthChanges / (frames - 1);
   }
   view.Renderer->SetPass(nullptr);
@@ -571,9 +575,10 @@ double Ratio(const std::vector<Row>& rows, const Row& row, const std::string& re
 void PrintTable(const std::vector<Row>& rows, std::ostream& out)
 {
   out << "| scene | light | technique | map | MiB | misclassified % | false shadow % | leak % | "
-         "inner % | mean abs. diff. | undersampled % | flicker % (truth %) | first frame / none | "
+         "inner % | mean abs. diff. | undersampled % | flicker % | changes % (truth %) | "
+         "first frame / none | "
          "steady / none | steady / vtk | moving / none | moving / vtk |\n"
-      << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Row& row : rows)
   {
     out << "| " << row.Scene << " | " << row.Setup << " | " << row.Technique << " | "
@@ -583,9 +588,10 @@ void PrintTable(const std::vector<Row>& rows, std::ostream& out)
         << Number(row.Errors.InnerMisclassified) << " | "
         << Number(row.Errors.MeanAbsoluteDifference, 3) << " | " << Number(row.Undersampled)
         << " | "
-        << (std::isnan(row.Flicker)
+        << (std::isnan(row.Flicker) ? std::string("-") : Number(row.Flicker, 3)) << " | "
+        << (std::isnan(row.Changes)
                ? std::string("-")
-               : Number(row.Flicker, 3) + " (" + Number(row.TruthChanges, 3) + ")")
+               : Number(row.Changes, 3) + " (" + Number(row.TruthChanges, 3) + ")")
         << " | " << Number(Ratio(rows, row, "none", &Timing::First)) << " | "
         << Number(Ratio(rows, row, "none", &Timing::Steady)) << " | "
         << Number(Ratio(rows, row, "vtk", &Timing::Steady)) << " | "
@@ -598,14 +604,14 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
 {
   std::ofstream csv(path);
   csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,inner,"
-         "mean_abs_diff,undersampled,flicker,truth_changes,first_s,steady_s,moving_s,counted_pixels\n";
+         "mean_abs_diff,undersampled,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels\n";
   for (const Row& row : rows)
   {
     csv << row.Scene << ',' << row.Setup << ',' << row.Technique << ',' << row.Resolution << ','
         << row.MemoryMiB << ',' << row.Errors.Misclassified << ',' << row.Errors.FalseShadow << ','
         << row.Errors.LightLeak << ',' << row.Errors.InnerMisclassified << ','
         << row.Errors.MeanAbsoluteDifference << ',' << row.Undersampled << ',' << row.Flicker << ','
-        << row.TruthChanges << ',' << row.Time.First << ',' << row.Time.Steady << ','
+        << row.Changes << ',' << row.TruthChanges << ',' << row.Time.First << ',' << row.Time.Steady << ','
         << row.Time.Moving << ',' << row.Errors.Counted << '\n';
   }
 }

@@ -201,6 +201,23 @@ double Flicker(const std::vector<Truth>& truthBefore, const std::vector<float>& 
 }
 
 //------------------------------------------------------------------------------
+double StateChanges(const std::vector<Truth>& truthBefore, const std::vector<float>& factorBefore,
+  const std::vector<Truth>& truthAfter, const std::vector<float>& factorAfter)
+{
+  std::int64_t counted = 0;
+  std::int64_t changed = 0;
+  for (size_t i = 0; i < truthBefore.size(); ++i)
+  {
+    if (Counted(truthBefore[i]) && Counted(truthAfter[i]))
+    {
+      ++counted;
+      changed += IsShadowed(factorBefore[i]) != IsShadowed(factorAfter[i]);
+    }
+  }
+  return Percent(changed, counted);
+}
+
+//------------------------------------------------------------------------------
 double TruthChanges(const std::vector<Truth>& truthBefore, const std::vector<Truth>& truthAfter)
 {
   std::int64_t counted = 0;

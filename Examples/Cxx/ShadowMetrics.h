@@ -77,6 +77,13 @@ std::vector<double> TexelFootprints(const std::vector<glm::dvec2>& texel,
 double Flicker(const std::vector<Truth>& truthBefore, const std::vector<float>& factorBefore,
   const std::vector<Truth>& truthAfter, const std::vector<float>& factorAfter);
 
+/// Percentage of the pixels counted in both frames whose technique state changed,
+/// whether or not the truth did. Set beside TruthChanges it shows whether a
+/// technique's shadows change more than the scene's (swimming edges add changes;
+/// an edge that is only offset or blurred moves over as many pixels as the truth's).
+double StateChanges(const std::vector<Truth>& truthBefore, const std::vector<float>& factorBefore,
+  const std::vector<Truth>& truthAfter, const std::vector<float>& factorAfter);
+
 /// Percentage of the pixels counted in both frames whose truth changed.
 double TruthChanges(const std::vector<Truth>& truthBefore, const std::vector<Truth>& truthAfter);
 

@@ -11,9 +11,12 @@
 #include "vtkImageData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 using namespace shadowtest;
@@ -91,6 +94,38 @@ void BuildProbedScene(TestScene& scene)
 double DepthOf(const glm::dvec3& p)
 {
   return glm::dot(p - Eye, glm::normalize(Target - Eye));
+}
+
+// View depth of every pixel from the depth buffer (the background gets +inf).
+std::vector<double> PixelDepths(TestScene& scene)
+{
+  int* size = scene.Window->GetSize();
+  std::vector<float> z(static_cast<size_t>(size[0]) * size[1]);
+  scene.Window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, z.data());
+  double range[2];
+  scene.Renderer->GetActiveCamera()->GetClippingRange(range);
+  std::vector<double> depth(z.size());
+  for (size_t i = 0; i < z.size(); ++i)
+  {
+    const double ndc = 2.0 * z[i] - 1.0;
+    depth[i] = z[i] >= 1.0f ? INFINITY
+                            : 2.0 * range[0] * range[1] / (range[1] + range[0] - ndc * (range[1] - range[0]));
+  }
+  return depth;
+}
+
+// Renders the probed scene with `pass` and checks what every probe must show.
+void ExpectProbesShadowedAndGroundLit(TestScene& scene, vtkImageData* image, const std::string& name)
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    const glm::dvec3 probe = GroundAtDepth(ProbeDepths[i], ProbeX);
+    ASSERT_GE(ColorAt(scene.Renderer, image, probe).r, 0) << "probe " << i << " off the image";
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, probe), ShadowedBelow) << name << " probe " << i;
+  }
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundAtDepth(ProbeDepths[4], ProbeX)), LitAbove) << name;
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundAtDepth(5.0, 0.8)), LitAbove) << name;
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundAtDepth(14.0, -3.5)), LitAbove) << name;
 }
 } // namespace
 
@@ -233,5 +268,137 @@ TEST(ShadowCascades, BadInputClampsWithWarningsAndRenders)
     EXPECT_EQ(errors.Errors(), 0) << errors.Text();
     EXPECT_EQ(errors.Warnings(), 1) << errors.Text();
     EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundAtDepth(8.0, -3.0)), LitAbove);
+  }
+}
+
+TEST(ShadowCascades, SelectionByCoverageShadowsEveryProbe)
+{
+  TestScene scene;
+  BuildProbedScene(scene);
+  auto pass = MakeProbedPass();
+  pass->SetSelection(vtkCascadedShadowMapPass::BY_COVERAGE);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  ExpectProbesShadowedAndGroundLit(scene, image, "coverage");
+  const std::string difference = CompareWithBaseline(image, "CascadesCoverage");
+  EXPECT_TRUE(difference.empty()) << difference;
+
+  // A stable cascade's sphere reaches beyond its split, so coverage gives some
+  // of the ground past a split to the finer cascade before it: the third
+  // cascade's ground (blue by depth) is shaded from the second (green).
+  pass->SetAnalysisView(vtkAbstractShadowMapPass::PARTITION);
+  image = RenderAndCapture(scene.Window);
+  const glm::ivec3 past = ColorAt(scene.Renderer, image, GroundAtDepth(11.5, -3.5));
+  EXPECT_GT(past.g, 2 * past.r) << "coverage keeps depth 11.5 in cascade 1";
+  EXPECT_GT(past.g, past.b);
+}
+
+TEST(ShadowCascades, WarpedCascadesShadowEveryProbe)
+{
+  for (int warp : { vtkCascadedShadowMapPass::LISPSM_WARP, vtkCascadedShadowMapPass::GMNPR_WARP })
+  {
+    TestScene scene;
+    BuildProbedScene(scene);
+    auto pass = MakeProbedPass();
+    pass->SetFitMode(vtkCascadedShadowMapPass::TIGHT);
+    pass->SetCascadeWarp(warp);
+    scene.Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    const std::string name =
+      warp == vtkCascadedShadowMapPass::LISPSM_WARP ? "CascadesLiSPSM" : "CascadesGMNPR";
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+    ExpectProbesShadowedAndGroundLit(scene, image, name);
+    const std::string difference = CompareWithBaseline(image, name);
+    EXPECT_TRUE(difference.empty()) << difference;
+  }
+}
+
+// The blend band changes the shadow factor only where it is: over the last
+// BlendFraction of each cascade before its split. Seen in the factor view so
+// that every receiver's visibility is compared.
+TEST(ShadowCascades, BlendingChangesOnlyTheBands)
+{
+  constexpr double Fraction = 0.2;
+  TestScene scene;
+  BuildProbedScene(scene);
+  auto blended = MakeProbedPass();
+  blended->SetBlendFraction(Fraction);
+  blended->SetAnalysisView(vtkAbstractShadowMapPass::SHADOW_FACTOR);
+  auto sharp = MakeProbedPass();
+  sharp->SetBlendFraction(0.0);
+  sharp->SetAnalysisView(vtkAbstractShadowMapPass::SHADOW_FACTOR);
+  scene.Renderer->SetPass(blended);
+  auto withBands = RenderAndCapture(scene.Window);
+  const std::vector<double> depth = PixelDepths(scene);
+  scene.Renderer->SetPass(sharp);
+  auto withoutBands = RenderAndCapture(scene.Window);
+
+  const auto* a = static_cast<const unsigned char*>(withBands->GetScalarPointer());
+  const auto* b = static_cast<const unsigned char*>(withoutBands->GetScalarPointer());
+  const double margin = 0.02; // depth-buffer and rasterisation slack
+  int changed = 0;
+  int outside = 0;
+  for (size_t i = 0; i < depth.size(); ++i)
+  {
+    if (std::abs(int(a[3 * i]) - int(b[3 * i])) <= 2)
+    {
+      continue;
+    }
+    ++changed;
+    bool inBand = false;
+    for (int c = 1; c <= 3; ++c)
+    {
+      const double split = blended->GetSplit(c);
+      const double start = split - Fraction * (split - blended->GetSplit(c - 1));
+      inBand = inBand || (depth[i] > start - margin && depth[i] < split + margin);
+    }
+    outside += !inBand;
+  }
+  EXPECT_GT(changed, 20) << "the band at the probe at depth 10.75 blends two maps";
+  EXPECT_EQ(outside, 0) << "of " << changed << " changed pixels";
+}
+
+// Stable cascades split a quantized depth range: moving the camera a little
+// changes the visible depth (tight splits follow it) but not the stable splits.
+TEST(ShadowCascades, StableSplitsStayWhenTheCameraMovesALittle)
+{
+  for (int fit : { vtkCascadedShadowMapPass::STABLE, vtkCascadedShadowMapPass::TIGHT })
+  {
+    TestScene scene;
+    BuildProbedScene(scene);
+    vtkCamera* camera = scene.Renderer->GetActiveCamera();
+    camera->SetClippingRange(0.1, 200.0); // the ground ends well before the far plane
+    auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
+    pass->SetResolution(256);
+    pass->SetFitMode(fit);
+    scene.Renderer->SetPass(pass);
+    RenderAndCapture(scene.Window);
+    std::vector<double> before;
+    for (int i = 0; i < pass->GetNumberOfSplits(); ++i)
+    {
+      before.push_back(pass->GetSplit(i));
+    }
+    ASSERT_EQ(before.size(), 5u);
+    EXPECT_LT(before.back(), 100.0) << "split range tightened to the ground";
+    camera->Dolly(1.01);
+    RenderAndCapture(scene.Window);
+    bool same = true;
+    for (int i = 0; i < 5; ++i)
+    {
+      same = same && pass->GetSplit(i) == before[i];
+    }
+    if (fit == vtkCascadedShadowMapPass::STABLE)
+    {
+      EXPECT_TRUE(same) << "stable splits moved: far " << before.back() << " -> " << pass->GetSplit(4);
+      const double level = 4.0 * std::log2(before.back());
+      EXPECT_NEAR(level, std::round(level), 1e-9) << "the far split is a level of the grid";
+    }
+    else
+    {
+      EXPECT_FALSE(same) << "tight splits follow the visible depth";
+    }
   }
 }

@@ -496,3 +496,29 @@ TEST(ShadowMapCascades, SelectionAndBlendingFollowTheSplits)
 }
 
 } // namespace
+
+TEST(ShadowMapCascades, QuantizedDepthRangeRoundsOutToTheGrid)
+{
+  const double step = std::exp2(0.25);
+  const glm::dvec2 range(3.0, 37.0);
+  const glm::dvec2 q = shadowmaps::QuantizedDepthRange(range, 4);
+  EXPECT_LE(q.x, range.x);
+  EXPECT_GT(q.x * step, range.x);
+  EXPECT_GE(q.y, range.y);
+  EXPECT_LT(q.y, range.y * step);
+  for (double level : { q.x, q.y })
+  {
+    const double k = 4.0 * std::log2(level);
+    EXPECT_NEAR(k, std::round(k), 1e-9) << level << " is on the grid";
+  }
+  // Every range inside one cell gives the same result: small moves change nothing.
+  EXPECT_EQ(shadowmaps::QuantizedDepthRange({ 3.05, 36.2 }, 4), q);
+  // Ranges already on levels stay.
+  EXPECT_EQ(shadowmaps::QuantizedDepthRange({ 4.0, 32.0 }, 4), glm::dvec2(4.0, 32.0));
+  // Near <= 0 (parallel cameras) keeps its near; bad input comes back unchanged.
+  EXPECT_EQ(shadowmaps::QuantizedDepthRange({ -2.0, 5.0 }, 4).x, -2.0);
+  EXPECT_EQ(shadowmaps::QuantizedDepthRange({ 5.0, 2.0 }, 4), glm::dvec2(5.0, 2.0));
+  EXPECT_EQ(shadowmaps::QuantizedDepthRange({ 1.0, 2.0 }, 0), glm::dvec2(1.0, 2.0));
+  const double nan = std::nan("");
+  EXPECT_TRUE(std::isnan(shadowmaps::QuantizedDepthRange({ nan, 2.0 }, 4).x));
+}

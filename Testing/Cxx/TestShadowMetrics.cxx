@@ -90,6 +90,8 @@ TEST(ShadowMetrics, FlickerCountsChangesTheTruthDoesNotHave)
   // Pixel 0 and 3 flicker; pixel 1 follows the truth; pixel 4 is not counted.
   EXPECT_NEAR(shadowmetrics::Flicker(before, factorBefore, after, factorAfter), 50.0, 1e-9);
   EXPECT_NEAR(shadowmetrics::TruthChanges(before, after), 25.0, 1e-9);
+  // Pixels 0, 1 and 3 change, whatever the truth did.
+  EXPECT_NEAR(shadowmetrics::StateChanges(before, factorBefore, after, factorAfter), 75.0, 1e-9);
 }
 
 TEST(ShadowMetrics, ErrorMapColours)

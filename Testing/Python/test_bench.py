@@ -58,6 +58,9 @@ def test_bench(program, output):
     check(float(rows[("model", "perpendicular", "uniform")]["misclassified"])
           < float(sun_vtk["misclassified"]), "the focused map beats VTK's pass")
     check(rows[("model", "perpendicular", "uniform")]["flicker"] != "nan", "flicker measured")
+    check(float(rows[("model", "perpendicular", "uniform")]["changes"])
+          >= float(rows[("model", "perpendicular", "uniform")]["flicker"]),
+          "a technique changes at least where it flickers")
     check(rows[("model", "point", "uniform")]["flicker"] == "nan", "flicker only where asked")
     check(float(rows[("model", "perpendicular", "uniform")]["memory_mib"]) == 16.0,
           "one 2048^2 32-bit map is 16 MiB")
