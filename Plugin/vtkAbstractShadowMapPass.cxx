@@ -732,10 +732,14 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
       }
       r.DepthLinear.push_back(view.LinearDepth ? 1.0f : 0.0f);
       const size_t cascade = static_cast<size_t>(&view - light.Views.data());
-      const double firstTexel = light.Views.front().TexelConstant;
+      // Cascades of one light share their texel formula's kind (constant for
+      // directional, per unit distance for spot), so the sum compares them.
+      const double firstTexel =
+        light.Views.front().TexelConstant + light.Views.front().TexelPerUnitDistance;
+      const double texel = view.TexelConstant + view.TexelPerUnitDistance;
       const glm::vec4 depths = light.Cascaded && cascade < light.CascadeDepths.size()
         ? glm::vec4(glm::vec3(light.CascadeDepths[cascade]),
-            firstTexel > 0.0 && view.TexelConstant > 0.0 ? firstTexel / view.TexelConstant : 1.0)
+            firstTexel > 0.0 && texel > 0.0 ? firstTexel / texel : 1.0)
         : glm::vec4(0.0f, 1e38f, 1e38f, 1.0f);
       r.Cascades.insert(r.Cascades.end(), glm::value_ptr(depths), glm::value_ptr(depths) + 4);
       const glm::mat4 viewToMap(viewToMapD);

@@ -39,6 +39,28 @@ glm::dvec2 SplitRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProj
   }
   return range;
 }
+
+// One cascade's view of a directional light.
+shadowmaps::LightView FitCascade(const glm::dmat4& cameraView, const glm::dmat4& subProjection,
+  const shadowmaps::Aabb& scene, int resolution, const glm::dvec3& lightDirection, int fitMode,
+  int cascadeWarp)
+{
+  if (fitMode == vtkCascadedShadowMapPass::STABLE)
+  {
+    return shadowmaps::FitCascadeStable(cameraView, subProjection, scene, lightDirection, resolution);
+  }
+  if (cascadeWarp != vtkCascadedShadowMapPass::NO_WARP)
+  {
+    const auto warp = cascadeWarp == vtkCascadedShadowMapPass::GMNPR_WARP
+      ? shadowmaps::DirectionalWarp::GMNPR
+      : shadowmaps::DirectionalWarp::LiSPSM;
+    shadowmaps::LightView view = shadowmaps::FitDirectionalWarped(
+      cameraView, subProjection, scene, lightDirection, resolution, warp);
+    view.TexelSizeFromGradient = view.Perspective;
+    return view;
+  }
+  return shadowmaps::FitCascadeTight(cameraView, subProjection, scene, lightDirection, resolution);
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -121,18 +143,12 @@ void vtkCascadedShadowMapPass::SetMaximumShadowDistance(double distance)
 }
 
 //------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
+std::vector<double> vtkCascadedShadowMapPass::ComputeSplits(const Internals& in, double fade[2])
 {
-  shadowmaps::ShadowLight& light = in.Lights[lightIndex];
-  if (light.Kind != shadowmaps::LightKind::Directional)
-  {
-    this->FitLightViewsUniform(in, lightIndex);
-    return;
-  }
   glm::dvec2 range =
     SplitRange(in.CameraView, in.CameraProjection, in.PropBounds, this->FitMode == STABLE);
   std::string problem;
-  bool fade = false;
+  fade[0] = fade[1] = 0.0;
   if (this->MaximumShadowDistance > 0.0)
   {
     if (this->MaximumShadowDistance <= range.x)
@@ -143,7 +159,11 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
     else if (this->MaximumShadowDistance < range.y)
     {
       range.y = this->MaximumShadowDistance;
-      fade = this->FadeFraction > 0.0;
+      if (this->FadeFraction > 0.0)
+      {
+        fade[0] = range.y * (1.0 - this->FadeFraction);
+        fade[1] = range.y;
+      }
     }
   }
 
@@ -173,12 +193,21 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
     vtkWarningMacro(<< problem);
     this->SplitProblemReported = true;
   }
-  const auto firstDirectional = std::find_if(in.Lights.begin(), in.Lights.end(),
-    [](const shadowmaps::ShadowLight& l) { return l.Kind == shadowmaps::LightKind::Directional; });
-  if (firstDirectional - in.Lights.begin() == lightIndex)
+  return splits;
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
+{
+  shadowmaps::ShadowLight& light = in.Lights[lightIndex];
+  if (light.Kind != shadowmaps::LightKind::Directional)
   {
-    this->LastSplits = splits;
+    this->FitLightViewsUniform(in, lightIndex);
+    return;
   }
+  double fade[2];
+  const std::vector<double> splits = this->ComputeSplits(in, fade);
+  this->LastSplits = splits;
 
   light.Views.clear();
   light.CascadeDepths.clear();
@@ -187,31 +216,15 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
   {
     const glm::dvec2 depths = shadowmaps::CascadeDepthRange(splits, c, this->BlendFraction);
     const glm::dmat4 sub = shadowmaps::SubFrustumProjection(in.CameraProjection, depths.x, depths.y);
-    shadowmaps::LightView view;
-    if (this->FitMode == STABLE)
-    {
-      view = shadowmaps::FitCascadeStable(in.CameraView, sub, in.SceneBounds, light.Direction, in.Resolution);
-    }
-    else if (this->CascadeWarp != NO_WARP)
-    {
-      view = shadowmaps::FitDirectionalWarped(in.CameraView, sub, in.SceneBounds, light.Direction,
-        in.Resolution,
-        this->CascadeWarp == GMNPR_WARP ? shadowmaps::DirectionalWarp::GMNPR
-                                        : shadowmaps::DirectionalWarp::LiSPSM);
-      view.TexelSizeFromGradient = view.Perspective;
-    }
-    else
-    {
-      view = shadowmaps::FitCascadeTight(in.CameraView, sub, in.SceneBounds, light.Direction, in.Resolution);
-    }
-    light.Views.push_back(view);
+    light.Views.push_back(FitCascade(
+      in.CameraView, sub, in.SceneBounds, in.Resolution, light.Direction, this->FitMode, this->CascadeWarp));
     const double blendStart = splits[c + 1] - this->BlendFraction * (splits[c + 1] - splits[c]);
     light.CascadeDepths.emplace_back(
       splits[c], splits[c + 1], this->BlendFraction > 0.0 && c + 1 < cascades ? blendStart : NoBlend);
   }
   light.Cascaded = true;
   light.CoverageBlendFraction = this->Selection == BY_COVERAGE ? this->BlendFraction : -1.0;
-  light.Fade = fade ? glm::dvec2(range.y * (1.0 - this->FadeFraction), range.y) : glm::dvec2(0.0);
+  light.Fade = glm::dvec2(fade[0], fade[1]);
 }
 
 //------------------------------------------------------------------------------

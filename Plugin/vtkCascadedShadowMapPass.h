@@ -140,8 +140,8 @@ public:
 
   ///@{
   /**
-   * Split depths the last frame used for the first directional light: cascade i
-   * shades view depths from GetSplit(i) to GetSplit(i + 1).
+   * Split depths the last frame used (the same for every cascaded light):
+   * cascade i shades view depths from GetSplit(i) to GetSplit(i + 1).
    */
   int GetNumberOfSplits() const { return static_cast<int>(this->LastSplits.size()); }
   double GetSplit(int i) const;
@@ -152,6 +152,8 @@ protected:
   ~vtkCascadedShadowMapPass() override = default;
 
   void ComputeLightViews(Internals& internals, int lightIndex) override;
+  /** This frame's split depths; fade receives the depths shadows fade over ({0, 0}: none). */
+  std::vector<double> ComputeSplits(const Internals& internals, double fade[2]);
 
   int NumberOfCascades = 4;
   double SplitLambda = 0.75;
