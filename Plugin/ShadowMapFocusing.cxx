@@ -34,19 +34,6 @@ const std::array<std::array<int, 4>, 6>& CubeFaces()
   return faces;
 }
 
-std::array<Plane, 6> BoxPlanes(const Aabb& box)
-{
-  std::array<Plane, 6> planes;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    glm::dvec3 n(0.0);
-    n[axis] = 1.0;
-    planes[2 * axis] = { n, -box.Min[axis] };
-    planes[2 * axis + 1] = { -n, box.Max[axis] };
-  }
-  return planes;
-}
-
 bool InsideAll(const std::array<Plane, 6>& planes, const glm::dvec3& p, double tolerance)
 {
   return std::all_of(planes.begin(), planes.end(),
@@ -234,6 +221,63 @@ std::array<Plane, 6> FrustumPlanes(const glm::dmat4& viewProjection)
   return planes;
 }
 
+std::array<Plane, 6> BoxPlanes(const Aabb& box)
+{
+  std::array<Plane, 6> planes;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    glm::dvec3 n(0.0);
+    n[axis] = 1.0;
+    planes[2 * axis] = { n, -box.Min[axis] };
+    planes[2 * axis + 1] = { -n, box.Max[axis] };
+  }
+  return planes;
+}
+
+std::vector<glm::dvec3> ConvexPolytopeVertices(const std::vector<Plane>& planes, double scale)
+{
+  std::vector<glm::dvec3> vertices;
+  const size_t count = planes.size();
+  const double tolerance = 1e-9 * std::max(scale, 1e-300);
+  for (size_t i = 0; i < count; ++i)
+  {
+    for (size_t j = i + 1; j < count; ++j)
+    {
+      for (size_t k = j + 1; k < count; ++k)
+      {
+        const Plane& a = planes[i];
+        const Plane& b = planes[j];
+        const Plane& c = planes[k];
+        const glm::dvec3 bc = glm::cross(b.Normal, c.Normal);
+        const double determinant = glm::dot(a.Normal, bc);
+        const double norms = glm::length(a.Normal) * glm::length(b.Normal) * glm::length(c.Normal);
+        if (!(std::abs(determinant) > 1e-12 * norms))
+        {
+          continue; // two of the planes are (nearly) parallel
+        }
+        // Cramer's rule for n_a.x = -d_a, n_b.x = -d_b, n_c.x = -d_c.
+        const glm::dvec3 x = (-a.Offset * bc - b.Offset * glm::cross(c.Normal, a.Normal) -
+                               c.Offset * glm::cross(a.Normal, b.Normal)) /
+          determinant;
+        if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z))
+        {
+          continue;
+        }
+        bool inside = true;
+        for (size_t m = 0; m < count && inside; ++m)
+        {
+          inside = planes[m].Distance(x) >= -tolerance * glm::length(planes[m].Normal);
+        }
+        if (inside)
+        {
+          vertices.push_back(x);
+        }
+      }
+    }
+  }
+  return vertices;
+}
+
 std::vector<glm::dvec3> IntersectFrustumWithBox(const glm::dmat4& viewProjection, const Aabb& box)
 {
   std::vector<glm::dvec3> points;
@@ -418,13 +462,25 @@ LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& sceneBound
   lo = glm::max(lo - margin, glm::dvec2(-t));
   hi = glm::min(hi + margin, glm::dvec2(t));
 
+  const double zFar = std::max(bodyFar, diagonal * 1e-3) * 1.001;
+  // The near plane at the nearest scene point inside the (cropped) cone: depth
+  // precision goes as the ratio of far to near, and the scene's bounding box
+  // often reaches behind the light or beside its cone.
+  const double minimumNear = zFar * 1e-3;
+  std::vector<Plane> planes;
+  const glm::dmat4 cone = glm::frustum(lo.x * minimumNear, hi.x * minimumNear, lo.y * minimumNear,
+                            hi.y * minimumNear, minimumNear, zFar) *
+    fit.View;
+  for (const auto& set : { FrustumPlanes(cone), BoxPlanes(scene) })
+  {
+    planes.insert(planes.end(), set.begin(), set.end());
+  }
   double nearest = Infinity;
-  for (const auto& p : scene.Corners())
+  for (const auto& p : ConvexPolytopeVertices(planes, diagonal))
   {
     nearest = std::min(nearest, -Transform(fit.View, p).z);
   }
-  const double zFar = std::max(bodyFar, diagonal * 1e-3) * 1.001;
-  const double zNear = std::max(nearest * 0.999, zFar * 1e-3);
+  const double zNear = std::isfinite(nearest) ? std::max(nearest * 0.999, minimumNear) : minimumNear;
   fit.Projection = glm::frustum(lo.x * zNear, hi.x * zNear, lo.y * zNear, hi.y * zNear, zNear, zFar);
   fit.Perspective = true;
   fit.TexelPerUnitDistance = std::max(hi.x - lo.x, hi.y - lo.y) / std::max(resolution, 1);

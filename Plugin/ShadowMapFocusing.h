@@ -46,6 +46,16 @@ std::array<glm::dvec3, 8> FrustumCorners(const glm::dmat4& viewProjection);
 /// The six inward planes of the frustum whose clip transform is viewProjection.
 std::array<Plane, 6> FrustumPlanes(const glm::dmat4& viewProjection);
 
+/// The six inward planes of a box.
+std::array<Plane, 6> BoxPlanes(const Aabb& box);
+
+/// Vertices of the convex polytope where every plane holds (n.p + d >= 0), by
+/// solving each triple of planes and keeping the points inside all of them
+/// (within 1e-9 scale, scale being the polytope's size). The set must be bounded
+/// (include a box, say); points on an edge shared by more than three planes may
+/// repeat. Empty when the planes have no common point.
+std::vector<glm::dvec3> ConvexPolytopeVertices(const std::vector<Plane>& planes, double scale);
+
 /// Vertices of the convex body frustum ∩ box: frustum corners inside the box,
 /// box corners inside the frustum, and the crossings of each body's edges with
 /// the other's faces. Empty when they do not meet. With the scene bounds as box

@@ -84,6 +84,34 @@ double HalfAngleAlong(const glm::dmat4& cameraProjection, const glm::dvec2& inPl
   return std::atan(tangent);
 }
 
+// The world-measured terms of a warp frame: B's view-depth range, and the
+// camera's half angle in the plane of the view direction and the light (whose
+// direction at B is lightDirection).
+void SetCameraTerms(WarpFrame& frame, const glm::dmat4& cameraView,
+  const glm::dmat4& cameraProjection, const std::vector<glm::dvec3>& worldBody,
+  const glm::dvec3& lightDirection)
+{
+  frame.ZNear = Infinity;
+  frame.ZFar = 0.0;
+  for (const auto& p : worldBody)
+  {
+    const double depth = -Apply(cameraView, p).z;
+    frame.ZNear = std::min(frame.ZNear, depth);
+    frame.ZFar = std::max(frame.ZFar, depth);
+  }
+  const glm::dmat4 cameraToWorld = glm::inverse(cameraView);
+  const glm::dvec3 view = glm::normalize(-glm::dvec3(cameraToWorld[2]));
+  const glm::dvec3 up = glm::normalize(glm::dvec3(cameraToWorld[1]));
+  const glm::dvec3 projected = view - glm::dot(view, lightDirection) * lightDirection;
+  const glm::dvec3 upAcross = up - glm::dot(up, lightDirection) * lightDirection;
+  const glm::dvec3 warpAxis = glm::length(projected) > 1e-12 ? glm::normalize(projected) : upAcross;
+  const glm::dvec3 axisInCamera = glm::dmat3(cameraView) * warpAxis;
+  const glm::dvec2 inPlane = glm::length(glm::dvec2(axisInCamera)) > 1e-12
+    ? glm::normalize(glm::dvec2(axisInCamera))
+    : glm::dvec2(0.0, 1.0);
+  frame.Phi = HalfAngleAlong(cameraProjection, inPlane);
+}
+
 // Smallest singular value of the 2x2 matrix with columns a and b.
 double SmallestSingularValue(const glm::dvec2& a, const glm::dvec2& b)
 {
@@ -208,50 +236,37 @@ double WarpFade(double gammaRadians, const WarpOptions& options)
   return t * t * (3.0 - 2.0 * t);
 }
 
-LightView FitDirectionalWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
-  const Aabb& sceneBounds, const glm::dvec3& lightDirection, int resolution, DirectionalWarp warp,
-  const WarpOptions& options)
+bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp,
+  const WarpOptions& options, LightView& fit)
 {
-  const double lightLength = glm::length(lightDirection);
-  const bool parallelCamera = std::abs(cameraProjection[2][3]) < 1e-12;
-  if (warp == DirectionalWarp::Uniform || parallelCamera || sceneBounds.IsEmpty() ||
-    !IsFinite(cameraView) || !IsFinite(cameraProjection) || !(lightLength > 0.0) ||
-    !std::isfinite(lightLength))
-  {
-    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
-  }
-  const Aabb scene = NonDegenerate(sceneBounds);
-  const std::vector<glm::dvec3> body =
-    IntersectFrustumWithBox(cameraProjection * cameraView, scene);
-  const glm::dmat4 cameraToWorld = glm::inverse(cameraView);
-  const glm::dvec3 viewRaw = -glm::dvec3(cameraToWorld[2]);
-  if (body.empty() || !IsFinite(cameraToWorld) || !(glm::length(viewRaw) > 0.0))
-  {
-    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
-  }
+  const std::vector<glm::dvec3>& body = frame.Body;
+  const Aabb& scene = frame.Casters;
+  const glm::dvec3& d = frame.LightDirection;
+  const glm::dvec3& view = frame.ViewDirection;
+  const glm::dvec3& eye = frame.Eye;
+  const double gamma = frame.Gamma;
   const int texels = std::max(resolution, 1);
-  const glm::dvec3 d = lightDirection / lightLength;
-  const glm::dvec3 view = glm::normalize(viewRaw);
-  const glm::dvec3 eye(cameraToWorld[3]);
-  const double gamma = ViewLightAngle(view, d);
+  if (body.empty() || scene.IsEmpty())
+  {
+    return false;
+  }
 
   // Light space (000, 003): -z along the light, y = view direction projected
   // perpendicular to the light (the warp axis). Where that projection vanishes
   // (gamma = 0) the warp is faded out and the axis only names a frame.
-  const glm::dvec3 cameraUp = glm::normalize(glm::dvec3(cameraToWorld[1]));
-  const glm::dvec3 upAcross = cameraUp - glm::dot(cameraUp, d) * d;
+  const glm::dvec3 upAcross = frame.CameraUp - glm::dot(frame.CameraUp, d) * d;
   const glm::dvec3 projected = view - glm::dot(view, d) * d;
   const glm::dvec3 warpAxis = glm::length(projected) > 1e-12 ? glm::normalize(projected)
-                                                             : glm::normalize(upAcross);
+    : glm::length(upAcross) > 1e-12                          ? glm::normalize(upAcross)
+                                                             : glm::dvec3(LightLookAt(glm::dvec3(0.0), d)[0]);
   const double diagonal = scene.Diagonal();
   const glm::dvec3 lightEye = scene.Center() - d * diagonal;
   const glm::dmat4 lightView = glm::lookAt(lightEye, lightEye + d, warpAxis);
   const glm::dvec3 right = glm::cross(d, warpAxis);
 
-  // B in light space, and in camera space for its view-depth range [z_n, z_f].
+  // B in light space.
   glm::dvec2 lo(Infinity), hi(-Infinity);
   double bodyNear = Infinity, bodyFar = -Infinity;
-  double zNear = Infinity, zFar = 0.0;
   for (const auto& p : body)
   {
     const glm::dvec3 q = Apply(lightView, p);
@@ -259,9 +274,6 @@ LightView FitDirectionalWarped(const glm::dmat4& cameraView, const glm::dmat4& c
     hi = glm::max(hi, glm::dvec2(q));
     bodyNear = std::min(bodyNear, -q.z);
     bodyFar = std::max(bodyFar, -q.z);
-    const double depth = -Apply(cameraView, p).z;
-    zNear = std::min(zNear, depth);
-    zFar = std::max(zFar, depth);
   }
   const double minimumExtent = diagonal * 1e-6;
   hi = glm::max(hi, lo + minimumExtent);
@@ -270,30 +282,30 @@ LightView FitDirectionalWarped(const glm::dmat4& cameraView, const glm::dmat4& c
   const double casterNear = depthRange.y > depthRange.x ? std::min(depthRange.x, bodyNear) : bodyNear;
   bodyFar = std::max(bodyFar, casterNear + minimumExtent);
 
-  // Warp near distance n (world units).
+  // Warp near distance n, in world units, then in this frame's units: n keeps its
+  // ratio to B's extent along the warp axis (002's lambda = P_n / (P_f - P_n)).
   const double warpDepth = hi.y - lo.y;
+  const double worldWarpDepth = frame.WarpDepthInWorld > 0.0 ? frame.WarpDepthInWorld : warpDepth;
   double warpNear = Infinity;
   if (options.FreeParameterN > 0.0)
   {
     warpNear = options.FreeParameterN;
   }
-  else if (zNear > 0.0 && zFar > zNear)
+  else if (frame.ZNear > 0.0 && frame.ZFar > frame.ZNear)
   {
-    const glm::dvec3 axisInCamera = glm::dmat3(cameraView) * warpAxis;
-    const glm::dvec2 inPlane = glm::length(glm::dvec2(axisInCamera)) > 1e-12
-      ? glm::normalize(glm::dvec2(axisInCamera))
-      : glm::dvec2(0.0, 1.0);
-    const double phi = HalfAngleAlong(cameraProjection, inPlane);
     if (warp == DirectionalWarp::LiSPSM)
     {
-      warpNear = LiSPSMFreeParameter(zNear, zFar, gamma, phi, options.LloydFalloff);
+      warpNear =
+        LiSPSMFreeParameter(frame.ZNear, frame.ZFar, gamma, frame.Phi, options.LloydFalloff);
     }
-    else if (phi > 0.0)
+    else if (frame.Phi > 0.0)
     {
       // 002: lambda = P_n / (P_f - P_n), P_f - P_n = B's extent along the warp axis.
-      warpNear = WarpNearFromLambda(GMNPRLambda(gamma, phi, zNear, zFar), warpDepth);
+      warpNear =
+        WarpNearFromLambda(GMNPRLambda(gamma, frame.Phi, frame.ZNear, frame.ZFar), worldWarpDepth);
     }
   }
+  warpNear *= worldWarpDepth > 0.0 ? warpDepth / worldWarpDepth : 1.0;
   // Fade: the strength k = (P_f - P_n) / n times a smoothstep in gamma, so that
   // n -> infinity continuously as the view and light lines become parallel (003, 000).
   const double fade = WarpFade(gamma, options);
@@ -351,13 +363,13 @@ LightView FitDirectionalWarped(const glm::dmat4& cameraView, const glm::dmat4& c
   }
   const glm::dvec3 extent = glm::max(mapHi - mapLo, 1e-9 * (glm::abs(mapHi) + glm::abs(mapLo)) + 1e-300);
   const glm::dvec3 margin(extent.x * 4.0 / texels, extent.y * 4.0 / texels, extent.z * 1e-3);
-  LightView fit;
+  fit = LightView();
   fit.View = lightView;
   fit.Projection = BoxToClip(mapLo - margin, mapLo + extent + margin) * toMap;
   fit.Perspective = warped;
   if (!IsFinite(fit.Projection) || !IsFiniteVector(mapLo) || !IsFiniteVector(mapHi))
   {
-    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
+    return false;
   }
 
   // Conservative texel: the largest world-space texel edge over B's vertices (the
@@ -378,7 +390,151 @@ LightView FitDirectionalWarped(const glm::dmat4& cameraView, const glm::dmat4& c
   }
   fit.TexelConstant = texel > 0.0 ? texel : std::max(hi.x - lo.x, hi.y - lo.y) / texels;
   fit.TexelPerUnitDistance = 0.0;
+  return true;
+}
+
+
+LightView FitDirectionalWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& sceneBounds, const glm::dvec3& lightDirection, int resolution, DirectionalWarp warp,
+  const WarpOptions& options)
+{
+  const double lightLength = glm::length(lightDirection);
+  const bool parallelCamera = std::abs(cameraProjection[2][3]) < 1e-12;
+  if (warp == DirectionalWarp::Uniform || parallelCamera || sceneBounds.IsEmpty() ||
+    !IsFinite(cameraView) || !IsFinite(cameraProjection) || !(lightLength > 0.0) ||
+    !std::isfinite(lightLength))
+  {
+    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
+  }
+  const Aabb scene = NonDegenerate(sceneBounds);
+  WarpFrame frame;
+  frame.Body = IntersectFrustumWithBox(cameraProjection * cameraView, scene);
+  const glm::dmat4 cameraToWorld = glm::inverse(cameraView);
+  const glm::dvec3 viewRaw = -glm::dvec3(cameraToWorld[2]);
+  if (frame.Body.empty() || !IsFinite(cameraToWorld) || !(glm::length(viewRaw) > 0.0))
+  {
+    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
+  }
+  frame.Casters = scene;
+  frame.LightDirection = lightDirection / lightLength;
+  frame.ViewDirection = glm::normalize(viewRaw);
+  frame.Eye = glm::dvec3(cameraToWorld[3]);
+  frame.CameraUp = glm::normalize(glm::dvec3(cameraToWorld[1]));
+  frame.Gamma = ViewLightAngle(frame.ViewDirection, frame.LightDirection);
+  SetCameraTerms(frame, cameraView, cameraProjection, frame.Body, frame.LightDirection);
+  LightView fit;
+  if (!FitWarpedFrame(frame, resolution, warp, options, fit))
+  {
+    return Uniform(cameraView, cameraProjection, sceneBounds, lightDirection, resolution);
+  }
   return fit;
+}
+
+LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& sceneBounds, const glm::dvec3& position, const glm::dvec3& direction,
+  double coneAngleDegrees, int resolution, DirectionalWarp warp, const WarpOptions& options)
+{
+  const glm::dmat4 cameraViewProjection = cameraProjection * cameraView;
+  const LightView cone =
+    FitSpot(cameraViewProjection, sceneBounds, position, direction, coneAngleDegrees, resolution);
+  const bool parallelCamera = std::abs(cameraProjection[2][3]) < 1e-12;
+  const glm::dmat4 toLightSpace = cone.ViewProjection();
+  if (warp == DirectionalWarp::Uniform || parallelCamera || sceneBounds.IsEmpty() ||
+    !IsFinite(cameraView) || !IsFinite(cameraProjection) || !IsFinite(toLightSpace))
+  {
+    return cone;
+  }
+
+  // B in the world, kept inside the spot's frustum so that it maps with w > 0.
+  const Aabb scene = NonDegenerate(sceneBounds);
+  std::vector<Plane> planes;
+  for (const auto& set :
+    { FrustumPlanes(cameraViewProjection), BoxPlanes(scene), FrustumPlanes(toLightSpace) })
+  {
+    planes.insert(planes.end(), set.begin(), set.end());
+  }
+  const std::vector<glm::dvec3> worldBody = ConvexPolytopeVertices(planes, scene.Diagonal());
+  if (worldBody.empty())
+  {
+    return cone;
+  }
+  WarpFrame frame;
+  glm::dvec3 centroid(0.0);
+  for (const auto& p : worldBody)
+  {
+    const glm::dvec4 q = toLightSpace * glm::dvec4(p, 1.0);
+    if (!(q.w > 0.0))
+    {
+      return cone;
+    }
+    frame.Body.push_back(glm::dvec3(q) / q.w);
+    centroid += p / double(worldBody.size());
+  }
+
+  const glm::dmat4 cameraToWorld = glm::inverse(cameraView);
+  const glm::dvec3 view = glm::normalize(-glm::dvec3(cameraToWorld[2]));
+  const glm::dvec3 up = glm::normalize(glm::dvec3(cameraToWorld[1]));
+  const glm::dvec3 eye(cameraToWorld[3]);
+  const glm::dvec3 toCentroid = centroid - position;
+  if (!(glm::length(toCentroid) > 0.0) || !IsFinite(cameraToWorld))
+  {
+    return cone;
+  }
+  const glm::dvec3 ray = glm::normalize(toCentroid);
+  frame.Gamma = ViewLightAngle(view, ray);
+  SetCameraTerms(frame, cameraView, cameraProjection, worldBody, ray);
+  const glm::dvec3 projected = view - glm::dot(view, ray) * ray;
+  if (glm::length(projected) > 1e-12)
+  {
+    const glm::dvec3 axis = glm::normalize(projected);
+    double lo = Infinity, hi = -Infinity;
+    for (const auto& p : worldBody)
+    {
+      lo = std::min(lo, glm::dot(p, axis));
+      hi = std::max(hi, glm::dot(p, axis));
+    }
+    frame.WarpDepthInWorld = hi - lo;
+  }
+
+  // In the spot's post-perspective space light travels along +z, every caster
+  // lies between its near and far planes, and the camera's axis over B's depths
+  // is the image of that segment (projective maps keep lines).
+  frame.Casters = Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) };
+  frame.LightDirection = glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dvec4 a = toLightSpace * glm::dvec4(eye + view * frame.ZNear, 1.0);
+  const glm::dvec4 b = toLightSpace * glm::dvec4(eye + view * frame.ZFar, 1.0);
+  const double step = 1e-3 * std::max(frame.ZFar - frame.ZNear, scene.Diagonal() * 1e-6);
+  const glm::dvec3 centre = Apply(toLightSpace, centroid);
+  if (a.w > 0.0 && b.w > 0.0 && frame.ZFar > frame.ZNear)
+  {
+    frame.Eye = glm::dvec3(a) / a.w;
+    frame.ViewDirection = glm::dvec3(b) / b.w - frame.Eye;
+  }
+  else
+  {
+    frame.Eye = centre;
+    frame.ViewDirection = Apply(toLightSpace, centroid + view * step) - centre;
+  }
+  frame.CameraUp = Apply(toLightSpace, centroid + up * step) - centre;
+  if (!(glm::length(frame.ViewDirection) > 0.0) || !(glm::length(frame.CameraUp) > 0.0) ||
+    !IsFiniteVector(frame.ViewDirection) || !IsFiniteVector(frame.CameraUp))
+  {
+    return cone;
+  }
+  frame.ViewDirection = glm::normalize(frame.ViewDirection);
+  frame.CameraUp = glm::normalize(frame.CameraUp);
+
+  LightView fit;
+  if (!FitWarpedFrame(frame, resolution, warp, options, fit))
+  {
+    return cone;
+  }
+  fit.View = fit.View * toLightSpace;
+  fit.Perspective = true;
+  fit.TexelSizeFromGradient = true;
+  fit.TexelConstant = 0.0;
+  fit.TexelPerUnitDistance = cone.TexelPerUnitDistance;
+  return IsFinite(fit.ViewProjection()) ? fit : cone;
 }
 
 } // namespace shadowmaps

@@ -16,6 +16,8 @@
 
 #include "ShadowMapFocusing.h"
 
+#include <vector>
+
 #include <glm/glm.hpp>
 
 namespace shadowmaps
@@ -88,6 +90,37 @@ double LambdaFromWarpNear(double warpNear, double warpDepth);
 /// options.UniformBelowDegrees, 1 above options.FullWarpAboveDegrees, smoothstep between.
 double WarpFade(double gammaRadians, const WarpOptions& options);
 
+/// What a warp needs, in a space where the light is directional: the world for a
+/// directional light, a spot light's post-perspective space for a spot (FitSpotWarped).
+struct WarpFrame
+{
+  /// Vertices of the focus body B, and a box holding every caster, in this space.
+  std::vector<glm::dvec3> Body;
+  Aabb Casters;
+  /// Unit direction the light travels, and the camera's axis, a point on it and
+  /// its up direction, in this space.
+  glm::dvec3 LightDirection{ 0.0, 0.0, -1.0 };
+  glm::dvec3 ViewDirection{ 0.0, 0.0, -1.0 };
+  glm::dvec3 Eye{ 0.0 };
+  glm::dvec3 CameraUp{ 0.0, 1.0, 0.0 };
+  /// Measured in the world: the angle between the view and light lines at B, the
+  /// view-depth range [ZNear, ZFar] of B, the camera's half angle Phi in the plane
+  /// of view and light, and B's extent along the warp axis (0: this space is the
+  /// world, extents need no conversion). The warp's near distance n is chosen in
+  /// world units and carried over keeping its ratio to B's warp-axis extent.
+  double Gamma = 0.0;
+  double ZNear = 0.0;
+  double ZFar = 0.0;
+  double Phi = 0.0;
+  double WarpDepthInWorld = 0.0;
+};
+
+/// The warped fit of FitDirectionalWarped for any frame: light space, the warp
+/// frustum of near distance n from LiSPSM / GMNPR / options, the orthographic fit of
+/// the warped B, in the frame's space. False (fit unchanged) when no finite fit exists.
+bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp,
+  const WarpOptions& options, LightView& fit);
+
 /// Warped (or uniform) map of a directional light, focused on B = camera frustum ∩ scene.
 /// Light space: view axis along lightDirection, warp axis = view direction projected
 /// perpendicular to the light (000, 003). A perspective warp along that axis, apex at
@@ -117,6 +150,20 @@ double WarpFade(double gammaRadians, const WarpOptions& options);
 /// cameras, an empty scene or B, and non-finite input.
 LightView FitDirectionalWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const Aabb& scene, const glm::dvec3& lightDirection, int resolution, DirectionalWarp warp,
+  const WarpOptions& options = WarpOptions());
+
+/// Warped map of a spot light (003 and 000 for point lights: the light's own
+/// perspective makes it directional, the warp is then built in that space). The
+/// spot's cone map S = FitSpot(...) takes the world to its post-perspective space,
+/// where light rays are parallel to +z; B = camera frustum ∩ scene ∩ the spot's
+/// frustum is mapped there and warped as a directional light's (FitWarpedFrame),
+/// with gamma, z_n, z_f and phi measured in the world at B (gamma between the view
+/// direction and the spot's ray to B's centroid). Result: View = light view * S,
+/// not rigid; TexelSizeFromGradient is set. Falls back to the cone map S for
+/// DirectionalWarp::Uniform, parallel cameras, B empty or a fit that fails.
+LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& scene, const glm::dvec3& position, const glm::dvec3& direction,
+  double coneAngleDegrees, int resolution, DirectionalWarp warp,
   const WarpOptions& options = WarpOptions());
 
 } // namespace shadowmaps

@@ -85,12 +85,38 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
     direction, in.Resolution, warp, options);
 }
 
+LightView vtkWarpedShadowMapPass::FitSpotLight(const Internals& in, int lightIndex) const
+{
+  const shadowmaps::ShadowLight& light = in.Lights[lightIndex];
+  shadowmaps::WarpOptions options;
+  options.FreeParameterN = this->LiSPSMFreeParameter;
+  options.LloydFalloff = this->LloydFalloff;
+  const auto warp = this->WarpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR
+                                            : shadowmaps::DirectionalWarp::LiSPSM;
+  return shadowmaps::FitSpotWarped(in.CameraView, in.CameraProjection, in.SceneBounds,
+    light.Position, light.Direction, light.ConeAngle, in.Resolution, warp, options);
+}
+
 void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIndex)
 {
   shadowmaps::ShadowLight& light = internals.Lights[lightIndex];
-  if (this->WarpMode == UNIFORM || light.Kind != shadowmaps::LightKind::Directional)
+  const bool spotWarp = light.Kind == shadowmaps::LightKind::Spot &&
+    (this->WarpMode == LISPSM || this->WarpMode == GMNPR);
+  if (this->WarpMode == UNIFORM ||
+    (light.Kind != shadowmaps::LightKind::Directional && !spotWarp))
   {
     this->FitLightViewsUniform(internals, lightIndex);
+    return;
+  }
+  if (spotWarp)
+  {
+    const LightView view = this->FitSpotLight(internals, lightIndex);
+    if (!shadowmaps::IsFinite(view.ViewProjection()))
+    {
+      this->FitLightViewsUniform(internals, lightIndex);
+      return;
+    }
+    light.Views = { view };
     return;
   }
   LightView view = this->FitDirectionalLight(internals, lightIndex);

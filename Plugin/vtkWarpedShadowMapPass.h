@@ -23,7 +23,10 @@
  *   light space, so one bias serves the whole map.
  * As the view direction approaches the light direction LiSPSM, GMNPR and TSM
  * fade continuously into the uniform map; parallel-projection cameras get the
- * uniform map. Point lights use the uniform cube faces.
+ * uniform map. Spot lights are warped by LISPSM and GMNPR inside their own
+ * post-perspective space, where they are directional (the angle, depths and
+ * half angle that choose n are measured in the world at B); PSM and TSM give
+ * spot lights the uniform cone map. Point lights use the uniform cube faces.
  *
  * Uniform fit: directional lights get an orthographic map fitted to the focus body B
  * (view frustum ∩ scene bounds, survey 003 §4.1) with its near plane pulled back
@@ -117,6 +120,7 @@ protected:
   void ComputeLightViews(Internals& internals, int lightIndex) override;
   /** The warped map of directional light lightIndex for the chosen WarpMode. */
   shadowmaps::LightView FitDirectionalLight(const Internals& internals, int lightIndex) const;
+  shadowmaps::LightView FitSpotLight(const Internals& internals, int lightIndex) const;
 
   int WarpMode = UNIFORM;
   double LiSPSMFreeParameter = 0.0;

@@ -1052,3 +1052,61 @@ TEST(IsFinite, DetectsNanAndInfinity)
 }
 
 } // namespace
+
+TEST(ConvexPolytope, BoxCutByAPlaneHasItsVertices)
+{
+  const Aabb box{ glm::dvec3(0.0), glm::dvec3(1.0) };
+  const auto boxPlanes = shadowmaps::BoxPlanes(box);
+  std::vector<Plane> planes(boxPlanes.begin(), boxPlanes.end());
+  EXPECT_EQ(shadowmaps::ConvexPolytopeVertices(planes, 1.0).size(), 8u);
+  // Keep x + y + z <= 1: the corner tetrahedron, vertices (0,0,0) and the unit axes.
+  planes.push_back({ glm::normalize(glm::dvec3(-1.0)), 1.0 / std::sqrt(3.0) });
+  const auto vertices = shadowmaps::ConvexPolytopeVertices(planes, 1.0);
+  ASSERT_FALSE(vertices.empty());
+  for (const auto& v : vertices)
+  {
+    EXPECT_LE(v.x + v.y + v.z, 1.0 + 1e-9);
+    EXPECT_GE(std::min({ v.x, v.y, v.z }), -1e-9);
+  }
+  for (const glm::dvec3& corner : { glm::dvec3(0.0), glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1) })
+  {
+    EXPECT_TRUE(std::any_of(vertices.begin(), vertices.end(),
+      [&](const glm::dvec3& v) { return glm::length(v - corner) < 1e-9; }))
+      << corner.x << " " << corner.y << " " << corner.z;
+  }
+  // Planes with no common point give nothing.
+  planes.push_back({ glm::dvec3(1.0, 0.0, 0.0), -2.0 });
+  EXPECT_TRUE(shadowmaps::ConvexPolytopeVertices(planes, 1.0).empty());
+}
+
+// The spot's near plane sits at the nearest scene point inside its cone, not at
+// the scene box's nearest corner (which may be behind the light or beside the cone).
+TEST(FitSpot, NearPlaneAtTheNearestScenePointInTheCone)
+{
+  const Aabb scene{ glm::dvec3(-10.0, -10.0, 0.0), glm::dvec3(10.0, 10.0, 2.5) };
+  const glm::dvec3 position(5.0, -2.0, 7.0);
+  const glm::dmat4 camera = glm::perspective(glm::radians(30.0), 1.0, 0.1, 40.0) *
+    glm::lookAt(glm::dvec3(0, -9.5, 1.2), glm::dvec3(0, 0, 0.8), glm::dvec3(0, 0, 1));
+  for (const glm::dvec3& direction : { glm::dvec3(0.0, 0.0, -1.0), glm::normalize(-position) })
+  {
+    const LightView fit = shadowmaps::FitSpot(camera, scene, position, direction, 30.0, 1024);
+    const glm::dvec4 nearCentre = glm::inverse(fit.Projection) * glm::dvec4(0.0, 0.0, -1.0, 1.0);
+    const double zNear = -nearCentre.z / nearCentre.w;
+    // Brute force: the nearest of many scene points inside the map's frustum.
+    const glm::dmat4 clip = fit.ViewProjection();
+    double nearest = 1e300;
+    for (int i = 0; i <= 40; ++i)
+      for (int j = 0; j <= 40; ++j)
+        for (int k = 0; k <= 10; ++k)
+        {
+          const glm::dvec3 p(-10.0 + 0.5 * i, -10.0 + 0.5 * j, 0.25 * k);
+          const glm::dvec4 q = clip * glm::dvec4(p, 1.0);
+          if (q.w > 0.0 && std::abs(q.x) <= q.w && std::abs(q.y) <= q.w)
+          {
+            nearest = std::min(nearest, -(fit.View * glm::dvec4(p, 1.0)).z);
+          }
+        }
+    EXPECT_LE(zNear, nearest);
+    EXPECT_GT(zNear, 0.9 * nearest) << "near plane far in front of the scene";
+  }
+}

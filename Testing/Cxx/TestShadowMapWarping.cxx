@@ -687,3 +687,40 @@ TEST(ShadowMapWarping, TexelConstantBoundsWorldTexelOverBody)
 }
 
 } // namespace
+
+// A spot light's warped map keeps what a shadow map needs: points on one ray
+// from the light land on one texel, in depth order, and the focus body maps
+// inside the unit cube.
+TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
+{
+  const glm::dmat4 cameraView =
+    glm::lookAt(glm::dvec3(0.0, -9.5, 1.2), glm::dvec3(0.0, 0.0, 0.8), glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dmat4 cameraProjection = glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0);
+  const shadowmaps::Aabb scene{ glm::dvec3(-10.0, -10.0, -0.1), glm::dvec3(10.0, 10.0, 2.5) };
+  const glm::dvec3 spot(5.0, -2.0, 7.0);
+  const glm::dvec3 axis = glm::normalize(-spot);
+  for (auto warp : { shadowmaps::DirectionalWarp::LiSPSM, shadowmaps::DirectionalWarp::GMNPR })
+  {
+    const LightView fit = shadowmaps::FitSpotWarped(
+      cameraView, cameraProjection, scene, spot, axis, 30.0, 1024, warp);
+    ASSERT_TRUE(shadowmaps::IsFinite(fit.ViewProjection()));
+    EXPECT_TRUE(fit.TexelSizeFromGradient);
+    const glm::dmat4 m = fit.ViewProjection();
+    for (const glm::dvec3& ground : { glm::dvec3(-1.4, 0.5, 0.0), glm::dvec3(2.0, 4.0, 0.0),
+           glm::dvec3(-3.0, -5.0, 0.0) })
+    {
+      const glm::dvec4 g = m * glm::dvec4(ground, 1.0);
+      const glm::dvec4 c = m * glm::dvec4(spot + 0.7 * (ground - spot), 1.0);
+      ASSERT_GT(g.w, 0.0);
+      ASSERT_GT(c.w, 0.0);
+      const glm::dvec3 gn = glm::dvec3(g) / g.w;
+      const glm::dvec3 cn = glm::dvec3(c) / c.w;
+      EXPECT_NEAR(gn.x, cn.x, 1e-9);
+      EXPECT_NEAR(gn.y, cn.y, 1e-9);
+      EXPECT_LT(cn.z, gn.z) << "the caster is nearer the light";
+      EXPECT_LE(std::abs(gn.x), 1.0);
+      EXPECT_LE(std::abs(gn.y), 1.0);
+      EXPECT_LE(std::abs(gn.z), 1.0);
+    }
+  }
+}

@@ -234,3 +234,40 @@ TEST(ShadowWarps, WarpModeClampsAndParallelCameraRenders)
       << mode.Name;
   }
 }
+
+// Spot lights are warped in their own post-perspective space (LiSPSM, GMNPR):
+// the sphere's shadow stays dark and the lit ground lit, near and far.
+TEST(ShadowWarps, SpotLightWarpsShadowNearAndFar)
+{
+  const glm::dvec3 spot(5.0, -2.0, 7.0);
+  for (const Mode& mode : WarpModes)
+  {
+    if (mode.Value != vtkWarpedShadowMapPass::LISPSM && mode.Value != vtkWarpedShadowMapPass::GMNPR)
+    {
+      continue;
+    }
+    const std::string name = std::string("WarpSpot") + mode.Name;
+    TestScene scene;
+    LookAlongTheGround(scene);
+    scene.SetSpot(spot, 60.0);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    pass->SetWarpMode(mode.Value);
+    pass->SetResolution(512);
+    scene.Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+    const glm::dvec3 shadowed = GroundShadowOfSphereCenterFrom(spot);
+    const glm::dvec3 litNear(-2.0, -3.0, 0.0);
+    const glm::dvec3 litFar(-3.0, 6.0, 0.0);
+    for (const glm::dvec3& probe : { shadowed, litNear, litFar })
+    {
+      ASSERT_GE(ColorAt(scene.Renderer, image, probe).r, 0) << name << ": probe off the image";
+    }
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, shadowed), ShadowedBelow) << name;
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, litNear), LitAbove) << name;
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, litFar), LitAbove) << name;
+    const std::string difference = CompareWithBaseline(image, name);
+    EXPECT_TRUE(difference.empty()) << difference;
+  }
+}
