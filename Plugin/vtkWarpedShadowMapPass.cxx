@@ -47,6 +47,14 @@ glm::dmat4 TightProjection(const glm::dmat4& cameraView, const glm::dmat4& camer
 }
 } // namespace
 
+shadowmaps::WarpOptions vtkWarpedShadowMapPass::LightSpaceWarpOptions() const
+{
+  shadowmaps::WarpOptions options;
+  options.FreeParameterN = this->LiSPSMFreeParameter;
+  options.LloydFalloff = this->LloydFalloff;
+  return options;
+}
+
 LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int lightIndex) const
 {
   const glm::dvec3& direction = in.Lights[lightIndex].Direction;
@@ -76,9 +84,7 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
       projection * in.CameraView, in.SceneBounds, direction, delta, this->TSMFocusFraction);
     return shadowmaps::TrapezoidLightView(map, in.Resolution);
   }
-  shadowmaps::WarpOptions options;
-  options.FreeParameterN = this->LiSPSMFreeParameter;
-  options.LloydFalloff = this->LloydFalloff;
+  const shadowmaps::WarpOptions options = this->LightSpaceWarpOptions();
   const auto warp = this->WarpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR
                                             : shadowmaps::DirectionalWarp::LiSPSM;
   return shadowmaps::FitDirectionalWarped(in.CameraView, in.CameraProjection, in.SceneBounds,
@@ -88,9 +94,7 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
 LightView vtkWarpedShadowMapPass::FitSpotLight(const Internals& in, int lightIndex) const
 {
   const shadowmaps::ShadowLight& light = in.Lights[lightIndex];
-  shadowmaps::WarpOptions options;
-  options.FreeParameterN = this->LiSPSMFreeParameter;
-  options.LloydFalloff = this->LloydFalloff;
+  const shadowmaps::WarpOptions options = this->LightSpaceWarpOptions();
   const auto warp = this->WarpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR
                                             : shadowmaps::DirectionalWarp::LiSPSM;
   return shadowmaps::FitSpotWarped(in.CameraView, in.CameraProjection, in.SceneBounds,

@@ -45,6 +45,11 @@
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 
+namespace shadowmaps
+{
+struct WarpOptions;
+}
+
 class VTKRENDERINGSHADOWMAPS_EXPORT vtkWarpedShadowMapPass : public vtkAbstractShadowMapPass
 {
 public:
@@ -121,6 +126,8 @@ protected:
   /** The warped map of directional light lightIndex for the chosen WarpMode. */
   shadowmaps::LightView FitDirectionalLight(const Internals& internals, int lightIndex) const;
   shadowmaps::LightView FitSpotLight(const Internals& internals, int lightIndex) const;
+  /** LiSPSM and GMNPR settings (free parameter, falloff). */
+  shadowmaps::WarpOptions LightSpaceWarpOptions() const;
 
   int WarpMode = UNIFORM;
   double LiSPSMFreeParameter = 0.0;
