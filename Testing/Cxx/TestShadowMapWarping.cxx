@@ -724,3 +724,39 @@ TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
     }
   }
 }
+
+// Degenerate spot set-ups give finite matrices: camera looking along the spot's
+// axis, standing at the light, inside the scene, parallel projection, no scene.
+TEST(ShadowMapWarping, SpotWarpStaysFiniteInDegenerateViews)
+{
+  const shadowmaps::Aabb scene{ glm::dvec3(-10.0, -10.0, 0.0), glm::dvec3(10.0, 10.0, 2.5) };
+  const glm::dvec3 spot(0.0, 0.0, 8.0);
+  const glm::dvec3 down(0.0, 0.0, -1.0);
+  const glm::dmat4 perspective = glm::perspective(glm::radians(30.0), 1.0, 0.1, 40.0);
+  const glm::dmat4 parallel = glm::ortho(-5.0, 5.0, -5.0, 5.0, 0.1, 40.0);
+  struct Case
+  {
+    glm::dvec3 Eye, Target;
+    glm::dmat4 Projection;
+    shadowmaps::Aabb Scene;
+  };
+  const Case cases[] = {
+    { spot + glm::dvec3(0.0, 0.0, 1.0), glm::dvec3(0.0), perspective, scene }, // along the axis
+    { spot, glm::dvec3(0.0), perspective, scene },                             // at the light
+    { glm::dvec3(0.0, 0.0, 1.0), glm::dvec3(0.0, 5.0, 1.0), perspective, scene }, // inside
+    { glm::dvec3(0.0, -9.5, 1.2), glm::dvec3(0.0), parallel, scene },
+    { glm::dvec3(0.0, -9.5, 1.2), glm::dvec3(0.0), perspective, shadowmaps::Aabb() },
+  };
+  for (auto warp : { shadowmaps::DirectionalWarp::LiSPSM, shadowmaps::DirectionalWarp::GMNPR })
+  {
+    for (const Case& c : cases)
+    {
+      const glm::dvec3 forward = glm::normalize(c.Target - c.Eye);
+      const glm::dvec3 up = std::abs(forward.z) > 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+      const LightView fit = shadowmaps::FitSpotWarped(
+        glm::lookAt(c.Eye, c.Target, up), c.Projection, c.Scene, spot, down, 40.0, 1024, warp);
+      EXPECT_TRUE(shadowmaps::IsFinite(fit.ViewProjection()))
+        << "eye " << c.Eye.x << " " << c.Eye.y << " " << c.Eye.z;
+    }
+  }
+}
