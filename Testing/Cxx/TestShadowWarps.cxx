@@ -73,31 +73,38 @@ int CountUndersampled(vtkImageData* image)
   return count;
 }
 
-// The sphere's shadow (and, when the light allows, the box's) is dark and the
-// lit ground near and far from the camera is lit; the frame matches its baseline.
-void CheckMode(const Mode& mode, const SetUp& setUp)
+// Renders `scene` with the warp mode: no errors, the point `shadowed` dark, the lit
+// ground near and far lit, and the frame matches its baseline `name`.
+void RenderAndProbe(TestScene& scene, int mode, const std::string& name, const glm::dvec3& shadowed,
+  const glm::dvec3& litNear, const glm::dvec3& litFar)
 {
-  const std::string name = std::string("Warp") + mode.Name + setUp.Name;
-  TestScene scene;
-  LookAlongTheGround(scene);
-  scene.SetSun(setUp.Direction);
   vtkNew<vtkWarpedShadowMapPass> pass;
-  pass->SetWarpMode(mode.Value);
+  pass->SetWarpMode(mode);
   pass->SetResolution(512);
   scene.Renderer->SetPass(pass);
   ErrorCounter errors;
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(setUp.Direction);
-  for (const glm::dvec3& probe : { shadowed, setUp.LitNear, setUp.LitFar })
+  for (const glm::dvec3& probe : { shadowed, litNear, litFar })
   {
     ASSERT_GE(ColorAt(scene.Renderer, image, probe).r, 0) << name << ": probe off the image";
   }
   EXPECT_LT(LuminanceAt(scene.Renderer, image, shadowed), ShadowedBelow) << name;
-  EXPECT_GT(LuminanceAt(scene.Renderer, image, setUp.LitNear), LitAbove) << name;
-  EXPECT_GT(LuminanceAt(scene.Renderer, image, setUp.LitFar), LitAbove) << name;
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, litNear), LitAbove) << name;
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, litFar), LitAbove) << name;
   const std::string difference = CompareWithBaseline(image, name);
   EXPECT_TRUE(difference.empty()) << difference;
+}
+
+// The sphere's shadow is dark and the lit ground near and far from the camera
+// is lit; the frame matches its baseline.
+void CheckMode(const Mode& mode, const SetUp& setUp)
+{
+  TestScene scene;
+  LookAlongTheGround(scene);
+  scene.SetSun(setUp.Direction);
+  RenderAndProbe(scene, mode.Value, std::string("Warp") + mode.Name + setUp.Name,
+    GroundShadowOfSphereCenter(setUp.Direction), setUp.LitNear, setUp.LitFar);
 }
 
 class WarpModeAndSetUp : public ::testing::TestWithParam<std::tuple<int, int>>
@@ -246,28 +253,10 @@ TEST(ShadowWarps, SpotLightWarpsShadowNearAndFar)
     {
       continue;
     }
-    const std::string name = std::string("WarpSpot") + mode.Name;
     TestScene scene;
     LookAlongTheGround(scene);
     scene.SetSpot(spot, 60.0);
-    vtkNew<vtkWarpedShadowMapPass> pass;
-    pass->SetWarpMode(mode.Value);
-    pass->SetResolution(512);
-    scene.Renderer->SetPass(pass);
-    ErrorCounter errors;
-    auto image = RenderAndCapture(scene.Window);
-    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-    const glm::dvec3 shadowed = GroundShadowOfSphereCenterFrom(spot);
-    const glm::dvec3 litNear(-2.0, -3.0, 0.0);
-    const glm::dvec3 litFar(-3.0, 6.0, 0.0);
-    for (const glm::dvec3& probe : { shadowed, litNear, litFar })
-    {
-      ASSERT_GE(ColorAt(scene.Renderer, image, probe).r, 0) << name << ": probe off the image";
-    }
-    EXPECT_LT(LuminanceAt(scene.Renderer, image, shadowed), ShadowedBelow) << name;
-    EXPECT_GT(LuminanceAt(scene.Renderer, image, litNear), LitAbove) << name;
-    EXPECT_GT(LuminanceAt(scene.Renderer, image, litFar), LitAbove) << name;
-    const std::string difference = CompareWithBaseline(image, name);
-    EXPECT_TRUE(difference.empty()) << difference;
+    RenderAndProbe(scene, mode.Value, std::string("WarpSpot") + mode.Name,
+      GroundShadowOfSphereCenterFrom(spot), { -2.0, -3.0, 0.0 }, { -3.0, 6.0, 0.0 });
   }
 }
