@@ -10,9 +10,11 @@ namespace
 {
 
 constexpr double Infinity = std::numeric_limits<double>::infinity();
+constexpr double Pi = 3.14159265358979323846;
 // Beyond this ratio eta / lambda the trapezoid is treated as a rectangle: the
-// chain's residual warp there is below 1e-6 of the map.
-constexpr double RectangleRatio = 1e6;
+// chain's residual warp there is below 1e-5 of the map (0.02 texel at 2048), and
+// the chain loses precision on nearer rectangles.
+constexpr double RectangleRatio = 1e5;
 
 glm::dvec3 ToPoint(const glm::dmat4& m, const glm::dvec3& p)
 {
@@ -97,6 +99,49 @@ glm::dmat3 RectangleMap(const glm::dvec2& lateral, const glm::dvec2& axial, doub
   return toSquare * FrameRows(lateral, axial);
 }
 
+// Direction of the centre-line frame's axial axis. Fully warped (weight 1): the
+// projected view axis. Unwarped (weight 0): the camera's up in the light's plane,
+// which, unlike the view axis, does not reverse where the light crosses the view.
+// Between, the frame turns from the view axis toward the nearest quarter turn of
+// the up; quarterTurns returns the counter-clockwise turns of the square that bring
+// the map back to the up's orientation (a square turned by quarter turns keeps its
+// texel grid).
+glm::dvec2 CentreLineFrame(const glm::dvec2& viewAxis, const glm::dvec2& up, double weight, int& quarterTurns)
+{
+  const double alpha = std::atan2(viewAxis.y, viewAxis.x);
+  const double beta = glm::length(up) > 1e-9 * glm::length(viewAxis) ? std::atan2(up.y, up.x) : alpha;
+  const long turns = std::lround((beta - alpha) / (0.5 * Pi));
+  const double angle = alpha + (1.0 - weight) * (beta - alpha - turns * 0.5 * Pi);
+  quarterTurns = static_cast<int>(((-turns) % 4 + 4) % 4);
+  return { std::cos(angle), std::sin(angle) };
+}
+
+// Warp weight at angle gamma between the view and light lines: 0 (the rectangle)
+// below UniformBelowDegrees, 1 from fadeAngleDegrees on, a smoothstep between, so
+// that the map does not move at all within a small cone around the view axis.
+double TrapezoidWarpWeight(double gammaRadians, double fadeAngleDegrees)
+{
+  constexpr double UniformBelowDegrees = 2.0;
+  const double full = glm::radians(std::min(std::max(fadeAngleDegrees, 1e-6), 90.0));
+  const double uniform = std::min(glm::radians(UniformBelowDegrees), 0.5 * full);
+  const double t = std::min(std::max((gammaRadians - uniform) / (full - uniform), 0.0), 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// Counter-clockwise quarter turns of NDC x, y (exact).
+glm::dmat3 QuarterTurnMatrix(int turns)
+{
+  static const int cosines[4] = { 1, 0, -1, 0 };
+  const int c = cosines[turns & 3];
+  const int s = cosines[(turns + 3) & 3];
+  glm::dmat3 m(1.0);
+  m[0][0] = c;
+  m[0][1] = s;
+  m[1][0] = -s;
+  m[1][1] = c;
+  return m;
+}
+
 } // namespace
 
 std::vector<glm::dvec2> ConvexHull2D(std::vector<glm::dvec2> points)
@@ -169,7 +214,10 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
   viewAxis = glm::length(viewAxis) > 0.0 ? glm::normalize(viewAxis) : glm::dvec3(0.0, 0.0, -1.0);
   const glm::dvec2 axisInLight = glm::dvec2(glm::dmat3(map.LightView) * viewAxis);
   const double sine = glm::length(axisInLight);
-  const glm::dvec2 axial = sine > 1e-12 ? axisInLight / sine : glm::dvec2(0.0, 1.0);
+  map.WarpWeight = TrapezoidWarpWeight(std::asin(std::min(sine, 1.0)), fadeAngleDegrees);
+  const glm::dvec3 upOnNearPlane = ToPoint(inverse, glm::dvec3(0.0, 1.0, -1.0)) - nearCentre;
+  const glm::dvec2 axial = CentreLineFrame(sine > 1e-12 ? axisInLight / sine : glm::dvec2(0.0, 1.0),
+    glm::dvec2(glm::dmat3(map.LightView) * upOnNearPlane), map.WarpWeight, map.QuarterTurns);
   const glm::dvec2 lateral(axial.y, -axial.x);
   const glm::dvec2 nearInLight = glm::dvec2(ToPoint(map.LightView, nearCentre));
   const double tCentre = glm::dot(nearInLight, lateral);
@@ -209,8 +257,6 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
   // 2 delta'/lambda - 1 as the light approaches the view axis.
   const double yUnwarped = 2.0 * delta / lambda - 1.0;
   const double yPaper = 2.0 * std::min(std::max(focusFraction, 0.0), 0.999) - 1.0;
-  const double fade = std::sin(glm::radians(std::min(std::max(fadeAngleDegrees, 1e-6), 90.0)));
-  map.WarpWeight = sine > 1e-12 ? std::min(sine / fade, 1.0) : 0.0;
   const double yTarget = yUnwarped + map.WarpWeight * (yPaper - yUnwarped);
 
   // Distance eta from the top edge to q: the 1D projective map y(s) = A + B/s
@@ -305,14 +351,15 @@ glm::dvec4 DepthRow(const TrapezoidMap& map)
 glm::dvec3 MapToTexture(const TrapezoidMap& map, const glm::dvec3& world)
 {
   const glm::dvec3 light = ToPoint(map.LightView, world);
-  const glm::dvec2 ndc = TrapezoidToNdc(map, glm::dvec2(light));
+  const glm::dvec2 ndc =
+    glm::dmat2(QuarterTurnMatrix(map.QuarterTurns)) * TrapezoidToNdc(map, glm::dvec2(light));
   const double depth = glm::dot(DepthRow(map), glm::dvec4(world, 1.0));
   return { 0.5 * ndc.x + 0.5, 0.5 * ndc.y + 0.5, depth };
 }
 
 LightView TrapezoidLightView(const TrapezoidMap& map, int resolution)
 {
-  const glm::dmat3& h = map.TrapezoidToSquare;
+  const glm::dmat3 h = QuarterTurnMatrix(map.QuarterTurns) * map.TrapezoidToSquare;
   const double range = map.DepthFar - map.DepthNear;
   LightView view;
   view.View = map.LightView;

@@ -51,9 +51,14 @@ struct TrapezoidMap
   /// Texture v that the focus point maps to.
   double FocusLine = 0.8;
   /// 1: paper's warp; 0: degenerate trapezoid = rectangle = uniform map.
+  /// A smoothstep of the angle between the view and light lines (FitTrapezoid).
   double WarpWeight = 1.0;
   /// Distance from the top edge to q along the centre line (eta); infinite for a rectangle.
   double VanishingDistance = 0.0;
+  /// Counter-clockwise quarter turns (0..3) of the texture square after N_T, which
+  /// keep the map's orientation continuous (FitTrapezoid). Corners, FocusLine and
+  /// TrapezoidToNdc are before the turn; MapToTexture and TrapezoidLightView after it.
+  int QuarterTurns = 0;
 };
 
 /// 2D convex hull, counter-clockwise, without collinear points (monotone chain).
@@ -65,9 +70,18 @@ std::vector<glm::dvec2> ConvexHull2D(std::vector<glm::dvec2> points);
 /// along the view axis whose shadows must be sharp; focusFraction is the share
 /// of the map given to it (0.8 = the 80% line). The warp fades out continuously
 /// (FocusLine -> the unwarped position, q -> infinity) as the light turns
-/// within fadeAngleDegrees of the view axis, so that light along or against the
+/// within fadeAngleDegrees of the view axis (a smoothstep of the angle, the
+/// rectangle itself within 2 degrees), so that light along or against the
 /// view gives the uniform, focused rectangle (thesis: TSM degrades to a
 /// standard map there). Parallel-projection cameras work the same way.
+///
+/// Orientation: the centre line reverses where the light crosses the view axis,
+/// so the rectangle the warp fades into is oriented by the camera's up instead
+/// (projected on the light's plane). Inside the fade band the trapezoid's frame
+/// turns from the centre line toward the nearest quarter turn of that up, and the
+/// square is turned back by those quarter turns (QuarterTurns), which keeps every
+/// texel on the same world-space grid. Fixed points thus move continuously as the
+/// light passes through the view axis.
 TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& scene,
   const glm::dvec3& lightDirection, double focusDistance, double focusFraction = 0.8,
   double fadeAngleDegrees = 15.0);

@@ -322,3 +322,62 @@ TEST(TrapezoidTSM, NoNaNOverCameraLightSweep)
   }
   EXPECT_EQ(count, 256);
 }
+
+// Issue property: a light turning in 0.1 degree steps through the view axis (and
+// through the axis opposite it) moves the map coordinates of fixed world points by
+// less than 2 texels per step beyond what the focused uniform map's own moves are.
+// The light turns in planes through the view axis at several azimuths about it:
+// the centre line reverses at the axis, which used to flip the map over.
+TEST(TrapezoidTSM, MapMovesContinuouslyThroughTheViewAxis)
+{
+  constexpr int resolution = 2048;
+  const glm::dvec3 eye(0.0, -45.0, 5.0), target(0.0, 0.0, 3.0);
+  const glm::dmat4 camera = Camera(eye, target);
+  const glm::dvec3 view = glm::normalize(target - eye);
+  const glm::dvec3 right = glm::normalize(glm::cross(view, glm::dvec3(0.0, 0.0, 1.0)));
+  const glm::dvec3 up = glm::cross(right, view);
+  const auto body = shadowmaps::IntersectFrustumWithBox(camera, Ground());
+  ASSERT_FALSE(body.empty());
+  std::vector<glm::dvec3> points(body.begin(), body.end());
+  for (size_t i = 0; i + 1 < body.size(); ++i)
+  {
+    points.push_back(0.5 * (body[i] + body[i + 1]));
+  }
+  const auto texels = [&](const shadowmaps::LightView& map, const glm::dvec3& p) {
+    const glm::dvec4 c = shadowmaps::ClipToTexture() * map.ViewProjection() * glm::dvec4(p, 1.0);
+    return glm::dvec2(c) / c.w * double(resolution);
+  };
+  for (double sign : { 1.0, -1.0 })
+  {
+    for (double azimuth : { 0.0, 30.0, 90.0 })
+    {
+      const double a = glm::radians(azimuth);
+      const glm::dvec3 across = std::cos(a) * up + std::sin(a) * right;
+      std::vector<glm::dvec2> previous, previousUniform;
+      double worstExcess = 0.0;
+      for (int step = -20; step <= 20; ++step)
+      {
+        const double t = glm::radians(0.1 * step);
+        const glm::dvec3 light = sign * (std::cos(t) * view + std::sin(t) * across);
+        const auto map = shadowmaps::TrapezoidLightView(
+          shadowmaps::FitTrapezoid(camera, Ground(), light, 10.0), resolution);
+        const auto uniform = shadowmaps::FitDirectional(camera, Ground(), light, resolution);
+        ASSERT_TRUE(shadowmaps::IsFinite(map.ViewProjection()));
+        std::vector<glm::dvec2> current, currentUniform;
+        for (const auto& p : points)
+        {
+          current.push_back(texels(map, p));
+          currentUniform.push_back(texels(uniform, p));
+        }
+        for (size_t i = 0; i < previous.size(); ++i)
+        {
+          worstExcess = std::max(worstExcess,
+            glm::length(current[i] - previous[i]) - glm::length(currentUniform[i] - previousUniform[i]));
+        }
+        previous = current;
+        previousUniform = currentUniform;
+      }
+      EXPECT_LT(worstExcess, 2.0) << "light sign " << sign << ", azimuth " << azimuth;
+    }
+  }
+}
