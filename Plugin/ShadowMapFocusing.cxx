@@ -537,6 +537,11 @@ glm::dmat4 ClipToTexture()
   return glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) * glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
 }
 
+bool IsFiniteVector(const glm::dvec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
 bool IsFinite(const glm::dmat4& m)
 {
   for (int c = 0; c < 4; ++c)

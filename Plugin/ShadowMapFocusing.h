@@ -127,6 +127,7 @@ glm::dmat4 ClipToTexture();
 
 /// True when every element of m is finite.
 bool IsFinite(const glm::dmat4& m);
+bool IsFiniteVector(const glm::dvec3& v);
 
 } // namespace shadowmaps
 

@@ -179,16 +179,37 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
   const glm::dvec3& lightDirection, double focusDistance, double focusFraction,
   double fadeAngleDegrees)
 {
-  const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) } : sceneBounds;
+  TrapezoidFrame frame;
+  frame.Casters = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) } : sceneBounds;
   const double lightLength = glm::length(lightDirection);
-  const glm::dvec3 d = lightLength > 0.0 && std::isfinite(lightLength) ? lightDirection / lightLength
-                                                                          : glm::dvec3(0.0, 0.0, -1.0);
+  if (lightLength > 0.0 && std::isfinite(lightLength))
+  {
+    frame.LightDirection = lightDirection / lightLength;
+  }
+  // B = frustum ∩ scene (survey §4.1).
+  frame.Body = IntersectFrustumWithBox(cameraViewProjection, frame.Casters);
+  const glm::dmat4 inverse = glm::inverse(cameraViewProjection);
+  frame.NearCentre = ToPoint(inverse, glm::dvec3(0.0, 0.0, -1.0));
+  const glm::dvec3 axis = ToPoint(inverse, glm::dvec3(0.0, 0.0, 0.0)) - frame.NearCentre;
+  if (glm::length(axis) > 0.0)
+  {
+    frame.ViewAxis = glm::normalize(axis);
+  }
+  frame.CameraUp = ToPoint(inverse, glm::dvec3(0.0, 1.0, -1.0)) - frame.NearCentre;
+  frame.Focus = frame.NearCentre + frame.ViewAxis * std::max(focusDistance, 0.0);
+  return FitTrapezoidFrame(frame, focusFraction, fadeAngleDegrees);
+}
+
+TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction, double fadeAngleDegrees)
+{
+  const Aabb& scene = frame.Casters;
+  const glm::dvec3& d = frame.LightDirection;
   const double diagonal = std::max(scene.Diagonal(), 1e-300);
   TrapezoidMap map;
   map.LightView = LightLookAt(scene.Center() - d * diagonal, d);
 
-  // Step 1 (thesis): B in light space; B = frustum ∩ scene (survey §4.1).
-  std::vector<glm::dvec3> body = IntersectFrustumWithBox(cameraViewProjection, scene);
+  // Step 1 (thesis): B in light space.
+  std::vector<glm::dvec3> body = frame.Body;
   if (body.empty())
   {
     const auto corners = scene.Corners();
@@ -207,19 +228,14 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
 
   // Step 2: the centre line, from the projected near-plane centre along the
   // projected view axis. Its length per unit of view axis is sin(light, view).
-  const glm::dmat4 inverse = glm::inverse(cameraViewProjection);
-  const glm::dvec3 nearCentre = ToPoint(inverse, glm::dvec3(0.0, 0.0, -1.0));
-  const glm::dvec3 midCentre = ToPoint(inverse, glm::dvec3(0.0, 0.0, 0.0));
-  glm::dvec3 viewAxis = midCentre - nearCentre;
-  viewAxis = glm::length(viewAxis) > 0.0 ? glm::normalize(viewAxis) : glm::dvec3(0.0, 0.0, -1.0);
-  const glm::dvec2 axisInLight = glm::dvec2(glm::dmat3(map.LightView) * viewAxis);
+  const glm::dvec2 axisInLight = glm::dvec2(glm::dmat3(map.LightView) * frame.ViewAxis);
   const double sine = glm::length(axisInLight);
-  map.WarpWeight = TrapezoidWarpWeight(std::asin(std::min(sine, 1.0)), fadeAngleDegrees);
-  const glm::dvec3 upOnNearPlane = ToPoint(inverse, glm::dvec3(0.0, 1.0, -1.0)) - nearCentre;
+  const double gamma = frame.Gamma >= 0.0 ? frame.Gamma : std::asin(std::min(sine, 1.0));
+  map.WarpWeight = TrapezoidWarpWeight(gamma, fadeAngleDegrees);
   const glm::dvec2 axial = CentreLineFrame(sine > 1e-12 ? axisInLight / sine : glm::dvec2(0.0, 1.0),
-    glm::dvec2(glm::dmat3(map.LightView) * upOnNearPlane), map.WarpWeight, map.QuarterTurns);
+    glm::dvec2(glm::dmat3(map.LightView) * frame.CameraUp), map.WarpWeight, map.QuarterTurns);
   const glm::dvec2 lateral(axial.y, -axial.x);
-  const glm::dvec2 nearInLight = glm::dvec2(ToPoint(map.LightView, nearCentre));
+  const glm::dvec2 nearInLight = glm::dvec2(ToPoint(map.LightView, frame.NearCentre));
   const double tCentre = glm::dot(nearInLight, lateral);
 
   // Step 4: top and base perpendicular to the centre line, touching the hull.
@@ -246,8 +262,7 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
   // The focus point P_L: delta from the near plane on the view axis [MT04];
   // delta' is its distance from the top edge along the centre line, kept
   // inside the trapezoid.
-  const glm::dvec2 focusInLight =
-    glm::dvec2(ToPoint(map.LightView, nearCentre + viewAxis * std::max(focusDistance, 0.0)));
+  const glm::dvec2 focusInLight = glm::dvec2(ToPoint(map.LightView, frame.Focus));
   const double deltaRaw = glm::dot(focusInLight, axial) - sTop;
   const double delta = std::min(std::max(deltaRaw, 1e-3 * lambda), lambda);
   map.FocusPoint = focusInLight + axial * (delta - deltaRaw);
@@ -316,6 +331,102 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
   map.DepthNear = depth.x - range * 1e-3;
   map.DepthFar = bodyFar + range * 1e-3;
   return map;
+}
+
+LightView FitSpotTrapezoid(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& sceneBounds, const glm::dvec3& position, const glm::dvec3& direction,
+  double coneAngleDegrees, int resolution, double focusDistance, double focusFraction)
+{
+  const glm::dmat4 cameraViewProjection = cameraProjection * cameraView;
+  const LightView cone =
+    FitSpot(cameraViewProjection, sceneBounds, position, direction, coneAngleDegrees, resolution);
+  const glm::dmat4 toLightSpace = cone.ViewProjection();
+  const glm::dmat4 cameraToWorld = glm::inverse(cameraView);
+  if (sceneBounds.IsEmpty() || !IsFinite(cameraViewProjection) || !IsFinite(toLightSpace) ||
+    !IsFinite(cameraToWorld))
+  {
+    return cone;
+  }
+
+  // B = camera frustum ∩ scene ∩ the spot's frustum, and its view-depth range.
+  const Aabb scene = sceneBounds;
+  std::vector<Plane> planes;
+  for (const auto& set :
+    { FrustumPlanes(cameraViewProjection), BoxPlanes(scene), FrustumPlanes(toLightSpace) })
+  {
+    planes.insert(planes.end(), set.begin(), set.end());
+  }
+  const std::vector<glm::dvec3> worldBody =
+    ConvexPolytopeVertices(planes, std::max(scene.Diagonal(), 1e-300));
+  if (worldBody.empty())
+  {
+    return cone;
+  }
+  TrapezoidFrame frame;
+  double zNear = Infinity, zFar = -Infinity;
+  for (const auto& p : worldBody)
+  {
+    const glm::dvec4 q = toLightSpace * glm::dvec4(p, 1.0);
+    if (!(q.w > 0.0))
+    {
+      return cone;
+    }
+    frame.Body.push_back(glm::dvec3(q) / q.w);
+    const double depth = -(cameraView * glm::dvec4(p, 1.0)).z;
+    zNear = std::min(zNear, depth);
+    zFar = std::max(zFar, depth);
+  }
+
+  // The camera's axis over B's depth range, its focus point and its up, taken
+  // into the spot's post-perspective space (a projective map keeps lines).
+  const glm::dvec3 eye(cameraToWorld[3]);
+  const glm::dvec3 view = glm::normalize(-glm::dvec3(cameraToWorld[2]));
+  const glm::dvec3 up = glm::normalize(glm::dvec3(cameraToWorld[1]));
+  const double delta = focusDistance > 0.0 ? focusDistance : 0.2 * (zFar - zNear);
+  const double step = 1e-3 * std::max(zFar - zNear, scene.Diagonal() * 1e-6);
+  const std::array<glm::dvec3, 4> worldAxis = { eye + view * zNear,
+    eye + view * std::max(zFar, zNear + step), eye + view * (zNear + delta),
+    eye + view * zNear + up * step };
+  std::array<glm::dvec3, 4> axis;
+  for (size_t i = 0; i < worldAxis.size(); ++i)
+  {
+    const glm::dvec4 q = toLightSpace * glm::dvec4(worldAxis[i], 1.0);
+    if (!(q.w > 0.0))
+    {
+      return cone;
+    }
+    axis[i] = glm::dvec3(q) / q.w;
+  }
+  frame.Casters = Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) }; // the spot's frustum
+  frame.LightDirection = glm::dvec3(0.0, 0.0, 1.0);
+  frame.NearCentre = axis[0];
+  frame.ViewAxis = axis[1] - axis[0];
+  frame.Focus = axis[2];
+  frame.CameraUp = axis[3] - axis[0];
+  if (!(glm::length(frame.ViewAxis) > 0.0) || !IsFiniteVector(frame.ViewAxis) ||
+    !IsFiniteVector(frame.CameraUp))
+  {
+    return cone;
+  }
+  frame.ViewAxis = glm::normalize(frame.ViewAxis);
+  // In the world: zero exactly when the camera's axis passes through the light,
+  // which is when the axis runs along the light in the spot's space.
+  const glm::dvec3 toAxis = eye + view * (0.5 * (zNear + zFar)) - position;
+  if (glm::length(toAxis) > 0.0)
+  {
+    frame.Gamma = std::acos(std::min(std::abs(glm::dot(glm::normalize(toAxis), view)), 1.0));
+  }
+
+  LightView fit = TrapezoidLightView(FitTrapezoidFrame(frame, focusFraction), resolution);
+  // Depth is z / w here: the trapezoid's W divides the spot's own depth, but W is
+  // constant along each light ray, so the order along a ray is kept.
+  fit.View = fit.View * toLightSpace;
+  fit.LinearDepth = false;
+  fit.Perspective = true;
+  fit.TexelSizeFromGradient = true;
+  fit.TexelConstant = 0.0;
+  fit.TexelPerUnitDistance = cone.TexelPerUnitDistance;
+  return IsFinite(fit.ViewProjection()) ? fit : cone;
 }
 
 glm::dvec3 NdcToInverseW(const LightView& view)

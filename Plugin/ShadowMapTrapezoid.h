@@ -86,6 +86,46 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
   const glm::dvec3& lightDirection, double focusDistance, double focusFraction = 0.8,
   double fadeAngleDegrees = 15.0);
 
+/// What a trapezoid is built from, in a space where the light is directional: the
+/// world for a directional light (FitTrapezoid), a spot light's post-perspective
+/// space for a spot (FitSpotTrapezoid).
+struct TrapezoidFrame
+{
+  /// Vertices of the focus body B (empty: the corners of Casters), and a box
+  /// holding every caster.
+  std::vector<glm::dvec3> Body;
+  Aabb Casters;
+  /// Unit direction the light travels.
+  glm::dvec3 LightDirection{ 0.0, 0.0, -1.0 };
+  /// The camera's axis: where it enters B's depth range (the near-plane centre),
+  /// its unit direction, the camera's up there, and the focus point delta
+  /// beyond the near plane on it [MT04].
+  glm::dvec3 NearCentre{ 0.0 };
+  glm::dvec3 ViewAxis{ 0.0, 0.0, -1.0 };
+  glm::dvec3 CameraUp{ 0.0, 1.0, 0.0 };
+  glm::dvec3 Focus{ 0.0 };
+  /// Angle (radians) between the view and light lines that sets the warp weight;
+  /// negative: measured in this space. A spot measures it in the world, where it
+  /// changes as fast as the light turns; its post-perspective space magnifies it.
+  double Gamma = -1.0;
+};
+
+/// The trapezoid of FitTrapezoid for any frame.
+TrapezoidMap FitTrapezoidFrame(
+  const TrapezoidFrame& frame, double focusFraction = 0.8, double fadeAngleDegrees = 15.0);
+
+/// Trapezoidal map of a spot light. The spot's cone map S = FitSpot(...) takes the
+/// world to its post-perspective space, where light rays run along +z; B = camera
+/// frustum ∩ scene ∩ the spot's frustum, the camera's axis over B's depth range and
+/// the focus point (focusDistance beyond B's nearest depth, <= 0: a fifth of B's
+/// depth range) are mapped there and the trapezoid is built as for a directional
+/// light (FitTrapezoidFrame). Result: View = trapezoid light view * S, not rigid;
+/// depth is z / w (LinearDepth false); TexelSizeFromGradient is set. Falls back to
+/// the cone map S when B is empty or the camera's axis leaves the spot's side.
+LightView FitSpotTrapezoid(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& scene, const glm::dvec3& position, const glm::dvec3& direction,
+  double coneAngleDegrees, int resolution, double focusDistance = 0.0, double focusFraction = 0.8);
+
 /// Light-space xy -> NDC xy of the trapezoid map (projective division by W).
 glm::dvec2 TrapezoidToNdc(const TrapezoidMap& map, const glm::dvec2& lightXY);
 

@@ -21,11 +21,6 @@ glm::dvec3 Apply(const glm::dmat4& m, const glm::dvec3& p)
   return glm::dvec3(q) / q.w;
 }
 
-bool IsFiniteVector(const glm::dvec3& v)
-{
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // The focused uniform map, used wherever a warp is not possible.
 LightView Uniform(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection, const Aabb& scene,
   const glm::dvec3& lightDirection, int resolution)

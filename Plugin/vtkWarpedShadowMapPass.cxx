@@ -94,6 +94,12 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
 LightView vtkWarpedShadowMapPass::FitSpotLight(const Internals& in, int lightIndex) const
 {
   const shadowmaps::ShadowLight& light = in.Lights[lightIndex];
+  if (this->WarpMode == TSM)
+  {
+    return shadowmaps::FitSpotTrapezoid(in.CameraView, in.CameraProjection, in.SceneBounds,
+      light.Position, light.Direction, light.ConeAngle, in.Resolution, this->TSMFocusDistance,
+      this->TSMFocusFraction);
+  }
   const shadowmaps::WarpOptions options = this->LightSpaceWarpOptions();
   const auto warp = this->WarpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR
                                             : shadowmaps::DirectionalWarp::LiSPSM;
@@ -105,7 +111,7 @@ void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIn
 {
   shadowmaps::ShadowLight& light = internals.Lights[lightIndex];
   const bool spotWarp = light.Kind == shadowmaps::LightKind::Spot &&
-    (this->WarpMode == LISPSM || this->WarpMode == GMNPR);
+    (this->WarpMode == LISPSM || this->WarpMode == GMNPR || this->WarpMode == TSM);
   if (this->WarpMode == UNIFORM ||
     (light.Kind != shadowmaps::LightKind::Directional && !spotWarp))
   {

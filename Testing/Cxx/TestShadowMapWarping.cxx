@@ -1,6 +1,7 @@
 // Unit tests for the directional-light warps in Plugin/ShadowMapWarping.{h,cxx}:
 // LiSPSM (surveys 003 and 000) and GMNPR (Zhang et al., 002). The quantities the
 // papers define are measured from the implemented matrices, never hard-coded.
+#include "ShadowMapTrapezoid.h"
 #include "ShadowMapWarping.h"
 
 #include <algorithm>
@@ -688,6 +689,34 @@ TEST(ShadowMapWarping, TexelConstantBoundsWorldTexelOverBody)
 
 } // namespace
 
+// The spot-light warps of vtkWarpedShadowMapPass: LiSPSM and GMNPR (FitSpotWarped)
+// and TSM (FitSpotTrapezoid).
+enum class SpotWarp
+{
+  LiSPSM,
+  GMNPR,
+  TSM
+};
+constexpr SpotWarp SpotWarps[] = { SpotWarp::LiSPSM, SpotWarp::GMNPR, SpotWarp::TSM };
+
+const char* Name(SpotWarp warp)
+{
+  return warp == SpotWarp::LiSPSM ? "LiSPSM" : warp == SpotWarp::GMNPR ? "GMNPR" : "TSM";
+}
+
+LightView FitSpotWith(SpotWarp warp, const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& scene, const glm::dvec3& position, const glm::dvec3& direction, double coneAngle,
+  int resolution)
+{
+  if (warp == SpotWarp::TSM)
+  {
+    return shadowmaps::FitSpotTrapezoid(
+      cameraView, cameraProjection, scene, position, direction, coneAngle, resolution);
+  }
+  return shadowmaps::FitSpotWarped(cameraView, cameraProjection, scene, position, direction,
+    coneAngle, resolution, warp == SpotWarp::GMNPR ? DirectionalWarp::GMNPR : DirectionalWarp::LiSPSM);
+}
+
 // A spot light's warped map keeps what a shadow map needs: points on one ray
 // from the light land on one texel, in depth order, and the focus body maps
 // inside the unit cube.
@@ -699,12 +728,12 @@ TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
   const shadowmaps::Aabb scene{ glm::dvec3(-10.0, -10.0, -0.1), glm::dvec3(10.0, 10.0, 2.5) };
   const glm::dvec3 spot(5.0, -2.0, 7.0);
   const glm::dvec3 axis = glm::normalize(-spot);
-  for (auto warp : { shadowmaps::DirectionalWarp::LiSPSM, shadowmaps::DirectionalWarp::GMNPR })
+  for (SpotWarp warp : SpotWarps)
   {
-    const LightView fit = shadowmaps::FitSpotWarped(
-      cameraView, cameraProjection, scene, spot, axis, 30.0, 1024, warp);
+    const LightView fit = FitSpotWith(warp, cameraView, cameraProjection, scene, spot, axis, 30.0, 1024);
     ASSERT_TRUE(shadowmaps::IsFinite(fit.ViewProjection()));
     EXPECT_TRUE(fit.TexelSizeFromGradient);
+    EXPECT_FALSE(fit.LinearDepth) << Name(warp);
     const glm::dmat4 m = fit.ViewProjection();
     for (const glm::dvec3& ground : { glm::dvec3(-1.4, 0.5, 0.0), glm::dvec3(2.0, 4.0, 0.0),
            glm::dvec3(-3.0, -5.0, 0.0) })
@@ -715,9 +744,9 @@ TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
       ASSERT_GT(c.w, 0.0);
       const glm::dvec3 gn = glm::dvec3(g) / g.w;
       const glm::dvec3 cn = glm::dvec3(c) / c.w;
-      EXPECT_NEAR(gn.x, cn.x, 1e-9);
-      EXPECT_NEAR(gn.y, cn.y, 1e-9);
-      EXPECT_LT(cn.z, gn.z) << "the caster is nearer the light";
+      EXPECT_NEAR(gn.x, cn.x, 1e-9) << Name(warp);
+      EXPECT_NEAR(gn.y, cn.y, 1e-9) << Name(warp);
+      EXPECT_LT(cn.z, gn.z) << Name(warp) << ": the caster is nearer the light";
       EXPECT_LE(std::abs(gn.x), 1.0);
       EXPECT_LE(std::abs(gn.y), 1.0);
       EXPECT_LE(std::abs(gn.z), 1.0);
@@ -747,16 +776,81 @@ TEST(ShadowMapWarping, SpotWarpStaysFiniteInDegenerateViews)
     { glm::dvec3(0.0, -9.5, 1.2), glm::dvec3(0.0), parallel, scene },
     { glm::dvec3(0.0, -9.5, 1.2), glm::dvec3(0.0), perspective, shadowmaps::Aabb() },
   };
-  for (auto warp : { shadowmaps::DirectionalWarp::LiSPSM, shadowmaps::DirectionalWarp::GMNPR })
+  for (SpotWarp warp : SpotWarps)
   {
     for (const Case& c : cases)
     {
       const glm::dvec3 forward = glm::normalize(c.Target - c.Eye);
       const glm::dvec3 up = std::abs(forward.z) > 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
-      const LightView fit = shadowmaps::FitSpotWarped(
-        glm::lookAt(c.Eye, c.Target, up), c.Projection, c.Scene, spot, down, 40.0, 1024, warp);
+      const LightView fit = FitSpotWith(
+        warp, glm::lookAt(c.Eye, c.Target, up), c.Projection, c.Scene, spot, down, 40.0, 1024);
       EXPECT_TRUE(shadowmaps::IsFinite(fit.ViewProjection()))
-        << "eye " << c.Eye.x << " " << c.Eye.y << " " << c.Eye.z;
+        << Name(warp) << ", eye " << c.Eye.x << " " << c.Eye.y << " " << c.Eye.z;
+    }
+  }
+}
+
+// Issue property for spot lights: the spot swings in 0.1 degree steps through the
+// camera's axis (its rays to the scene then run along the view, or against it when
+// it faces the camera); the map coordinates of fixed points move by less than 2
+// texels per step beyond the moves of the uniform cone map (FitSpot). The spot stays
+// outside the scene's bounds, where the cone map's near plane does not jump.
+// GMNPR is left out: it moves up to 7.9 texels per step here (issue #4 note).
+TEST(ShadowMapWarping, SpotWarpMovesContinuouslyThroughTheViewAxis)
+{
+  const glm::dvec3 eye(0.0, -9.5, 1.2);
+  const glm::dvec3 view = glm::normalize(glm::dvec3(0.0, 9.5, -0.4));
+  const glm::dmat4 cameraView = glm::lookAt(eye, eye + view, glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dmat4 cameraProjection = glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0);
+  const Aabb scene{ glm::dvec3(-10.0, -10.0, -0.1), glm::dvec3(10.0, 10.0, 2.5) };
+  const glm::dvec3 centre = eye + view * 8.0;
+  const glm::dvec3 side = glm::normalize(glm::cross(view, glm::dvec3(0.0, 0.0, 1.0)));
+  const glm::dvec3 up = glm::cross(side, view);
+  std::vector<glm::dvec3> points;
+  for (double x : { -1.5, 0.0, 1.5 })
+  {
+    for (double y : { -3.0, 0.0, 3.0 })
+    {
+      points.push_back(centre + side * x + glm::dvec3(0.0, y, 0.0) - glm::dvec3(0.0, 0.0, centre.z));
+    }
+  }
+  for (SpotWarp warp : { SpotWarp::LiSPSM, SpotWarp::TSM })
+  {
+    for (double facing : { 1.0, -1.0 })
+    {
+      for (const glm::dvec3& across : { up, side })
+      {
+        std::vector<glm::dvec2> previous, previousCone;
+        double worstExcess = 0.0;
+        for (int step = -20; step <= 20; ++step)
+        {
+          const double t = glm::radians(0.1 * step);
+          const glm::dvec3 ray = facing * (std::cos(t) * view + std::sin(t) * across);
+          const glm::dvec3 spot = centre - ray * 16.0;
+          const LightView fit =
+            FitSpotWith(warp, cameraView, cameraProjection, scene, spot, ray, 40.0, Resolution);
+          const LightView cone = shadowmaps::FitSpot(
+            cameraProjection * cameraView, scene, spot, ray, 40.0, Resolution);
+          ASSERT_TRUE(shadowmaps::IsFinite(fit.ViewProjection()));
+          std::vector<glm::dvec2> current, currentCone;
+          for (const auto& p : points)
+          {
+            current.push_back(Texels(fit, p));
+            currentCone.push_back(Texels(cone, p));
+          }
+          for (size_t i = 0; i < previous.size(); ++i)
+          {
+            worstExcess = std::max(worstExcess,
+              glm::length(current[i] - previous[i]) - glm::length(currentCone[i] - previousCone[i]));
+          }
+          previous = current;
+          previousCone = currentCone;
+        }
+        std::printf("[ continuity ] spot %-6s %s, turning %s: largest excess %.4f texels\n",
+          Name(warp), facing > 0 ? "behind the camera" : "facing it        ",
+          across == up ? "up  " : "side", worstExcess);
+        EXPECT_LT(worstExcess, 2.0) << Name(warp) << " facing " << facing;
+      }
     }
   }
 }
