@@ -795,7 +795,7 @@ TEST(ShadowMapWarping, SpotWarpStaysFiniteInDegenerateViews)
 // it faces the camera); the map coordinates of fixed points move by less than 2
 // texels per step beyond the moves of the uniform cone map (FitSpot). The spot stays
 // outside the scene's bounds, where the cone map's near plane does not jump.
-// GMNPR is left out: it moves up to 7.9 texels per step here (issue #4 note).
+// GMNPR does not meet the bound yet (issue #4): its moves are printed, not checked.
 TEST(ShadowMapWarping, SpotWarpMovesContinuouslyThroughTheViewAxis)
 {
   const glm::dvec3 eye(0.0, -9.5, 1.2);
@@ -814,7 +814,7 @@ TEST(ShadowMapWarping, SpotWarpMovesContinuouslyThroughTheViewAxis)
       points.push_back(centre + side * x + glm::dvec3(0.0, y, 0.0) - glm::dvec3(0.0, 0.0, centre.z));
     }
   }
-  for (SpotWarp warp : { SpotWarp::LiSPSM, SpotWarp::TSM })
+  for (SpotWarp warp : SpotWarps)
   {
     for (double facing : { 1.0, -1.0 })
     {
@@ -849,7 +849,10 @@ TEST(ShadowMapWarping, SpotWarpMovesContinuouslyThroughTheViewAxis)
         std::printf("[ continuity ] spot %-6s %s, turning %s: largest excess %.4f texels\n",
           Name(warp), facing > 0 ? "behind the camera" : "facing it        ",
           across == up ? "up  " : "side", worstExcess);
-        EXPECT_LT(worstExcess, 2.0) << Name(warp) << " facing " << facing;
+        if (warp != SpotWarp::GMNPR)
+        {
+          EXPECT_LT(worstExcess, 2.0) << Name(warp) << " facing " << facing;
+        }
       }
     }
   }
