@@ -1,5 +1,6 @@
 // Unit tests for the trapezoidal shadow map math (Plugin/ShadowMapTrapezoid.{h,cxx}).
 #include "ShadowMapTrapezoid.h"
+#include "ShadowMapMotion.h"
 
 #include <cmath>
 #include <vector>
@@ -343,41 +344,23 @@ TEST(TrapezoidTSM, MapMovesContinuouslyThroughTheViewAxis)
   {
     points.push_back(0.5 * (body[i] + body[i + 1]));
   }
-  const auto texels = [&](const shadowmaps::LightView& map, const glm::dvec3& p) {
-    const glm::dvec4 c = shadowmaps::ClipToTexture() * map.ViewProjection() * glm::dvec4(p, 1.0);
-    return glm::dvec2(c) / c.w * double(resolution);
-  };
   for (double sign : { 1.0, -1.0 })
   {
     for (double azimuth : { 0.0, 30.0, 90.0 })
     {
       const double a = glm::radians(azimuth);
       const glm::dvec3 across = std::cos(a) * up + std::sin(a) * right;
-      std::vector<glm::dvec2> previous, previousUniform;
-      double worstExcess = 0.0;
+      shadowmaps::testing::ExcessMotion motion(points, resolution);
       for (int step = -20; step <= 20; ++step)
       {
         const double t = glm::radians(0.1 * step);
         const glm::dvec3 light = sign * (std::cos(t) * view + std::sin(t) * across);
         const auto map = shadowmaps::TrapezoidLightView(
           shadowmaps::FitTrapezoid(camera, Ground(), light, 10.0), resolution);
-        const auto uniform = shadowmaps::FitDirectional(camera, Ground(), light, resolution);
         ASSERT_TRUE(shadowmaps::IsFinite(map.ViewProjection()));
-        std::vector<glm::dvec2> current, currentUniform;
-        for (const auto& p : points)
-        {
-          current.push_back(texels(map, p));
-          currentUniform.push_back(texels(uniform, p));
-        }
-        for (size_t i = 0; i < previous.size(); ++i)
-        {
-          worstExcess = std::max(worstExcess,
-            glm::length(current[i] - previous[i]) - glm::length(currentUniform[i] - previousUniform[i]));
-        }
-        previous = current;
-        previousUniform = currentUniform;
+        motion.Step(map, shadowmaps::FitDirectional(camera, Ground(), light, resolution));
       }
-      EXPECT_LT(worstExcess, 2.0) << "light sign " << sign << ", azimuth " << azimuth;
+      EXPECT_LT(motion.Worst(), 2.0) << "light sign " << sign << ", azimuth " << azimuth;
     }
   }
 }

@@ -1,6 +1,7 @@
 // Unit tests for the directional-light warps in Plugin/ShadowMapWarping.{h,cxx}:
 // LiSPSM (surveys 003 and 000) and GMNPR (Zhang et al., 002). The quantities the
 // papers define are measured from the implemented matrices, never hard-coded.
+#include "ShadowMapMotion.h"
 #include "ShadowMapTrapezoid.h"
 #include "ShadowMapWarping.h"
 
@@ -413,33 +414,18 @@ TEST(ShadowMapWarping, WarpIsContinuousThroughDegenerateAngle)
   {
     for (double opposite : { 1.0, -1.0 })
     {
-      double worstExcess = -1.0, worstWarped = 0.0, worstUniform = 0.0;
-      std::vector<glm::dvec2> previous, previousUniform;
+      shadowmaps::testing::ExcessMotion motion(points, Resolution);
       for (int step = -20; step <= 20; ++step)
       {
         const double t = glm::radians(0.1 * step);
         const glm::dvec3 light(0.0, -std::sin(t), -opposite * std::cos(t));
-        const LightView fit = shadowmaps::FitDirectionalWarped(
-          camera.View, camera.Projection, scene, light, Resolution, warp);
-        const LightView uniform =
-          shadowmaps::FitDirectional(camera.Projection * camera.View, scene, light, Resolution);
-        std::vector<glm::dvec2> current, currentUniform;
-        for (const auto& p : points)
-        {
-          current.push_back(Texels(fit, p));
-          currentUniform.push_back(Texels(uniform, p));
-        }
-        for (size_t i = 0; i < previous.size(); ++i)
-        {
-          const double move = glm::length(current[i] - previous[i]);
-          const double moveUniform = glm::length(currentUniform[i] - previousUniform[i]);
-          worstWarped = std::max(worstWarped, move);
-          worstUniform = std::max(worstUniform, moveUniform);
-          worstExcess = std::max(worstExcess, move - moveUniform);
-        }
-        previous = current;
-        previousUniform = currentUniform;
+        motion.Step(shadowmaps::FitDirectionalWarped(
+                      camera.View, camera.Projection, scene, light, Resolution, warp),
+          shadowmaps::FitDirectional(camera.Projection * camera.View, scene, light, Resolution));
       }
+      const double worstExcess = motion.Worst();
+      const double worstWarped = motion.LargestMove();
+      const double worstUniform = motion.LargestReferenceMove();
       std::printf("[ continuity ] %-6s %s: largest move per 0.1 deg step %.4f texels "
                   "(FitDirectional %.4f), largest excess %.4f\n",
         Name(warp), opposite > 0 ? "through view dir " : "through -view dir", worstWarped,
@@ -820,8 +806,7 @@ TEST(ShadowMapWarping, SpotWarpMovesContinuouslyThroughTheViewAxis)
     {
       for (const glm::dvec3& across : { up, side })
       {
-        std::vector<glm::dvec2> previous, previousCone;
-        double worstExcess = 0.0;
+        shadowmaps::testing::ExcessMotion motion(points, Resolution);
         for (int step = -20; step <= 20; ++step)
         {
           const double t = glm::radians(0.1 * step);
@@ -829,23 +814,11 @@ TEST(ShadowMapWarping, SpotWarpMovesContinuouslyThroughTheViewAxis)
           const glm::dvec3 spot = centre - ray * 16.0;
           const LightView fit =
             FitSpotWith(warp, cameraView, cameraProjection, scene, spot, ray, 40.0, Resolution);
-          const LightView cone = shadowmaps::FitSpot(
-            cameraProjection * cameraView, scene, spot, ray, 40.0, Resolution);
           ASSERT_TRUE(shadowmaps::IsFinite(fit.ViewProjection()));
-          std::vector<glm::dvec2> current, currentCone;
-          for (const auto& p : points)
-          {
-            current.push_back(Texels(fit, p));
-            currentCone.push_back(Texels(cone, p));
-          }
-          for (size_t i = 0; i < previous.size(); ++i)
-          {
-            worstExcess = std::max(worstExcess,
-              glm::length(current[i] - previous[i]) - glm::length(currentCone[i] - previousCone[i]));
-          }
-          previous = current;
-          previousCone = currentCone;
+          motion.Step(fit,
+            shadowmaps::FitSpot(cameraProjection * cameraView, scene, spot, ray, 40.0, Resolution));
         }
+        const double worstExcess = motion.Worst();
         std::printf("[ continuity ] spot %-6s %s, turning %s: largest excess %.4f texels\n",
           Name(warp), facing > 0 ? "behind the camera" : "facing it        ",
           across == up ? "up  " : "side", worstExcess);
