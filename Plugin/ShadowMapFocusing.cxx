@@ -537,6 +537,18 @@ glm::dmat4 ClipToTexture()
   return glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) * glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
 }
 
+std::vector<glm::dvec3> SpotFocusBody(
+  const glm::dmat4& cameraViewProjection, const Aabb& scene, const glm::dmat4& lightViewProjection)
+{
+  std::vector<Plane> planes;
+  for (const auto& set :
+    { FrustumPlanes(cameraViewProjection), BoxPlanes(scene), FrustumPlanes(lightViewProjection) })
+  {
+    planes.insert(planes.end(), set.begin(), set.end());
+  }
+  return ConvexPolytopeVertices(planes, std::max(scene.Diagonal(), 1e-300));
+}
+
 bool IsFiniteVector(const glm::dvec3& v)
 {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -56,6 +56,11 @@ std::array<Plane, 6> BoxPlanes(const Aabb& box);
 /// repeat. Empty when the planes have no common point.
 std::vector<glm::dvec3> ConvexPolytopeVertices(const std::vector<Plane>& planes, double scale);
 
+/// Vertices of the focus body of a spot light: camera frustum ∩ scene box ∩ the
+/// spot's frustum (lightViewProjection). Empty when they do not meet.
+std::vector<glm::dvec3> SpotFocusBody(
+  const glm::dmat4& cameraViewProjection, const Aabb& scene, const glm::dmat4& lightViewProjection);
+
 /// Vertices of the convex body frustum ∩ box: frustum corners inside the box,
 /// box corners inside the frustum, and the crossings of each body's edges with
 /// the other's faces. Empty when they do not meet. With the scene bounds as box

@@ -349,15 +349,8 @@ LightView FitSpotTrapezoid(const glm::dmat4& cameraView, const glm::dmat4& camer
   }
 
   // B = camera frustum ∩ scene ∩ the spot's frustum, and its view-depth range.
-  const Aabb scene = sceneBounds;
-  std::vector<Plane> planes;
-  for (const auto& set :
-    { FrustumPlanes(cameraViewProjection), BoxPlanes(scene), FrustumPlanes(toLightSpace) })
-  {
-    planes.insert(planes.end(), set.begin(), set.end());
-  }
-  const std::vector<glm::dvec3> worldBody =
-    ConvexPolytopeVertices(planes, std::max(scene.Diagonal(), 1e-300));
+  const Aabb& scene = sceneBounds;
+  const std::vector<glm::dvec3> worldBody = SpotFocusBody(cameraViewProjection, scene, toLightSpace);
   if (worldBody.empty())
   {
     return cone;

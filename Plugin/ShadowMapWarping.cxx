@@ -442,13 +442,7 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
 
   // B in the world, kept inside the spot's frustum so that it maps with w > 0.
   const Aabb scene = NonDegenerate(sceneBounds);
-  std::vector<Plane> planes;
-  for (const auto& set :
-    { FrustumPlanes(cameraViewProjection), BoxPlanes(scene), FrustumPlanes(toLightSpace) })
-  {
-    planes.insert(planes.end(), set.begin(), set.end());
-  }
-  const std::vector<glm::dvec3> worldBody = ConvexPolytopeVertices(planes, scene.Diagonal());
+  const std::vector<glm::dvec3> worldBody = SpotFocusBody(cameraViewProjection, scene, toLightSpace);
   if (worldBody.empty())
   {
     return cone;
