@@ -428,6 +428,14 @@ LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& sceneBound
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 }
                                            : Inflated(sceneBounds);
+  return FitSpotToBody(
+    BodyOrScene(cameraViewProjection, scene), scene, position, direction, coneAngleDegrees, resolution);
+}
+
+LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& sceneBounds,
+  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees, int resolution)
+{
+  const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 } : sceneBounds;
   LightView fit;
   fit.View = LightLookAt(position, direction);
   const double halfAngle = glm::radians(std::min(std::max(coneAngleDegrees, 0.5), 80.0));
@@ -438,7 +446,7 @@ LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& sceneBound
   double bodyFar = 0.0;
   bool cropValid = true;
   const double diagonal = scene.Diagonal();
-  for (const auto& p : BodyOrScene(cameraViewProjection, scene))
+  for (const auto& p : body)
   {
     const glm::dvec3 q = Transform(fit.View, p);
     bodyFar = std::max(bodyFar, -q.z);

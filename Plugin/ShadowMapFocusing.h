@@ -120,6 +120,11 @@ LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& scene,
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
   int resolution);
 
+/// FitSpot's fit for given body points (B's vertices; the cone when the body is
+/// empty or reaches behind the light); scene as is (FitSpot inflates it).
+LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& scene,
+  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees, int resolution);
+
 /// Point light: six 90 degree faces in the order +x, -x, +y, -y, +z, -z, each
 /// with near/far covering the scene.
 std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& position, int resolution);

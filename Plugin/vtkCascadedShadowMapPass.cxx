@@ -61,6 +61,21 @@ shadowmaps::LightView FitCascade(const glm::dmat4& cameraView, const glm::dmat4&
   }
   return shadowmaps::FitCascadeTight(cameraView, subProjection, scene, lightDirection, resolution);
 }
+
+// One cascade's view of a spot light, focused on the cascade's part of the scene
+// inside the cone: cascades that hold only unlit scene would otherwise each take
+// the whole cone.
+shadowmaps::LightView FitSpotCascade(const shadowmaps::ShadowLight& light,
+  const glm::dmat4& cascadeViewProjection, const shadowmaps::Aabb& scene, int resolution)
+{
+  const shadowmaps::LightView cone = shadowmaps::FitSpot(
+    cascadeViewProjection, scene, light.Position, light.Direction, light.ConeAngle, resolution);
+  const std::vector<glm::dvec3> lit =
+    shadowmaps::SpotFocusBody(cascadeViewProjection, scene, cone.ViewProjection());
+  return lit.empty() ? cone
+                     : shadowmaps::FitSpotToBody(
+                         lit, scene, light.Position, light.Direction, light.ConeAngle, resolution);
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -200,7 +215,7 @@ std::vector<double> vtkCascadedShadowMapPass::ComputeSplits(const Internals& in,
 void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
 {
   shadowmaps::ShadowLight& light = in.Lights[lightIndex];
-  if (light.Kind != shadowmaps::LightKind::Directional)
+  if (light.Cube)
   {
     this->FitLightViewsUniform(in, lightIndex);
     return;
@@ -209,19 +224,23 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
   const std::vector<double> splits = this->ComputeSplits(in, fade);
   this->LastSplits = splits;
 
-  light.Views.clear();
-  light.CascadeDepths.clear();
+  std::vector<shadowmaps::LightView> views;
+  std::vector<glm::dvec3> depthsOfCascades;
   const int cascades = static_cast<int>(splits.size()) - 1;
   for (int c = 0; c < cascades; ++c)
   {
     const glm::dvec2 depths = shadowmaps::CascadeDepthRange(splits, c, this->BlendFraction);
     const glm::dmat4 sub = shadowmaps::SubFrustumProjection(in.CameraProjection, depths.x, depths.y);
-    light.Views.push_back(FitCascade(
-      in.CameraView, sub, in.SceneBounds, in.Resolution, light.Direction, this->FitMode, this->CascadeWarp));
+    views.push_back(light.Kind == shadowmaps::LightKind::Spot
+        ? FitSpotCascade(light, sub * in.CameraView, in.SceneBounds, in.Resolution)
+        : FitCascade(in.CameraView, sub, in.SceneBounds, in.Resolution, light.Direction,
+            this->FitMode, this->CascadeWarp));
     const double blendStart = splits[c + 1] - this->BlendFraction * (splits[c + 1] - splits[c]);
-    light.CascadeDepths.emplace_back(
+    depthsOfCascades.emplace_back(
       splits[c], splits[c + 1], this->BlendFraction > 0.0 && c + 1 < cascades ? blendStart : NoBlend);
   }
+  light.Views = std::move(views);
+  light.CascadeDepths = std::move(depthsOfCascades);
   light.Cascaded = true;
   light.CoverageBlendFraction = this->Selection == BY_COVERAGE ? this->BlendFraction : -1.0;
   light.Fade = glm::dvec2(fade[0], fade[1]);

@@ -1,6 +1,6 @@
 /**
  * @class   vtkCascadedShadowMapPass
- * @brief   Cascaded shadow maps for directional lights.
+ * @brief   Cascaded shadow maps for directional and spot lights.
  *
  * The camera's view depth up to MaximumShadowDistance is split into
  * NumberOfCascades partitions (survey 003 §4.3.1, PSSM's practical scheme, or
@@ -17,7 +17,11 @@
  * direction), blend into the next cascade over the last BlendFraction of each
  * cascade, and fade out over the last FadeFraction before MaximumShadowDistance
  * when that distance cuts the visible scene. Filter kernels keep their world
- * size in every cascade. Spot and point lights use the foundation's maps.
+ * size in every cascade. Spot lights are cascaded too: each cascade's map is the
+ * spot's frustum cropped to its sub-frustum's part of the scene inside the cone
+ * (fitted tight in either FitMode; FitMode and CascadeWarp apply to directional
+ * lights). Point lights, and spots wider than one map holds, keep the
+ * foundation's cube maps at the cascades' Resolution.
  *
  * Resolution is per cascade (default 1024: four cascades hold the memory of one
  * 2048² map).

@@ -393,3 +393,52 @@ TEST(ShadowCascades, StableSplitsStayWhenTheCameraMovesALittle)
     }
   }
 }
+
+// A spot light is cascaded like the sun: one map per split, each focused on the
+// part of its sub-frustum inside the cone; the probes' shadows, cast from the
+// spot's position, land in the first and last cascades. A point light keeps
+// its six cube faces.
+TEST(ShadowCascades, SpotLightsAreCascadedPointLightsKeepCubeFaces)
+{
+  const glm::dvec3 spot(1.5, 2.0, 14.0);
+  TestScene scene;
+  LookAlongTheGround(scene);
+  scene.Sphere->SetVisibility(false);
+  scene.Box->SetVisibility(false);
+  scene.SetSpot(spot, 50.0);
+  std::vector<glm::dvec3> shadows;
+  for (const glm::dvec2 place : { glm::dvec2(4.0, -1.5), glm::dvec2(9.0, 0.0), glm::dvec2(16.0, 1.5) })
+  {
+    const glm::dvec3 ground = GroundAtDepth(place.x, place.y);
+    // A box 1 above the ground on the line from the spot to `ground`, long along
+    // the view so that its shadow stays several pixels tall far away.
+    const glm::dvec3 center = spot + (ground - spot) * ((spot.z - 1.0) / spot.z);
+    AddBox(scene, center, { 0.6, 2.5, 0.6 });
+    shadows.push_back(ground);
+  }
+  auto pass = MakeProbedPass();
+  pass->SetMaximumShadowDistance(0.0);
+  pass->SetFitMode(vtkCascadedShadowMapPass::TIGHT);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4) << "one layer per cascade";
+  ASSERT_EQ(pass->GetNumberOfSplits(), 5);
+  EXPECT_LT(DepthOf(shadows.front()), pass->GetSplit(1));
+  EXPECT_GT(DepthOf(shadows.back()), pass->GetSplit(3));
+  for (size_t i = 0; i < shadows.size(); ++i)
+  {
+    ASSERT_GE(ColorAt(scene.Renderer, image, shadows[i]).r, 0) << "shadow " << i << " off the image";
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, shadows[i]), ShadowedBelow) << "shadow " << i;
+    const glm::dvec3 beside = shadows[i] + glm::dvec3(1.2, 0.0, 0.0);
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, beside), LitAbove) << "beside shadow " << i;
+  }
+  const std::string difference = CompareWithBaseline(image, "CascadesSpot");
+  EXPECT_TRUE(difference.empty()) << difference;
+
+  scene.SetPoint(spot);
+  image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << "a point light keeps its cube faces";
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, shadows.back()), ShadowedBelow);
+}
