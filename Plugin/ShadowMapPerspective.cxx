@@ -1,10 +1,13 @@
 #include "ShadowMapPerspective.h"
 
+#include "ShadowMapWarping.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace shadowmaps
@@ -13,6 +16,30 @@ namespace
 {
 
 constexpr double Infinity = std::numeric_limits<double>::infinity();
+// cos 60 degrees: see SlideBackKeepingTheLightAway.
+constexpr double WidestLightConeCosine = 0.5;
+
+// Near plane distance of an OpenGL perspective projection.
+double NearDistance(const glm::dmat4& projection)
+{
+  return projection[3][2] / (projection[2][2] - 1.0);
+}
+
+// The light camera is fitted in post-perspective space scaled by a^(1 - weight),
+// a = the camera's near-plane half size (x, y) and half depth range (z). As the
+// weight goes to 0 the virtual camera slides back to infinity and
+// post-perspective space tends to the camera's view space divided by a:
+// stretched thousands of times more across than in depth, where a light a few
+// degrees off the view looks almost perpendicular to it and the map swings
+// fast. Scaled by a it tends to view space itself, whose cones and
+// perpendiculars are the world's; at weight 1 it is post-perspective space.
+glm::dmat4 FittingScale(const glm::dmat4& cameraProjection, double weight)
+{
+  const double near = NearDistance(cameraProjection);
+  const double far = cameraProjection[3][2] / (cameraProjection[2][2] + 1.0);
+  const glm::dvec3 a(near / cameraProjection[0][0], near / cameraProjection[1][1], 0.5 * (far - near));
+  return glm::scale(glm::dmat4(1.0), glm::pow(a, glm::dvec3(1.0 - weight)));
+}
 
 glm::dvec3 ToPoint(const glm::dmat4& m, const glm::dvec3& p)
 {
@@ -25,26 +52,201 @@ bool IsParallelProjection(const glm::dmat4& projection)
   return projection[2][3] == 0.0;
 }
 
-// Light-camera view in post-perspective space (an affine look-at).
-glm::dmat4 LookFrom(const glm::dvec3& eye, const glm::dvec3& axis)
+// View matrix of a light camera at `origin` whose camera x, y and -z axes are
+// right, up and forward: camera coordinates are the coefficients of
+// (p - origin) in that basis.
+glm::dmat4 FrameView(
+  const glm::dvec3& origin, const glm::dvec3& right, const glm::dvec3& up, const glm::dvec3& forward)
 {
-  return LightLookAt(eye, axis);
+  return glm::inverse(glm::dmat4(
+    glm::dvec4(right, 0.0), glm::dvec4(up, 0.0), glm::dvec4(-forward, 0.0), glm::dvec4(origin, 1.0)));
 }
 
-// Unit vector from eye along the mean of the unit directions to the points.
-glm::dvec3 MeanDirection(const glm::dvec3& eye, const std::vector<glm::dvec3>& points)
+// The image of direction v at world point p under the projective map m.
+glm::dvec3 PushForward(const glm::dmat4& m, const glm::dvec3& p, const glm::dvec3& v)
 {
-  glm::dvec3 sum(0.0);
+  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+  const glm::dvec4 dq = m * glm::dvec4(v, 0.0);
+  return (glm::dvec3(dq) - glm::dvec3(q) / q.w * dq.w) / q.w;
+}
+
+// Axis of the narrowest cone from eye that holds every point (Kozlov's minimal
+// cone around B). The narrowest cone is unique, so its axis moves continuously
+// with the points; it is among the cones whose rim passes through two or three
+// of them: the candidate whose widest point is nearest wins. The zero vector when
+// a point is at the eye or the cone would be (nearly) a half-space.
+glm::dvec3 NarrowestConeAxis(const glm::dvec3& eye, const std::vector<glm::dvec3>& points)
+{
+  std::vector<glm::dvec3> u;
   for (const auto& p : points)
   {
     const double length = glm::length(p - eye);
-    if (length > 0.0)
+    if (!(length > 0.0))
     {
-      sum += (p - eye) / length;
+      return glm::dvec3(0.0);
+    }
+    u.push_back((p - eye) / length);
+  }
+  double bestCosine = -1.0;
+  glm::dvec3 best(0.0);
+  auto consider = [&](glm::dvec3 axis) {
+    const double length = glm::length(axis);
+    if (!(length > 1e-12))
+    {
+      return;
+    }
+    axis /= length;
+    double cosine = 1.0;
+    for (const auto& v : u)
+    {
+      cosine = std::min(cosine, glm::dot(axis, v));
+    }
+    if (cosine > bestCosine)
+    {
+      bestCosine = cosine;
+      best = axis;
+    }
+  };
+  const size_t n = u.size();
+  for (size_t i = 0; i < n; ++i)
+  {
+    for (size_t j = i + 1; j < n; ++j)
+    {
+      consider(u[i] + u[j]);
+      for (size_t k = j + 1; k < n; ++k)
+      {
+        const glm::dvec3 normal = glm::cross(u[j] - u[i], u[k] - u[i]);
+        consider(glm::dot(normal, u[i]) >= 0.0 ? normal : -normal);
+      }
     }
   }
-  return glm::length(sum) > 0.0 ? glm::normalize(sum) : glm::dvec3(0.0, 0.0, -1.0);
+  if (n == 1)
+  {
+    best = u.front();
+    bestCosine = 1.0;
+  }
+  return bestCosine > 1e-3 ? best : glm::dvec3(0.0);
 }
+
+// Cosine of the half-angle of the narrowest cone from the light's position in
+// post-perspective space `post` that holds the body's points; 1 for a light that
+// stays directional there, -1 when no cone narrower than a half-space holds them.
+double LightConeCosine(
+  const glm::dmat4& post, const std::vector<glm::dvec3>& body, const glm::dvec3& lightDirection)
+{
+  const glm::dvec4 light = post * glm::dvec4(-lightDirection, 0.0);
+  std::vector<glm::dvec3> points;
+  glm::dvec3 lo(Infinity), hi(-Infinity);
+  for (const auto& p : body)
+  {
+    points.push_back(ToPoint(post, p));
+    lo = glm::min(lo, points.back());
+    hi = glm::max(hi, points.back());
+  }
+  if (!(std::abs(light.w) * 1e6 * 0.5 * glm::length(hi - lo) > glm::length(glm::dvec3(light))))
+  {
+    return 1.0;
+  }
+  const glm::dvec3 eye = glm::dvec3(light) / light.w;
+  const glm::dvec3 axis = NarrowestConeAxis(eye, points);
+  if (glm::length(axis) == 0.0)
+  {
+    return -1.0;
+  }
+  double cosine = 1.0;
+  for (const auto& p : points)
+  {
+    cosine = std::min(cosine, glm::dot(axis, glm::normalize(p - eye)));
+  }
+  return cosine;
+}
+
+// The smallest slide-back from `start` on at which the light sees B within a
+// cone of half-angle acos(minimumCosine) in post-perspective space. Near B the
+// light's position makes the map change fastest as the light turns, and at B's
+// silhouette the map would need a half-space.
+double SlideBackKeepingTheLightAway(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<glm::dvec3>& body, const glm::dvec3& lightDirection, double start,
+  double minimumCosine, double weight)
+{
+  const glm::dmat4 scale = FittingScale(cameraProjection, weight);
+  auto cosineAt = [&](double slideBack) {
+    return LightConeCosine(
+      scale * SlideBackPostPerspective(cameraView, cameraProjection, slideBack), body, lightDirection);
+  };
+  if (cosineAt(start) >= minimumCosine)
+  {
+    return start;
+  }
+  double lo = start, hi = std::max(start, NearDistance(cameraProjection));
+  for (int i = 0; i < 60 && cosineAt(hi) < minimumCosine; ++i)
+  {
+    lo = hi;
+    hi *= 2.0;
+  }
+  for (int i = 0; i < 50; ++i)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (cosineAt(mid) >= minimumCosine ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+// Forward axis of the light camera at eye. Looking down -z, its image plane is
+// parallel to the screen and PSM's texels follow the screen's; from a light
+// beside the unit cube, -z sees B nearly edge-on, so the axis turns toward the
+// narrowest cone's as B's widest angle from -z grows from 26 to 90 degrees (a
+// wide blend: the light's post-perspective position moves fast as it turns).
+// The blend is scaled by the warp's weight, so that at weight 0 the axis is the
+// light's direction and the map the uniform one. Both axes see all of B in
+// front, and so does any blend of them. Zero when none does.
+glm::dvec3 LightCameraForward(
+  const glm::dvec3& eye, const std::vector<glm::dvec3>& points, double weight)
+{
+  const glm::dvec3 cone = NarrowestConeAxis(eye, points);
+  if (glm::length(cone) == 0.0)
+  {
+    return cone;
+  }
+  const glm::dvec3 down(0.0, 0.0, -1.0);
+  double cosine = 1.0;
+  for (const auto& p : points)
+  {
+    cosine = std::min(cosine, glm::dot(down, glm::normalize(p - eye)));
+  }
+  const double t = weight * glm::smoothstep(0.0, 0.9, cosine);
+  return glm::normalize(glm::mix(cone, down, t));
+}
+
+// The image, on the plane one unit in front of a light camera at the origin of
+// q looking along forward, of direction v at the point q.
+glm::dvec3 ImageDirection(const glm::dvec3& v, const glm::dvec3& q, const glm::dvec3& forward)
+{
+  const double depth = glm::dot(q, forward);
+  return (v * depth - q * glm::dot(v, forward)) / (depth * depth);
+}
+
+// The part of v perpendicular to the unit vector axis.
+glm::dvec3 Perpendicular(const glm::dvec3& v, const glm::dvec3& axis)
+{
+  return v - glm::dot(v, axis) * axis;
+}
+
+// View of a light camera at eye looking along the unit vector forward, its image
+// turned so that `up` (perpendicular to forward) points up and `right` to the
+// right: orthonormal axes, so the window fits B without shear.
+glm::dmat4 TurnedView(const glm::dvec3& eye, const glm::dvec3& forward, const glm::dvec3& right,
+  const glm::dvec3& up)
+{
+  const glm::dvec3 y = glm::normalize(up);
+  glm::dvec3 x = glm::cross(forward, y);
+  if (glm::dot(x, right) < 0.0)
+  {
+    x = -x;
+  }
+  return FrameView(eye, x, y, forward);
+}
+
 
 // Tangent window and depth range of points seen by a perspective light camera.
 struct LightWindow
@@ -52,7 +254,6 @@ struct LightWindow
   glm::dvec2 Lo{ Infinity }, Hi{ -Infinity };
   double Near = Infinity, Far = 0.0;
   bool Valid = false;
-  double Area() const { return (this->Hi.x - this->Lo.x) * (this->Hi.y - this->Lo.y); }
 };
 
 LightWindow FitWindow(const glm::dmat4& view, const std::vector<glm::dvec3>& points)
@@ -63,8 +264,8 @@ LightWindow FitWindow(const glm::dmat4& view, const std::vector<glm::dvec3>& poi
   {
     const glm::dvec3 q = ToPoint(view, p);
     const double depth = -q.z;
-    // At most ~89.9 degrees off the axis: the window stays finite.
-    if (!(depth > 1e-3 * glm::length(q)))
+    // The camera's axis (NarrowestConeAxis) keeps every point well in front.
+    if (!(depth > 0.0) || !IsFiniteVector(q))
     {
       window.Valid = false;
       return window;
@@ -113,7 +314,8 @@ glm::dmat4 InverseProjection(const glm::dvec2& lo, const glm::dvec2& hi, double 
 }
 
 PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
-  const Aabb& sceneBounds, const glm::dvec3& lightDirection, int resolution, double slideBack)
+  const Aabb& sceneBounds, const glm::dvec3& lightDirection, int resolution, double slideBack,
+  double warpWeight)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) } : sceneBounds;
   const double lightLength = glm::length(lightDirection);
@@ -121,17 +323,15 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
                                                                           : glm::dvec3(0.0, 0.0, -1.0);
   const glm::dmat4 camera = cameraProjection * cameraView;
   PerspectiveMap map;
-  if (IsParallelProjection(cameraProjection))
+  map.PostPerspective = camera;
+  map.LightPosition = d;
+  const double weight = std::isnan(warpWeight) ? 1.0 : std::min(warpWeight, 1.0);
+  if (IsParallelProjection(cameraProjection) || !(weight > 0.0))
   {
     // Post-perspective space of a parallel projection is affine: no warp.
     map.Light = FitDirectional(camera, scene, d, resolution);
-    map.PostPerspective = camera;
-    map.LightPosition = d;
     return map;
   }
-  map.PostPerspective = SlideBackPostPerspective(cameraView, cameraProjection, slideBack);
-  const glm::dmat4& post = map.PostPerspective;
-
   // Unit-cube clipping (Kozlov §14.1.3): the receivers B in post-perspective space.
   std::vector<glm::dvec3> body = IntersectFrustumWithBox(camera, scene);
   if (body.empty())
@@ -145,6 +345,25 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
       }
     }
   }
+  // A point at view depth z lies off its uniform-map place by about
+  // (z - near)(far - z) / ((far - near)(z + slide-back)): the warp's pull goes as
+  // 1 / (z + slide-back) at B's typical depth z. A weight w multiplies that pull
+  // by sliding the virtual camera back to (z + slideBack) / w - z, so that the
+  // map moves about evenly as the weight grows.
+  double nearest = Infinity, farthest = 0.0;
+  for (const auto& p : body)
+  {
+    const double depth = -(cameraView * glm::dvec4(p, 1.0)).z;
+    nearest = std::min(nearest, depth);
+    farthest = std::max(farthest, depth);
+  }
+  const double typicalDepth = body.empty() ? NearDistance(cameraProjection) : 0.5 * (nearest + farthest);
+  const double slide = std::max(slideBack, 0.0);
+  const double slideBackUsed = SlideBackKeepingTheLightAway(cameraView, cameraProjection, body, d,
+    (typicalDepth + slide) / weight - typicalDepth, WidestLightConeCosine, weight);
+  map.PostPerspective = SlideBackPostPerspective(cameraView, cameraProjection, slideBackUsed);
+  const glm::dmat4 post = FittingScale(cameraProjection, weight) * map.PostPerspective;
+
   std::vector<glm::dvec3> points;
   glm::dvec3 lo(Infinity), hi(-Infinity);
   for (const auto& p : body)
@@ -157,13 +376,27 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
       hi = glm::max(hi, points.back());
     }
   }
-  if (points.empty())
+  if (points.size() != body.size() || points.empty())
   {
     map.Light = FitDirectional(camera, scene, d, resolution);
     return map;
   }
   const glm::dvec3 centre = 0.5 * (lo + hi);
   const double radius = std::max(0.5 * glm::length(hi - lo), 1e-9);
+
+  // The map's x and y axes: the uniform map's (FitDirectional's light frame)
+  // carried into post-perspective space at B's centre and made perpendicular to
+  // the light camera's forward axis (not to each other). Map coordinates are
+  // then the coefficients along them, so the map turns continuously with the
+  // light, with no flip where it passes from the front of the viewer to behind,
+  // and becomes FitDirectional's as the weight goes to 0.
+  // They are carried at the point of the camera's axis at B's typical depth: off
+  // the axis, the image of a step in depth is mostly sideways.
+  const glm::dmat4 viewToWorld = glm::inverse(cameraView);
+  const glm::dvec3 onAxis(viewToWorld * glm::dvec4(0.0, 0.0, -typicalDepth, 1.0));
+  const glm::dmat4 uniformFrame = LightLookAt(onAxis, d);
+  const glm::dvec3 right = PushForward(post, onAxis, glm::dvec3(glm::row(uniformFrame, 0)));
+  const glm::dvec3 up = PushForward(post, onAxis, glm::dvec3(glm::row(uniformFrame, 1)));
 
   // The light's point at infinity (toward the light, -d) in post-perspective
   // space: w > 0 in front of the viewer, w < 0 behind it, w = 0 perpendicular.
@@ -177,7 +410,8 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
     const glm::dvec3 travel = -glm::dvec3(light) / lightXYZ;
     map.Kind = PsmLightKind::Directional;
     map.LightPosition = travel;
-    const glm::dmat4 view = LookFrom(centre - travel * (4.0 * radius), travel);
+    const glm::dmat4 view = TurnedView(centre - travel * (4.0 * radius), travel,
+      Perpendicular(right, travel), Perpendicular(up, travel));
     glm::dvec3 vlo(Infinity), vhi(-Infinity);
     for (const auto& p : points)
     {
@@ -185,9 +419,13 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
       vhi = glm::max(vhi, ToPoint(view, p));
     }
     const glm::dvec2 extent = glm::max(glm::dvec2(vhi - vlo), glm::dvec2(radius * 1e-9));
+    const glm::dvec2 margin = extent * (4.0 / std::max(resolution, 1));
+    const glm::dvec2 start = glm::dvec2(vlo) - margin;
+    const glm::dvec2 end = start + extent + 2.0 * margin;
     // Casters up to the light camera's position; receivers to B's far end.
-    map.Light.Projection = glm::ortho(vlo.x, vlo.x + extent.x, vlo.y, vlo.y + extent.y,
-      1e-3 * radius, -vlo.z + 1e-3 * radius);
+    const double depth = std::max(-vlo.z, 4.0 * radius);
+    map.Light.Projection =
+      glm::ortho(start.x, end.x, start.y, end.y, 1e-3 * depth, depth * (1.0 + 1e-3));
     map.Light.View = view * post;
   }
   else
@@ -196,49 +434,41 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
     const bool inverse = light.w < 0.0;
     map.Kind = inverse ? PsmLightKind::Inverse : PsmLightKind::Point;
     map.LightPosition = eye;
-    // The light camera looks from the light toward B in both cases; for the
-    // inverse light, B lies at Z > 0 while casters behind the viewer come
-    // through infinity (Z < 0), hence near = -a, far = +a. The light sits on
-    // the plane z = (f + n) / (f - n) beyond the far face, so looking down -z
-    // always sees all of B; the axis toward B's centre or the mean direction to
-    // its points usually gives a smaller window (Kozlov: minimal cone), and the
-    // smallest valid window is kept.
-    const std::vector<glm::dvec3> axes = { centre - eye, MeanDirection(eye, points),
-      glm::dvec3(0.0, 0.0, -1.0) };
-    LightWindow best;
+    // The light camera looks from the light toward B in both cases
+    // (LightCameraForward); for the inverse light, B lies at Z > 0 while
+    // casters behind the viewer come through infinity (Z < 0), hence near = -a,
+    // far = +a. Its image axes are the images of the uniform map's axes at B's
+    // centre.
+    const glm::dvec3 forward = LightCameraForward(eye, points, weight);
+    const glm::dvec3 centreImage = ToPoint(post, onAxis) - eye;
+    LightWindow window;
     glm::dmat4 view(1.0);
-    for (const auto& axis : axes)
+    if (glm::dot(centreImage, forward) > 0.0)
     {
-      const glm::dmat4 candidate = LookFrom(eye, axis);
-      const LightWindow window = FitWindow(candidate, points);
-      if (window.Valid && (!best.Valid || window.Area() < best.Area()))
-      {
-        best = window;
-        view = candidate;
-      }
+      view = TurnedView(eye, forward, ImageDirection(right, centreImage, forward),
+        ImageDirection(up, centreImage, forward));
+      window = FitWindow(view, points);
     }
-    if (!best.Valid)
+    if (!window.Valid)
     {
       map.Kind = PsmLightKind::Uniform;
       map.Light = FitDirectional(camera, scene, d, resolution);
       return map;
     }
-    glm::dvec2 tlo = best.Lo, thi = best.Hi;
-    const double zMin = best.Near, zMax = best.Far;
-    const glm::dvec2 size = glm::max(thi - tlo, glm::dvec2(1e-12));
+    const glm::dvec2 size = glm::max(window.Hi - window.Lo, glm::dvec2(1e-12));
     const glm::dvec2 margin = size * (4.0 / std::max(resolution, 1));
-    tlo -= margin;
-    thi = tlo + size + 2.0 * margin;
+    const glm::dvec2 tlo = window.Lo - margin;
+    const glm::dvec2 thi = tlo + size + 2.0 * margin;
     if (inverse)
     {
-      map.InverseNear = 0.999 * zMin;
+      map.InverseNear = 0.999 * window.Near;
       map.Light.Projection = InverseProjection(tlo, thi, map.InverseNear);
     }
     else
     {
       // Casters lie between the light and B: near toward the light.
-      const double zNear = 1e-3 * zMin;
-      const double zFar = zMax * 1.001;
+      const double zNear = 1e-3 * window.Near;
+      const double zFar = window.Far * 1.001;
       map.Light.Projection =
         glm::frustum(tlo.x * zNear, thi.x * zNear, tlo.y * zNear, thi.y * zNear, zNear, zFar);
     }
@@ -252,6 +482,14 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
   }
   map.Light.TexelConstant = texel;
   return map;
+}
+
+double PerspectiveWarpWeight(const glm::dvec3& viewDirection, const glm::dvec3& lightDirection)
+{
+  WarpOptions band;
+  band.UniformBelowDegrees = 2.0;
+  band.FullWarpAboveDegrees = 20.0;
+  return WarpFade(ViewLightAngle(viewDirection, lightDirection), band);
 }
 
 double WorldTexelSize(const LightView& light, const glm::dvec3& world, int resolution)

@@ -53,9 +53,23 @@ glm::dmat4 InverseProjection(const glm::dvec2& lo, const glm::dvec2& hi, double 
 
 /// The PSM for a directional light travelling along lightDirection.
 /// B = camera frustum ∩ scene is focused in post-perspective space (unit-cube
-/// clipping). Parallel-projection cameras return the uniform FitDirectional map.
+/// clipping). The light camera's x and y axes are the uniform map's
+/// (FitDirectional's) carried into post-perspective space at B's centre, so the
+/// map does not flip where the light passes from in front of the viewer to behind.
+/// warpWeight in [0, 1] scales the warp's strength (far - near) / (near +
+/// slideBack) by sliding the virtual camera back to (near + slideBack) / warpWeight:
+/// as it goes to 0 the map converges to FitDirectional's, which it returns at 0
+/// (see WarpFade). Parallel-projection cameras return the uniform map too.
 PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
-  const Aabb& scene, const glm::dvec3& lightDirection, int resolution, double slideBack = 0.0);
+  const Aabb& scene, const glm::dvec3& lightDirection, int resolution, double slideBack = 0.0,
+  double warpWeight = 1.0);
+
+/// FitPerspective's warpWeight for a camera looking along viewDirection: 0 below 2
+/// degrees between the view and light lines, 1 above 20, a smoothstep between
+/// (WarpFade's shape over a wider band than the light-space warps': PSM's warp is
+/// the strongest, and over 2 to 12 degrees its map moves by more than 5% of its
+/// width per 0.1 degree of the light's turn).
+double PerspectiveWarpWeight(const glm::dvec3& viewDirection, const glm::dvec3& lightDirection);
 
 /// Kozlov's world-space texel size L_texel at a world point: map it to the
 /// shadow map, shift by one texel in x and y keeping its depth, map back to

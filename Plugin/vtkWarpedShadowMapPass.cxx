@@ -9,6 +9,8 @@
 
 #include <algorithm>
 
+#include <glm/gtc/matrix_access.hpp>
+
 vtkStandardNewMacro(vtkWarpedShadowMapPass);
 
 namespace
@@ -67,8 +69,10 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
       const glm::dvec2 planes = shadowmaps::ProjectionDepthRange(projection);
       slideBack = std::sqrt(std::max(planes.x * planes.y, 0.0));
     }
+    const glm::dvec3 viewDirection = -glm::dvec3(glm::row(in.CameraView, 2));
+    const double weight = shadowmaps::PerspectiveWarpWeight(viewDirection, direction);
     return shadowmaps::FitPerspective(
-      in.CameraView, projection, in.SceneBounds, direction, in.Resolution, slideBack)
+      in.CameraView, projection, in.SceneBounds, direction, in.Resolution, slideBack, weight)
       .Light;
   }
   if (this->WarpMode == TSM)

@@ -1,7 +1,9 @@
 // Unit tests for the perspective shadow map math (Plugin/ShadowMapPerspective.{h,cxx}).
+#include "ShadowMapMotion.h"
 #include "ShadowMapPerspective.h"
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -190,4 +192,121 @@ TEST(PerspectivePSM, KozlovBiasScalesWithWorldTexelSize)
   const glm::dvec3 biased = shadowmaps::KozlovBiasedPoint(p, light, 0.01, 2.0, farTexel);
   EXPECT_NEAR(glm::length(biased - p), 0.01 + 2.0 * farTexel, 1e-12);
   EXPECT_LT(glm::dot(biased - p, light), 0.0); // moved toward the light
+}
+
+// ---------------------------------------------------------------------------
+// Continuity. The camera looks a little down the ground; fixed points are the
+// midpoints of B's vertex pairs. The light turns about the camera's side axis, in
+// 0.1 degree steps through the view direction (and through its opposite).
+
+namespace
+{
+constexpr int MotionResolution = 2048;
+
+glm::dmat4 TiltedCameraView()
+{
+  return glm::lookAt(Eye, glm::dvec3(0.0, 0.0, 3.0), glm::dvec3(0.0, 0.0, 1.0));
+}
+
+std::vector<glm::dvec3> PointsBetweenBodyVertices()
+{
+  const auto body =
+    shadowmaps::IntersectFrustumWithBox(CameraProjection() * TiltedCameraView(), Ground());
+  std::vector<glm::dvec3> points;
+  for (size_t i = 0; i < body.size(); ++i)
+  {
+    for (size_t j = i + 1; j < body.size(); ++j)
+    {
+      points.push_back(0.5 * (body[i] + body[j]));
+    }
+  }
+  return points;
+}
+
+// The largest excess move over FitDirectional's per 0.1 degree step as the light
+// turns from -degrees to +degrees about the camera's side axis, `sign` giving a
+// light along (+1) or against (-1) the view; the pass's slide-back and weight.
+double LargestExcessMove(double degrees, double sign)
+{
+  const glm::dmat4 view = TiltedCameraView();
+  const glm::dvec3 forward = -glm::dvec3(glm::transpose(view)[2]);
+  const glm::dvec3 up = glm::normalize(glm::cross(glm::cross(forward, glm::dvec3(0.0, 0.0, 1.0)), forward));
+  const double slideBack = std::sqrt(0.5 * 80.0);
+  shadowmaps::testing::ExcessMotion motion(PointsBetweenBodyVertices(), MotionResolution);
+  const int steps = static_cast<int>(std::lround(degrees * 10.0));
+  for (int step = -steps; step <= steps; ++step)
+  {
+    const double t = glm::radians(0.1 * step);
+    const glm::dvec3 light = sign * (std::cos(t) * forward + std::sin(t) * up);
+    const PerspectiveMap map = shadowmaps::FitPerspective(view, CameraProjection(), Ground(), light,
+      MotionResolution, slideBack, shadowmaps::PerspectiveWarpWeight(forward, light));
+    EXPECT_TRUE(shadowmaps::IsFinite(map.Light.ViewProjection()));
+    motion.Step(map.Light,
+      shadowmaps::FitDirectional(CameraProjection() * view, Ground(), light, MotionResolution));
+  }
+  return motion.Worst();
+}
+} // namespace
+
+// The property: through the degenerate angle no point moves more than 2
+// texels per step beyond the uniform map's own move. The map before the fade
+// moved 29 texels per step here.
+TEST(PerspectivePSM, MapMovesContinuouslyThroughTheViewAxis)
+{
+  for (double sign : { 1.0, -1.0 })
+  {
+    const double excess = LargestExcessMove(2.0, sign);
+    std::printf("[ continuity ] PSM, light %s the view, +-2 deg: largest excess %.4f texels\n",
+      sign > 0 ? "along  " : "against", excess);
+    EXPECT_LT(excess, 2.0);
+  }
+}
+
+// Through the fade band (2 to 20 degrees) and beyond, the map moves with the
+// light but never pops: no step moves a point by 5% of the map beyond the uniform
+// map's move. Before the fade and the continuous light camera, one step moved a
+// point by 2040 texels here.
+TEST(PerspectivePSM, WarpFadesInWithoutPopping)
+{
+  for (double sign : { 1.0, -1.0 })
+  {
+    const double excess = LargestExcessMove(30.0, sign);
+    std::printf("[ fade-in  ] PSM, light %s the view, +-30 deg: largest excess %.2f texels\n",
+      sign > 0 ? "along  " : "against", excess);
+    EXPECT_LT(excess, 0.05 * MotionResolution);
+  }
+}
+
+// As the weight goes to 0 the map becomes FitDirectional's; at 0 it is that map.
+TEST(PerspectivePSM, ConvergesToTheUniformMapAsTheWeightGoesToZero)
+{
+  const glm::dmat4 camera = CameraProjection() * TiltedCameraView();
+  const std::vector<glm::dvec3> points = PointsBetweenBodyVertices();
+  for (const glm::dvec3& towardLight : { glm::dvec3(0.1, 1.0, -0.2), glm::dvec3(0.05, -1.0, -0.1),
+         glm::dvec3(0.3, -1.0, -0.4) })
+  {
+    const glm::dvec3 light = glm::normalize(towardLight);
+    const shadowmaps::LightView uniform =
+      shadowmaps::FitDirectional(camera, Ground(), light, MotionResolution);
+    double previous = INFINITY;
+    for (double weight : { 1e-2, 1e-4, 1e-6, 1e-8 })
+    {
+      const PerspectiveMap map = shadowmaps::FitPerspective(
+        TiltedCameraView(), CameraProjection(), Ground(), light, MotionResolution, 6.0, weight);
+      double farthest = 0.0;
+      for (const auto& p : points)
+      {
+        farthest = std::max(farthest,
+          glm::length(shadowmaps::testing::MapTexels(map.Light, p, MotionResolution) -
+            shadowmaps::testing::MapTexels(uniform, p, MotionResolution)));
+      }
+      EXPECT_LT(farthest, previous) << "weight " << weight;
+      previous = farthest;
+    }
+    EXPECT_LT(previous, 0.01) << "texels from the uniform map at weight 1e-8";
+    const PerspectiveMap atZero = shadowmaps::FitPerspective(
+      TiltedCameraView(), CameraProjection(), Ground(), light, MotionResolution, 6.0, 0.0);
+    EXPECT_EQ(atZero.Kind, PsmLightKind::Uniform);
+    EXPECT_EQ(atZero.Light.ViewProjection(), uniform.ViewProjection());
+  }
 }
