@@ -278,6 +278,118 @@ LightWindow FitWindow(const glm::dmat4& view, const std::vector<glm::dvec3>& poi
   return window;
 }
 
+// Vertices of B = camera frustum ∩ scene; when they do not meet, the scene's
+// corners in front of the camera.
+std::vector<glm::dvec3> PerspectiveBody(const glm::dmat4& camera, const Aabb& scene)
+{
+  std::vector<glm::dvec3> body = IntersectFrustumWithBox(camera, scene);
+  if (body.empty())
+  {
+    for (const auto& c : scene.Corners())
+    {
+      if ((camera * glm::dvec4(c, 1.0)).w > 0.0)
+      {
+        body.push_back(c);
+      }
+    }
+  }
+  return body;
+}
+
+// Mid-depth of B along the camera's axis (the near plane when B is empty).
+double TypicalDepth(
+  const glm::dmat4& cameraView, const glm::dmat4& cameraProjection, const std::vector<glm::dvec3>& body)
+{
+  double nearest = Infinity, farthest = 0.0;
+  for (const auto& p : body)
+  {
+    const double depth = -(cameraView * glm::dvec4(p, 1.0)).z;
+    nearest = std::min(nearest, depth);
+    farthest = std::max(farthest, depth);
+  }
+  return body.empty() ? NearDistance(cameraProjection) : 0.5 * (nearest + farthest);
+}
+
+// The fitting space of a PSM (post-perspective space, FittingScale) with B's
+// points in it and the uniform map's axes carried into it.
+struct PerspectiveSpace
+{
+  glm::dmat4 Transform{ 1.0 };
+  std::vector<glm::dvec3> Points;
+  glm::dvec3 Centre{ 0.0 };
+  double Radius = 0.0;
+  /// Where the axes are carried: the camera's axis at B's typical depth (off the
+  /// axis, the image of a step in depth is mostly sideways), and that point here.
+  glm::dvec3 AxisPoint{ 0.0 };
+  glm::dvec3 AxisPointImage{ 0.0 };
+  glm::dvec3 Right{ 0.0 }, Up{ 0.0 };
+};
+
+// The light camera's view for an orthographic (Directional) or perspective fit:
+// the uniform map's axes, as seen by that camera, orient its image, so the map
+// turns continuously with the light and does not flip where the light passes
+// from in front of the viewer to behind; as the weight goes to 0 they become the
+// uniform map's own axes.
+LightView FitDirectionalInSpace(const PerspectiveSpace& space, const glm::dvec3& travel, int resolution)
+{
+  const glm::dmat4 view = TurnedView(space.Centre - travel * (4.0 * space.Radius), travel,
+    Perpendicular(space.Right, travel), Perpendicular(space.Up, travel));
+  glm::dvec3 lo(Infinity), hi(-Infinity);
+  for (const auto& p : space.Points)
+  {
+    lo = glm::min(lo, ToPoint(view, p));
+    hi = glm::max(hi, ToPoint(view, p));
+  }
+  const glm::dvec2 extent = glm::max(glm::dvec2(hi - lo), glm::dvec2(space.Radius * 1e-9));
+  const glm::dvec2 margin = extent * (4.0 / std::max(resolution, 1));
+  const glm::dvec2 start = glm::dvec2(lo) - margin;
+  const glm::dvec2 end = start + extent + 2.0 * margin;
+  // Casters up to the light camera's position; receivers to B's far end.
+  const double depth = std::max(-lo.z, 4.0 * space.Radius);
+  LightView fit;
+  fit.Projection = glm::ortho(start.x, end.x, start.y, end.y, 1e-3 * depth, depth * (1.0 + 1e-3));
+  fit.View = view * space.Transform;
+  return fit;
+}
+
+// The light camera at eye looks toward B (LightCameraForward); for the inverse
+// light, B lies at Z > 0 while casters behind the viewer come through infinity
+// (Z < 0), hence near = -a, far = +a. False when no view holds B in front.
+bool FitPointInSpace(const PerspectiveSpace& space, const glm::dvec3& eye, bool inverse,
+  double weight, int resolution, LightView& fit, double& inverseNear)
+{
+  const glm::dvec3 forward = LightCameraForward(eye, space.Points, weight);
+  const glm::dvec3 toAxisPoint = space.AxisPointImage - eye;
+  if (!(glm::dot(toAxisPoint, forward) > 0.0))
+  {
+    return false;
+  }
+  const glm::dmat4 view = TurnedView(eye, forward, ImageDirection(space.Right, toAxisPoint, forward),
+    ImageDirection(space.Up, toAxisPoint, forward));
+  const LightWindow window = FitWindow(view, space.Points);
+  if (!window.Valid)
+  {
+    return false;
+  }
+  const glm::dvec2 size = glm::max(window.Hi - window.Lo, glm::dvec2(1e-12));
+  const glm::dvec2 margin = size * (4.0 / std::max(resolution, 1));
+  const glm::dvec2 lo = window.Lo - margin;
+  const glm::dvec2 hi = lo + size + 2.0 * margin;
+  if (inverse)
+  {
+    inverseNear = 0.999 * window.Near;
+    fit.Projection = InverseProjection(lo, hi, inverseNear);
+  }
+  else
+  {
+    // Casters lie between the light and B: near toward the light.
+    const double zNear = 1e-3 * window.Near;
+    fit.Projection =
+      glm::frustum(lo.x * zNear, hi.x * zNear, lo.y * zNear, hi.y * zNear, zNear, window.Far * 1.001);
+  }
+  fit.View = view * space.Transform;
+  return true;
+}
 } // namespace
 
 glm::dmat4 SlideBackPostPerspective(
@@ -325,162 +437,80 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
   PerspectiveMap map;
   map.PostPerspective = camera;
   map.LightPosition = d;
+  map.Light = FitDirectional(camera, scene, d, resolution);
   const double weight = std::isnan(warpWeight) ? 1.0 : std::min(warpWeight, 1.0);
+  // Post-perspective space of a parallel projection is affine: no warp.
   if (IsParallelProjection(cameraProjection) || !(weight > 0.0))
   {
-    // Post-perspective space of a parallel projection is affine: no warp.
-    map.Light = FitDirectional(camera, scene, d, resolution);
     return map;
   }
   // Unit-cube clipping (Kozlov §14.1.3): the receivers B in post-perspective space.
-  std::vector<glm::dvec3> body = IntersectFrustumWithBox(camera, scene);
-  if (body.empty())
-  {
-    const auto corners = scene.Corners();
-    for (const auto& c : corners)
-    {
-      if ((camera * glm::dvec4(c, 1.0)).w > 0.0)
-      {
-        body.push_back(c);
-      }
-    }
-  }
+  const std::vector<glm::dvec3> body = PerspectiveBody(camera, scene);
   // A point at view depth z lies off its uniform-map place by about
   // (z - near)(far - z) / ((far - near)(z + slide-back)): the warp's pull goes as
   // 1 / (z + slide-back) at B's typical depth z. A weight w multiplies that pull
   // by sliding the virtual camera back to (z + slideBack) / w - z, so that the
   // map moves about evenly as the weight grows.
-  double nearest = Infinity, farthest = 0.0;
-  for (const auto& p : body)
-  {
-    const double depth = -(cameraView * glm::dvec4(p, 1.0)).z;
-    nearest = std::min(nearest, depth);
-    farthest = std::max(farthest, depth);
-  }
-  const double typicalDepth = body.empty() ? NearDistance(cameraProjection) : 0.5 * (nearest + farthest);
-  const double slide = std::max(slideBack, 0.0);
-  const double slideBackUsed = SlideBackKeepingTheLightAway(cameraView, cameraProjection, body, d,
-    (typicalDepth + slide) / weight - typicalDepth, WidestLightConeCosine, weight);
-  map.PostPerspective = SlideBackPostPerspective(cameraView, cameraProjection, slideBackUsed);
-  const glm::dmat4 post = FittingScale(cameraProjection, weight) * map.PostPerspective;
+  const double typicalDepth = TypicalDepth(cameraView, cameraProjection, body);
+  const double slide = (typicalDepth + std::max(slideBack, 0.0)) / weight - typicalDepth;
+  map.PostPerspective = SlideBackPostPerspective(cameraView, cameraProjection,
+    SlideBackKeepingTheLightAway(
+      cameraView, cameraProjection, body, d, slide, WidestLightConeCosine, weight));
 
-  std::vector<glm::dvec3> points;
+  PerspectiveSpace space;
+  space.Transform = FittingScale(cameraProjection, weight) * map.PostPerspective;
   glm::dvec3 lo(Infinity), hi(-Infinity);
   for (const auto& p : body)
   {
-    const glm::dvec4 q = post * glm::dvec4(p, 1.0);
-    if (q.w > 0.0)
+    const glm::dvec4 q = space.Transform * glm::dvec4(p, 1.0);
+    if (!(q.w > 0.0))
     {
-      points.push_back(glm::dvec3(q) / q.w);
-      lo = glm::min(lo, points.back());
-      hi = glm::max(hi, points.back());
+      return map;
     }
+    space.Points.push_back(glm::dvec3(q) / q.w);
+    lo = glm::min(lo, space.Points.back());
+    hi = glm::max(hi, space.Points.back());
   }
-  if (points.size() != body.size() || points.empty())
+  if (space.Points.empty())
   {
-    map.Light = FitDirectional(camera, scene, d, resolution);
     return map;
   }
-  const glm::dvec3 centre = 0.5 * (lo + hi);
-  const double radius = std::max(0.5 * glm::length(hi - lo), 1e-9);
-
-  // The map's x and y axes: the uniform map's (FitDirectional's light frame)
-  // carried into post-perspective space at B's centre and made perpendicular to
-  // the light camera's forward axis (not to each other). Map coordinates are
-  // then the coefficients along them, so the map turns continuously with the
-  // light, with no flip where it passes from the front of the viewer to behind,
-  // and becomes FitDirectional's as the weight goes to 0.
-  // They are carried at the point of the camera's axis at B's typical depth: off
-  // the axis, the image of a step in depth is mostly sideways.
-  const glm::dmat4 viewToWorld = glm::inverse(cameraView);
-  const glm::dvec3 onAxis(viewToWorld * glm::dvec4(0.0, 0.0, -typicalDepth, 1.0));
-  const glm::dmat4 uniformFrame = LightLookAt(onAxis, d);
-  const glm::dvec3 right = PushForward(post, onAxis, glm::dvec3(glm::row(uniformFrame, 0)));
-  const glm::dvec3 up = PushForward(post, onAxis, glm::dvec3(glm::row(uniformFrame, 1)));
+  space.Centre = 0.5 * (lo + hi);
+  space.Radius = std::max(0.5 * glm::length(hi - lo), 1e-9);
+  space.AxisPoint = glm::dvec3(glm::inverse(cameraView) * glm::dvec4(0.0, 0.0, -typicalDepth, 1.0));
+  space.AxisPointImage = ToPoint(space.Transform, space.AxisPoint);
+  const glm::dmat4 uniformFrame = LightLookAt(space.AxisPoint, d);
+  space.Right = PushForward(space.Transform, space.AxisPoint, glm::dvec3(glm::row(uniformFrame, 0)));
+  space.Up = PushForward(space.Transform, space.AxisPoint, glm::dvec3(glm::row(uniformFrame, 1)));
 
   // The light's point at infinity (toward the light, -d) in post-perspective
   // space: w > 0 in front of the viewer, w < 0 behind it, w = 0 perpendicular.
-  const glm::dvec4 light = post * glm::dvec4(-d, 0.0);
+  const glm::dvec4 light = space.Transform * glm::dvec4(-d, 0.0);
   const double lightXYZ = glm::length(glm::dvec3(light));
-  const bool directional = !(std::abs(light.w) * 1e6 * radius > lightXYZ);
-
-  if (directional)
+  LightView fit;
+  if (!(std::abs(light.w) * 1e6 * space.Radius > lightXYZ))
   {
-    // Still directional: an orthographic light camera fitted to B.
-    const glm::dvec3 travel = -glm::dvec3(light) / lightXYZ;
     map.Kind = PsmLightKind::Directional;
-    map.LightPosition = travel;
-    const glm::dmat4 view = TurnedView(centre - travel * (4.0 * radius), travel,
-      Perpendicular(right, travel), Perpendicular(up, travel));
-    glm::dvec3 vlo(Infinity), vhi(-Infinity);
-    for (const auto& p : points)
-    {
-      vlo = glm::min(vlo, ToPoint(view, p));
-      vhi = glm::max(vhi, ToPoint(view, p));
-    }
-    const glm::dvec2 extent = glm::max(glm::dvec2(vhi - vlo), glm::dvec2(radius * 1e-9));
-    const glm::dvec2 margin = extent * (4.0 / std::max(resolution, 1));
-    const glm::dvec2 start = glm::dvec2(vlo) - margin;
-    const glm::dvec2 end = start + extent + 2.0 * margin;
-    // Casters up to the light camera's position; receivers to B's far end.
-    const double depth = std::max(-vlo.z, 4.0 * radius);
-    map.Light.Projection =
-      glm::ortho(start.x, end.x, start.y, end.y, 1e-3 * depth, depth * (1.0 + 1e-3));
-    map.Light.View = view * post;
+    map.LightPosition = -glm::dvec3(light) / lightXYZ;
+    fit = FitDirectionalInSpace(space, map.LightPosition, resolution);
   }
   else
   {
-    const glm::dvec3 eye = glm::dvec3(light) / light.w;
     const bool inverse = light.w < 0.0;
-    map.Kind = inverse ? PsmLightKind::Inverse : PsmLightKind::Point;
-    map.LightPosition = eye;
-    // The light camera looks from the light toward B in both cases
-    // (LightCameraForward); for the inverse light, B lies at Z > 0 while
-    // casters behind the viewer come through infinity (Z < 0), hence near = -a,
-    // far = +a. Its image axes are the images of the uniform map's axes at B's
-    // centre.
-    const glm::dvec3 forward = LightCameraForward(eye, points, weight);
-    const glm::dvec3 centreImage = ToPoint(post, onAxis) - eye;
-    LightWindow window;
-    glm::dmat4 view(1.0);
-    if (glm::dot(centreImage, forward) > 0.0)
+    const glm::dvec3 eye = glm::dvec3(light) / light.w;
+    if (!FitPointInSpace(space, eye, inverse, weight, resolution, fit, map.InverseNear))
     {
-      view = TurnedView(eye, forward, ImageDirection(right, centreImage, forward),
-        ImageDirection(up, centreImage, forward));
-      window = FitWindow(view, points);
-    }
-    if (!window.Valid)
-    {
-      map.Kind = PsmLightKind::Uniform;
-      map.Light = FitDirectional(camera, scene, d, resolution);
       return map;
     }
-    const glm::dvec2 size = glm::max(window.Hi - window.Lo, glm::dvec2(1e-12));
-    const glm::dvec2 margin = size * (4.0 / std::max(resolution, 1));
-    const glm::dvec2 tlo = window.Lo - margin;
-    const glm::dvec2 thi = tlo + size + 2.0 * margin;
-    if (inverse)
-    {
-      map.InverseNear = 0.999 * window.Near;
-      map.Light.Projection = InverseProjection(tlo, thi, map.InverseNear);
-    }
-    else
-    {
-      // Casters lie between the light and B: near toward the light.
-      const double zNear = 1e-3 * window.Near;
-      const double zFar = window.Far * 1.001;
-      map.Light.Projection =
-        glm::frustum(tlo.x * zNear, thi.x * zNear, tlo.y * zNear, thi.y * zNear, zNear, zFar);
-    }
-    map.Light.View = view * post;
+    map.Kind = inverse ? PsmLightKind::Inverse : PsmLightKind::Point;
+    map.LightPosition = eye;
   }
-  map.Light.Perspective = true;
-  double texel = 0.0;
+  fit.Perspective = true;
   for (const auto& p : body)
   {
-    texel = std::max(texel, WorldTexelSize(map.Light, p, resolution));
+    fit.TexelConstant = std::max(fit.TexelConstant, WorldTexelSize(fit, p, resolution));
   }
-  map.Light.TexelConstant = texel;
+  map.Light = fit;
   return map;
 }
 

@@ -24,8 +24,8 @@ enum class PsmLightKind
 
 struct PerspectiveMap
 {
-  /// View = light-camera view * camera post-perspective transform; the
-  /// composition ViewProjection() maps world points of B into [-1, 1]^2 with w > 0.
+  /// View = light-camera view * fitting scale * camera post-perspective
+  /// transform; ViewProjection() maps world points of B into [-1, 1]^2 with w > 0.
   LightView Light;
   PsmLightKind Kind = PsmLightKind::Uniform;
   /// Camera post-perspective transform (with slide-back) the map was built in.
@@ -53,13 +53,21 @@ glm::dmat4 InverseProjection(const glm::dvec2& lo, const glm::dvec2& hi, double 
 
 /// The PSM for a directional light travelling along lightDirection.
 /// B = camera frustum ∩ scene is focused in post-perspective space (unit-cube
-/// clipping). The light camera's x and y axes are the uniform map's
-/// (FitDirectional's) carried into post-perspective space at B's centre, so the
-/// map does not flip where the light passes from in front of the viewer to behind.
-/// warpWeight in [0, 1] scales the warp's strength (far - near) / (near +
-/// slideBack) by sliding the virtual camera back to (near + slideBack) / warpWeight:
-/// as it goes to 0 the map converges to FitDirectional's, which it returns at 0
-/// (see WarpFade). Parallel-projection cameras return the uniform map too.
+/// clipping). The light camera looks from the light's post-perspective position
+/// along the axis of the narrowest cone around B, turned toward -z (image plane
+/// parallel to the screen) where that cone is narrow; its image is turned so
+/// that the uniform map's (FitDirectional's) axes, carried into post-perspective
+/// space on the camera's axis, keep their directions in the map. Nothing in the
+/// fit switches between discrete choices, so the map moves continuously as the
+/// light turns, including where the light passes from in front of the viewer to
+/// behind. The slide-back is raised where needed to keep B within 60 degrees of
+/// the light's axis (near B's silhouette the map would swing fastest).
+/// warpWeight in [0, 1] (PerspectiveWarpWeight) scales the warp's pull: the
+/// virtual camera slides back to (z + slideBack) / warpWeight - z, z = B's mid
+/// depth, and the fit's space is rescaled toward view space, so that as the
+/// weight goes to 0 the map converges to FitDirectional's, which it returns at 0.
+/// Parallel-projection cameras, and fits with no light camera that holds B in
+/// front, return the uniform map too (Kind Uniform).
 PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const Aabb& scene, const glm::dvec3& lightDirection, int resolution, double slideBack = 0.0,
   double warpWeight = 1.0);
