@@ -132,9 +132,9 @@ glm::dvec3 NarrowestConeAxis(const glm::dvec3& eye, const std::vector<glm::dvec3
 // post-perspective space `post` that holds the body's points; 1 for a light that
 // stays directional there, -1 when no cone narrower than a half-space holds them.
 double LightConeCosine(
-  const glm::dmat4& post, const std::vector<glm::dvec3>& body, const glm::dvec3& lightDirection)
+  const glm::dmat4& post, const std::vector<glm::dvec3>& body, const glm::dvec4& towardLight)
 {
-  const glm::dvec4 light = post * glm::dvec4(-lightDirection, 0.0);
+  const glm::dvec4 light = post * towardLight;
   std::vector<glm::dvec3> points;
   glm::dvec3 lo(Infinity), hi(-Infinity);
   for (const auto& p : body)
@@ -164,25 +164,31 @@ double LightConeCosine(
 // The smallest slide-back from `start` on at which the light sees B within a
 // cone of half-angle acos(minimumCosine) in post-perspective space. Near B the
 // light's position makes the map change fastest as the light turns, and at B's
-// silhouette the map would need a half-space.
+// silhouette the map would need a half-space. `start` when no slide-back up to
+// 2^40 near distances reaches it (a spot light sees B as widely from any
+// slide-back as from its own position).
 double SlideBackKeepingTheLightAway(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
-  const std::vector<glm::dvec3>& body, const glm::dvec3& lightDirection, double start,
+  const std::vector<glm::dvec3>& body, const glm::dvec4& towardLight, double start,
   double minimumCosine, double weight)
 {
   const glm::dmat4 scale = FittingScale(cameraProjection, weight);
   auto cosineAt = [&](double slideBack) {
     return LightConeCosine(
-      scale * SlideBackPostPerspective(cameraView, cameraProjection, slideBack), body, lightDirection);
+      scale * SlideBackPostPerspective(cameraView, cameraProjection, slideBack), body, towardLight);
   };
   if (cosineAt(start) >= minimumCosine)
   {
     return start;
   }
   double lo = start, hi = std::max(start, NearDistance(cameraProjection));
-  for (int i = 0; i < 60 && cosineAt(hi) < minimumCosine; ++i)
+  for (int i = 0; i < 40 && cosineAt(hi) < minimumCosine; ++i)
   {
     lo = hi;
     hi *= 2.0;
+  }
+  if (cosineAt(hi) < minimumCosine)
+  {
+    return start;
   }
   for (int i = 0; i < 50; ++i)
   {
@@ -323,6 +329,19 @@ struct PerspectiveSpace
   glm::dvec3 AxisPoint{ 0.0 };
   glm::dvec3 AxisPointImage{ 0.0 };
   glm::dvec3 Right{ 0.0 }, Up{ 0.0 };
+  /// A point light's uniform map: its axis carried into this space at the
+  /// light (zero for a directional light, whose narrowest cone tends to it).
+  glm::dvec3 Forward{ 0.0 };
+};
+
+// What a PSM needs of its light: the homogeneous point toward it ((-d, 0) for a
+// directional light, (P, 1) for a spot at P) and its uniform map, whose view's
+// axes orient the PSM's and whose matrices it returns when it cannot warp.
+struct PerspectiveLight
+{
+  glm::dvec4 TowardLight{ 0.0, 0.0, 1.0, 0.0 };
+  LightView Uniform;
+  bool Positional = false;
 };
 
 // The light camera's view for an orthographic (Directional) or perspective fit:
@@ -358,7 +377,12 @@ LightView FitDirectionalInSpace(const PerspectiveSpace& space, const glm::dvec3&
 bool FitPointInSpace(const PerspectiveSpace& space, const glm::dvec3& eye, bool inverse,
   double weight, int resolution, LightView& fit, double& inverseNear)
 {
-  const glm::dvec3 forward = LightCameraForward(eye, space.Points, weight);
+  glm::dvec3 forward = LightCameraForward(eye, space.Points, weight);
+  if (glm::length(space.Forward) > 0.0 && glm::length(forward) > 0.0)
+  {
+    // Toward the uniform map's own axis as the weight goes to 0.
+    forward = glm::normalize(glm::mix(space.Forward, forward, weight));
+  }
   const glm::dvec3 toAxisPoint = space.AxisPointImage - eye;
   if (!(glm::dot(toAxisPoint, forward) > 0.0))
   {
@@ -425,27 +449,35 @@ glm::dmat4 InverseProjection(const glm::dvec2& lo, const glm::dvec2& hi, double 
   return m;
 }
 
-PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
-  const Aabb& sceneBounds, const glm::dvec3& lightDirection, int resolution, double slideBack,
-  double warpWeight)
+namespace
 {
-  const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) } : sceneBounds;
-  const double lightLength = glm::length(lightDirection);
-  const glm::dvec3 d = lightLength > 0.0 && std::isfinite(lightLength) ? lightDirection / lightLength
-                                                                          : glm::dvec3(0.0, 0.0, -1.0);
-  const glm::dmat4 camera = cameraProjection * cameraView;
+// For a point light, the point on its uniform map's axis at B's mean distance
+// along it: in front of the light camera, where the axes are carried.
+glm::dvec3 AxisPointOfLight(const PerspectiveLight& light, const std::vector<glm::dvec3>& body)
+{
+  const glm::dvec3 position(light.TowardLight);
+  const glm::dvec3 axis = -glm::dvec3(glm::row(light.Uniform.View, 2));
+  double distance = 0.0;
+  for (const auto& p : body)
+  {
+    distance += glm::dot(p - position, axis) / double(body.size());
+  }
+  return position + axis * distance;
+}
+
+// The PSM of either light kind for receivers `body` (see FitPerspective).
+PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<glm::dvec3>& body, const PerspectiveLight& light, int resolution,
+  double slideBack, double weight)
+{
   PerspectiveMap map;
-  map.PostPerspective = camera;
-  map.LightPosition = d;
-  map.Light = FitDirectional(camera, scene, d, resolution);
-  const double weight = std::isnan(warpWeight) ? 1.0 : std::min(warpWeight, 1.0);
-  // Post-perspective space of a parallel projection is affine: no warp.
-  if (IsParallelProjection(cameraProjection) || !(weight > 0.0))
+  map.PostPerspective = cameraProjection * cameraView;
+  map.LightPosition = glm::dvec3(light.TowardLight);
+  map.Light = light.Uniform;
+  if (body.empty())
   {
     return map;
   }
-  // Unit-cube clipping (Kozlov §14.1.3): the receivers B in post-perspective space.
-  const std::vector<glm::dvec3> body = PerspectiveBody(camera, scene);
   // A point at view depth z lies off its uniform-map place by about
   // (z - near)(far - z) / ((far - near)(z + slide-back)): the warp's pull goes as
   // 1 / (z + slide-back) at B's typical depth z. A weight w multiplies that pull
@@ -453,12 +485,16 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
   // map moves about evenly as the weight grows.
   const double typicalDepth = TypicalDepth(cameraView, cameraProjection, body);
   const double slide = (typicalDepth + std::max(slideBack, 0.0)) / weight - typicalDepth;
+  // A point light inside the view's reach sees B within its cone in the world,
+  // but unscaled post-perspective space can open that cone to nearly a
+  // half-space: its fit is made in the fully rescaled space.
+  const double scaleWeight = light.Positional ? 0.0 : weight;
   map.PostPerspective = SlideBackPostPerspective(cameraView, cameraProjection,
-    SlideBackKeepingTheLightAway(
-      cameraView, cameraProjection, body, d, slide, WidestLightConeCosine, weight));
+    SlideBackKeepingTheLightAway(cameraView, cameraProjection, body, light.TowardLight, slide,
+      WidestLightConeCosine, scaleWeight));
 
   PerspectiveSpace space;
-  space.Transform = FittingScale(cameraProjection, weight) * map.PostPerspective;
+  space.Transform = FittingScale(cameraProjection, scaleWeight) * map.PostPerspective;
   glm::dvec3 lo(Infinity), hi(-Infinity);
   for (const auto& p : body)
   {
@@ -471,33 +507,38 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
     lo = glm::min(lo, space.Points.back());
     hi = glm::max(hi, space.Points.back());
   }
-  if (space.Points.empty())
-  {
-    return map;
-  }
   space.Centre = 0.5 * (lo + hi);
   space.Radius = std::max(0.5 * glm::length(hi - lo), 1e-9);
-  space.AxisPoint = glm::dvec3(glm::inverse(cameraView) * glm::dvec4(0.0, 0.0, -typicalDepth, 1.0));
+  space.AxisPoint = light.Positional
+    ? AxisPointOfLight(light, body)
+    : glm::dvec3(glm::inverse(cameraView) * glm::dvec4(0.0, 0.0, -typicalDepth, 1.0));
   space.AxisPointImage = ToPoint(space.Transform, space.AxisPoint);
-  const glm::dmat4 uniformFrame = LightLookAt(space.AxisPoint, d);
-  space.Right = PushForward(space.Transform, space.AxisPoint, glm::dvec3(glm::row(uniformFrame, 0)));
-  space.Up = PushForward(space.Transform, space.AxisPoint, glm::dvec3(glm::row(uniformFrame, 1)));
+  const glm::dmat4& frame = light.Uniform.View;
+  space.Right = PushForward(space.Transform, space.AxisPoint, glm::dvec3(glm::row(frame, 0)));
+  space.Up = PushForward(space.Transform, space.AxisPoint, glm::dvec3(glm::row(frame, 1)));
 
-  // The light's point at infinity (toward the light, -d) in post-perspective
-  // space: w > 0 in front of the viewer, w < 0 behind it, w = 0 perpendicular.
-  const glm::dvec4 light = space.Transform * glm::dvec4(-d, 0.0);
-  const double lightXYZ = glm::length(glm::dvec3(light));
+  // The light in post-perspective space: w > 0 in front of the viewer, w < 0
+  // behind it, w = 0 on the camera's plane (perpendicular, for a sun).
+  const glm::dvec4 post = space.Transform * light.TowardLight;
+  const double postXYZ = glm::length(glm::dvec3(post));
   LightView fit;
-  if (!(std::abs(light.w) * 1e6 * space.Radius > lightXYZ))
+  if (!(std::abs(post.w) * 1e6 * space.Radius > postXYZ))
   {
     map.Kind = PsmLightKind::Directional;
-    map.LightPosition = -glm::dvec3(light) / lightXYZ;
+    map.LightPosition = -glm::dvec3(post) / postXYZ;
     fit = FitDirectionalInSpace(space, map.LightPosition, resolution);
   }
   else
   {
-    const bool inverse = light.w < 0.0;
-    const glm::dvec3 eye = glm::dvec3(light) / light.w;
+    const bool inverse = post.w < 0.0;
+    const glm::dvec3 eye = glm::dvec3(post) / post.w;
+    if (light.Positional)
+    {
+      const glm::dvec3 axis = -glm::dvec3(glm::row(frame, 2));
+      glm::dvec3 forward = PushForward(space.Transform, glm::dvec3(light.TowardLight), axis);
+      forward = glm::dot(forward, space.Centre - eye) < 0.0 ? -forward : forward;
+      space.Forward = glm::length(forward) > 0.0 ? glm::normalize(forward) : forward;
+    }
     if (!FitPointInSpace(space, eye, inverse, weight, resolution, fit, map.InverseNear))
     {
       return map;
@@ -511,6 +552,77 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
     fit.TexelConstant = std::max(fit.TexelConstant, WorldTexelSize(fit, p, resolution));
   }
   map.Light = fit;
+  return map;
+}
+
+double ClampedWeight(double warpWeight)
+{
+  return std::isnan(warpWeight) ? 1.0 : std::min(warpWeight, 1.0);
+}
+} // namespace
+
+PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& sceneBounds, const glm::dvec3& lightDirection, int resolution, double slideBack,
+  double warpWeight)
+{
+  const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) } : sceneBounds;
+  const double lightLength = glm::length(lightDirection);
+  const glm::dvec3 d = lightLength > 0.0 && std::isfinite(lightLength) ? lightDirection / lightLength
+                                                                          : glm::dvec3(0.0, 0.0, -1.0);
+  const glm::dmat4 camera = cameraProjection * cameraView;
+  PerspectiveLight light;
+  light.TowardLight = glm::dvec4(-d, 0.0);
+  light.Uniform = FitDirectional(camera, scene, d, resolution);
+  const double weight = ClampedWeight(warpWeight);
+  // Post-perspective space of a parallel projection is affine: no warp.
+  if (IsParallelProjection(cameraProjection) || !(weight > 0.0))
+  {
+    PerspectiveMap map;
+    map.PostPerspective = camera;
+    map.LightPosition = d;
+    map.Light = light.Uniform;
+    return map;
+  }
+  // Unit-cube clipping (Kozlov §14.1.3): the receivers B in post-perspective space.
+  PerspectiveMap map = FitPerspectiveToBody(cameraView, cameraProjection,
+    PerspectiveBody(camera, scene), light, resolution, slideBack, weight);
+  if (map.Kind == PsmLightKind::Uniform)
+  {
+    map.LightPosition = d;
+  }
+  return map;
+}
+
+PerspectiveMap FitSpotPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& scene, const glm::dvec3& position, const glm::dvec3& direction,
+  double coneAngleDegrees, int resolution, double slideBack, double warpWeight)
+{
+  const glm::dmat4 camera = cameraProjection * cameraView;
+  PerspectiveLight light;
+  light.TowardLight = glm::dvec4(position, 1.0);
+  light.Positional = true;
+  light.Uniform = FitSpot(camera, scene, position, direction, coneAngleDegrees, resolution);
+  // B = camera frustum ∩ scene ∩ the spot's frustum; the uniform map is the cone
+  // map cropped to B, which the PSM becomes as its weight goes to 0.
+  const std::vector<glm::dvec3> body =
+    SpotFocusBody(camera, scene, light.Uniform.ViewProjection());
+  if (!body.empty())
+  {
+    light.Uniform = FitSpotToBody(body, scene, position, direction, coneAngleDegrees, resolution);
+  }
+  const double weight = ClampedWeight(warpWeight);
+  if (IsParallelProjection(cameraProjection) || !(weight > 0.0) || !IsFiniteVector(position))
+  {
+    PerspectiveMap map;
+    map.PostPerspective = camera;
+    map.LightPosition = position;
+    map.Light = light.Uniform;
+    return map;
+  }
+  PerspectiveMap map = FitPerspectiveToBody(
+    cameraView, cameraProjection, body, light, resolution, slideBack, weight);
+  // Texels vary too much across a warped map for the cone's per-distance formula.
+  map.Light.TexelSizeFromGradient = map.Kind != PsmLightKind::Uniform;
   return map;
 }
 

@@ -1,5 +1,5 @@
 // Perspective shadow maps (Stamminger & Drettakis 2002) for directional
-// lights, with Kozlov's fixes (GPU Gems ch. 14, literature/001): the inverse
+// and spot lights, with Kozlov's fixes (GPU Gems ch. 14, literature/001): the inverse
 // light projection for lights behind the viewer, the virtual near-plane
 // slide-back and unit-cube clipping (focus on B in post-perspective space).
 // Plain C++ and GLM, pure functions.
@@ -71,6 +71,21 @@ glm::dmat4 InverseProjection(const glm::dvec2& lo, const glm::dvec2& hi, double 
 PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const Aabb& scene, const glm::dvec3& lightDirection, int resolution, double slideBack = 0.0,
   double warpWeight = 1.0);
+
+/// The PSM of a spot light at `position` (Stamminger and Drettakis treat point
+/// lights the same way): the light is the point (position, 1), a point light in
+/// front of the viewer or an inverse one behind it in post-perspective space.
+/// B = camera frustum ∩ scene ∩ the spot's frustum (FitSpot's cone map). As for
+/// FitPerspective, with the cone map cropped to B (FitSpotToBody) in the uniform
+/// map's place: its axes orient the light camera's image, its axis is where the
+/// light camera's axis goes as the weight falls, and the PSM converges to it as
+/// warpWeight goes to 0. That map is returned at weight 0, for
+/// parallel-projection cameras, and when no light camera holds B in front; the
+/// cone map when B is empty. The fit is made in fully rescaled post-perspective
+/// space (a spot's 40 degree cone can open to nearly a half-space in NDC).
+PerspectiveMap FitSpotPerspective(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const Aabb& scene, const glm::dvec3& position, const glm::dvec3& direction,
+  double coneAngleDegrees, int resolution, double slideBack = 0.0, double warpWeight = 1.0);
 
 /// FitPerspective's warpWeight for a camera looking along viewDirection: 0 below 2
 /// degrees between the view and light lines, 1 above 20, a smoothstep between

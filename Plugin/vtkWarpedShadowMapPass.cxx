@@ -32,6 +32,22 @@ double FocusBodyDepth(const glm::dmat4& cameraView, const glm::dmat4& cameraProj
   }
   return std::isfinite(farthest - nearDistance) ? farthest - nearDistance : 0.0;
 }
+glm::dvec3 ViewDirection(const glm::dmat4& cameraView)
+{
+  return -glm::dvec3(glm::row(cameraView, 2));
+}
+
+// PSMSlideBack, or when negative the geometric mean of the (tight) near and far.
+double PSMSlideBackFor(double setting, const glm::dmat4& projection)
+{
+  if (setting >= 0.0)
+  {
+    return setting;
+  }
+  const glm::dvec2 planes = shadowmaps::ProjectionDepthRange(projection);
+  return std::sqrt(std::max(planes.x * planes.y, 0.0));
+}
+
 // The camera's projection with its near and far planes moved to the nearest and
 // farthest visible prop. PSM spends its map in proportion to 1 / depth from the
 // near plane (Stamminger and Drettakis push the near plane as far as the scene
@@ -63,16 +79,9 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
   if (this->WarpMode == PSM)
   {
     const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
-    double slideBack = this->PSMSlideBack;
-    if (slideBack < 0.0)
-    {
-      const glm::dvec2 planes = shadowmaps::ProjectionDepthRange(projection);
-      slideBack = std::sqrt(std::max(planes.x * planes.y, 0.0));
-    }
-    const glm::dvec3 viewDirection = -glm::dvec3(glm::row(in.CameraView, 2));
-    const double weight = shadowmaps::PerspectiveWarpWeight(viewDirection, direction);
-    return shadowmaps::FitPerspective(
-      in.CameraView, projection, in.SceneBounds, direction, in.Resolution, slideBack, weight)
+    const double weight = shadowmaps::PerspectiveWarpWeight(ViewDirection(in.CameraView), direction);
+    return shadowmaps::FitPerspective(in.CameraView, projection, in.SceneBounds, direction,
+      in.Resolution, PSMSlideBackFor(this->PSMSlideBack, projection), weight)
       .Light;
   }
   if (this->WarpMode == TSM)
@@ -98,6 +107,16 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
 LightView vtkWarpedShadowMapPass::FitSpotLight(const Internals& in, int lightIndex) const
 {
   const shadowmaps::ShadowLight& light = in.Lights[lightIndex];
+  if (this->WarpMode == PSM)
+  {
+    const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
+    const double weight =
+      shadowmaps::PerspectiveWarpWeight(ViewDirection(in.CameraView), light.Direction);
+    return shadowmaps::FitSpotPerspective(in.CameraView, projection, in.SceneBounds,
+      light.Position, light.Direction, light.ConeAngle, in.Resolution,
+      PSMSlideBackFor(this->PSMSlideBack, projection), weight)
+      .Light;
+  }
   if (this->WarpMode == TSM)
   {
     return shadowmaps::FitSpotTrapezoid(in.CameraView, in.CameraProjection, in.SceneBounds,
@@ -114,8 +133,7 @@ LightView vtkWarpedShadowMapPass::FitSpotLight(const Internals& in, int lightInd
 void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIndex)
 {
   shadowmaps::ShadowLight& light = internals.Lights[lightIndex];
-  const bool spotWarp = light.Kind == shadowmaps::LightKind::Spot &&
-    (this->WarpMode == LISPSM || this->WarpMode == GMNPR || this->WarpMode == TSM);
+  const bool spotWarp = light.Kind == shadowmaps::LightKind::Spot && !light.Cube;
   if (this->WarpMode == UNIFORM ||
     (light.Kind != shadowmaps::LightKind::Directional && !spotWarp))
   {

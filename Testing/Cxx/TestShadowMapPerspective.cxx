@@ -310,3 +310,105 @@ TEST(PerspectivePSM, ConvergesToTheUniformMapAsTheWeightGoesToZero)
     EXPECT_EQ(atZero.Light.ViewProjection(), uniform.ViewProjection());
   }
 }
+
+// ---------------------------------------------------------------------------
+// Spot lights (FitSpotPerspective). The spot swings, 16 units from a ground point
+// 8 units ahead of the camera, through the camera's axis: behind the camera
+// shining forward, or ahead of it shining back.
+
+namespace
+{
+struct SpotSwing
+{
+  glm::dvec3 Eye{ 0.0, -9.5, 1.2 };
+  glm::dvec3 View = glm::normalize(glm::dvec3(0.0, 9.5, -0.4));
+  glm::dmat4 CameraView = glm::lookAt(Eye, Eye + View, glm::dvec3(0.0, 0.0, 1.0));
+  glm::dmat4 Projection = glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0);
+  Aabb Scene{ glm::dvec3(-10.0, -10.0, -0.1), glm::dvec3(10.0, 10.0, 2.5) };
+  glm::dvec3 Centre = Eye + View * 8.0;
+
+  std::vector<glm::dvec3> GroundPoints() const
+  {
+    const glm::dvec3 side = glm::normalize(glm::cross(View, glm::dvec3(0.0, 0.0, 1.0)));
+    std::vector<glm::dvec3> points;
+    for (double x : { -1.5, 0.0, 1.5 })
+    {
+      for (double y : { -3.0, 0.0, 3.0 })
+      {
+        points.push_back(glm::dvec3(Centre.x, Centre.y, 0.0) + side * x + glm::dvec3(0.0, y, 0.0));
+      }
+    }
+    return points;
+  }
+};
+} // namespace
+
+TEST(PerspectivePSM, SpotWarpFadesInWithoutPopping)
+{
+  const SpotSwing swing;
+  const glm::dvec3 side = glm::normalize(glm::cross(swing.View, glm::dvec3(0.0, 0.0, 1.0)));
+  const glm::dvec3 up = glm::cross(side, swing.View);
+  for (double facing : { 1.0, -1.0 })
+  {
+    for (const glm::dvec3& across : { up, side })
+    {
+      shadowmaps::testing::ExcessMotion motion(swing.GroundPoints(), MotionResolution);
+      for (int step = -300; step <= 300; ++step)
+      {
+        const double t = glm::radians(0.1 * step);
+        const glm::dvec3 ray = facing * (std::cos(t) * swing.View + std::sin(t) * across);
+        const glm::dvec3 spot = swing.Centre - ray * 16.0;
+        const PerspectiveMap map = shadowmaps::FitSpotPerspective(swing.CameraView, swing.Projection,
+          swing.Scene, spot, ray, 40.0, MotionResolution, 2.0,
+          shadowmaps::PerspectiveWarpWeight(swing.View, ray));
+        ASSERT_TRUE(shadowmaps::IsFinite(map.Light.ViewProjection()));
+        motion.Step(map.Light, shadowmaps::FitSpot(swing.Projection * swing.CameraView, swing.Scene,
+                                 spot, ray, 40.0, MotionResolution));
+      }
+      std::printf("[ fade-in  ] spot PSM %s, turning %s, +-30 deg: largest excess %.2f texels\n",
+        facing > 0 ? "behind the camera" : "facing it        ", across == up ? "up  " : "side",
+        motion.Worst());
+      EXPECT_LT(motion.Worst(), 0.05 * MotionResolution);
+    }
+  }
+}
+
+// The uniform map of a spot's PSM is the cone map cropped to B.
+TEST(PerspectivePSM, SpotMapConvergesToTheCroppedConeMapAsTheWeightGoesToZero)
+{
+  const SpotSwing swing;
+  const glm::dvec3 spot(5.0, -2.0, 7.0);
+  const glm::dvec3 axis = glm::normalize(swing.Centre - spot);
+  const glm::dmat4 camera = swing.Projection * swing.CameraView;
+  const shadowmaps::LightView cone = shadowmaps::FitSpotToBody(
+    shadowmaps::SpotFocusBody(camera, swing.Scene,
+      shadowmaps::FitSpot(camera, swing.Scene, spot, axis, 40.0, MotionResolution).ViewProjection()),
+    swing.Scene, spot, axis, 40.0, MotionResolution);
+  const PerspectiveMap warped = shadowmaps::FitSpotPerspective(
+    swing.CameraView, swing.Projection, swing.Scene, spot, axis, 40.0, MotionResolution, 2.0, 1.0);
+  EXPECT_EQ(warped.Kind, PsmLightKind::Point);
+  EXPECT_TRUE(warped.Light.TexelSizeFromGradient);
+  double previous = INFINITY;
+  for (double weight : { 1e-2, 1e-4, 1e-6 })
+  {
+    const PerspectiveMap map = shadowmaps::FitSpotPerspective(swing.CameraView, swing.Projection,
+      swing.Scene, spot, axis, 40.0, MotionResolution, 2.0, weight);
+    double farthest = 0.0;
+    for (const auto& p : swing.GroundPoints())
+    {
+      farthest = std::max(farthest,
+        glm::length(shadowmaps::testing::MapTexels(map.Light, p, MotionResolution) -
+          shadowmaps::testing::MapTexels(cone, p, MotionResolution)));
+    }
+    std::printf("[ limit    ] spot PSM at weight %g: %.4f texels from the cone map\n", weight, farthest);
+    EXPECT_LT(farthest, previous + 0.05) << "weight " << weight;
+    previous = farthest;
+  }
+  // The cropped cone map keeps its filter margin inside the cone, the PSM does
+  // not: up to that margin (4 texels) remains at the cone's edge.
+  EXPECT_LT(previous, 4.0);
+  const PerspectiveMap atZero = shadowmaps::FitSpotPerspective(
+    swing.CameraView, swing.Projection, swing.Scene, spot, axis, 40.0, MotionResolution, 2.0, 0.0);
+  EXPECT_EQ(atZero.Kind, PsmLightKind::Uniform);
+  EXPECT_EQ(atZero.Light.ViewProjection(), cone.ViewProjection());
+}

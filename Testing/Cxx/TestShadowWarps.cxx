@@ -242,17 +242,14 @@ TEST(ShadowWarps, WarpModeClampsAndParallelCameraRenders)
   }
 }
 
-// Spot lights are warped in their own post-perspective space (LiSPSM, GMNPR):
-// the sphere's shadow stays dark and the lit ground lit, near and far.
+// Spot lights are warped in their own post-perspective space (LiSPSM, GMNPR, TSM)
+// or the camera's (PSM): the sphere's shadow stays dark and the lit ground lit,
+// near and far.
 TEST(ShadowWarps, SpotLightWarpsShadowNearAndFar)
 {
   const glm::dvec3 spot(5.0, -2.0, 7.0);
   for (const Mode& mode : WarpModes)
   {
-    if (mode.Value == vtkWarpedShadowMapPass::PSM)
-    {
-      continue;
-    }
     TestScene scene;
     LookAlongTheGround(scene);
     scene.SetSpot(spot, 60.0);
