@@ -257,3 +257,26 @@ TEST(ShadowWarps, SpotLightWarpsShadowNearAndFar)
       GroundShadowOfSphereCenterFrom(spot), { -2.0, -3.0, 0.0 }, { -3.0, 6.0, 0.0 });
   }
 }
+
+// A spot wider than one map holds keeps the foundation's six cube faces in
+// every warp mode (the warps fit one map), and still shadows.
+TEST(ShadowWarps, WideSpotKeepsCubeFacesInEveryMode)
+{
+  const glm::dvec3 spot(5.0, -2.0, 7.0);
+  for (const Mode& mode : WarpModes)
+  {
+    TestScene scene;
+    LookAlongTheGround(scene);
+    scene.SetSpot(spot, 75.0);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    pass->SetWarpMode(mode.Value);
+    pass->SetResolution(512);
+    scene.Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << mode.Name << ": " << errors.Text();
+    EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << mode.Name;
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenterFrom(spot)), ShadowedBelow)
+      << mode.Name;
+  }
+}
