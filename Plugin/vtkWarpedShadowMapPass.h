@@ -21,13 +21,14 @@
  *   light-space hull mapped to the square, with the point TSMFocusDistance
  *   beyond the near plane on the TSMFocusFraction line; depth stays linear in
  *   light space, so one bias serves the whole map.
- * As the view direction approaches the light direction LiSPSM, GMNPR and TSM
- * fade continuously into the uniform map; parallel-projection cameras get the
- * uniform map. Spot lights are warped by LISPSM, GMNPR and TSM inside their own
- * post-perspective space, where they are directional (the angle, depths and
- * half angle that choose n are measured in the world at B; a spot's TSM map
- * stores z / w, so its depth is not linear); PSM gives spot lights the uniform
- * cone map. Point lights use the uniform cube faces.
+ * As the view direction approaches the light direction every mode fades
+ * continuously into the uniform map (PSM over 2 to 20 degrees, the others by
+ * 12 or 15); parallel-projection cameras get the uniform map. Spot lights are
+ * warped by LISPSM, GMNPR and TSM inside their own post-perspective space, where
+ * they are directional (the angle, depths and half angle that choose n are
+ * measured in the world at B; a spot's TSM map stores z / w, so its depth is not
+ * linear), and by PSM as a point light in the camera's post-perspective space.
+ * Point lights, and spots wider than one map holds, use the uniform cube faces.
  *
  * Uniform fit: directional lights get an orthographic map fitted to the focus body B
  * (view frustum ∩ scene bounds, survey 003 §4.1) with its near plane pulled back

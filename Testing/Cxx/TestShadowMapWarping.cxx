@@ -851,10 +851,7 @@ TEST(ShadowMapWarping, SpotWarpMovesContinuouslyThroughTheViewAxis)
         std::printf("[ continuity ] spot %-6s %s, turning %s: largest excess %.4f texels\n",
           Name(warp), facing > 0 ? "behind the camera" : "facing it        ",
           across == up ? "up  " : "side", worstExcess);
-        if (warp != SpotWarp::GMNPR)
-        {
-          EXPECT_LT(worstExcess, 2.0) << Name(warp) << " facing " << facing;
-        }
+        EXPECT_LT(worstExcess, 2.0) << Name(warp) << " facing " << facing;
       }
     }
   }

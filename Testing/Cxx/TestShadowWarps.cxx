@@ -242,17 +242,28 @@ TEST(ShadowWarps, WarpModeClampsAndParallelCameraRenders)
   }
 }
 
+namespace
+{
+const glm::dvec3 SpotPosition(5.0, -2.0, 7.0);
+
+// The standard scene seen along the ground, lit by a spot at SpotPosition.
+void LookAlongTheGroundUnderTheSpot(TestScene& scene, double coneAngle)
+{
+  LookAlongTheGround(scene);
+  scene.SetSpot(SpotPosition, coneAngle);
+}
+} // namespace
+
 // Spot lights are warped in their own post-perspective space (LiSPSM, GMNPR, TSM)
 // or the camera's (PSM): the sphere's shadow stays dark and the lit ground lit,
 // near and far.
 TEST(ShadowWarps, SpotLightWarpsShadowNearAndFar)
 {
-  const glm::dvec3 spot(5.0, -2.0, 7.0);
+  const glm::dvec3& spot = SpotPosition;
   for (const Mode& mode : WarpModes)
   {
     TestScene scene;
-    LookAlongTheGround(scene);
-    scene.SetSpot(spot, 60.0);
+    LookAlongTheGroundUnderTheSpot(scene, 60.0);
     RenderAndProbe(scene, mode.Value, std::string("WarpSpot") + mode.Name,
       GroundShadowOfSphereCenterFrom(spot), { -2.0, -3.0, 0.0 }, { -3.0, 6.0, 0.0 });
   }
@@ -262,12 +273,11 @@ TEST(ShadowWarps, SpotLightWarpsShadowNearAndFar)
 // every warp mode (the warps fit one map), and still shadows.
 TEST(ShadowWarps, WideSpotKeepsCubeFacesInEveryMode)
 {
-  const glm::dvec3 spot(5.0, -2.0, 7.0);
+  const glm::dvec3& spot = SpotPosition;
   for (const Mode& mode : WarpModes)
   {
     TestScene scene;
-    LookAlongTheGround(scene);
-    scene.SetSpot(spot, 75.0);
+    LookAlongTheGroundUnderTheSpot(scene, 75.0);
     vtkNew<vtkWarpedShadowMapPass> pass;
     pass->SetWarpMode(mode.Value);
     pass->SetResolution(512);
