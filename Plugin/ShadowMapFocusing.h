@@ -100,9 +100,12 @@ struct LightView
   /// Warped maps: texels vary too much across the map for the formula above;
   /// receivers take the texel size from the map's local derivative instead.
   bool TexelSizeFromGradient = false;
-  /// Depth linear in light space (TSM): clip Z is affine in world space and is the
-  /// stored depth itself, not Z / W. Clip X, Y, W must not depend on light-space z,
-  /// so that W can be recovered from the NDC position (see NdcToInverseW).
+  /// Depth linear in light space (TSM): the stored depth is Z / W times W_p, where
+  /// W_p = 1 / dot(NdcToInverseW(*this), (x_ndc, y_ndc, 1)) is the projection's W
+  /// recovered from the map position (the projection's X, Y, W must not depend on
+  /// light-space z). For an affine View that is clip Z itself, affine in the world;
+  /// for a spot's TSM (View through the spot's own projection) it is the spot's
+  /// post-perspective depth.
   bool LinearDepth = false;
   glm::dmat4 ViewProjection() const { return this->Projection * this->View; }
 };

@@ -411,10 +411,11 @@ LightView FitSpotTrapezoid(const glm::dmat4& cameraView, const glm::dmat4& camer
   }
 
   LightView fit = TrapezoidLightView(FitTrapezoidFrame(frame, focusFraction), resolution);
-  // Depth is z / w here: the trapezoid's W divides the spot's own depth, but W is
-  // constant along each light ray, so the order along a ray is kept.
+  // Clip W = the spot's w times the trapezoid's W, and the trapezoid's W is a
+  // plane over the map as for a directional light: the stored depth, z / w times
+  // that W, is the spot's own depth, linear in its post-perspective space.
   fit.View = fit.View * toLightSpace;
-  fit.LinearDepth = false;
+  fit.LinearDepth = true;
   fit.Perspective = true;
   fit.TexelSizeFromGradient = true;
   fit.TexelConstant = 0.0;

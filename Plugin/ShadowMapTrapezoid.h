@@ -120,7 +120,8 @@ TrapezoidMap FitTrapezoidFrame(
 /// the focus point (focusDistance beyond B's nearest depth, <= 0: a fifth of B's
 /// depth range) are mapped there and the trapezoid is built as for a directional
 /// light (FitTrapezoidFrame). Result: View = trapezoid light view * S, not rigid;
-/// depth is z / w (LinearDepth false); TexelSizeFromGradient is set. Falls back to
+/// LinearDepth: the stored depth is the spot's own post-perspective depth, not
+/// warped by the trapezoid; TexelSizeFromGradient is set. Falls back to
 /// the cone map S when B is empty or the camera's axis leaves the spot's side.
 LightView FitSpotTrapezoid(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const Aabb& scene, const glm::dvec3& position, const glm::dvec3& direction,

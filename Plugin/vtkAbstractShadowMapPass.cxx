@@ -180,6 +180,19 @@ std::array<float, 3> WindowToInverseW(const LightView& view, int resolution)
     static_cast<float>(r.z - r.x - r.y) } };
 }
 
+// 1 / W as a plane over texture coordinates (u, v, 1) for receivers of
+// linear-depth views; zero for the others.
+glm::vec3 TextureToInverseW(const LightView& view)
+{
+  if (!view.LinearDepth)
+  {
+    return glm::vec3(0.0f);
+  }
+  // x_ndc = 2 u - 1.
+  const glm::dvec3 r = shadowmaps::NdcToInverseW(view);
+  return glm::vec3(2.0 * r.x, 2.0 * r.y, r.z - r.x - r.y);
+}
+
 // Per-texel rotations (cos, sin) of the Poisson disc.
 vtkSmartPointer<vtkTextureObject> CreateRotationNoise(vtkOpenGLRenderWindow* window)
 {
@@ -263,7 +276,8 @@ struct vtkAbstractShadowMapPass::Resources
   // Uniform values of the current maps.
   std::vector<float> ViewToMap;
   std::vector<float> TexelSizes;
-  std::vector<float> DepthLinear;
+  /// Per view: 1 / W as a plane over texture (u, v, 1) for linear-depth views, else 0.
+  std::vector<float> DepthInverseW;
   std::vector<float> Cascades;
   std::vector<float> CascadeLights;
   std::vector<float> LightPositions;
@@ -709,7 +723,7 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
   Resources& r = *this->Resource;
   r.ViewToMap.clear();
   r.TexelSizes.clear();
-  r.DepthLinear.clear();
+  r.DepthInverseW.clear();
   r.Cascades.clear();
   r.CascadeLights.clear();
   r.LightPositions.clear();
@@ -720,17 +734,9 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
   {
     for (const LightView& view : light.Views)
     {
-      glm::dmat4 viewToMapD = toTexture * view.ViewProjection() * viewToWorld;
-      if (view.LinearDepth)
-      {
-        // Texture depth 0.5 Z + 0.5 without the divide by W: Z is affine.
-        const glm::dmat4 clip = view.ViewProjection() * viewToWorld;
-        for (int c = 0; c < 4; ++c)
-        {
-          viewToMapD[c][2] = 0.5 * clip[c][2] + (c == 3 ? 0.5 : 0.0);
-        }
-      }
-      r.DepthLinear.push_back(view.LinearDepth ? 1.0f : 0.0f);
+      const glm::dmat4 viewToMapD = toTexture * view.ViewProjection() * viewToWorld;
+      const glm::vec3 inverseW = TextureToInverseW(view);
+      r.DepthInverseW.insert(r.DepthInverseW.end(), glm::value_ptr(inverseW), glm::value_ptr(inverseW) + 3);
       const size_t cascade = static_cast<size_t>(&view - light.Views.data());
       // Cascades of one light share their texel formula's kind (constant for
       // directional, per unit distance for spot), so the sum compares them.
@@ -978,7 +984,8 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   program->SetUniformMatrix4x4v("vtkShadowViewToMap", views, r.ViewToMap.data());
   program->SetUniform2fv(
     "vtkShadowTexelSize", views, reinterpret_cast<const float(*)[2]>(r.TexelSizes.data()));
-  program->SetUniform1fv("vtkShadowDepthLinear", views, r.DepthLinear.data());
+  program->SetUniform3fv(
+    "vtkShadowDepthInverseW", views, reinterpret_cast<const float(*)[3]>(r.DepthInverseW.data()));
   program->SetUniform4fv("vtkShadowCascade", views, reinterpret_cast<const float(*)[4]>(r.Cascades.data()));
   program->SetUniform3fv(
     "vtkShadowCascadeLight", lights, reinterpret_cast<const float(*)[3]>(r.CascadeLights.data()));

@@ -16,9 +16,10 @@ uniform mat4 vtkShadowViewToMap[VTK_SHADOW_MAX_VIEWS];
 // World-space size of one texel of a view: x + y * (distance to the light);
 // x < 0: warped map, size from the map's local gradient (vtkShadowGradientTexel).
 uniform vec2 vtkShadowTexelSize[VTK_SHADOW_MAX_VIEWS];
-// 1: the view's depth is linear in light space (TSM) and its matrix gives the
-// texture depth without the divide by w; 0: depth is z / w.
-uniform float vtkShadowDepthLinear[VTK_SHADOW_MAX_VIEWS];
+// Views whose depth is linear in light space (TSM): 1 / W, the trapezoid's W, as a
+// plane over texture coordinates (u, v, 1); their casters store z / w times W.
+// Zero for views that store z / w.
+uniform vec3 vtkShadowDepthInverseW[VTK_SHADOW_MAX_VIEWS];
 // Cascades: per view, x = first view depth (-z in VC) it shades, y = its last
 // (the next split), z = where the blend band into the next cascade starts,
 // w = its texel size over the first cascade's (filter offsets are multiplied by
@@ -134,9 +135,10 @@ vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view)
 vec3 vtkShadowMapCoord(vec4 clip, int view)
 {
   vec3 mapCoord = clip.xyz / clip.w;
-  if (vtkShadowDepthLinear[view] > 0.5)
+  vec3 inverseW = vtkShadowDepthInverseW[view];
+  if (inverseW != vec3(0.0))
   {
-    mapCoord.z = clip.z;
+    mapCoord.z = (mapCoord.z - 0.5) / dot(inverseW, vec3(mapCoord.xy, 1.0)) + 0.5;
   }
   return mapCoord;
 }
