@@ -727,17 +727,24 @@ LightView FitSpotWith(SpotWarp warp, const glm::dmat4& cameraView, const glm::dm
     coneAngle, resolution, warp == SpotWarp::GMNPR ? DirectionalWarp::GMNPR : DirectionalWarp::LiSPSM);
 }
 
-// A spot light's warped map keeps what a shadow map needs: points on one ray
-// from the light land on one texel, in depth order, and the focus body maps
-// inside the unit cube.
-TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
+// The camera along the ground and a spot above the scene, shining at the origin.
+struct SpotOverGround
 {
   const glm::dmat4 cameraView =
     glm::lookAt(glm::dvec3(0.0, -9.5, 1.2), glm::dvec3(0.0, 0.0, 0.8), glm::dvec3(0.0, 0.0, 1.0));
   const glm::dmat4 cameraProjection = glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0);
   const shadowmaps::Aabb scene{ glm::dvec3(-10.0, -10.0, -0.1), glm::dvec3(10.0, 10.0, 2.5) };
-  const glm::dvec3 spot(5.0, -2.0, 7.0);
+  const glm::dvec3 spot{ 5.0, -2.0, 7.0 };
   const glm::dvec3 axis = glm::normalize(-spot);
+};
+
+// A spot light's warped map keeps what a shadow map needs: points on one ray
+// from the light land on one texel, in depth order, and the focus body maps
+// inside the unit cube.
+TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
+{
+  const SpotOverGround set;
+  const auto& [cameraView, cameraProjection, scene, spot, axis] = set;
   for (SpotWarp warp : SpotWarps)
   {
     const LightView fit = FitSpotWith(warp, cameraView, cameraProjection, scene, spot, axis, 30.0, 1024);
@@ -774,12 +781,8 @@ TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
 // cone map's.
 TEST(ShadowMapWarping, SpotTSMStoresTheConeMapsDepth)
 {
-  const glm::dmat4 cameraView =
-    glm::lookAt(glm::dvec3(0.0, -9.5, 1.2), glm::dvec3(0.0, 0.0, 0.8), glm::dvec3(0.0, 0.0, 1.0));
-  const glm::dmat4 cameraProjection = glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0);
-  const shadowmaps::Aabb scene{ glm::dvec3(-10.0, -10.0, -0.1), glm::dvec3(10.0, 10.0, 2.5) };
-  const glm::dvec3 spot(5.0, -2.0, 7.0);
-  const glm::dvec3 axis = glm::normalize(-spot);
+  const SpotOverGround set;
+  const auto& [cameraView, cameraProjection, scene, spot, axis] = set;
   const LightView tsm =
     shadowmaps::FitSpotTrapezoid(cameraView, cameraProjection, scene, spot, axis, 30.0, 1024);
   ASSERT_TRUE(tsm.LinearDepth);
