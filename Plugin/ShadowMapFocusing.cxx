@@ -495,6 +495,23 @@ LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& sceneBo
   return fit;
 }
 
+LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& scene,
+  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
+  int resolution, std::vector<glm::dvec3>* litBody)
+{
+  const LightView cone =
+    FitSpot(cameraViewProjection, scene, position, direction, coneAngleDegrees, resolution);
+  std::vector<glm::dvec3> body = SpotFocusBody(cameraViewProjection, scene, cone.ViewProjection());
+  const LightView fit = body.empty()
+    ? cone
+    : FitSpotToBody(body, scene, position, direction, coneAngleDegrees, resolution);
+  if (litBody)
+  {
+    *litBody = std::move(body);
+  }
+  return fit;
+}
+
 std::array<LightView, 6> FitCubeFaces(const Aabb& sceneBounds, const glm::dvec3& position, int resolution)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 }

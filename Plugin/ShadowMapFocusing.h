@@ -128,6 +128,13 @@ LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& scene,
 LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& scene,
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees, int resolution);
 
+/// FitSpot's cone map cropped to the lit part of B = camera frustum ∩ scene ∩ the
+/// cone (FitSpotToBody); the cone map itself when that part is empty. litBody,
+/// when given, receives its vertices (empty with the cone map).
+LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& scene,
+  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
+  int resolution, std::vector<glm::dvec3>* litBody = nullptr);
+
 /// Point light: six 90 degree faces in the order +x, -x, +y, -y, +z, -z, each
 /// with near/far covering the scene.
 std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& position, int resolution);

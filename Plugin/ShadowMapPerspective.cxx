@@ -128,6 +128,13 @@ glm::dvec3 NarrowestConeAxis(const glm::dvec3& eye, const std::vector<glm::dvec3
   return bestCosine > 1e-3 ? best : glm::dvec3(0.0);
 }
 
+// True when the homogeneous light point is so far from a body of this radius,
+// relative to its size, that the light is treated as directional there.
+bool StaysDirectional(const glm::dvec4& light, double radius)
+{
+  return !(std::abs(light.w) * 1e6 * radius > glm::length(glm::dvec3(light)));
+}
+
 // Cosine of the half-angle of the narrowest cone from the light's position in
 // post-perspective space `post` that holds the body's points; 1 for a light that
 // stays directional there, -1 when no cone narrower than a half-space holds them.
@@ -143,7 +150,7 @@ double LightConeCosine(
     lo = glm::min(lo, points.back());
     hi = glm::max(hi, points.back());
   }
-  if (!(std::abs(light.w) * 1e6 * 0.5 * glm::length(hi - lo) > glm::length(glm::dvec3(light))))
+  if (StaysDirectional(light, 0.5 * glm::length(hi - lo)))
   {
     return 1.0;
   }
@@ -520,12 +527,11 @@ PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dma
   // The light in post-perspective space: w > 0 in front of the viewer, w < 0
   // behind it, w = 0 on the camera's plane (perpendicular, for a sun).
   const glm::dvec4 post = space.Transform * light.TowardLight;
-  const double postXYZ = glm::length(glm::dvec3(post));
   LightView fit;
-  if (!(std::abs(post.w) * 1e6 * space.Radius > postXYZ))
+  if (StaysDirectional(post, space.Radius))
   {
     map.Kind = PsmLightKind::Directional;
-    map.LightPosition = -glm::dvec3(post) / postXYZ;
+    map.LightPosition = -glm::normalize(glm::dvec3(post));
     fit = FitDirectionalInSpace(space, map.LightPosition, resolution);
   }
   else
@@ -601,15 +607,11 @@ PerspectiveMap FitSpotPerspective(const glm::dmat4& cameraView, const glm::dmat4
   PerspectiveLight light;
   light.TowardLight = glm::dvec4(position, 1.0);
   light.Positional = true;
-  light.Uniform = FitSpot(camera, scene, position, direction, coneAngleDegrees, resolution);
   // B = camera frustum ∩ scene ∩ the spot's frustum; the uniform map is the cone
   // map cropped to B, which the PSM becomes as its weight goes to 0.
-  const std::vector<glm::dvec3> body =
-    SpotFocusBody(camera, scene, light.Uniform.ViewProjection());
-  if (!body.empty())
-  {
-    light.Uniform = FitSpotToBody(body, scene, position, direction, coneAngleDegrees, resolution);
-  }
+  std::vector<glm::dvec3> body;
+  light.Uniform =
+    FitSpotToLitBody(camera, scene, position, direction, coneAngleDegrees, resolution, &body);
   const double weight = ClampedWeight(warpWeight);
   if (IsParallelProjection(cameraProjection) || !(weight > 0.0) || !IsFiniteVector(position))
   {

@@ -165,21 +165,6 @@ void SetCameraToView(vtkCamera* camera, vtkMatrix4x4* projection, const LightVie
   camera->Modified();
 }
 
-// 1 / W as a plane over window coordinates (gl_FragCoord.xy) of a map of
-// `resolution` texels, for casters of linear-depth views.
-std::array<float, 3> WindowToInverseW(const LightView& view, int resolution)
-{
-  if (!view.LinearDepth)
-  {
-    return { { 0.0f, 0.0f, 1.0f } };
-  }
-  // x_ndc = 2 x_window / resolution - 1.
-  const glm::dvec3 r = shadowmaps::NdcToInverseW(view);
-  const double scale = 2.0 / std::max(resolution, 1);
-  return { { static_cast<float>(r.x * scale), static_cast<float>(r.y * scale),
-    static_cast<float>(r.z - r.x - r.y) } };
-}
-
 // 1 / W as a plane over texture coordinates (u, v, 1) for receivers of
 // linear-depth views; zero for the others.
 glm::vec3 TextureToInverseW(const LightView& view)
@@ -191,6 +176,20 @@ glm::vec3 TextureToInverseW(const LightView& view)
   // x_ndc = 2 u - 1.
   const glm::dvec3 r = shadowmaps::NdcToInverseW(view);
   return glm::vec3(2.0 * r.x, 2.0 * r.y, r.z - r.x - r.y);
+}
+
+// 1 / W as a plane over window coordinates (gl_FragCoord.xy) of a map of
+// `resolution` texels, for casters of linear-depth views; (0, 0, 1) for the others.
+std::array<float, 3> WindowToInverseW(const LightView& view, int resolution)
+{
+  if (!view.LinearDepth)
+  {
+    return { { 0.0f, 0.0f, 1.0f } };
+  }
+  // u = x_window / resolution.
+  const glm::vec3 t = TextureToInverseW(view);
+  const float scale = 1.0f / static_cast<float>(std::max(resolution, 1));
+  return { { t.x * scale, t.y * scale, t.z } };
 }
 
 // Per-texel rotations (cos, sin) of the Poisson disc.

@@ -61,21 +61,6 @@ shadowmaps::LightView FitCascade(const glm::dmat4& cameraView, const glm::dmat4&
   }
   return shadowmaps::FitCascadeTight(cameraView, subProjection, scene, lightDirection, resolution);
 }
-
-// One cascade's view of a spot light, focused on the cascade's part of the scene
-// inside the cone: cascades that hold only unlit scene would otherwise each take
-// the whole cone.
-shadowmaps::LightView FitSpotCascade(const shadowmaps::ShadowLight& light,
-  const glm::dmat4& cascadeViewProjection, const shadowmaps::Aabb& scene, int resolution)
-{
-  const shadowmaps::LightView cone = shadowmaps::FitSpot(
-    cascadeViewProjection, scene, light.Position, light.Direction, light.ConeAngle, resolution);
-  const std::vector<glm::dvec3> lit =
-    shadowmaps::SpotFocusBody(cascadeViewProjection, scene, cone.ViewProjection());
-  return lit.empty() ? cone
-                     : shadowmaps::FitSpotToBody(
-                         lit, scene, light.Position, light.Direction, light.ConeAngle, resolution);
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -232,7 +217,10 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
     const glm::dvec2 depths = shadowmaps::CascadeDepthRange(splits, c, this->BlendFraction);
     const glm::dmat4 sub = shadowmaps::SubFrustumProjection(in.CameraProjection, depths.x, depths.y);
     views.push_back(light.Kind == shadowmaps::LightKind::Spot
-        ? FitSpotCascade(light, sub * in.CameraView, in.SceneBounds, in.Resolution)
+        // The cascade's lit part only: cascades that hold only unlit scene would
+        // otherwise each take the whole cone.
+        ? shadowmaps::FitSpotToLitBody(sub * in.CameraView, in.SceneBounds, light.Position,
+            light.Direction, light.ConeAngle, in.Resolution)
         : FitCascade(in.CameraView, sub, in.SceneBounds, in.Resolution, light.Direction,
             this->FitMode, this->CascadeWarp));
     const double blendStart = splits[c + 1] - this->BlendFraction * (splits[c + 1] - splits[c]);

@@ -380,10 +380,8 @@ TEST(PerspectivePSM, SpotMapConvergesToTheCroppedConeMapAsTheWeightGoesToZero)
   const glm::dvec3 spot(5.0, -2.0, 7.0);
   const glm::dvec3 axis = glm::normalize(swing.Centre - spot);
   const glm::dmat4 camera = swing.Projection * swing.CameraView;
-  const shadowmaps::LightView cone = shadowmaps::FitSpotToBody(
-    shadowmaps::SpotFocusBody(camera, swing.Scene,
-      shadowmaps::FitSpot(camera, swing.Scene, spot, axis, 40.0, MotionResolution).ViewProjection()),
-    swing.Scene, spot, axis, 40.0, MotionResolution);
+  const shadowmaps::LightView cone =
+    shadowmaps::FitSpotToLitBody(camera, swing.Scene, spot, axis, 40.0, MotionResolution);
   const PerspectiveMap warped = shadowmaps::FitSpotPerspective(
     swing.CameraView, swing.Projection, swing.Scene, spot, axis, 40.0, MotionResolution, 2.0, 1.0);
   EXPECT_EQ(warped.Kind, PsmLightKind::Point);
