@@ -1,5 +1,7 @@
 #include "vtkAbstractShadowMapPass.h"
 
+#include "ShadowMapTrapezoid.h"
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
@@ -12,8 +14,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
@@ -24,9 +28,6 @@
 #include "vtkShadowMapsDepthLookupFS.h"
 #include "vtkShadowMapsReceiverFS.h"
 #include "vtkShadowMapsViewFS.h"
-#include "ShadowMapTrapezoid.h"
-#include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkTextureUnitManager.h"
@@ -34,6 +35,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <random>
@@ -538,7 +540,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 
   this->GetMapStorage(r.Storage);
   r.LookupCode = this->GetReceiverLookupCode();
-  r.LookupCodeHash = r.LookupCodeHash;
+  r.LookupCodeHash = std::hash<std::string>{}(r.LookupCode);
   std::string error;
   if (!r.Maps.Reserve(in.Resolution, layers, r.Storage.Format, r.Storage.Mipmaps, error) ||
     !this->RenderShadowMaps(renderer))
@@ -777,7 +779,7 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
   for (const ShadowLight& light : this->Internal->Lights)
   {
     key << light.ShaderIndex << ':' << light.FirstLayer << ':' << light.ViewKind() << ':'
-        << light.Views.size() << ' ';
+        << light.Views.size() << ':' << light.ReceiverFeatures() << ' ';
   }
   std::vector<vtkProp*> nonReceivers;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -872,7 +874,8 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
       {
         impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor(vertexVC.xyz, "
              << "vtkShadowNormalVC, " << k << ", " << lights[k].FirstLayer << ", "
-             << lights[k].ViewKind() << ", " << lights[k].Views.size() << ");\n";
+             << lights[k].ViewKind() << ", " << lights[k].Views.size() << ", "
+             << lights[k].ReceiverFeatures() << ");\n";
       }
     }
   }
@@ -923,8 +926,7 @@ std::string vtkAbstractShadowMapPass::AnalysisCode() const
   std::ostringstream code;
   code << "  gl_FragData[0] = vtkShadowAnalysisColor(vertexVC.xyz, vtkShadowNormalVC, "
        << this->AnalysisLight << ", " << light.FirstLayer << ", " << light.ViewKind() << ", "
-       << light.Views.size()
-       << ");\n";
+       << light.Views.size() << ", " << light.ReceiverFeatures() << ");\n";
   return code.str();
 }
 

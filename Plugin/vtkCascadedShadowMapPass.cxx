@@ -205,6 +205,8 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
     this->FitLightViewsUniform(in, lightIndex);
     return;
   }
+  light.MayWarp = light.Kind == shadowmaps::LightKind::Directional && this->FitMode == TIGHT &&
+    this->CascadeWarp != NO_WARP;
   double fade[2];
   const std::vector<double> splits = this->ComputeSplits(in, fade);
   this->LastSplits = splits;

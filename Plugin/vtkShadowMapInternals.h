@@ -51,8 +51,31 @@ struct ShadowLight
   /// map's half-width. Negative: picked by depth.
   double CoverageBlendFraction = -1.0;
 
+  /// The pass's settings may give this light warped views (texel sizes from
+  /// the map's gradient) or linear-depth views. Set from the settings, not from
+  /// this frame's fit, so that a fit turning uniform as the camera moves does
+  /// not rebuild the receivers' shaders.
+  bool MayWarp = false;
+  bool MayStoreLinearDepth = false;
+
   /// Shader code of how the views cover receivers (vtkShadowMapsReceiverFS).
   int ViewKind() const { return this->Cascaded ? 2 : this->Cube ? 1 : 0; }
+
+  /// Receiver code the views may need: bits vtkShadowGradientTexels (1),
+  /// vtkShadowDistantTexels (2) and vtkShadowLinearDepths (4) of vtkShadowMapsReceiverFS.
+  int ReceiverFeatures() const
+  {
+    bool gradient = this->MayWarp;
+    bool distant = this->Kind != LightKind::Directional;
+    bool linear = this->MayStoreLinearDepth;
+    for (const LightView& view : this->Views)
+    {
+      gradient = gradient || view.TexelSizeFromGradient;
+      distant = distant || view.TexelPerUnitDistance != 0.0;
+      linear = linear || view.LinearDepth;
+    }
+    return (gradient ? 1 : 0) | (distant ? 2 : 0) | (linear ? 4 : 0);
+  }
 };
 
 /// What a texel of a pass's maps holds and how the casters write it.

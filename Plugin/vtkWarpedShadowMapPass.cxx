@@ -134,6 +134,9 @@ void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIn
 {
   shadowmaps::ShadowLight& light = internals.Lights[lightIndex];
   const bool spotWarp = light.Kind == shadowmaps::LightKind::Spot && !light.Cube;
+  const bool warped = light.Kind == shadowmaps::LightKind::Directional || spotWarp;
+  light.MayWarp = warped && this->WarpMode != UNIFORM;
+  light.MayStoreLinearDepth = warped && this->WarpMode == TSM;
   if (this->WarpMode == UNIFORM ||
     (light.Kind != shadowmaps::LightKind::Directional && !spotWarp))
   {

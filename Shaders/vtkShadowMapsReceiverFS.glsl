@@ -59,18 +59,31 @@ const int vtkShadowSingleView = 0;
 const int vtkShadowCubeViews = 1;
 const int vtkShadowCascadeViews = 2;
 
-vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view);
-bool vtkShadowInsideMap(vec4 clip, int view);
+// What a light's views may need of the receiver (ShadowLight::ReceiverFeatures),
+// a literal per light: code a light cannot need is compiled out, since
+// software rasterisers run both sides of every branch.
+const int vtkShadowGradientTexels = 1; // warped maps: texel size from the map's gradient
+const int vtkShadowDistantTexels = 2;  // positional lights: texels grow with distance
+const int vtkShadowLinearDepths = 4;   // TSM: depth stored unwarped, 1 / W recovered
+bool vtkShadowHas(int features, int feature)
+{
+  return (features & feature) != 0;
+}
+
+vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features);
+bool vtkShadowInsideMap(vec4 clip, int view, int features);
 
 // The cascade that shades the receiver: by view depth, or the first (finest)
 // whose map contains it.
-int vtkShadowSelectCascade(vec3 positionVC, vec3 normalVC, int light, int firstView, int count)
+int vtkShadowSelectCascade(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int count, int features)
 {
   if (vtkShadowCascadeLight[light].z >= 0.0)
   {
     for (int i = 0; i < count - 1; ++i)
     {
-      if (vtkShadowInsideMap(vtkShadowMapClip(positionVC, normalVC, light, firstView + i), firstView + i))
+      vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView + i, features);
+      if (vtkShadowInsideMap(clip, firstView + i, features))
       {
         return firstView + i;
       }
@@ -90,11 +103,12 @@ int vtkShadowSelectCascade(vec3 positionVC, vec3 normalVC, int light, int firstV
 
 // The view of light `light` that covers the receiver. The light's views start
 // at layer firstView; a cube light has six of them, a cascaded light `count`.
-int vtkShadowSelectView(vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count)
+int vtkShadowSelectView(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count, int features)
 {
   if (kind == vtkShadowCascadeViews)
   {
-    return vtkShadowSelectCascade(positionVC, normalVC, light, firstView, count);
+    return vtkShadowSelectCascade(positionVC, normalVC, light, firstView, count, features);
   }
   if (kind != vtkShadowCubeViews)
   {
@@ -121,50 +135,57 @@ float vtkShadowGradientTexel(vec3 positionVC, int view)
   return 1.0 / (vtkShadowMapResolution * max(slowest, 1e-20));
 }
 
-vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view)
+vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features)
 {
   vec2 texelSize = vtkShadowTexelSize[view];
-  float texel = texelSize.x < 0.0
-    ? vtkShadowGradientTexel(positionVC, view)
-    : texelSize.x + texelSize.y * length(positionVC - vtkShadowLightPositionVC[light]);
+  float texel = texelSize.x;
+  if (vtkShadowHas(features, vtkShadowDistantTexels))
+  {
+    texel += texelSize.y * length(positionVC - vtkShadowLightPositionVC[light]);
+  }
+  if (vtkShadowHas(features, vtkShadowGradientTexels) && texelSize.x < 0.0)
+  {
+    texel = vtkShadowGradientTexel(positionVC, view);
+  }
   vec3 biased = positionVC + normalVC * (vtkShadowNormalOffset * texel);
   return vtkShadowViewToMap[view] * vec4(biased, 1.0);
 }
 
 // Texture coordinates and depth of the receiver in map `view`.
-vec3 vtkShadowMapCoord(vec4 clip, int view)
+vec3 vtkShadowMapCoord(vec4 clip, int view, int features)
 {
   vec3 mapCoord = clip.xyz / clip.w;
   vec3 inverseW = vtkShadowDepthInverseW[view];
-  if (inverseW != vec3(0.0))
+  if (vtkShadowHas(features, vtkShadowLinearDepths) && inverseW != vec3(0.0))
   {
     mapCoord.z = (mapCoord.z - 0.5) / dot(inverseW, vec3(mapCoord.xy, 1.0)) + 0.5;
   }
   return mapCoord;
 }
 
-bool vtkShadowInsideMap(vec4 clip, int view)
+bool vtkShadowInsideMap(vec4 clip, int view, int features)
 {
-  vec3 mapCoord = vtkShadowMapCoord(clip, view);
+  vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
   return clip.w > 0.0 && all(greaterThanEqual(mapCoord, vec3(0.0))) &&
     all(lessThanEqual(mapCoord, vec3(1.0)));
 }
 
-float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view)
+float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view, int features)
 {
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
-  if (!vtkShadowInsideMap(clip, view))
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
+  if (!vtkShadowInsideMap(clip, view, features))
   {
     return 1.0;
   }
-  return vtkShadowLookup(vtkShadowMapCoord(clip, view), view);
+  return vtkShadowLookup(vtkShadowMapCoord(clip, view, features), view);
 }
 
 // Weight of the next cascade in the blend band of cascade `view`: by depth over
 // the band before its split; by coverage over the band along its map's border
 // (a receiver the depth rule would give to a farther cascade is not blended:
 // its own map is the finest that holds it).
-float vtkShadowBlendIntoNext(vec3 positionVC, vec3 normalVC, int light, int view, float depth)
+float vtkShadowBlendIntoNext(
+  vec3 positionVC, vec3 normalVC, int light, int view, float depth, int features)
 {
   float band = vtkShadowCascadeLight[light].z;
   if (band < 0.0)
@@ -176,7 +197,7 @@ float vtkShadowBlendIntoNext(vec3 positionVC, vec3 normalVC, int light, int view
   {
     return 0.0;
   }
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
   vec2 ndc = abs(clip.xy / clip.w);
   return clamp((max(ndc.x, ndc.y) - (1.0 - band)) / band, 0.0, 1.0);
 }
@@ -184,17 +205,18 @@ float vtkShadowBlendIntoNext(vec3 positionVC, vec3 normalVC, int light, int view
 // Fraction of light `light` reaching the receiver, in [0, 1]; 1 outside the maps.
 // Cascades blend into the next one over the band before their split, and fade
 // out toward the light's maximum shadow distance.
-float vtkShadowVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count)
+float vtkShadowVisibility(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count, int features)
 {
-  int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, kind, count);
-  float visibility = vtkShadowViewVisibility(positionVC, normalVC, light, view);
+  int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, kind, count, features);
+  float visibility = vtkShadowViewVisibility(positionVC, normalVC, light, view, features);
   if (kind == vtkShadowCascadeViews)
   {
     float depth = -positionVC.z;
-    float weight = vtkShadowBlendIntoNext(positionVC, normalVC, light, view, depth);
+    float weight = vtkShadowBlendIntoNext(positionVC, normalVC, light, view, depth, features);
     if (view < firstView + count - 1 && weight > 0.0)
     {
-      float next = vtkShadowViewVisibility(positionVC, normalVC, light, view + 1);
+      float next = vtkShadowViewVisibility(positionVC, normalVC, light, view + 1, features);
       visibility = mix(visibility, next, weight);
     }
     vec3 fade = vtkShadowCascadeLight[light];
@@ -207,9 +229,11 @@ float vtkShadowVisibility(vec3 positionVC, vec3 normalVC, int light, int firstVi
 }
 
 // Factor that scales the light's diffuse and specular terms.
-float vtkShadowFactor(vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count)
+float vtkShadowFactor(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count, int features)
 {
-  float visibility = vtkShadowVisibility(positionVC, normalVC, light, firstView, kind, count);
+  float visibility =
+    vtkShadowVisibility(positionVC, normalVC, light, firstView, kind, count, features);
   return 1.0 - vtkShadowAttenuation[light] * (1.0 - visibility);
 }
 
@@ -253,18 +277,20 @@ vec3 vtkShadowPartitionColor(int index)
   return palette[index % 8];
 }
 
-vec4 vtkShadowAnalysisColor(vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count)
+vec4 vtkShadowAnalysisColor(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count, int features)
 {
-  int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, kind, count);
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view);
+  int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, kind, count, features);
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
   float footprint = vtkShadowTexelFootprint(clip);
-  float visibility = vtkShadowVisibility(positionVC, normalVC, light, firstView, kind, count);
+  float visibility =
+    vtkShadowVisibility(positionVC, normalVC, light, firstView, kind, count, features);
 #if VTK_SHADOW_ANALYSIS == 1
   return vec4(vec3(visibility), 1.0);
 #elif VTK_SHADOW_ANALYSIS == 2
-  return vec4(vtkShadowInsideMap(clip, view) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
+  return vec4(vtkShadowInsideMap(clip, view, features) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
 #else
-  vec3 color = vtkShadowInsideMap(clip, view) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
+  vec3 color = vtkShadowInsideMap(clip, view, features) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
   return vec4(color * (0.5 + 0.5 * visibility), 1.0);
 #endif
 }

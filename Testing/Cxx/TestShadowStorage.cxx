@@ -103,6 +103,37 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
 };
 vtkStandardNewMacro(vtkTestFrontBackShadowMapPass);
 
+/// Depth maps whose lookup code can be swapped for one that inverts visibility.
+class vtkTestSwappedLookupPass : public vtkTestUniformViewsPass
+{
+public:
+  static vtkTestSwappedLookupPass* New();
+  vtkTypeMacro(vtkTestSwappedLookupPass, vtkTestUniformViewsPass);
+  void SetInverted(bool inverted)
+  {
+    this->Inverted = inverted;
+    this->Modified();
+  }
+
+protected:
+  std::string GetReceiverLookupCode() const override
+  {
+    if (!this->Inverted)
+    {
+      return this->Superclass::GetReceiverLookupCode();
+    }
+    return R"(
+uniform sampler2DArrayShadow vtkShadowMaps;
+float vtkShadowLookup(vec3 mapCoord, int layer)
+{
+  return 1.0 - texture(vtkShadowMaps, vec4(mapCoord.xy, float(layer), mapCoord.z));
+}
+)";
+  }
+  bool Inverted = false;
+};
+vtkStandardNewMacro(vtkTestSwappedLookupPass);
+
 void ExpectShadowUnderSphere(TestScene& scene, vtkImageData* image)
 {
   EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
@@ -150,4 +181,21 @@ TEST(ShadowStorage, FrontAndBackByMinimumBlendingNeedNoBias)
   EXPECT_GT(LuminanceAt(scene.Renderer, image, { 4, 2, 1.5 }), LitAbove);
   const std::string difference = CompareWithBaseline(image, "StorageFrontBack");
   EXPECT_TRUE(difference.empty()) << difference;
+}
+
+// A subclass's lookup code is part of the receivers' shaders: when it changes,
+// they are rebuilt.
+TEST(ShadowStorage, ChangedLookupCodeRebuildsReceivers)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkTestSwappedLookupPass> pass;
+  pass->SetResolution(256);
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  ExpectShadowUnderSphere(scene, image);
+  pass->SetInverted(true);
+  image = RenderAndCapture(scene.Window);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)), LitAbove);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, { -5, -4, 0 }), ShadowedBelow);
 }
