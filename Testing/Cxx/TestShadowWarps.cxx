@@ -124,6 +124,30 @@ INSTANTIATE_TEST_SUITE_P(ShadowWarps, WarpModeAndSetUp,
   });
 } // namespace
 
+// Receivers compile only the code a light's views may need (gradient texel
+// sizes, linear depth): switching modes on a live pass must rebuild them, so
+// each frame matches a fresh pass's baseline.
+TEST(ShadowWarps, SwitchingModesOnALivePassMatchesFreshPasses)
+{
+  TestScene scene;
+  LookAlongTheGround(scene);
+  scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  pass->SetResolution(512);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  RenderAndCapture(scene.Window);
+  for (const Mode& mode : WarpModes)
+  {
+    pass->SetWarpMode(mode.Value);
+    auto image = RenderAndCapture(scene.Window);
+    const std::string difference =
+      CompareWithBaseline(image, std::string("Warp") + mode.Name + "Perpendicular");
+    EXPECT_TRUE(difference.empty()) << mode.Name << ": " << difference;
+  }
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+}
+
 TEST(ShadowWarps, PSMWithoutSlideBackAndWithALongOneStillShadows)
 {
   for (double slideBack : { 0.0, 30.0 })
