@@ -512,6 +512,42 @@ LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& s
   return fit;
 }
 
+std::vector<LightView> TileView(
+  const LightView& whole, int columns, int rows, int resolution, double marginTexels)
+{
+  columns = std::max(columns, 1);
+  rows = std::max(rows, 1);
+  const double texels = std::max(resolution, 1);
+  const double margin = std::min(std::max(marginTexels, 0.0), 0.25 * texels);
+  // The tile's window, in the whole map's NDC: its core plus the margin, the
+  // core taking texels - 2 margin texels.
+  const glm::dvec2 halfSize = glm::dvec2(1.0 / columns, 1.0 / rows) * (texels / (texels - 2.0 * margin));
+  // Window sizes (near-plane extents over near, or widths) of the whole map.
+  const glm::dvec2 window(2.0 / whole.Projection[0][0], 2.0 / whole.Projection[1][1]);
+  const double texelScale =
+    std::max(window.x * halfSize.x, window.y * halfSize.y) / std::max(window.x, window.y);
+  std::vector<LightView> tiles;
+  for (int row = 0; row < rows; ++row)
+  {
+    for (int column = 0; column < columns; ++column)
+    {
+      const glm::dvec2 center(-1.0 + (2.0 * column + 1.0) / columns, -1.0 + (2.0 * row + 1.0) / rows);
+      glm::dmat4 crop(1.0);
+      crop[0][0] = 1.0 / halfSize.x;
+      crop[1][1] = 1.0 / halfSize.y;
+      crop[3][0] = -center.x / halfSize.x;
+      crop[3][1] = -center.y / halfSize.y;
+      LightView tile = whole;
+      tile.Projection = crop * whole.Projection;
+      tile.TexelConstant *= texelScale;
+      tile.TexelPerUnitDistance *= texelScale;
+      tile.CoverageInset = margin / texels;
+      tiles.push_back(tile);
+    }
+  }
+  return tiles;
+}
+
 std::array<LightView, 6> FitCubeFaces(const Aabb& sceneBounds, const glm::dvec3& position, int resolution)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 }

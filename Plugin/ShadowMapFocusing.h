@@ -107,6 +107,10 @@ struct LightView
   /// for a spot's TSM (View through the spot's own projection) it is the spot's
   /// post-perspective depth.
   bool LinearDepth = false;
+  /// Tiles of one map (TileView): the border, in texture coordinates, that
+  /// receivers leave to the neighbouring tile when picking their tile, so that
+  /// filter taps near the tile's edge still read its own texels.
+  double CoverageInset = 0.0;
   glm::dmat4 ViewProjection() const { return this->Projection * this->View; }
 };
 
@@ -137,6 +141,16 @@ LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& s
 
 /// Point light: six 90 degree faces in the order +x, -x, +y, -y, +z, -z, each
 /// with near/far covering the scene.
+/// The map of `whole` as columns x rows tiles, each a map of `resolution`
+/// texels (row by row, from the window's lower left): together the map of
+/// `whole` at columns x rows times the resolution, in tiles that fit a texture
+/// array's layers. Each tile also covers marginTexels of its neighbours along
+/// its sides (its CoverageInset), where filter kernels reach; its texel sizes are
+/// scaled to its share of the window. columns and rows below 1 are taken as 1;
+/// the margin is clamped to [0, resolution / 4].
+std::vector<LightView> TileView(
+  const LightView& whole, int columns, int rows, int resolution, double marginTexels);
+
 std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& position, int resolution);
 
 /// Index of the cube face (order of FitCubeFaces) that sees direction d.

@@ -280,6 +280,7 @@ struct vtkAbstractShadowMapPass::Resources
   /// Per view: 1 / W as a plane over texture (u, v, 1) for linear-depth views, else 0.
   std::vector<float> DepthInverseW;
   std::vector<float> Cascades;
+  std::vector<float> CoverageInsets;
   std::vector<float> CascadeLights;
   std::vector<float> LightPositions;
   std::vector<float> Attenuations;
@@ -726,6 +727,7 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
   r.TexelSizes.clear();
   r.DepthInverseW.clear();
   r.Cascades.clear();
+  r.CoverageInsets.clear();
   r.CascadeLights.clear();
   r.LightPositions.clear();
   const glm::dmat4 viewToWorld = glm::inverse(in.CameraView);
@@ -749,6 +751,7 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
             firstTexel > 0.0 && texel > 0.0 ? firstTexel / texel : 1.0)
         : glm::vec4(0.0f, 1e38f, 1e38f, 1.0f);
       r.Cascades.insert(r.Cascades.end(), glm::value_ptr(depths), glm::value_ptr(depths) + 4);
+      r.CoverageInsets.push_back(static_cast<float>(view.CoverageInset));
       const glm::mat4 viewToMap(viewToMapD);
       r.ViewToMap.insert(r.ViewToMap.end(), glm::value_ptr(viewToMap), glm::value_ptr(viewToMap) + 16);
       // A negative constant tells the receiver to use the map's local gradient.
@@ -988,6 +991,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   program->SetUniform3fv(
     "vtkShadowDepthInverseW", views, reinterpret_cast<const float(*)[3]>(r.DepthInverseW.data()));
   program->SetUniform4fv("vtkShadowCascade", views, reinterpret_cast<const float(*)[4]>(r.Cascades.data()));
+  program->SetUniform1fv("vtkShadowCoverageInset", views, r.CoverageInsets.data());
   program->SetUniform3fv(
     "vtkShadowCascadeLight", lights, reinterpret_cast<const float(*)[3]>(r.CascadeLights.data()));
   program->SetUniform3fv(

@@ -211,6 +211,14 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
   const std::vector<double> splits = this->ComputeSplits(in, fade);
   this->LastSplits = splits;
 
+  light.Fade = glm::dvec2(fade[0], fade[1]);
+  light.Cascaded = true;
+  if (light.Kind == shadowmaps::LightKind::Spot)
+  {
+    this->TileSpotLight(in, lightIndex);
+    return;
+  }
+
   std::vector<shadowmaps::LightView> views;
   std::vector<glm::dvec3> depthsOfCascades;
   const int cascades = static_cast<int>(splits.size()) - 1;
@@ -218,22 +226,48 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
   {
     const glm::dvec2 depths = shadowmaps::CascadeDepthRange(splits, c, this->BlendFraction);
     const glm::dmat4 sub = shadowmaps::SubFrustumProjection(in.CameraProjection, depths.x, depths.y);
-    views.push_back(light.Kind == shadowmaps::LightKind::Spot
-        // The cascade's lit part only: cascades that hold only unlit scene would
-        // otherwise each take the whole cone.
-        ? shadowmaps::FitSpotToLitBody(sub * in.CameraView, in.SceneBounds, light.Position,
-            light.Direction, light.ConeAngle, in.Resolution)
-        : FitCascade(in.CameraView, sub, in.SceneBounds, in.Resolution, light.Direction,
-            this->FitMode, this->CascadeWarp));
+    views.push_back(FitCascade(
+      in.CameraView, sub, in.SceneBounds, in.Resolution, light.Direction, this->FitMode, this->CascadeWarp));
     const double blendStart = splits[c + 1] - this->BlendFraction * (splits[c + 1] - splits[c]);
     depthsOfCascades.emplace_back(
       splits[c], splits[c + 1], this->BlendFraction > 0.0 && c + 1 < cascades ? blendStart : NoBlend);
   }
   light.Views = std::move(views);
   light.CascadeDepths = std::move(depthsOfCascades);
-  light.Cascaded = true;
   light.CoverageBlendFraction = this->Selection == BY_COVERAGE ? this->BlendFraction : -1.0;
-  light.Fade = glm::dvec2(fade[0], fade[1]);
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::TileSpotLight(Internals& in, int lightIndex) const
+{
+  shadowmaps::ShadowLight& light = in.Lights[lightIndex];
+  // The cascades' layers hold one map of the cone cropped to the lit part of
+  // the view, at sqrt(cascades) times the resolution: a spot's texels are
+  // spread by the distance to the light, not to the camera, and one such map
+  // misclassified fewer pixels than depth cascades in every benchmark scene.
+  const int rows = std::max(static_cast<int>(std::sqrt(this->NumberOfCascades)), 1);
+  const int columns = std::max(this->NumberOfCascades / rows, 1);
+  const shadowmaps::LightView whole = shadowmaps::FitSpotToLitBody(in.CameraViewProjection(),
+    in.SceneBounds, light.Position, light.Direction, light.ConeAngle, in.Resolution);
+  light.Views =
+    shadowmaps::TileView(whole, columns, rows, in.Resolution, this->FilterReachTexels());
+  // Tiles are picked by coverage, without blending: they share one texel size.
+  light.CascadeDepths.assign(light.Views.size(), glm::dvec3(0.0, NoBlend, NoBlend));
+  light.CoverageBlendFraction = 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkCascadedShadowMapPass::FilterReachTexels() const
+{
+  switch (this->Filter)
+  {
+    case PCF_NXN:
+      return 0.5 * this->KernelSize + 1.0;
+    case POISSON:
+      return this->FilterRadius + 1.0;
+    default:
+      return 1.0;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -158,6 +158,10 @@ protected:
   void ComputeLightViews(Internals& internals, int lightIndex) override;
   /** This frame's split depths; fade receives the depths shadows fade over ({0, 0}: none). */
   std::vector<double> ComputeSplits(const Internals& internals, double fade[2]);
+  /** A spot light's views: one cone map, in tiles of the cascades' layers. */
+  void TileSpotLight(Internals& internals, int lightIndex) const;
+  /** How far the filter kernel reaches from a receiver's texel, in texels. */
+  double FilterReachTexels() const;
 
   int NumberOfCascades = 4;
   double SplitLambda = 0.75;

@@ -25,6 +25,10 @@ uniform vec3 vtkShadowDepthInverseW[VTK_SHADOW_MAX_VIEWS];
 // w = its texel size over the first cascade's (filter offsets are multiplied by
 // its inverse so the kernel keeps its world size). Other views: (0, 1e38, 1e38, 1).
 uniform vec4 vtkShadowCascade[VTK_SHADOW_MAX_VIEWS];
+// Cascades picked by coverage: per view, the border (in texture coordinates)
+// left to the next views when picking, where they are tiles of one map
+// (filter taps near a tile's edge then stay on its own texels). 0 otherwise.
+uniform float vtkShadowCoverageInset[VTK_SHADOW_MAX_VIEWS];
 // Per light: x, y = view depths over which shadows fade out (x >= y: no fade);
 // z >= 0: cascades selected by map coverage instead of depth, and blended into
 // the next over this outer fraction of the map's half-width; z < 0: by depth.
@@ -72,6 +76,7 @@ bool vtkShadowHas(int features, int feature)
 
 vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features);
 bool vtkShadowInsideMap(vec4 clip, int view, int features);
+bool vtkShadowInsideMapCore(vec4 clip, int view, int features);
 
 // The cascade that shades the receiver: by view depth, or the first (finest)
 // whose map contains it.
@@ -83,7 +88,7 @@ int vtkShadowSelectCascade(
     for (int i = 0; i < count - 1; ++i)
     {
       vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView + i, features);
-      if (vtkShadowInsideMap(clip, firstView + i, features))
+      if (vtkShadowInsideMapCore(clip, firstView + i, features))
       {
         return firstView + i;
       }
@@ -163,11 +168,22 @@ vec3 vtkShadowMapCoord(vec4 clip, int view, int features)
   return mapCoord;
 }
 
-bool vtkShadowInsideMap(vec4 clip, int view, int features)
+bool vtkShadowInsideMapBy(vec4 clip, int view, int features, float inset)
 {
   vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
-  return clip.w > 0.0 && all(greaterThanEqual(mapCoord, vec3(0.0))) &&
-    all(lessThanEqual(mapCoord, vec3(1.0)));
+  return clip.w > 0.0 && all(greaterThanEqual(mapCoord, vec3(inset, inset, 0.0))) &&
+    all(lessThanEqual(mapCoord, vec3(1.0 - inset, 1.0 - inset, 1.0)));
+}
+
+bool vtkShadowInsideMap(vec4 clip, int view, int features)
+{
+  return vtkShadowInsideMapBy(clip, view, features, 0.0);
+}
+
+// Inside the part of the map that coverage selection gives to this view.
+bool vtkShadowInsideMapCore(vec4 clip, int view, int features)
+{
+  return vtkShadowInsideMapBy(clip, view, features, vtkShadowCoverageInset[view]);
 }
 
 float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view, int features)

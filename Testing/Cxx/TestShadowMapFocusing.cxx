@@ -1110,3 +1110,77 @@ TEST(FitSpot, NearPlaneAtTheNearestScenePointInTheCone)
     EXPECT_GT(zNear, 0.9 * nearest) << "near plane far in front of the scene";
   }
 }
+
+// Tiles of one map: every point of the map lies in the core of exactly one
+// tile, at the place the whole map's coordinates predict, with the same depth;
+// texel sizes scale with the tile's share of the window.
+TEST(TileView, TilesPartitionTheMapAndKeepItsCoordinates)
+{
+  const Aabb scene{ glm::dvec3(-10.0, -10.0, 0.0), glm::dvec3(10.0, 10.0, 2.5) };
+  const glm::dmat4 camera = glm::perspective(glm::radians(30.0), 1.0, 0.1, 40.0) *
+    glm::lookAt(glm::dvec3(0, -9.5, 1.2), glm::dvec3(0, 0, 0.8), glm::dvec3(0, 0, 1));
+  const LightView whole = shadowmaps::FitSpot(
+    camera, scene, glm::dvec3(5.0, -2.0, 7.0), glm::dvec3(-0.3, 0.2, -1.0), 30.0, 512);
+  constexpr int Columns = 3;
+  constexpr int Rows = 2;
+  constexpr double Margin = 2.0;
+  const auto tiles = shadowmaps::TileView(whole, Columns, Rows, 512, Margin);
+  ASSERT_EQ(tiles.size(), static_cast<size_t>(Columns * Rows));
+  const double inset = Margin / 512.0;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> ndc(-0.999, 0.999);
+  for (int n = 0; n < 2000; ++n)
+  {
+    // A point of the whole map's frustum, from its NDC.
+    const glm::dvec4 h = glm::inverse(whole.ViewProjection()) * glm::dvec4(ndc(random), ndc(random), ndc(random), 1.0);
+    const glm::dvec3 p = glm::dvec3(h) / h.w;
+    const glm::dvec4 w = whole.ViewProjection() * glm::dvec4(p, 1.0);
+    int inCores = 0;
+    for (size_t t = 0; t < tiles.size(); ++t)
+    {
+      const glm::dvec4 q = tiles[t].ViewProjection() * glm::dvec4(p, 1.0);
+      const glm::dvec3 texture = glm::dvec3(q) / q.w * 0.5 + 0.5;
+      EXPECT_NEAR(texture.z, (w.z / w.w) * 0.5 + 0.5, 1e-9);
+      const bool inCore = texture.x >= inset && texture.x <= 1.0 - inset && texture.y >= inset &&
+        texture.y <= 1.0 - inset;
+      inCores += inCore;
+      if (inCore)
+      {
+        // Tile (column, row) holds the whole map's window [column / Columns, ...).
+        const glm::dvec2 u = glm::dvec2(w) / w.w * 0.5 + 0.5;
+        EXPECT_EQ(static_cast<int>(t), static_cast<int>(u.y * Rows) * Columns + static_cast<int>(u.x * Columns));
+      }
+    }
+    EXPECT_EQ(inCores, 1) << "point " << n;
+  }
+  for (const LightView& tile : tiles)
+  {
+    EXPECT_DOUBLE_EQ(tile.CoverageInset, inset);
+    EXPECT_TRUE(tile.Perspective);
+    EXPECT_LT(tile.TexelPerUnitDistance, whole.TexelPerUnitDistance * 0.55);
+    EXPECT_GT(tile.TexelPerUnitDistance, whole.TexelPerUnitDistance / 3.0);
+  }
+}
+
+TEST(TileView, CountsAndMarginClamp)
+{
+  LightView whole;
+  whole.Projection = glm::ortho(-4.0, 4.0, -2.0, 2.0, 1.0, 10.0);
+  whole.TexelConstant = 8.0 / 256.0;
+  const auto one = shadowmaps::TileView(whole, 0, -3, 256, -5.0);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].CoverageInset, 0.0);
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      EXPECT_NEAR(one[0].Projection[c][r], whole.Projection[c][r], 1e-12) << "a single tile without margin is the map";
+    }
+  }
+  const auto clamped = shadowmaps::TileView(whole, 2, 2, 256, 1000.0);
+  ASSERT_EQ(clamped.size(), 4u);
+  EXPECT_DOUBLE_EQ(clamped[0].CoverageInset, 0.25);
+  // 2 x 2 tiles without margin: texels half the size.
+  const auto halves = shadowmaps::TileView(whole, 2, 2, 256, 0.0);
+  EXPECT_DOUBLE_EQ(halves[3].TexelConstant, whole.TexelConstant / 2.0);
+}
