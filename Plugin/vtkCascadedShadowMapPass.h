@@ -1,6 +1,6 @@
 /**
  * @class   vtkCascadedShadowMapPass
- * @brief   Cascaded shadow maps for directional and spot lights.
+ * @brief   Cascaded shadow maps for directional lights; tiled maps for spots.
  *
  * The camera's view depth up to MaximumShadowDistance is split into
  * NumberOfCascades partitions (survey 003 §4.3.1, PSSM's practical scheme, or
@@ -17,10 +17,14 @@
  * direction), blend into the next cascade over the last BlendFraction of each
  * cascade, and fade out over the last FadeFraction before MaximumShadowDistance
  * when that distance cuts the visible scene. Filter kernels keep their world
- * size in every cascade. Spot lights are cascaded too: each cascade's map is the
- * spot's frustum cropped to its sub-frustum's part of the scene inside the cone
- * (fitted tight in either FitMode; FitMode and CascadeWarp apply to directional
- * lights). Point lights, and spots wider than one map holds, keep the
+ * size in every cascade. A spot light gets one map of its cone cropped to the
+ * lit part of the view, stored as tiles in the cascades' layers (columns x rows
+ * with rows = floor(sqrt(NumberOfCascades)): 2 x 2 tiles, one 2048² map, for four
+ * cascades of 1024²) and picked by coverage: a spot's texels spread with the
+ * distance to the light, not to the camera, and one such map misclassified fewer
+ * pixels than depth cascades in every benchmark scene. FitMode, CascadeWarp,
+ * splits and blending apply to directional lights; MaximumShadowDistance's fade
+ * applies to all. Point lights, and spots wider than one map holds, keep the
  * foundation's cube maps at the cascades' Resolution.
  *
  * Resolution is per cascade (default 1024: four cascades hold the memory of one
