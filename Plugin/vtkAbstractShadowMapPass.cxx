@@ -268,6 +268,8 @@ struct vtkAbstractShadowMapPass::Resources
   // What the maps were last rendered for; empty when they must be re-rendered.
   std::vector<vtkMTimeType> Signature;
   bool MapsValid = false;
+  /// The lights and views the maps were rendered for (reused with the maps).
+  std::vector<shadowmaps::ShadowLight> RenderedLights;
 
   // Receiver shaders depend on these; GetShaderStageMTime() follows them.
   std::string ShaderKey;
@@ -515,6 +517,8 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   }
   if (r.MapsValid && signature == r.Signature)
   {
+    // CollectLights rebuilt the lights without views; the maps hold these.
+    in.Lights = r.RenderedLights;
     return true;
   }
   r.Signature.clear();
@@ -550,6 +554,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   this->StoreReceiverUniforms();
+  r.RenderedLights = in.Lights;
   r.Signature = std::move(signature);
   r.MapsValid = true;
   r.WarnedGLError.clear();

@@ -1,6 +1,7 @@
 // What users rely on beyond the pictures: when maps re-render, per-actor and
 // per-light control, limits, bad input, and the pass inside other passes.
 #include "ShadowTestUtilities.h"
+#include "vtkCascadedShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
 
 #include "vtkActor.h"
@@ -13,6 +14,7 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkToneMappingPass.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -65,6 +67,78 @@ TEST(ShadowBehaviour, MapsRerenderOnlyWhenSomethingChanged)
   EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 7) << "window resized";
   scene.Window->Render();
   EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), 7);
+}
+
+// Steady frames reuse the maps: they must also reuse the views the maps were
+// rendered for (cube faces, cascades, tiles, warped texel sizes), so a frame
+// rendered again without change is the same frame.
+TEST(ShadowBehaviour, SteadyFramesShadeLikeTheFrameThatRenderedTheMaps)
+{
+  // The window's back buffer as rendered, without the re-render that a
+  // capture filter does by default.
+  auto capture = [](vtkRenderWindow* window) {
+    vtkNew<vtkWindowToImageFilter> filter;
+    filter->SetInput(window);
+    filter->SetInputBufferTypeToRGB();
+    filter->ReadFrontBufferOff();
+    filter->ShouldRerenderOff();
+    filter->Update();
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->DeepCopy(filter->GetOutput());
+    return image;
+  };
+  struct Case
+  {
+    const char* Name;
+    vtkSmartPointer<vtkAbstractShadowMapPass> Pass;
+    int Light; // 0 sun, 1 spot, 2 point
+  };
+  auto warped = [](int mode) {
+    auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    pass->SetWarpMode(mode);
+    return pass;
+  };
+  const Case cases[] = {
+    { "uniform sun", warped(vtkWarpedShadowMapPass::UNIFORM), 0 },
+    { "TSM sun", warped(vtkWarpedShadowMapPass::TSM), 0 },
+    { "LiSPSM sun", warped(vtkWarpedShadowMapPass::LISPSM), 0 },
+    { "point light", warped(vtkWarpedShadowMapPass::UNIFORM), 2 },
+    { "cascaded sun", vtkSmartPointer<vtkCascadedShadowMapPass>::New(), 0 },
+    { "cascaded spot", vtkSmartPointer<vtkCascadedShadowMapPass>::New(), 1 },
+  };
+  for (const Case& c : cases)
+  {
+    TestScene scene;
+    scene.Renderer->GetActiveCamera()->Elevation(-25.0);
+    if (c.Light == 0)
+    {
+      scene.SetSun(SunDirection);
+    }
+    else if (c.Light == 1)
+    {
+      scene.SetSpot({ 1.0, -1.0, 6.0 }, 40.0);
+    }
+    else
+    {
+      scene.SetPoint({ 1.0, -1.0, 3.0 });
+    }
+    c.Pass->SetResolution(512);
+    scene.Renderer->SetPass(c.Pass);
+    scene.Window->Render();
+    const int updates = c.Pass->GetNumberOfShadowMapUpdates();
+    auto first = capture(scene.Window);
+    scene.Window->Render();
+    auto steady = capture(scene.Window);
+    EXPECT_EQ(c.Pass->GetNumberOfShadowMapUpdates(), updates) << c.Name << ": maps reused";
+    const auto* a = static_cast<const unsigned char*>(first->GetScalarPointer());
+    const auto* b = static_cast<const unsigned char*>(steady->GetScalarPointer());
+    int differing = 0;
+    for (vtkIdType i = 0; i < 3 * first->GetNumberOfPoints(); ++i)
+    {
+      differing += a[i] != b[i];
+    }
+    EXPECT_EQ(differing, 0) << c.Name << ": the steady frame differs from the first";
+  }
 }
 
 TEST(ShadowBehaviour, NonCasterAndNonReceiverKeys)
