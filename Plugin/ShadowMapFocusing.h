@@ -139,8 +139,6 @@ LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& s
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
   int resolution, std::vector<glm::dvec3>* litBody = nullptr);
 
-/// Point light: six 90 degree faces in the order +x, -x, +y, -y, +z, -z, each
-/// with near/far covering the scene.
 /// The map of `whole` as columns x rows tiles, each a map of `resolution`
 /// texels (row by row, from the window's lower left): together the map of
 /// `whole` at columns x rows times the resolution, in tiles that fit a texture
@@ -151,6 +149,8 @@ LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& s
 std::vector<LightView> TileView(
   const LightView& whole, int columns, int rows, int resolution, double marginTexels);
 
+/// Point light: six 90 degree faces in the order +x, -x, +y, -y, +z, -z, each
+/// with near/far covering the scene.
 std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& position, int resolution);
 
 /// Index of the cube face (order of FitCubeFaces) that sees direction d.

@@ -438,9 +438,12 @@ TEST(ShadowCascades, SpotLightsAreOneTiledMapPointLightsKeepCubeFaces)
   whole->SetResolution(2 * pass->GetResolution());
   scene.Renderer->SetPass(whole);
   auto wholeImage = RenderAndCapture(scene.Window);
-  // The tiles' cores are a little narrower than a quarter of the window (they
-  // overlap where the filter reaches), so texel grids differ and shadow edges
-  // move by a pixel; away from edges, where a seam would show, nothing differs.
+  // The reference is the foundation's spot map: the cone cropped to B
+  // (FitSpot), a little wider than the tiles' window, which is cropped to B's lit
+  // part; and each tile's core spans a quarter of that window with 2 texels
+  // fewer than 512 (the tiles overlap where the filter reaches). So the texel
+  // grids differ and shadow edges move by a pixel; away from edges, where a seam
+  // would show, nothing differs.
   int dims[3];
   image->GetDimensions(dims);
   const auto* tiled = static_cast<const unsigned char*>(image->GetScalarPointer());
