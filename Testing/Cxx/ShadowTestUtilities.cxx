@@ -127,17 +127,33 @@ glm::dvec3 GroundShadowOfSphereCenterFrom(const glm::dvec3& lightPosition)
   return GroundShadowOfSphereCenter(SphereCenter - lightPosition);
 }
 
-vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window)
+namespace
 {
-  window->Render();
+// The window's back buffer as RGB; the filter renders the window again first
+// unless rerender is off.
+vtkSmartPointer<vtkImageData> Capture(vtkRenderWindow* window, bool rerender)
+{
   vtkNew<vtkWindowToImageFilter> capture;
   capture->SetInput(window);
   capture->SetInputBufferTypeToRGB();
   capture->ReadFrontBufferOff();
+  capture->SetShouldRerender(rerender);
   capture->Update();
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->DeepCopy(capture->GetOutput());
   return image;
+}
+} // namespace
+
+vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window)
+{
+  window->Render();
+  return Capture(window, true);
+}
+
+vtkSmartPointer<vtkImageData> CaptureAsRendered(vtkRenderWindow* window)
+{
+  return Capture(window, false);
 }
 
 namespace

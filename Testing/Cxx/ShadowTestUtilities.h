@@ -47,6 +47,9 @@ glm::dvec3 GroundShadowOfSphereCenterFrom(const glm::dvec3& lightPosition);
 /// Renders and returns the frame as RGB.
 vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window);
 
+/// The frame last rendered, as RGB, without rendering again.
+vtkSmartPointer<vtkImageData> CaptureAsRendered(vtkRenderWindow* window);
+
 /// Mean luminance (0-255) of a 3 x 3 block around the pixel where `world` is seen.
 double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
 

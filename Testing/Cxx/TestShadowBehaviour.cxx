@@ -14,7 +14,6 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkToneMappingPass.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -74,19 +73,6 @@ TEST(ShadowBehaviour, MapsRerenderOnlyWhenSomethingChanged)
 // rendered again without change is the same frame.
 TEST(ShadowBehaviour, SteadyFramesShadeLikeTheFrameThatRenderedTheMaps)
 {
-  // The window's back buffer as rendered, without the re-render that a
-  // capture filter does by default.
-  auto capture = [](vtkRenderWindow* window) {
-    vtkNew<vtkWindowToImageFilter> filter;
-    filter->SetInput(window);
-    filter->SetInputBufferTypeToRGB();
-    filter->ReadFrontBufferOff();
-    filter->ShouldRerenderOff();
-    filter->Update();
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->DeepCopy(filter->GetOutput());
-    return image;
-  };
   struct Case
   {
     const char* Name;
@@ -126,9 +112,9 @@ TEST(ShadowBehaviour, SteadyFramesShadeLikeTheFrameThatRenderedTheMaps)
     scene.Renderer->SetPass(c.Pass);
     scene.Window->Render();
     const int updates = c.Pass->GetNumberOfShadowMapUpdates();
-    auto first = capture(scene.Window);
+    auto first = CaptureAsRendered(scene.Window);
     scene.Window->Render();
-    auto steady = capture(scene.Window);
+    auto steady = CaptureAsRendered(scene.Window);
     EXPECT_EQ(c.Pass->GetNumberOfShadowMapUpdates(), updates) << c.Name << ": maps reused";
     const auto* a = static_cast<const unsigned char*>(first->GetScalarPointer());
     const auto* b = static_cast<const unsigned char*>(steady->GetScalarPointer());
