@@ -75,8 +75,7 @@ bool vtkShadowHas(int features, int feature)
 }
 
 vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features);
-bool vtkShadowInsideMap(vec4 clip, int view, int features);
-bool vtkShadowInsideMapCore(vec4 clip, int view, int features);
+bool vtkShadowInsideMap(vec4 clip, int view, int features, float inset);
 
 // The cascade that shades the receiver: by view depth, or the first (finest)
 // whose map contains it.
@@ -88,7 +87,7 @@ int vtkShadowSelectCascade(
     for (int i = 0; i < count - 1; ++i)
     {
       vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView + i, features);
-      if (vtkShadowInsideMapCore(clip, firstView + i, features))
+      if (vtkShadowInsideMap(clip, firstView + i, features, vtkShadowCoverageInset[firstView + i]))
       {
         return firstView + i;
       }
@@ -168,28 +167,19 @@ vec3 vtkShadowMapCoord(vec4 clip, int view, int features)
   return mapCoord;
 }
 
-bool vtkShadowInsideMapBy(vec4 clip, int view, int features, float inset)
+// Whether the receiver lies in the map, less an inset along its sides (the
+// border coverage selection leaves to a neighbouring tile).
+bool vtkShadowInsideMap(vec4 clip, int view, int features, float inset)
 {
   vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
   return clip.w > 0.0 && all(greaterThanEqual(mapCoord, vec3(inset, inset, 0.0))) &&
     all(lessThanEqual(mapCoord, vec3(1.0 - inset, 1.0 - inset, 1.0)));
 }
 
-bool vtkShadowInsideMap(vec4 clip, int view, int features)
-{
-  return vtkShadowInsideMapBy(clip, view, features, 0.0);
-}
-
-// Inside the part of the map that coverage selection gives to this view.
-bool vtkShadowInsideMapCore(vec4 clip, int view, int features)
-{
-  return vtkShadowInsideMapBy(clip, view, features, vtkShadowCoverageInset[view]);
-}
-
 float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view, int features)
 {
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
-  if (!vtkShadowInsideMap(clip, view, features))
+  if (!vtkShadowInsideMap(clip, view, features, 0.0))
   {
     return 1.0;
   }
@@ -304,9 +294,9 @@ vec4 vtkShadowAnalysisColor(
 #if VTK_SHADOW_ANALYSIS == 1
   return vec4(vec3(visibility), 1.0);
 #elif VTK_SHADOW_ANALYSIS == 2
-  return vec4(vtkShadowInsideMap(clip, view, features) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
+  return vec4(vtkShadowInsideMap(clip, view, features, 0.0) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
 #else
-  vec3 color = vtkShadowInsideMap(clip, view, features) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
+  vec3 color = vtkShadowInsideMap(clip, view, features, 0.0) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
   return vec4(color * (0.5 + 0.5 * visibility), 1.0);
 #endif
 }
