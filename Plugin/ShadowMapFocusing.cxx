@@ -102,6 +102,16 @@ glm::dvec3 SafeDirection(const glm::dvec3& direction)
   return direction / length;
 }
 
+const std::array<glm::dvec3, 6> CubeFaceDirections = { { { 1, 0, 0 }, { -1, 0, 0 },
+  { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } } };
+
+// Tangent of a cube face's half angle: slightly over 1 (90 degree faces) so that
+// filter taps at face seams stay in the map.
+double CubeFaceHalfWidth(int resolution)
+{
+  return 1.0 + 8.0 / std::max(resolution, 1);
+}
+
 // A box that is never degenerate: zero-size axes get a small extent relative to
 // the largest one (or 1 if the box is a point), so that fits stay invertible.
 Aabb Inflated(const Aabb& box)
@@ -564,17 +574,38 @@ std::array<LightView, 6> FitCubeFaces(const Aabb& sceneBounds, const glm::dvec3&
   const double outside = std::max({ gap.x, gap.y, gap.z });
   const double zFar = std::max(farthest, scene.Diagonal() * 1e-3) * 1.001;
   const double zNear = std::max(outside * 0.999, zFar * 1e-3);
-  // Slightly wider than 90 degrees so that filter taps at face seams stay in the map.
-  const double t = 1.0 + 8.0 / std::max(resolution, 1);
-  const std::array<glm::dvec3, 6> directions = { { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 },
-    { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } } };
+  const double t = CubeFaceHalfWidth(resolution);
   std::array<LightView, 6> faces;
   for (int i = 0; i < 6; ++i)
   {
-    faces[i].View = LightLookAt(position, directions[i]);
+    faces[i].View = LightLookAt(position, CubeFaceDirections[i]);
     faces[i].Projection = glm::frustum(-t * zNear, t * zNear, -t * zNear, t * zNear, zNear, zFar);
     faces[i].Perspective = true;
     faces[i].TexelPerUnitDistance = 2.0 * t / std::max(resolution, 1);
+  }
+  return faces;
+}
+
+std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjection,
+  const Aabb& sceneBounds, const glm::dvec3& position, int resolution)
+{
+  std::array<LightView, 6> faces = FitCubeFaces(sceneBounds, position, resolution);
+  if (sceneBounds.IsEmpty() || !IsFinite(cameraViewProjection))
+  {
+    return faces;
+  }
+  const Aabb scene = Inflated(sceneBounds);
+  const double halfAngle = glm::degrees(std::atan(CubeFaceHalfWidth(resolution)));
+  for (int i = 0; i < 6; ++i)
+  {
+    // A face no visible receiver needs keeps the whole-scene fit: it is never
+    // looked up, and its casters are culled all the same.
+    const std::vector<glm::dvec3> body =
+      SpotFocusBody(cameraViewProjection, scene, faces[i].ViewProjection());
+    if (!body.empty())
+    {
+      faces[i] = FitSpotToBody(body, scene, position, CubeFaceDirections[i], halfAngle, resolution);
+    }
   }
   return faces;
 }

@@ -153,6 +153,13 @@ std::vector<LightView> TileView(
 /// with near/far covering the scene.
 std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& position, int resolution);
 
+/// FitCubeFaces with each face cropped, like FitSpotToBody, to the part of it a
+/// receiver in view can need: camera frustum ∩ scene ∩ the face's frustum. Faces
+/// that part misses keep FitCubeFaces' fit, as do all faces when the scene is
+/// empty or the camera matrix is not finite.
+std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjection,
+  const Aabb& scene, const glm::dvec3& position, int resolution);
+
 /// Index of the cube face (order of FitCubeFaces) that sees direction d.
 int CubeFaceIndex(const glm::dvec3& d);
 

@@ -569,7 +569,8 @@ void vtkAbstractShadowMapPass::FitLightViewsUniform(Internals& in, int lightInde
   light.Views.clear();
   if (light.Cube)
   {
-    const auto faces = shadowmaps::FitCubeFaces(in.SceneBounds, light.Position, in.Resolution);
+    const auto faces = shadowmaps::FitCubeFacesToView(
+      in.CameraViewProjection(), in.SceneBounds, light.Position, in.Resolution);
     light.Views.assign(faces.begin(), faces.end());
   }
   else if (light.Kind == LightKind::Spot)

@@ -895,6 +895,92 @@ TEST(FitCubeFaces, SceneSeenInTheDirectionsFaceIsInsideItsClipVolume)
   }
 }
 
+// Window of a perspective fit in tangent units (near-plane extent over near).
+glm::dvec2 TangentWindow(const LightView& fit)
+{
+  return { 2.0 / fit.Projection[0][0], 2.0 / fit.Projection[1][1] };
+}
+
+TEST(FitCubeFacesToView, ReceiversInViewAndTheirCastersAreInsideTheirFace)
+{
+  const GroundScene ground;
+  const glm::dmat4 camera = ground.Camera();
+  std::mt19937 random(11);
+  for (const auto& position : { glm::dvec3(0.0, -150.0, 8.0), glm::dvec3(20.0, 40.0, 30.0) })
+  {
+    SCOPED_TRACE("light at " + ToString(position));
+    const auto faces = shadowmaps::FitCubeFacesToView(camera, ground.Scene, position, Resolution);
+    for (const auto& face : faces)
+    {
+      ASSERT_TRUE(IsFiniteFit(face));
+    }
+    int tested = 0;
+    for (int n = 0; n < 200000 && tested < 5000; ++n)
+    {
+      const glm::dvec3 receiver = RandomPointInBox(random, ground.Scene);
+      const glm::dvec3 d = receiver - position;
+      // Points very close to the light fall before the near plane by design.
+      if (!InsideClipVolume(camera, receiver, 0.0) || glm::length(d) < 1.0)
+      {
+        continue;
+      }
+      ++tested;
+      const glm::dmat4 face = faces[shadowmaps::CubeFaceIndex(d)].ViewProjection();
+      EXPECT_TRUE(InsideClipVolume(face, receiver));
+      const glm::dvec3 caster = position + 0.5 * d;
+      if (InsideBox(ground.Scene, caster, 0.0))
+      {
+        EXPECT_TRUE(InsideClipVolume(face, caster)) << "caster halfway to the light";
+      }
+    }
+    EXPECT_EQ(tested, 5000);
+  }
+}
+
+TEST(FitCubeFacesToView, FacesShrinkToThePartInView)
+{
+  // A lamp 20 units above flat ground, 15 units ahead of a walker with a narrow
+  // view: the walker sees the ground from about 26 units ahead, so only the far
+  // part of the ground below the lamp, and nothing behind its own back.
+  const GroundScene ground;
+  const Aabb flat = MakeBox(ground.Scene.Min, glm::dvec3(ground.Scene.Max.x, ground.Scene.Max.y, 0.5));
+  const glm::dmat4 camera = glm::perspective(glm::radians(20.0), 16.0 / 9.0, 0.1, 500.0) *
+    CameraLookAt(ground.Eye, ground.Target);
+  const glm::dvec3 position(0.0, -165.0, 20.0);
+  const auto whole = shadowmaps::FitCubeFaces(flat, position, Resolution);
+  const auto focused = shadowmaps::FitCubeFacesToView(camera, flat, position, Resolution);
+  double wholeArea = 0.0;
+  double focusedArea = 0.0;
+  for (int i = 0; i < 6; ++i)
+  {
+    const glm::dvec2 w = TangentWindow(whole[i]);
+    const glm::dvec2 f = TangentWindow(focused[i]);
+    EXPECT_LE(f.x, w.x * (1.0 + 1e-9)) << "face " << i;
+    EXPECT_LE(f.y, w.y * (1.0 + 1e-9)) << "face " << i;
+    wholeArea += w.x * w.y;
+    focusedArea += f.x * f.y;
+  }
+  const glm::dvec2 down = TangentWindow(focused[5]);
+  const glm::dvec2 wholeDown = TangentWindow(whole[5]);
+  EXPECT_LT(down.x * down.y, 0.5 * wholeDown.x * wholeDown.y);
+  EXPECT_LT(focusedArea, 0.75 * wholeArea);
+}
+
+TEST(FitCubeFacesToView, FacesOutOfViewKeepTheWholeSceneFit)
+{
+  // Looking away from the scene: no face holds a receiver in view.
+  const GroundScene ground;
+  const glm::dmat4 away = PerspectiveCamera(
+    glm::dvec3(0.0, -300.0, 5.0), glm::dvec3(0.0, -400.0, 5.0), 0.1, 50.0);
+  const glm::dvec3 position(0.0, -150.0, 8.0);
+  const auto whole = shadowmaps::FitCubeFaces(ground.Scene, position, Resolution);
+  const auto focused = shadowmaps::FitCubeFacesToView(away, ground.Scene, position, Resolution);
+  for (int i = 0; i < 6; ++i)
+  {
+    EXPECT_EQ(focused[i].ViewProjection(), whole[i].ViewProjection()) << "face " << i;
+  }
+}
+
 // ---------------------------------------------------------------------------
 // Degenerate inputs
 
@@ -1005,6 +1091,24 @@ TEST(Degenerate, FitCubeFacesStaysFinite)
       { center, center + glm::dvec3(3.0, -2.0, 1.0) * std::max(c.Scene.Diagonal(), 1.0) })
     {
       for (const auto& face : shadowmaps::FitCubeFaces(c.Scene, position, Resolution))
+      {
+        EXPECT_TRUE(IsFiniteFit(face));
+      }
+    }
+  }
+}
+
+TEST(Degenerate, FitCubeFacesToViewStaysFinite)
+{
+  for (const auto& c : DegenerateCases())
+  {
+    SCOPED_TRACE(c.Name);
+    const glm::dvec3 center = c.Scene.IsEmpty() ? glm::dvec3(0.0) : c.Scene.Center();
+    for (const auto& position :
+      { center, center + glm::dvec3(3.0, -2.0, 1.0) * std::max(c.Scene.Diagonal(), 1.0) })
+    {
+      for (const auto& face :
+        shadowmaps::FitCubeFacesToView(c.Camera, c.Scene, position, Resolution))
       {
         EXPECT_TRUE(IsFiniteFit(face));
       }
