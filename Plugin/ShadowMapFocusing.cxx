@@ -598,11 +598,13 @@ std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjecti
   const double halfAngle = glm::degrees(std::atan(CubeFaceHalfWidth(resolution)));
   for (int i = 0; i < 6; ++i)
   {
-    // A face no visible receiver needs keeps the whole-scene fit: it is never
-    // looked up, and its casters are culled all the same.
     const std::vector<glm::dvec3> body =
       SpotFocusBody(cameraViewProjection, scene, faces[i].ViewProjection());
-    if (!body.empty())
+    if (body.empty())
+    {
+      faces[i].OutOfView = true;
+    }
+    else
     {
       faces[i] = FitSpotToBody(body, scene, position, CubeFaceDirections[i], halfAngle, resolution);
     }

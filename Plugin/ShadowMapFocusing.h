@@ -111,6 +111,9 @@ struct LightView
   /// receivers leave to the neighbouring tile when picking their tile, so that
   /// filter taps near the tile's edge still read its own texels.
   double CoverageInset = 0.0;
+  /// No receiver in view can be shaded from this map (a cube face the camera
+  /// does not see into): it is cleared, and no caster is drawn into it.
+  bool OutOfView = false;
   glm::dmat4 ViewProjection() const { return this->Projection * this->View; }
 };
 
@@ -155,8 +158,8 @@ std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& posit
 
 /// FitCubeFaces with each face cropped, like FitSpotToBody, to the part of it a
 /// receiver in view can need: camera frustum ∩ scene ∩ the face's frustum. Faces
-/// that part misses keep FitCubeFaces' fit, as do all faces when the scene is
-/// empty or the camera matrix is not finite.
+/// that part misses keep FitCubeFaces' fit and are marked OutOfView; all faces
+/// keep it, unmarked, when the scene is empty or the camera matrix is not finite.
 std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjection,
   const Aabb& scene, const glm::dvec3& position, int resolution);
 

@@ -698,6 +698,10 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
   Internals& in = *this->Internal;
   Resources& r = *this->Resource;
   this->ClearLayer(renderer);
+  if (view.OutOfView)
+  {
+    return;
+  }
 
   SetCameraToView(r.LightCamera, r.LightProjection, view);
   r.CasterPass->SetWindowToInverseW(WindowToInverseW(view, in.Resolution));

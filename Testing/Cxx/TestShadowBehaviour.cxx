@@ -273,6 +273,37 @@ TEST(ShadowBehaviour, CasterFacesAllCast)
   }
 }
 
+TEST(ShadowBehaviour, PointLightFacesOutOfViewDrawNoCasters)
+{
+  // The camera looks straight down at the ground's corner beyond the box, on
+  // the +x, +y side of the lamp: receivers in view fall in the faces looking
+  // +x, +y and down; the faces looking -x and -y meet the ground but shade
+  // nothing in view.
+  TestScene scene;
+  const glm::dvec3 lamp(-1.0, 0.5, 5.0);
+  scene.SetPoint(lamp);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetPosition(6.0, 6.0, 20.0);
+  camera->SetFocalPoint(6.0, 6.0, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(25.0);
+  scene.Renderer->ResetCameraClippingRange();
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  // The ground meets every side face and the one looking down; drawing the two
+  // faces out of view would add it twice (7 draws).
+  EXPECT_LE(pass->GetNumberOfCasterDraws(), 5) << "faces looking -x and -y drew casters";
+  EXPECT_GE(pass->GetNumberOfCasterDraws(), 3) << "the ground in each face in view";
+
+  // The box's top centre (4, 2, 1.5) casts onto the ground in view; the ray
+  // from the lamp to (8, 8, 0) passes beside the box.
+  const glm::dvec3 boxTop(4.0, 2.0, 1.5);
+  const glm::dvec3 shadow = lamp + (boxTop - lamp) * (lamp.z / (lamp.z - boxTop.z));
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow), ShadowedBelow);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, glm::dvec3(8.0, 8.0, 0.0)), LitAbove);
+}
+
 TEST(ShadowBehaviour, SwitchingPassesAndReleasing)
 {
   ErrorCounter errors;

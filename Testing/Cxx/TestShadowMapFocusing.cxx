@@ -925,7 +925,9 @@ TEST(FitCubeFacesToView, ReceiversInViewAndTheirCastersAreInsideTheirFace)
         continue;
       }
       ++tested;
-      const glm::dmat4 face = faces[shadowmaps::CubeFaceIndex(d)].ViewProjection();
+      const int index = shadowmaps::CubeFaceIndex(d);
+      EXPECT_FALSE(faces[index].OutOfView) << "face " << index;
+      const glm::dmat4 face = faces[index].ViewProjection();
       EXPECT_TRUE(InsideClipVolume(face, receiver));
       const glm::dvec3 caster = position + 0.5 * d;
       if (InsideBox(ground.Scene, caster, 0.0))
@@ -960,13 +962,19 @@ TEST(FitCubeFacesToView, FacesShrinkToThePartInView)
     wholeArea += w.x * w.y;
     focusedArea += f.x * f.y;
   }
+  // It looks along +y: only the faces looking down (-z) and ahead (+y) see
+  // into its view.
+  for (int i = 0; i < 6; ++i)
+  {
+    EXPECT_EQ(focused[i].OutOfView, i != 2 && i != 5) << "face " << i;
+  }
   const glm::dvec2 down = TangentWindow(focused[5]);
   const glm::dvec2 wholeDown = TangentWindow(whole[5]);
   EXPECT_LT(down.x * down.y, 0.5 * wholeDown.x * wholeDown.y);
   EXPECT_LT(focusedArea, 0.75 * wholeArea);
 }
 
-TEST(FitCubeFacesToView, FacesOutOfViewKeepTheWholeSceneFit)
+TEST(FitCubeFacesToView, FacesOutOfViewAreMarkedAndKeepTheWholeSceneFit)
 {
   // Looking away from the scene: no face holds a receiver in view.
   const GroundScene ground;
@@ -978,6 +986,8 @@ TEST(FitCubeFacesToView, FacesOutOfViewKeepTheWholeSceneFit)
   for (int i = 0; i < 6; ++i)
   {
     EXPECT_EQ(focused[i].ViewProjection(), whole[i].ViewProjection()) << "face " << i;
+    EXPECT_TRUE(focused[i].OutOfView) << "face " << i;
+    EXPECT_FALSE(whole[i].OutOfView) << "face " << i;
   }
 }
 
@@ -1113,6 +1123,15 @@ TEST(Degenerate, FitCubeFacesToViewStaysFinite)
         EXPECT_TRUE(IsFiniteFit(face));
       }
     }
+  }
+  // Without a usable camera every face keeps the whole-scene fit and is drawn.
+  const GroundScene ground;
+  const glm::dmat4 broken(std::numeric_limits<double>::quiet_NaN());
+  for (const auto& face :
+    shadowmaps::FitCubeFacesToView(broken, ground.Scene, glm::dvec3(0.0, 0.0, 5.0), Resolution))
+  {
+    EXPECT_TRUE(IsFiniteFit(face));
+    EXPECT_FALSE(face.OutOfView);
   }
 }
 
