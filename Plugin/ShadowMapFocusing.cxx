@@ -522,36 +522,59 @@ LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& s
   return fit;
 }
 
-std::vector<LightView> TileView(
-  const LightView& whole, int columns, int rows, int resolution, double marginTexels)
+TileGrid MakeTileGrid(int columns, int rows, int resolution, double marginTexels)
 {
-  columns = std::max(columns, 1);
-  rows = std::max(rows, 1);
+  TileGrid grid;
+  grid.Columns = std::max(columns, 1);
+  grid.Rows = std::max(rows, 1);
   const double texels = std::max(resolution, 1);
   const double margin = std::min(std::max(marginTexels, 0.0), 0.25 * texels);
-  // The tile's window, in the whole map's NDC: its core plus the margin, the
-  // core taking texels - 2 margin texels.
-  const glm::dvec2 halfSize = glm::dvec2(1.0 / columns, 1.0 / rows) * (texels / (texels - 2.0 * margin));
+  // A tile's core takes texels - 2 margin texels of its window.
+  grid.WindowFraction =
+    glm::dvec2(1.0 / grid.Columns, 1.0 / grid.Rows) * (texels / (texels - 2.0 * margin));
+  return grid;
+}
+
+glm::dvec2 TileGrid::Center(int column, int row) const
+{
+  return { -1.0 + (2.0 * column + 1.0) / this->Columns, -1.0 + (2.0 * row + 1.0) / this->Rows };
+}
+
+glm::dvec2 TileGrid::WholeFromFirstTile(const glm::dvec2& ndc) const
+{
+  return ndc * this->WindowFraction + this->Center(0, 0);
+}
+
+int TileGrid::TileOf(const glm::dvec2& wholeNdc) const
+{
+  const glm::dvec2 cells = glm::floor((wholeNdc * 0.5 + 0.5) * glm::dvec2(this->Columns, this->Rows));
+  const int column = static_cast<int>(std::min(std::max(cells.x, 0.0), this->Columns - 1.0));
+  const int row = static_cast<int>(std::min(std::max(cells.y, 0.0), this->Rows - 1.0));
+  return row * this->Columns + column;
+}
+
+std::vector<LightView> TileView(const LightView& whole, const TileGrid& grid)
+{
+  const glm::dvec2 fraction = grid.WindowFraction;
   // Window sizes (near-plane extents over near, or widths) of the whole map.
   const glm::dvec2 window(2.0 / whole.Projection[0][0], 2.0 / whole.Projection[1][1]);
   const double texelScale =
-    std::max(window.x * halfSize.x, window.y * halfSize.y) / std::max(window.x, window.y);
+    std::max(window.x * fraction.x, window.y * fraction.y) / std::max(window.x, window.y);
   std::vector<LightView> tiles;
-  for (int row = 0; row < rows; ++row)
+  for (int row = 0; row < grid.Rows; ++row)
   {
-    for (int column = 0; column < columns; ++column)
+    for (int column = 0; column < grid.Columns; ++column)
     {
-      const glm::dvec2 center(-1.0 + (2.0 * column + 1.0) / columns, -1.0 + (2.0 * row + 1.0) / rows);
+      const glm::dvec2 center = grid.Center(column, row);
       glm::dmat4 crop(1.0);
-      crop[0][0] = 1.0 / halfSize.x;
-      crop[1][1] = 1.0 / halfSize.y;
-      crop[3][0] = -center.x / halfSize.x;
-      crop[3][1] = -center.y / halfSize.y;
+      crop[0][0] = 1.0 / fraction.x;
+      crop[1][1] = 1.0 / fraction.y;
+      crop[3][0] = -center.x / fraction.x;
+      crop[3][1] = -center.y / fraction.y;
       LightView tile = whole;
       tile.Projection = crop * whole.Projection;
       tile.TexelConstant *= texelScale;
       tile.TexelPerUnitDistance *= texelScale;
-      tile.CoverageInset = margin / texels;
       tiles.push_back(tile);
     }
   }

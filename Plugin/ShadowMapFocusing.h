@@ -107,10 +107,6 @@ struct LightView
   /// for a spot's TSM (View through the spot's own projection) it is the spot's
   /// post-perspective depth.
   bool LinearDepth = false;
-  /// Tiles of one map (TileView): the border, in texture coordinates, that
-  /// receivers leave to the neighbouring tile when picking their tile, so that
-  /// filter taps near the tile's edge still read its own texels.
-  double CoverageInset = 0.0;
   /// No receiver in view can be shaded from this map (a cube face the camera
   /// does not see into): it is cleared, and no caster is drawn into it.
   bool OutOfView = false;
@@ -142,15 +138,37 @@ LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& s
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
   int resolution, std::vector<glm::dvec3>* litBody = nullptr);
 
-/// The map of `whole` as columns x rows tiles, each a map of `resolution`
-/// texels (row by row, from the window's lower left): together the map of
-/// `whole` at columns x rows times the resolution, in tiles that fit a texture
-/// array's layers. Each tile also covers marginTexels of its neighbours along
-/// its sides (its CoverageInset), where filter kernels reach; its texel sizes are
-/// scaled to its share of the window. columns and rows below 1 are taken as 1;
-/// the margin is clamped to [0, resolution / 4].
-std::vector<LightView> TileView(
-  const LightView& whole, int columns, int rows, int resolution, double marginTexels);
+/// How a map is laid out as tiles, row by row from its window's lower left:
+/// tile (column, row) holds the core [column, column + 1] / Columns x [row,
+/// row + 1] / Rows of the whole map's texture coordinates, and its window is
+/// that core plus a margin of its neighbours' texels along its sides, where
+/// filter kernels reach.
+struct TileGrid
+{
+  int Columns = 1;
+  int Rows = 1;
+  /// A tile's window over the whole map's, per axis.
+  glm::dvec2 WindowFraction{ 1.0 };
+
+  /// Centre of tile (column, row) in the whole map's NDC.
+  glm::dvec2 Center(int column, int row) const;
+  /// The whole map's NDC of a point, from its NDC in the first tile (the
+  /// receivers' way to find their tile with one map transform).
+  glm::dvec2 WholeFromFirstTile(const glm::dvec2& ndc) const;
+  /// Index (row * Columns + column) of the tile whose core holds a point of
+  /// the whole map's NDC; points outside the map get the nearest tile.
+  int TileOf(const glm::dvec2& wholeNdc) const;
+};
+
+/// Columns x rows tiles of `resolution` texels whose cores cover a map, with
+/// marginTexels of margin. Counts below 1 are taken as 1; the margin is clamped
+/// to [0, resolution / 4].
+TileGrid MakeTileGrid(int columns, int rows, int resolution, double marginTexels);
+
+/// The map of `whole` as the grid's tiles: together the map of `whole` at
+/// columns x rows times the tiles' resolution, in pieces that fit a texture
+/// array's layers. The tiles' texel sizes are scaled to their share of the window.
+std::vector<LightView> TileView(const LightView& whole, const TileGrid& grid);
 
 /// Point light: six 90 degree faces in the order +x, -x, +y, -y, +z, -z, each
 /// with near/far covering the scene.

@@ -282,7 +282,7 @@ struct vtkAbstractShadowMapPass::Resources
   /// Per view: 1 / W as a plane over texture (u, v, 1) for linear-depth views, else 0.
   std::vector<float> DepthInverseW;
   std::vector<float> Cascades;
-  std::vector<float> CoverageInsets;
+  std::vector<float> TileGrids;
   std::vector<float> CascadeLights;
   std::vector<float> LightPositions;
   std::vector<float> Attenuations;
@@ -737,7 +737,7 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
   r.TexelSizes.clear();
   r.DepthInverseW.clear();
   r.Cascades.clear();
-  r.CoverageInsets.clear();
+  r.TileGrids.clear();
   r.CascadeLights.clear();
   r.LightPositions.clear();
   const glm::dmat4 viewToWorld = glm::inverse(in.CameraView);
@@ -761,7 +761,6 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
             firstTexel > 0.0 && texel > 0.0 ? firstTexel / texel : 1.0)
         : glm::vec4(0.0f, 1e38f, 1e38f, 1.0f);
       r.Cascades.insert(r.Cascades.end(), glm::value_ptr(depths), glm::value_ptr(depths) + 4);
-      r.CoverageInsets.push_back(static_cast<float>(view.CoverageInset));
       const glm::mat4 viewToMap(viewToMapD);
       r.ViewToMap.insert(r.ViewToMap.end(), glm::value_ptr(viewToMap), glm::value_ptr(viewToMap) + 16);
       // A negative constant tells the receiver to use the map's local gradient.
@@ -777,6 +776,10 @@ void vtkAbstractShadowMapPass::StoreReceiverUniforms()
     r.CascadeLights.push_back(static_cast<float>(light.Fade.x));
     r.CascadeLights.push_back(static_cast<float>(light.Fade.y));
     r.CascadeLights.push_back(static_cast<float>(light.CoverageBlendFraction));
+    const shadowmaps::TileGrid& tiles = light.Tiles;
+    const float grid[4] = { static_cast<float>(tiles.Columns), static_cast<float>(tiles.Rows),
+      static_cast<float>(tiles.WindowFraction.x), static_cast<float>(tiles.WindowFraction.y) };
+    r.TileGrids.insert(r.TileGrids.end(), grid, grid + 4);
   }
   r.ViewToWorld = glm::mat4(viewToWorld);
 }
@@ -1001,7 +1004,8 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   program->SetUniform3fv(
     "vtkShadowDepthInverseW", views, reinterpret_cast<const float(*)[3]>(r.DepthInverseW.data()));
   program->SetUniform4fv("vtkShadowCascade", views, reinterpret_cast<const float(*)[4]>(r.Cascades.data()));
-  program->SetUniform1fv("vtkShadowCoverageInset", views, r.CoverageInsets.data());
+  program->SetUniform4fv(
+    "vtkShadowTileGrid", lights, reinterpret_cast<const float(*)[4]>(r.TileGrids.data()));
   program->SetUniform3fv(
     "vtkShadowCascadeLight", lights, reinterpret_cast<const float(*)[3]>(r.CascadeLights.data()));
   program->SetUniform3fv(

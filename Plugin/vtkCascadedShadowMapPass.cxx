@@ -249,11 +249,11 @@ void vtkCascadedShadowMapPass::TileSpotLight(Internals& in, int lightIndex) cons
   const int columns = std::max(this->NumberOfCascades / rows, 1);
   const shadowmaps::LightView whole = shadowmaps::FitSpotToLitBody(in.CameraViewProjection(),
     in.SceneBounds, light.Position, light.Direction, light.ConeAngle, in.Resolution);
-  light.Views =
-    shadowmaps::TileView(whole, columns, rows, in.Resolution, this->FilterReachTexels());
-  // Tiles are picked by coverage, without blending: they share one texel size.
+  light.Tiled = true;
+  light.Tiles = shadowmaps::MakeTileGrid(columns, rows, in.Resolution, this->FilterReachTexels());
+  light.Views = shadowmaps::TileView(whole, light.Tiles);
+  // Tiles share one texel size and are not blended.
   light.CascadeDepths.assign(light.Views.size(), glm::dvec3(0.0, NoBlend, NoBlend));
-  light.CoverageBlendFraction = 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -42,6 +42,10 @@ struct ShadowLight
   /// Cascaded lights: Views are depth partitions of the camera frustum, picked
   /// per receiver by view depth (or map coverage) and blended at their splits.
   bool Cascaded = false;
+  /// Tiled lights (cascaded too, for the fade): Views are the tiles of one map,
+  /// laid out by Tiles and picked per receiver by where it falls in that map.
+  bool Tiled = false;
+  TileGrid Tiles;
   /// Per cascade: {first view depth it shades, its far split, start of its blend band}.
   std::vector<glm::dvec3> CascadeDepths;
   /// View depths over which the shadows fade out; no fade unless y > x.
@@ -59,7 +63,7 @@ struct ShadowLight
   bool MayStoreLinearDepth = false;
 
   /// Shader code of how the views cover receivers (vtkShadowMapsReceiverFS).
-  int ViewKind() const { return this->Cascaded ? 2 : this->Cube ? 1 : 0; }
+  int ViewKind() const { return this->Tiled ? 3 : this->Cascaded ? 2 : this->Cube ? 1 : 0; }
 
   /// Receiver code the views may need: bits vtkShadowGradientTexels (1),
   /// vtkShadowDistantTexels (2) and vtkShadowLinearDepths (4) of vtkShadowMapsReceiverFS.

@@ -25,14 +25,13 @@ uniform vec3 vtkShadowDepthInverseW[VTK_SHADOW_MAX_VIEWS];
 // w = its texel size over the first cascade's (filter offsets are multiplied by
 // its inverse so the kernel keeps its world size). Other views: (0, 1e38, 1e38, 1).
 uniform vec4 vtkShadowCascade[VTK_SHADOW_MAX_VIEWS];
-// Cascades picked by coverage: per view, the border (in texture coordinates)
-// left to the next views when picking, where they are tiles of one map
-// (filter taps near a tile's edge then stay on its own texels). 0 otherwise.
-uniform float vtkShadowCoverageInset[VTK_SHADOW_MAX_VIEWS];
 // Per light: x, y = view depths over which shadows fade out (x >= y: no fade);
 // z >= 0: cascades selected by map coverage instead of depth, and blended into
 // the next over this outer fraction of the map's half-width; z < 0: by depth.
 uniform vec3 vtkShadowCascadeLight[VTK_SHADOW_MAX_LIGHTS];
+// Per light whose views are tiles of one map (shadowmaps::TileGrid): columns,
+// rows, and a tile's window over the whole map's along x and y.
+uniform vec4 vtkShadowTileGrid[VTK_SHADOW_MAX_LIGHTS];
 uniform vec3 vtkShadowLightPositionVC[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_MAX_LIGHTS];
 uniform float vtkShadowMapResolution;
@@ -62,6 +61,7 @@ int vtkShadowCubeFace(vec3 d)
 const int vtkShadowSingleView = 0;
 const int vtkShadowCubeViews = 1;
 const int vtkShadowCascadeViews = 2;
+const int vtkShadowTileViews = 3;
 
 // What a light's views may need of the receiver (ShadowLight::ReceiverFeatures),
 // a literal per light: code a light cannot need is compiled out, since
@@ -75,7 +75,7 @@ bool vtkShadowHas(int features, int feature)
 }
 
 vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features);
-bool vtkShadowInsideMap(vec4 clip, int view, int features, float inset);
+bool vtkShadowInsideMap(vec4 clip, int view, int features);
 
 // The cascade that shades the receiver: by view depth, or the first (finest)
 // whose map contains it.
@@ -87,7 +87,7 @@ int vtkShadowSelectCascade(
     for (int i = 0; i < count - 1; ++i)
     {
       vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView + i, features);
-      if (vtkShadowInsideMap(clip, firstView + i, features, vtkShadowCoverageInset[firstView + i]))
+      if (vtkShadowInsideMap(clip, firstView + i, features))
       {
         return firstView + i;
       }
@@ -105,6 +105,17 @@ int vtkShadowSelectCascade(
   return firstView + count - 1;
 }
 
+// The tile of one map (TileGrid::TileOf) whose core holds the receiver, from
+// its place in the first tile: one map transform, whatever the tile count.
+int vtkShadowSelectTile(vec3 positionVC, vec3 normalVC, int light, int firstView, int features)
+{
+  vec4 grid = vtkShadowTileGrid[light];
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, features);
+  vec2 whole = clip.xy / clip.w * grid.zw + (1.0 / grid.xy - 1.0);
+  vec2 cell = clamp(floor((whole * 0.5 + 0.5) * grid.xy), vec2(0.0), grid.xy - 1.0);
+  return firstView + int(cell.y * grid.x + cell.x);
+}
+
 // The view of light `light` that covers the receiver. The light's views start
 // at layer firstView; a cube light has six of them, a cascaded light `count`.
 int vtkShadowSelectView(
@@ -113,6 +124,10 @@ int vtkShadowSelectView(
   if (kind == vtkShadowCascadeViews)
   {
     return vtkShadowSelectCascade(positionVC, normalVC, light, firstView, count, features);
+  }
+  if (kind == vtkShadowTileViews)
+  {
+    return vtkShadowSelectTile(positionVC, normalVC, light, firstView, features);
   }
   if (kind != vtkShadowCubeViews)
   {
@@ -167,19 +182,17 @@ vec3 vtkShadowMapCoord(vec4 clip, int view, int features)
   return mapCoord;
 }
 
-// Whether the receiver lies in the map, less an inset along its sides (the
-// border coverage selection leaves to a neighbouring tile).
-bool vtkShadowInsideMap(vec4 clip, int view, int features, float inset)
+bool vtkShadowInsideMap(vec4 clip, int view, int features)
 {
   vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
-  return clip.w > 0.0 && all(greaterThanEqual(mapCoord, vec3(inset, inset, 0.0))) &&
-    all(lessThanEqual(mapCoord, vec3(1.0 - inset, 1.0 - inset, 1.0)));
+  return clip.w > 0.0 && all(greaterThanEqual(mapCoord, vec3(0.0))) &&
+    all(lessThanEqual(mapCoord, vec3(1.0)));
 }
 
 float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view, int features)
 {
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
-  if (!vtkShadowInsideMap(clip, view, features, 0.0))
+  if (!vtkShadowInsideMap(clip, view, features))
   {
     return 1.0;
   }
@@ -209,22 +222,25 @@ float vtkShadowBlendIntoNext(
 }
 
 // Fraction of light `light` reaching the receiver, in [0, 1]; 1 outside the maps.
-// Cascades blend into the next one over the band before their split, and fade
-// out toward the light's maximum shadow distance.
+// Cascades blend into the next one over the band before their split; cascades
+// and tiles fade out toward the light's maximum shadow distance.
 float vtkShadowVisibility(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count, int features)
 {
   int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, kind, count, features);
   float visibility = vtkShadowViewVisibility(positionVC, normalVC, light, view, features);
+  float depth = -positionVC.z;
   if (kind == vtkShadowCascadeViews)
   {
-    float depth = -positionVC.z;
     float weight = vtkShadowBlendIntoNext(positionVC, normalVC, light, view, depth, features);
     if (view < firstView + count - 1 && weight > 0.0)
     {
       float next = vtkShadowViewVisibility(positionVC, normalVC, light, view + 1, features);
       visibility = mix(visibility, next, weight);
     }
+  }
+  if (kind == vtkShadowCascadeViews || kind == vtkShadowTileViews)
+  {
     vec3 fade = vtkShadowCascadeLight[light];
     if (fade.y > fade.x)
     {
@@ -294,9 +310,9 @@ vec4 vtkShadowAnalysisColor(
 #if VTK_SHADOW_ANALYSIS == 1
   return vec4(vec3(visibility), 1.0);
 #elif VTK_SHADOW_ANALYSIS == 2
-  return vec4(vtkShadowInsideMap(clip, view, features, 0.0) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
+  return vec4(vtkShadowInsideMap(clip, view, features) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
 #else
-  vec3 color = vtkShadowInsideMap(clip, view, features, 0.0) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
+  vec3 color = vtkShadowInsideMap(clip, view, features) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
   return vec4(color * (0.5 + 0.5 * visibility), 1.0);
 #endif
 }

@@ -1247,7 +1247,8 @@ TEST(TileView, TilesPartitionTheMapAndKeepItsCoordinates)
   constexpr int Columns = 3;
   constexpr int Rows = 2;
   constexpr double Margin = 2.0;
-  const auto tiles = shadowmaps::TileView(whole, Columns, Rows, 512, Margin);
+  const shadowmaps::TileGrid grid = shadowmaps::MakeTileGrid(Columns, Rows, 512, Margin);
+  const auto tiles = shadowmaps::TileView(whole, grid);
   ASSERT_EQ(tiles.size(), static_cast<size_t>(Columns * Rows));
   const double inset = Margin / 512.0;
   std::mt19937 random(7);
@@ -1269,16 +1270,19 @@ TEST(TileView, TilesPartitionTheMapAndKeepItsCoordinates)
       inCores += inCore;
       if (inCore)
       {
-        // Tile (column, row) holds the whole map's window [column / Columns, ...).
+        // Tile (column, row) holds the whole map's window [column / Columns, ...),
+        // which is where the receivers look for it, from the first tile.
         const glm::dvec2 u = glm::dvec2(w) / w.w * 0.5 + 0.5;
         EXPECT_EQ(static_cast<int>(t), static_cast<int>(u.y * Rows) * Columns + static_cast<int>(u.x * Columns));
+        EXPECT_EQ(static_cast<int>(t), grid.TileOf(glm::dvec2(w) / w.w));
+        const glm::dvec4 first = tiles[0].ViewProjection() * glm::dvec4(p, 1.0);
+        EXPECT_EQ(static_cast<int>(t), grid.TileOf(grid.WholeFromFirstTile(glm::dvec2(first) / first.w)));
       }
     }
     EXPECT_EQ(inCores, 1) << "point " << n;
   }
   for (const LightView& tile : tiles)
   {
-    EXPECT_DOUBLE_EQ(tile.CoverageInset, inset);
     EXPECT_TRUE(tile.Perspective);
     EXPECT_LT(tile.TexelPerUnitDistance, whole.TexelPerUnitDistance * 0.55);
     EXPECT_GT(tile.TexelPerUnitDistance, whole.TexelPerUnitDistance / 3.0);
@@ -1290,9 +1294,12 @@ TEST(TileView, CountsAndMarginClamp)
   LightView whole;
   whole.Projection = glm::ortho(-4.0, 4.0, -2.0, 2.0, 1.0, 10.0);
   whole.TexelConstant = 8.0 / 256.0;
-  const auto one = shadowmaps::TileView(whole, 0, -3, 256, -5.0);
+  const shadowmaps::TileGrid single = shadowmaps::MakeTileGrid(0, -3, 256, -5.0);
+  EXPECT_EQ(single.Columns, 1);
+  EXPECT_EQ(single.Rows, 1);
+  EXPECT_EQ(single.WindowFraction, glm::dvec2(1.0));
+  const auto one = shadowmaps::TileView(whole, single);
   ASSERT_EQ(one.size(), 1u);
-  EXPECT_EQ(one[0].CoverageInset, 0.0);
   for (int c = 0; c < 4; ++c)
   {
     for (int r = 0; r < 4; ++r)
@@ -1300,10 +1307,21 @@ TEST(TileView, CountsAndMarginClamp)
       EXPECT_NEAR(one[0].Projection[c][r], whole.Projection[c][r], 1e-12) << "a single tile without margin is the map";
     }
   }
-  const auto clamped = shadowmaps::TileView(whole, 2, 2, 256, 1000.0);
-  ASSERT_EQ(clamped.size(), 4u);
-  EXPECT_DOUBLE_EQ(clamped[0].CoverageInset, 0.25);
+  // The margin is clamped to a quarter of the tile: its core is then half its window.
+  const shadowmaps::TileGrid clamped = shadowmaps::MakeTileGrid(2, 2, 256, 1000.0);
+  EXPECT_DOUBLE_EQ(clamped.WindowFraction.x, 1.0);
+  EXPECT_EQ(shadowmaps::TileView(whole, clamped).size(), 4u);
   // 2 x 2 tiles without margin: texels half the size.
-  const auto halves = shadowmaps::TileView(whole, 2, 2, 256, 0.0);
+  const auto halves = shadowmaps::TileView(whole, shadowmaps::MakeTileGrid(2, 2, 256, 0.0));
   EXPECT_DOUBLE_EQ(halves[3].TexelConstant, whole.TexelConstant / 2.0);
+}
+
+TEST(TileView, PointsOutsideTheMapGetTheNearestTile)
+{
+  const shadowmaps::TileGrid grid = shadowmaps::MakeTileGrid(3, 2, 256, 2.0);
+  EXPECT_EQ(grid.TileOf({ -5.0, -5.0 }), 0);
+  EXPECT_EQ(grid.TileOf({ 5.0, -5.0 }), 2);
+  EXPECT_EQ(grid.TileOf({ -5.0, 5.0 }), 3);
+  EXPECT_EQ(grid.TileOf({ 5.0, 5.0 }), 5);
+  EXPECT_EQ(grid.TileOf({ 0.0, 0.5 }), 4);
 }
