@@ -540,9 +540,10 @@ glm::dvec2 TileGrid::Center(int column, int row) const
   return { -1.0 + (2.0 * column + 1.0) / this->Columns, -1.0 + (2.0 * row + 1.0) / this->Rows };
 }
 
-glm::dvec2 TileGrid::WholeFromFirstTile(const glm::dvec2& ndc) const
+int TileGrid::TileFromFirstTile(const glm::dvec2& firstTileTexture) const
 {
-  return ndc * this->WindowFraction + this->Center(0, 0);
+  const glm::dvec2 ndc = 2.0 * firstTileTexture - 1.0;
+  return this->TileOf(ndc * this->WindowFraction + this->Center(0, 0));
 }
 
 int TileGrid::TileOf(const glm::dvec2& wholeNdc) const

@@ -152,9 +152,9 @@ struct TileGrid
 
   /// Centre of tile (column, row) in the whole map's NDC.
   glm::dvec2 Center(int column, int row) const;
-  /// The whole map's NDC of a point, from its NDC in the first tile (the
-  /// receivers' way to find their tile with one map transform).
-  glm::dvec2 WholeFromFirstTile(const glm::dvec2& ndc) const;
+  /// TileOf a point given by its texture coordinates in the first tile: how
+  /// receivers find their tile with one map transform (vtkShadowSelectTile).
+  int TileFromFirstTile(const glm::dvec2& firstTileTexture) const;
   /// Index (row * Columns + column) of the tile whose core holds a point of
   /// the whole map's NDC; points outside the map get the nearest tile.
   int TileOf(const glm::dvec2& wholeNdc) const;

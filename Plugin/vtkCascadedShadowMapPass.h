@@ -20,7 +20,7 @@
  * size in every cascade. A spot light gets one map of its cone cropped to the
  * lit part of the view, stored as tiles in the cascades' layers (columns x rows
  * with rows = floor(sqrt(NumberOfCascades)): 2 x 2 tiles, one 2048² map, for four
- * cascades of 1024²) and picked by coverage: a spot's texels spread with the
+ * cascades of 1024²) and picked by where the receiver falls in that map: a spot's texels spread with the
  * distance to the light, not to the camera, and one such map misclassified fewer
  * pixels than depth cascades in every benchmark scene. FitMode, CascadeWarp,
  * splits and blending apply to directional lights; MaximumShadowDistance's fade

@@ -105,19 +105,26 @@ int vtkShadowSelectCascade(
   return firstView + count - 1;
 }
 
-// The tile of one map (TileGrid::TileOf) whose core holds the receiver, from
+// The tile of one map (TileGrid::TileFromFirstTile) whose core holds the receiver, from
 // its place in the first tile: one map transform, whatever the tile count.
 int vtkShadowSelectTile(vec3 positionVC, vec3 normalVC, int light, int firstView, int features)
 {
   vec4 grid = vtkShadowTileGrid[light];
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, features);
-  vec2 whole = clip.xy / clip.w * grid.zw + (1.0 / grid.xy - 1.0);
+  if (clip.w <= 0.0)
+  {
+    return firstView; // behind the light: outside every tile, lit
+  }
+  // The maps' matrices give texture coordinates; the grid works in NDC.
+  vec2 ndc = 2.0 * clip.xy / clip.w - 1.0;
+  vec2 whole = ndc * grid.zw + (1.0 / grid.xy - 1.0);
   vec2 cell = clamp(floor((whole * 0.5 + 0.5) * grid.xy), vec2(0.0), grid.xy - 1.0);
   return firstView + int(cell.y * grid.x + cell.x);
 }
 
 // The view of light `light` that covers the receiver. The light's views start
-// at layer firstView; a cube light has six of them, a cascaded light `count`.
+// at layer firstView; a cube light has six of them, a cascaded or tiled light
+// `count`.
 int vtkShadowSelectView(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int kind, int count, int features)
 {
@@ -217,7 +224,7 @@ float vtkShadowBlendIntoNext(
     return 0.0;
   }
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
-  vec2 ndc = abs(clip.xy / clip.w);
+  vec2 ndc = abs(2.0 * clip.xy / clip.w - 1.0);
   return clamp((max(ndc.x, ndc.y) - (1.0 - band)) / band, 0.0, 1.0);
 }
 

@@ -399,31 +399,34 @@ TEST(ShadowCascades, StableSplitsStayWhenTheCameraMovesALittle)
 // A spot light's layers hold one cone map in tiles: the frame of the
 // foundation's map at twice the resolution (2 x 2 tiles of 512²), with the
 // probes' shadows near and far. A point light keeps its six cube faces.
-TEST(ShadowCascades, SpotLightsAreOneTiledMapPointLightsKeepCubeFaces)
+namespace
 {
-  const glm::dvec3 spot(1.5, 2.0, 14.0);
-  TestScene scene;
+const glm::dvec3 TiledSpot(1.5, 2.0, 14.0);
+
+// A spot over the ground seen along it, with boxes whose shadows fall near,
+// mid-way and far; returns where the shadows of the boxes' centres fall.
+std::vector<glm::dvec3> BuildTiledSpotScene(TestScene& scene)
+{
   LookAlongTheGround(scene);
   scene.Sphere->SetVisibility(false);
   scene.Box->SetVisibility(false);
-  scene.SetSpot(spot, 50.0);
+  scene.SetSpot(TiledSpot, 50.0);
   std::vector<glm::dvec3> shadows;
   for (const glm::dvec2 place : { glm::dvec2(4.0, -1.5), glm::dvec2(9.0, 0.0), glm::dvec2(16.0, 1.5) })
   {
     const glm::dvec3 ground = GroundAtDepth(place.x, place.y);
     // A box 1 above the ground on the line from the spot to `ground`, long along
     // the view so that its shadow stays several pixels tall far away.
-    const glm::dvec3 center = spot + (ground - spot) * ((spot.z - 1.0) / spot.z);
+    const glm::dvec3 center = TiledSpot + (ground - TiledSpot) * ((TiledSpot.z - 1.0) / TiledSpot.z);
     AddBox(scene, center, { 0.6, 2.5, 0.6 });
     shadows.push_back(ground);
   }
-  auto pass = MakeProbedPass();
-  pass->SetMaximumShadowDistance(0.0);
-  scene.Renderer->SetPass(pass);
-  ErrorCounter errors;
-  auto image = RenderAndCapture(scene.Window);
-  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4) << "2 x 2 tiles";
+  return shadows;
+}
+
+void ExpectShadowsAndLightBeside(
+  TestScene& scene, vtkImageData* image, const std::vector<glm::dvec3>& shadows)
+{
   for (size_t i = 0; i < shadows.size(); ++i)
   {
     ASSERT_GE(ColorAt(scene.Renderer, image, shadows[i]).r, 0) << "shadow " << i << " off the image";
@@ -431,19 +434,20 @@ TEST(ShadowCascades, SpotLightsAreOneTiledMapPointLightsKeepCubeFaces)
     const glm::dvec3 beside = shadows[i] + glm::dvec3(1.2, 0.0, 0.0);
     EXPECT_GT(LuminanceAt(scene.Renderer, image, beside), LitAbove) << "beside shadow " << i;
   }
-  const std::string difference = CompareWithBaseline(image, "CascadesSpot");
-  EXPECT_TRUE(difference.empty()) << difference;
+}
 
+// Compares a tiled spot's frame with the foundation's untiled map of the same
+// spot (the cone cropped to B by FitSpot, a little wider than the tiles' window,
+// which is cropped to B's lit part; tile cores lose the margin's texels). The
+// texel grids differ, so shadow edges move by a pixel; away from edges, where
+// a seam or a wrong tile would show, nothing may differ.
+void ExpectTheUntiledMapsFrameAwayFromEdges(
+  TestScene& scene, vtkImageData* image, int untiledResolution)
+{
   vtkNew<vtkWarpedShadowMapPass> whole;
-  whole->SetResolution(2 * pass->GetResolution());
+  whole->SetResolution(untiledResolution);
   scene.Renderer->SetPass(whole);
   auto wholeImage = RenderAndCapture(scene.Window);
-  // The reference is the foundation's spot map: the cone cropped to B
-  // (FitSpot), a little wider than the tiles' window, which is cropped to B's lit
-  // part; and each tile's core spans a quarter of that window with 2 texels
-  // fewer than 512 (the tiles overlap where the filter reaches). So the texel
-  // grids differ and shadow edges move by a pixel; away from edges, where a seam
-  // would show, nothing differs.
   int dims[3];
   image->GetDimensions(dims);
   const auto* tiled = static_cast<const unsigned char*>(image->GetScalarPointer());
@@ -474,10 +478,48 @@ TEST(ShadowCascades, SpotLightsAreOneTiledMapPointLightsKeepCubeFaces)
   }
   EXPECT_EQ(awayFromEdges, 0) << "pixels that differ from the untiled map's frame away from edges";
   EXPECT_LT(onEdges, dims[0] * dims[1] / 100) << "edge pixels that differ";
+}
+} // namespace
+
+TEST(ShadowCascades, SpotLightsAreOneTiledMapPointLightsKeepCubeFaces)
+{
+  TestScene scene;
+  const std::vector<glm::dvec3> shadows = BuildTiledSpotScene(scene);
+  auto pass = MakeProbedPass();
+  pass->SetMaximumShadowDistance(0.0);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4) << "2 x 2 tiles";
+  ExpectShadowsAndLightBeside(scene, image, shadows);
+  const std::string difference = CompareWithBaseline(image, "CascadesSpot");
+  EXPECT_TRUE(difference.empty()) << difference;
+  ExpectTheUntiledMapsFrameAwayFromEdges(scene, image, 2 * pass->GetResolution());
 
   scene.Renderer->SetPass(pass);
-  scene.SetPoint(spot);
+  scene.SetPoint(TiledSpot);
   image = RenderAndCapture(scene.Window);
   EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << "a point light keeps its cube faces";
   EXPECT_LT(LuminanceAt(scene.Renderer, image, shadows.back()), ShadowedBelow);
+}
+
+TEST(ShadowCascades, SpotTilesOfEveryGridShadeLikeTheUntiledMap)
+{
+  // Three cascades give 3 x 1 tiles, six give 3 x 2, eight 4 x 2.
+  for (const int cascades : { 3, 6, 8 })
+  {
+    SCOPED_TRACE(std::to_string(cascades) + " cascades");
+    TestScene scene;
+    const std::vector<glm::dvec3> shadows = BuildTiledSpotScene(scene);
+    auto pass = MakeProbedPass();
+    pass->SetNumberOfCascades(cascades);
+    pass->RemoveAllSplitDistances();
+    pass->SetMaximumShadowDistance(0.0);
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), cascades);
+    ExpectShadowsAndLightBeside(scene, image, shadows);
+    ExpectTheUntiledMapsFrameAwayFromEdges(scene, image, 2 * pass->GetResolution());
+  }
 }
