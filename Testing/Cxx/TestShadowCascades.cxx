@@ -403,6 +403,17 @@ namespace
 {
 const glm::dvec3 TiledSpot(1.5, 2.0, 14.0);
 
+// A box 1 above the ground on the line from the spot to the ground at
+// GroundAtDepth(place), long along the view so that its shadow stays several
+// pixels tall far away; returns that ground point.
+glm::dvec3 AddBoxShadowingGroundAt(TestScene& scene, const glm::dvec2& place)
+{
+  const glm::dvec3 ground = GroundAtDepth(place.x, place.y);
+  const glm::dvec3 center = TiledSpot + (ground - TiledSpot) * ((TiledSpot.z - 1.0) / TiledSpot.z);
+  AddBox(scene, center, { 0.6, 2.5, 0.6 });
+  return ground;
+}
+
 // A spot over the ground seen along it, with boxes whose shadows fall near,
 // mid-way and far; returns where the shadows of the boxes' centres fall.
 std::vector<glm::dvec3> BuildTiledSpotScene(TestScene& scene)
@@ -414,15 +425,11 @@ std::vector<glm::dvec3> BuildTiledSpotScene(TestScene& scene)
   std::vector<glm::dvec3> shadows;
   for (const glm::dvec2 place : { glm::dvec2(4.0, -1.5), glm::dvec2(9.0, 0.0), glm::dvec2(16.0, 1.5) })
   {
-    const glm::dvec3 ground = GroundAtDepth(place.x, place.y);
-    // A box 1 above the ground on the line from the spot to `ground`, long along
-    // the view so that its shadow stays several pixels tall far away.
-    const glm::dvec3 center = TiledSpot + (ground - TiledSpot) * ((TiledSpot.z - 1.0) / TiledSpot.z);
-    AddBox(scene, center, { 0.6, 2.5, 0.6 });
-    shadows.push_back(ground);
+    shadows.push_back(AddBoxShadowingGroundAt(scene, place));
   }
   return shadows;
 }
+
 
 void ExpectShadowsAndLightBeside(
   TestScene& scene, vtkImageData* image, const std::vector<glm::dvec3>& shadows)
@@ -511,7 +518,9 @@ TEST(ShadowCascades, SpotTilesOfEveryGridShadeLikeTheUntiledMap)
   {
     SCOPED_TRACE(std::to_string(cascades) + " cascades");
     TestScene scene;
-    const std::vector<glm::dvec3> shadows = BuildTiledSpotScene(scene);
+    std::vector<glm::dvec3> shadows = BuildTiledSpotScene(scene);
+    // One more to the side, in the map's last column of three or four.
+    shadows.push_back(AddBoxShadowingGroundAt(scene, { 16.0, 4.0 }));
     auto pass = MakeProbedPass();
     pass->SetNumberOfCascades(cascades);
     pass->RemoveAllSplitDistances();
