@@ -46,22 +46,6 @@ bool RepairRange(double& zNear, double& zFar)
   return changed;
 }
 
-glm::dvec3 Project(const glm::dmat4& m, const glm::dvec3& p)
-{
-  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-  return glm::dvec3(q) / q.w;
-}
-
-glm::dvec3 UnitOrDefault(const glm::dvec3& direction)
-{
-  const double length = glm::length(direction);
-  if (!(length > 0.0) || !Finite(length))
-  {
-    return { 0.0, 0.0, -1.0 };
-  }
-  return direction / length;
-}
-
 // r rounded up to a multiple of 2^(floor(log2 r) - 4). Exact in binary floating point:
 // the quantum is a power of two, so r / q, ceil and * q round nothing.
 double RoundRadiusUp(double r)
@@ -303,7 +287,7 @@ BoundingSphere CascadeBoundingSphere(const glm::dmat4& subProjection)
   for (int i = 0; i < 8; ++i)
   {
     const glm::dvec3 ndc((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
-    corners[i] = Project(inverse, ndc);
+    corners[i] = ProjectPoint(inverse, ndc);
     ((i & 4) ? farCentre : nearCentre) += 0.25 * corners[i];
   }
   for (const auto& p : corners)
@@ -399,14 +383,14 @@ LightView FitCascadeStable(const glm::dmat4& cameraView, const glm::dmat4& subPr
       viewToWorld = inverse;
     }
   }
-  glm::dvec3 centre = Project(viewToWorld, sphere.Center);
+  glm::dvec3 centre = ProjectPoint(viewToWorld, sphere.Center);
   if (!Finite(centre.x + centre.y + centre.z))
   {
     centre = glm::dvec3(0.0);
   }
 
   LightView fit;
-  fit.View = LightLookAt(glm::dvec3(0.0), UnitOrDefault(lightDirection));
+  fit.View = LightLookAt(glm::dvec3(0.0), SafeDirection(lightDirection));
   fit.Perspective = false;
 
   // Map size: depends on the projection only.
@@ -415,7 +399,7 @@ LightView FitCascadeStable(const glm::dmat4& cameraView, const glm::dmat4& subPr
   const double texel = 2.0 * half / texels;
 
   // Snap the centre to whole texels of the world-fixed light grid.
-  const glm::dvec3 c = Project(fit.View, centre);
+  const glm::dvec3 c = ProjectPoint(fit.View, centre);
   const double cx = std::floor(c.x / texel + 0.5) * texel;
   const double cy = std::floor(c.y / texel + 0.5) * texel;
 

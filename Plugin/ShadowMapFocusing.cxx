@@ -86,21 +86,6 @@ std::vector<glm::dvec3> ClipPolygon(
   return out;
 }
 
-glm::dvec3 Transform(const glm::dmat4& m, const glm::dvec3& p)
-{
-  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-  return glm::dvec3(q) / q.w;
-}
-
-glm::dvec3 SafeDirection(const glm::dvec3& direction)
-{
-  const double length = glm::length(direction);
-  if (!(length > 0.0) || !std::isfinite(length))
-  {
-    return { 0.0, 0.0, -1.0 };
-  }
-  return direction / length;
-}
 
 const std::array<glm::dvec3, 6> CubeFaceDirections = { { { 1, 0, 0 }, { -1, 0, 0 },
   { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } } };
@@ -147,6 +132,22 @@ std::vector<glm::dvec3> BodyOrScene(const glm::dmat4& cameraViewProjection, cons
   return body;
 }
 } // namespace
+
+glm::dvec3 ProjectPoint(const glm::dmat4& m, const glm::dvec3& p)
+{
+  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+  return glm::dvec3(q) / q.w;
+}
+
+glm::dvec3 SafeDirection(const glm::dvec3& direction)
+{
+  const double length = glm::length(direction);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return { 0.0, 0.0, -1.0 };
+  }
+  return direction / length;
+}
 
 bool Aabb::IsEmpty() const
 {
@@ -210,7 +211,7 @@ std::array<glm::dvec3, 8> FrustumCorners(const glm::dmat4& viewProjection)
   std::array<glm::dvec3, 8> corners;
   for (int i = 0; i < 8; ++i)
   {
-    corners[i] = Transform(inverse, CubeCorner(i, glm::dvec3(-1.0), glm::dvec3(1.0)));
+    corners[i] = ProjectPoint(inverse, CubeCorner(i, glm::dvec3(-1.0), glm::dvec3(1.0)));
   }
   return corners;
 }
@@ -352,7 +353,7 @@ glm::dvec2 ComputeNearAndFar(
     std::vector<glm::dvec3> polygon;
     for (int index : face)
     {
-      polygon.push_back(Transform(lightView, corners[index]));
+      polygon.push_back(ProjectPoint(lightView, corners[index]));
     }
     polygon = ClipPolygon(polygon, 0, xyMin.x, 1.0);
     polygon = ClipPolygon(polygon, 0, xyMax.x, -1.0);
@@ -406,7 +407,7 @@ LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& sce
   double bodyFar = 0.0;
   for (const auto& p : BodyOrScene(cameraViewProjection, scene))
   {
-    const glm::dvec3 q = Transform(fit.View, p);
+    const glm::dvec3 q = ProjectPoint(fit.View, p);
     lo = glm::min(lo, glm::dvec2(q));
     hi = glm::max(hi, glm::dvec2(q));
     bodyFar = std::max(bodyFar, -q.z);
@@ -458,7 +459,7 @@ LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& sceneBo
   const double diagonal = scene.Diagonal();
   for (const auto& p : body)
   {
-    const glm::dvec3 q = Transform(fit.View, p);
+    const glm::dvec3 q = ProjectPoint(fit.View, p);
     bodyFar = std::max(bodyFar, -q.z);
     if (-q.z <= diagonal * 1e-6)
     {
@@ -496,7 +497,7 @@ LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& sceneBo
   double nearest = Infinity;
   for (const auto& p : ConvexPolytopeVertices(planes, diagonal))
   {
-    nearest = std::min(nearest, -Transform(fit.View, p).z);
+    nearest = std::min(nearest, -ProjectPoint(fit.View, p).z);
   }
   const double zNear = std::isfinite(nearest) ? std::max(nearest * 0.999, minimumNear) : minimumNear;
   fit.Projection = glm::frustum(lo.x * zNear, hi.x * zNear, lo.y * zNear, hi.y * zNear, zNear, zFar);

@@ -39,6 +39,12 @@ struct Plane
   double Distance(const glm::dvec3& p) const { return glm::dot(this->Normal, p) + this->Offset; }
 };
 
+/// m applied to the point p, divided by w.
+glm::dvec3 ProjectPoint(const glm::dmat4& m, const glm::dvec3& p);
+
+/// direction normalised; (0, 0, -1) when it has no finite, non-zero length.
+glm::dvec3 SafeDirection(const glm::dvec3& direction);
+
 /// The eight corners of the frustum whose clip transform is viewProjection
 /// (inverse-projected NDC cube corners).
 std::array<glm::dvec3, 8> FrustumCorners(const glm::dmat4& viewProjection);

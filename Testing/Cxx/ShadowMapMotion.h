@@ -16,6 +16,15 @@ namespace shadowmaps
 namespace testing
 {
 
+/// The ground the warp tests fit their maps to: 100 x 100, 10 high.
+inline Aabb WarpTestGround()
+{
+  Aabb box;
+  box.Min = { -50.0, -50.0, 0.0 };
+  box.Max = { 50.0, 50.0, 10.0 };
+  return box;
+}
+
 /// Texture coordinates of a world point in texels of a resolution x resolution map.
 inline glm::dvec2 MapTexels(const LightView& map, const glm::dvec3& world, int resolution)
 {

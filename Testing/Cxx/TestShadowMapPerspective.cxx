@@ -12,18 +12,11 @@
 namespace
 {
 using shadowmaps::Aabb;
+using shadowmaps::testing::WarpTestGround;
 using shadowmaps::PerspectiveMap;
 using shadowmaps::PsmLightKind;
 
 constexpr double ClipTolerance = 1e-9;
-
-Aabb Ground()
-{
-  Aabb box;
-  box.Min = { -50.0, -50.0, 0.0 };
-  box.Max = { 50.0, 50.0, 10.0 };
-  return box;
-}
 
 const glm::dvec3 Eye(0.0, -45.0, 5.0);
 const glm::dvec3 Target(0.0, 0.0, 5.0); // looks along +y
@@ -43,7 +36,7 @@ void ExpectBodyInsideMap(const PerspectiveMap& map, const glm::dmat4& camera)
 {
   const glm::dmat4 vp = map.Light.ViewProjection();
   ASSERT_TRUE(shadowmaps::IsFinite(vp));
-  const auto body = shadowmaps::IntersectFrustumWithBox(camera, Ground());
+  const auto body = shadowmaps::IntersectFrustumWithBox(camera, WarpTestGround());
   ASSERT_FALSE(body.empty());
   for (const auto& p : body)
   {
@@ -89,7 +82,7 @@ TEST(PerspectivePSM, InverseLightKeepsDepthOrderThroughTheInfinityPlane)
   // post-perspective space) into the view frustum.
   const glm::dvec3 light = glm::normalize(glm::dvec3(0.1, 1.0, -0.35));
   const PerspectiveMap map =
-    shadowmaps::FitPerspective(CameraView(), CameraProjection(), Ground(), light, 2048);
+    shadowmaps::FitPerspective(CameraView(), CameraProjection(), WarpTestGround(), light, 2048);
   ASSERT_EQ(map.Kind, PsmLightKind::Inverse);
   EXPECT_GT(map.InverseNear, 0.0);
   const glm::dmat4 vp = map.Light.ViewProjection();
@@ -134,7 +127,7 @@ TEST(PerspectivePSM, BodyMapsInsideForLightsInFrontPerpendicularAndBehind)
     for (double slideBack : { 0.0, 5.0 })
     {
       const PerspectiveMap map =
-        shadowmaps::FitPerspective(CameraView(), CameraProjection(), Ground(), c.Light, 2048, slideBack);
+        shadowmaps::FitPerspective(CameraView(), CameraProjection(), WarpTestGround(), c.Light, 2048, slideBack);
       EXPECT_EQ(map.Kind, c.Kind);
       EXPECT_TRUE(map.Light.Perspective);
       EXPECT_GT(map.Light.TexelConstant, 0.0);
@@ -167,7 +160,7 @@ TEST(PerspectivePSM, NoNaNForLightAlongAgainstViewAndParallelCameras)
            -view + glm::dvec3(1e-7, 0.0, 0.0), glm::dvec3(0.0, 0.0, -1.0), glm::dvec3(1.0, 1.0, -1.0) })
     {
       const PerspectiveMap map =
-        shadowmaps::FitPerspective(CameraView(), CameraProjection(parallel), Ground(), light, 1024);
+        shadowmaps::FitPerspective(CameraView(), CameraProjection(parallel), WarpTestGround(), light, 1024);
       if (parallel)
       {
         EXPECT_EQ(map.Kind, PsmLightKind::Uniform);
@@ -182,7 +175,7 @@ TEST(PerspectivePSM, KozlovBiasScalesWithWorldTexelSize)
 {
   const glm::dvec3 light(0.2, -1.0, -0.5);
   const PerspectiveMap map =
-    shadowmaps::FitPerspective(CameraView(), CameraProjection(), Ground(), light, 2048);
+    shadowmaps::FitPerspective(CameraView(), CameraProjection(), WarpTestGround(), light, 2048);
   // PSM texels grow with distance from the viewer.
   const double nearTexel = shadowmaps::WorldTexelSize(map.Light, { 0.0, -40.0, 0.0 }, 2048);
   const double farTexel = shadowmaps::WorldTexelSize(map.Light, { 0.0, 30.0, 0.0 }, 2048);
@@ -211,7 +204,7 @@ glm::dmat4 TiltedCameraView()
 std::vector<glm::dvec3> PointsBetweenBodyVertices()
 {
   const auto body =
-    shadowmaps::IntersectFrustumWithBox(CameraProjection() * TiltedCameraView(), Ground());
+    shadowmaps::IntersectFrustumWithBox(CameraProjection() * TiltedCameraView(), WarpTestGround());
   std::vector<glm::dvec3> points;
   for (size_t i = 0; i < body.size(); ++i)
   {
@@ -238,11 +231,11 @@ double LargestExcessMove(double degrees, double sign)
   {
     const double t = glm::radians(0.1 * step);
     const glm::dvec3 light = sign * (std::cos(t) * forward + std::sin(t) * up);
-    const PerspectiveMap map = shadowmaps::FitPerspective(view, CameraProjection(), Ground(), light,
+    const PerspectiveMap map = shadowmaps::FitPerspective(view, CameraProjection(), WarpTestGround(), light,
       MotionResolution, slideBack, shadowmaps::PerspectiveWarpWeight(forward, light));
     EXPECT_TRUE(shadowmaps::IsFinite(map.Light.ViewProjection()));
     motion.Step(map.Light,
-      shadowmaps::FitDirectional(CameraProjection() * view, Ground(), light, MotionResolution));
+      shadowmaps::FitDirectional(CameraProjection() * view, WarpTestGround(), light, MotionResolution));
   }
   return motion.Worst();
 }
@@ -287,12 +280,12 @@ TEST(PerspectivePSM, ConvergesToTheUniformMapAsTheWeightGoesToZero)
   {
     const glm::dvec3 light = glm::normalize(towardLight);
     const shadowmaps::LightView uniform =
-      shadowmaps::FitDirectional(camera, Ground(), light, MotionResolution);
+      shadowmaps::FitDirectional(camera, WarpTestGround(), light, MotionResolution);
     double previous = INFINITY;
     for (double weight : { 1e-2, 1e-4, 1e-6, 1e-8 })
     {
       const PerspectiveMap map = shadowmaps::FitPerspective(
-        TiltedCameraView(), CameraProjection(), Ground(), light, MotionResolution, 6.0, weight);
+        TiltedCameraView(), CameraProjection(), WarpTestGround(), light, MotionResolution, 6.0, weight);
       double farthest = 0.0;
       for (const auto& p : points)
       {
@@ -305,7 +298,7 @@ TEST(PerspectivePSM, ConvergesToTheUniformMapAsTheWeightGoesToZero)
     }
     EXPECT_LT(previous, 0.01) << "texels from the uniform map at weight 1e-8";
     const PerspectiveMap atZero = shadowmaps::FitPerspective(
-      TiltedCameraView(), CameraProjection(), Ground(), light, MotionResolution, 6.0, 0.0);
+      TiltedCameraView(), CameraProjection(), WarpTestGround(), light, MotionResolution, 6.0, 0.0);
     EXPECT_EQ(atZero.Kind, PsmLightKind::Uniform);
     EXPECT_EQ(atZero.Light.ViewProjection(), uniform.ViewProjection());
   }

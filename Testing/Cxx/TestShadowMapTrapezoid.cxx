@@ -12,17 +12,10 @@
 namespace
 {
 using shadowmaps::Aabb;
+using shadowmaps::testing::WarpTestGround;
 using shadowmaps::TrapezoidMap;
 
 constexpr double Tolerance = 1e-9;
-
-Aabb Ground()
-{
-  Aabb box;
-  box.Min = { -50.0, -50.0, 0.0 };
-  box.Max = { 50.0, 50.0, 10.0 };
-  return box;
-}
 
 glm::dmat4 Camera(const glm::dvec3& eye, const glm::dvec3& target, bool parallel = false)
 {
@@ -131,7 +124,7 @@ TEST(TrapezoidTSM, CornersMapToUnitSquareCorners)
   const glm::dvec2 expected[4] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
   for (const auto& setup : Sweep())
   {
-    const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, Ground(), setup.Light, 10.0);
+    const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, WarpTestGround(), setup.Light, 10.0);
     for (int i = 0; i < 4; ++i)
     {
       const glm::dvec2 ndc = shadowmaps::TrapezoidToNdc(map, map.Corners[i]);
@@ -145,7 +138,7 @@ TEST(TrapezoidTSM, FocusPointMapsToThe80PercentLine)
 {
   const glm::dmat4 camera = HorizontalCamera();
   const double delta = 10.0;
-  const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, Ground(), { 0.0, 0.0, -1.0 }, delta);
+  const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, WarpTestGround(), { 0.0, 0.0, -1.0 }, delta);
   EXPECT_DOUBLE_EQ(map.WarpWeight, 1.0);
   EXPECT_TRUE(std::isfinite(map.VanishingDistance));
   EXPECT_GT(map.VanishingDistance, 0.0);
@@ -161,7 +154,7 @@ TEST(TrapezoidTSM, FocusPointMapsToThe80PercentLine)
   const double lambda = glm::length(map.Corners[3] - map.Corners[0]); // symmetric here
   EXPECT_LT(delta / lambda, 0.3);
   // A non-perpendicular light in front of the fade angle keeps the 80% rule.
-  const TrapezoidMap oblique = shadowmaps::FitTrapezoid(camera, Ground(), { 0.3, 0.6, -1.0 }, delta);
+  const TrapezoidMap oblique = shadowmaps::FitTrapezoid(camera, WarpTestGround(), { 0.3, 0.6, -1.0 }, delta);
   EXPECT_DOUBLE_EQ(oblique.WarpWeight, 1.0);
   EXPECT_NEAR(0.5 * shadowmaps::TrapezoidToNdc(oblique, oblique.FocusPoint).y + 0.5, 0.8, Tolerance);
 }
@@ -170,7 +163,7 @@ TEST(TrapezoidTSM, EveryHullAndBodyPointMapsInsideTheSquare)
 {
   for (const auto& setup : Sweep())
   {
-    const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, Ground(), setup.Light, 10.0);
+    const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, WarpTestGround(), setup.Light, 10.0);
     ASSERT_TRUE(IsFinite(map));
     for (const auto& p : map.Hull)
     {
@@ -178,7 +171,7 @@ TEST(TrapezoidTSM, EveryHullAndBodyPointMapsInsideTheSquare)
       EXPECT_LE(std::abs(ndc.x), 1.0 + Tolerance);
       EXPECT_LE(std::abs(ndc.y), 1.0 + Tolerance);
     }
-    for (const auto& p : shadowmaps::IntersectFrustumWithBox(setup.Camera, Ground()))
+    for (const auto& p : shadowmaps::IntersectFrustumWithBox(setup.Camera, WarpTestGround()))
     {
       ExpectInsideUnitCube(shadowmaps::MapToTexture(map, p));
     }
@@ -187,7 +180,7 @@ TEST(TrapezoidTSM, EveryHullAndBodyPointMapsInsideTheSquare)
 
 TEST(TrapezoidTSM, DepthIsLinearInLightSpaceZ)
 {
-  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), Ground(), { 0.2, 0.5, -1.0 }, 10.0);
+  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), WarpTestGround(), { 0.2, 0.5, -1.0 }, 10.0);
   ASSERT_TRUE(std::isfinite(map.VanishingDistance)); // a real trapezoid
   const glm::dvec3 a(3.0, -20.0, 1.0), b(-7.0, 5.0, 9.0);
   const double za = LightSpace(map, a).z, zb = LightSpace(map, b).z;
@@ -205,12 +198,12 @@ TEST(TrapezoidTSM, DepthIsLinearInLightSpaceZ)
 
 TEST(TrapezoidTSM, LightViewMatrixMatchesTheMapping)
 {
-  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), Ground(), { 0.2, 0.5, -1.0 }, 10.0);
+  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), WarpTestGround(), { 0.2, 0.5, -1.0 }, 10.0);
   const shadowmaps::LightView view = shadowmaps::TrapezoidLightView(map, 2048);
   EXPECT_TRUE(view.Perspective);
   EXPECT_GT(view.TexelConstant, 0.0);
   const glm::dmat4 vp = view.ViewProjection();
-  for (const auto& p : shadowmaps::IntersectFrustumWithBox(HorizontalCamera(), Ground()))
+  for (const auto& p : shadowmaps::IntersectFrustumWithBox(HorizontalCamera(), WarpTestGround()))
   {
     const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
     const glm::dvec3 t = shadowmaps::MapToTexture(map, p);
@@ -224,12 +217,12 @@ TEST(TrapezoidTSM, LightViewMatrixMatchesTheMapping)
 
 TEST(TrapezoidTSM, CasterRecoversLinearDepthFromTheNdcPosition)
 {
-  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), Ground(), { 0.2, 0.5, -1.0 }, 10.0);
+  const TrapezoidMap map = shadowmaps::FitTrapezoid(HorizontalCamera(), WarpTestGround(), { 0.2, 0.5, -1.0 }, 10.0);
   const shadowmaps::LightView view = shadowmaps::TrapezoidLightView(map, 2048);
   EXPECT_TRUE(view.LinearDepth);
   const glm::dvec3 inverseW = shadowmaps::NdcToInverseW(view);
   const glm::dmat4 vp = view.ViewProjection();
-  for (const auto& p : shadowmaps::IntersectFrustumWithBox(HorizontalCamera(), Ground()))
+  for (const auto& p : shadowmaps::IntersectFrustumWithBox(HorizontalCamera(), WarpTestGround()))
   {
     // What a caster's fragment shader sees: NDC x, y and the window depth Z / W.
     const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
@@ -254,7 +247,7 @@ TEST(TrapezoidTSM, LightAlongTheViewGivesTheUniformFocusedMap)
   const glm::dvec3 view = glm::normalize(target - eye);
   for (const glm::dvec3& light : { view, -view })
   {
-    const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, Ground(), light, 10.0);
+    const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, WarpTestGround(), light, 10.0);
     ASSERT_TRUE(IsFinite(map));
     EXPECT_EQ(map.WarpWeight, 0.0);
     EXPECT_TRUE(std::isinf(map.VanishingDistance));
@@ -264,7 +257,7 @@ TEST(TrapezoidTSM, LightAlongTheViewGivesTheUniformFocusedMap)
       EXPECT_NEAR((map.TrapezoidToSquare * glm::dvec3(c, 1.0)).z, 1.0, 1e-15);
     }
     // Same extent as the focused uniform fit (which adds 4 texels each side).
-    const shadowmaps::LightView uniform = shadowmaps::FitDirectional(camera, Ground(), light, 2048);
+    const shadowmaps::LightView uniform = shadowmaps::FitDirectional(camera, WarpTestGround(), light, 2048);
     const double width = glm::length(map.Corners[1] - map.Corners[0]);
     const double height = glm::length(map.Corners[3] - map.Corners[0]);
     const double uniformWidth = 2.0 / uniform.Projection[0][0];
@@ -290,7 +283,7 @@ TEST(TrapezoidTSM, WarpFadesContinuouslyTowardTheViewAxis)
   {
     const double angle = glm::radians(degrees);
     const glm::dvec3 light = std::cos(angle) * view + std::sin(angle) * side;
-    const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, Ground(), light, 10.0);
+    const TrapezoidMap map = shadowmaps::FitTrapezoid(camera, WarpTestGround(), light, 10.0);
     ASSERT_TRUE(IsFinite(map));
     const double wTop = (map.TrapezoidToSquare * glm::dvec3(map.Corners[0], 1.0)).z;
     const double wBase = (map.TrapezoidToSquare * glm::dvec3(map.Corners[3], 1.0)).z;
@@ -314,7 +307,7 @@ TEST(TrapezoidTSM, NoNaNOverCameraLightSweep)
   {
     for (double delta : { 0.0, 1.0, 10.0, 1e4 })
     {
-      const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, Ground(), setup.Light, delta);
+      const TrapezoidMap map = shadowmaps::FitTrapezoid(setup.Camera, WarpTestGround(), setup.Light, delta);
       ASSERT_TRUE(IsFinite(map));
       const shadowmaps::LightView view = shadowmaps::TrapezoidLightView(map, 1024);
       ASSERT_TRUE(shadowmaps::IsFinite(view.ViewProjection()));
@@ -338,7 +331,7 @@ TEST(TrapezoidTSM, MapMovesContinuouslyThroughTheViewAxis)
   const glm::dvec3 view = glm::normalize(target - eye);
   const glm::dvec3 right = glm::normalize(glm::cross(view, glm::dvec3(0.0, 0.0, 1.0)));
   const glm::dvec3 up = glm::cross(right, view);
-  const auto body = shadowmaps::IntersectFrustumWithBox(camera, Ground());
+  const auto body = shadowmaps::IntersectFrustumWithBox(camera, WarpTestGround());
   ASSERT_FALSE(body.empty());
   std::vector<glm::dvec3> points(body.begin(), body.end());
   for (size_t i = 0; i + 1 < body.size(); ++i)
@@ -357,9 +350,9 @@ TEST(TrapezoidTSM, MapMovesContinuouslyThroughTheViewAxis)
         const double t = glm::radians(0.1 * step);
         const glm::dvec3 light = sign * (std::cos(t) * view + std::sin(t) * across);
         const auto map = shadowmaps::TrapezoidLightView(
-          shadowmaps::FitTrapezoid(camera, Ground(), light, 10.0), resolution);
+          shadowmaps::FitTrapezoid(camera, WarpTestGround(), light, 10.0), resolution);
         ASSERT_TRUE(shadowmaps::IsFinite(map.ViewProjection()));
-        motion.Step(map, shadowmaps::FitDirectional(camera, Ground(), light, resolution));
+        motion.Step(map, shadowmaps::FitDirectional(camera, WarpTestGround(), light, resolution));
       }
       std::printf("[ continuity ] TSM light %s, azimuth %4.0f: largest excess %.4f texels\n",
         sign > 0 ? "along the view  " : "against the view", azimuth, motion.Worst());
