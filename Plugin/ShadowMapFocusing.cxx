@@ -673,6 +673,41 @@ bool IsFiniteVector(const glm::dvec3& v)
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+bool SixteenBitDepthSuffices(const LightView& view)
+{
+  constexpr double Steps = 65535.0;
+  constexpr double StepsPerTexel = 16.0;
+  const glm::dmat4& p = view.Projection;
+  if (view.TexelSizeFromGradient || view.LinearDepth || !IsFinite(p) || p[0][3] != 0.0 ||
+    p[1][3] != 0.0)
+  {
+    return false;
+  }
+  double step = 0.0;
+  double texel = view.TexelConstant;
+  if (!view.Perspective && p[2][3] == 0.0 && p[3][3] == 1.0 && p[2][2] != 0.0)
+  {
+    step = 2.0 / std::abs(p[2][2]) / Steps;
+  }
+  else if (view.Perspective && p[2][3] == -1.0 && p[3][3] == 0.0)
+  {
+    // Window depth (f / (f - n)) (1 - n / d) at distance d: steps grow as d^2.
+    const double n = p[3][2] / (p[2][2] - 1.0);
+    const double f = p[3][2] / (p[2][2] + 1.0);
+    if (!(n > 0.0 && f > n))
+    {
+      return false;
+    }
+    step = f * (f - n) / n / Steps;
+    texel += view.TexelPerUnitDistance * f;
+  }
+  else
+  {
+    return false;
+  }
+  return std::isfinite(step) && texel > 0.0 && step * StepsPerTexel <= texel;
+}
+
 bool IsFinite(const glm::dmat4& m)
 {
   for (int c = 0; c < 4; ++c)

@@ -66,9 +66,9 @@ bool TextureArray::Reserve(
 
   glGenTextures(1, &this->Texture);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
-  if (format == TexelFormat::Depth)
+  if (IsDepth(format))
   {
-    this->AllocateDepthLayers(resolution, layers);
+    this->AllocateDepthLayers(resolution, layers, format);
   }
   else
   {
@@ -93,10 +93,18 @@ bool TextureArray::Reserve(
   return true;
 }
 
-void TextureArray::AllocateDepthLayers(int resolution, int layers)
+void TextureArray::AllocateDepthLayers(int resolution, int layers, TexelFormat format)
 {
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, resolution, resolution, layers, 0,
-    GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  if (format == TexelFormat::Depth16)
+  {
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT16, resolution, resolution, layers, 0,
+      GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, nullptr);
+  }
+  else
+  {
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, resolution, resolution, layers, 0,
+      GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
 }
@@ -119,7 +127,7 @@ void TextureArray::AllocateValueLayers(int resolution, int layers)
 bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& error)
 {
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer);
-  if (this->Format == TexelFormat::Depth)
+  if (IsDepth(this->Format))
   {
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
     glDrawBuffer(GL_NONE);
@@ -169,7 +177,7 @@ void TextureArray::ApplyFiltering(bool linear)
 
 void TextureArray::SetDepthComparison(bool compare)
 {
-  if (this->Texture == 0 || this->Format != TexelFormat::Depth)
+  if (this->Texture == 0 || !IsDepth(this->Format))
   {
     return;
   }
@@ -221,9 +229,9 @@ void TextureArray::Release()
 std::size_t TextureArray::GetMemoryBytes() const
 {
   const std::size_t texels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
-  if (this->Format == TexelFormat::Depth)
+  if (IsDepth(this->Format))
   {
-    return texels * this->Layers * 4;
+    return texels * this->Layers * (this->Format == TexelFormat::Depth16 ? 2 : 4);
   }
   // A full mipmap chain adds a third; the depth buffer is shared by all layers.
   const std::size_t values = texels * this->Layers * 8;

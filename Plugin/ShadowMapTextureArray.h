@@ -14,13 +14,23 @@ class vtkOpenGLState;
 namespace shadowmaps
 {
 
-/// What one texel holds: a depth (sampled with comparison), or two 32-bit
-/// floats in a colour attachment (sampled as values, filterable).
+/// What one texel holds: a depth (sampled with comparison), 32-bit float or
+/// 16-bit normalized, or two 32-bit floats in a colour attachment (sampled as
+/// values, filterable).
 enum class TexelFormat
 {
   Depth,
+  /// Half the memory, and cheaper to sample where texel fetches dominate the
+  /// frame (software rasterisers); for maps whose depth steps stay well below
+  /// their texels (shadowmaps::SixteenBitDepthSuffices).
+  Depth16,
   TwoFloats
 };
+
+inline bool IsDepth(TexelFormat format)
+{
+  return format != TexelFormat::TwoFloats;
+}
 
 class TextureArray
 {
@@ -62,7 +72,7 @@ public:
   std::size_t GetMemoryBytes() const;
 
 private:
-  void AllocateDepthLayers(int resolution, int layers);
+  void AllocateDepthLayers(int resolution, int layers, TexelFormat format);
   void AllocateValueLayers(int resolution, int layers);
   void ApplyFiltering(bool linear);
 

@@ -133,6 +133,16 @@ bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb&
   return true;
 }
 
+// Views out of view hold no shadows, whatever their precision.
+bool SixteenBitDepthSuffices(const std::vector<ShadowLight>& lights)
+{
+  return std::all_of(lights.begin(), lights.end(), [](const ShadowLight& light) {
+    return std::all_of(light.Views.begin(), light.Views.end(), [](const LightView& view) {
+      return view.OutOfView || shadowmaps::SixteenBitDepthSuffices(view);
+    });
+  });
+}
+
 bool IsRigid(const glm::dmat4& m)
 {
   const glm::dmat3 rotation(m);
@@ -544,6 +554,10 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   this->NumberOfShadowMapLayers = layers;
 
   this->GetMapStorage(r.Storage);
+  if (r.Storage.Format == shadowmaps::TexelFormat::Depth && SixteenBitDepthSuffices(in.Lights))
+  {
+    r.Storage.Format = shadowmaps::TexelFormat::Depth16;
+  }
   r.LookupCode = this->GetReceiverLookupCode();
   r.LookupCodeHash = std::hash<std::string>{}(r.LookupCode);
   std::string error;

@@ -9,6 +9,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -208,6 +209,42 @@ TEST(ShadowBehaviour, ParametersClamp)
   EXPECT_EQ(pass->GetCasterFaces(), vtkAbstractShadowMapPass::FRONT_FACES);
   pass->SetPoissonSamples(1000);
   EXPECT_EQ(pass->GetPoissonSamples(), 32);
+}
+
+// Maps whose 16-bit depth steps stay far below their texels take half the
+// memory; a caster far up the light stretches the depth range beyond that, and
+// the map goes back to 32-bit floats. Shadows and lit ground alike either way.
+TEST(ShadowBehaviour, DepthMapsAreSixteenBitWhereThatIsPreciseEnough)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  const glm::dvec3 litGround(8.0, 8.0, 0.0);
+  for (bool farCaster : { false, true })
+  {
+    SCOPED_TRACE(farCaster ? "caster 5000 units up the light" : "the test scene");
+    if (farCaster)
+    {
+      vtkNew<vtkSphereSource> pebble;
+      pebble->SetRadius(0.01);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(pebble->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      const glm::dvec3 up = glm::dvec3(0.0, 0.0, 1.5) - SunDirection * 5000.0;
+      actor->SetPosition(up.x, up.y, up.z);
+      scene.Renderer->AddActor(actor);
+    }
+    auto image = RenderAndCapture(scene.Window);
+    const size_t bytesPerTexel = farCaster ? 4 : 2;
+    EXPECT_EQ(pass->GetShadowMapMemory(), size_t(2048) * 2048 * bytesPerTexel);
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
+      ShadowedBelow);
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, litGround), LitAbove);
+  }
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
 }
 
 // A resolution beyond the GL limit is reduced with a warning, and shadows stay.

@@ -1140,6 +1140,88 @@ TEST(Degenerate, ZeroResolutionStaysFinite)
 }
 
 // ---------------------------------------------------------------------------
+// SixteenBitDepthSuffices
+
+// World distance along the view axis that one 16-bit step of window depth spans
+// at distance d, measured on the projection itself.
+double SixteenBitStepAt(const glm::dmat4& projection, double d)
+{
+  const auto window = [&](double distance) {
+    const glm::dvec4 clip = projection * glm::dvec4(0.0, 0.0, -distance, 1.0);
+    return 0.5 * clip.z / clip.w + 0.5;
+  };
+  const double h = 1e-6 * d;
+  const double slope = std::abs(window(d + h) - window(d - h)) / (2.0 * h);
+  return 1.0 / 65535.0 / slope;
+}
+
+LightView OrthographicView(double halfWidth, double nearPlane, double farPlane, int resolution)
+{
+  LightView view;
+  view.Projection = glm::ortho(-halfWidth, halfWidth, -halfWidth, halfWidth, nearPlane, farPlane);
+  view.TexelConstant = 2.0 * halfWidth / resolution;
+  return view;
+}
+
+LightView PerspectiveView(double fovyDegrees, double nearPlane, double farPlane, int resolution)
+{
+  LightView view;
+  view.Perspective = true;
+  view.Projection = glm::perspective(glm::radians(fovyDegrees), 1.0, nearPlane, farPlane);
+  view.TexelPerUnitDistance = 2.0 * std::tan(glm::radians(fovyDegrees) / 2.0) / resolution;
+  return view;
+}
+
+TEST(SixteenBitDepthSuffices, WhenTheStepIsAtMostASixteenthOfATexel)
+{
+  // Orthographic: the step is the same everywhere.
+  for (double depthRange : { 1.0, 30.0, 39.0, 41.0, 100.0, 1e4 })
+  {
+    SCOPED_TRACE("orthographic, depth range " + std::to_string(depthRange));
+    const LightView view = OrthographicView(10.0, 5.0, 5.0 + depthRange, 2048);
+    const double step = SixteenBitStepAt(view.Projection, 5.0 + 0.5 * depthRange);
+    EXPECT_NEAR(step, depthRange / 65535.0, 1e-6 * step);
+    EXPECT_EQ(shadowmaps::SixteenBitDepthSuffices(view), 16.0 * step <= view.TexelConstant);
+  }
+  // Perspective: steps grow as the distance squared, texels linearly; the far
+  // plane decides.
+  for (double farPlane : { 1.5, 3.0, 3.2, 3.4, 3.6, 10.0, 1000.0 })
+  {
+    SCOPED_TRACE("perspective, far plane " + std::to_string(farPlane));
+    const LightView view = PerspectiveView(60.0, 1.0, farPlane, 2048);
+    const double step = SixteenBitStepAt(view.Projection, farPlane);
+    const double texel = view.TexelPerUnitDistance * farPlane;
+    EXPECT_EQ(shadowmaps::SixteenBitDepthSuffices(view), 16.0 * step <= texel);
+  }
+  EXPECT_TRUE(shadowmaps::SixteenBitDepthSuffices(OrthographicView(10.0, 5.0, 35.0, 2048)));
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(OrthographicView(10.0, 5.0, 105.0, 2048)));
+  EXPECT_TRUE(shadowmaps::SixteenBitDepthSuffices(PerspectiveView(60.0, 1.0, 3.0, 2048)));
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(PerspectiveView(60.0, 1.0, 10.0, 2048)));
+}
+
+TEST(SixteenBitDepthSuffices, NotForWarpedLinearOrDegenerateViews)
+{
+  LightView warped = OrthographicView(10.0, 5.0, 6.0, 2048);
+  warped.TexelSizeFromGradient = true;
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(warped));
+  LightView linear = OrthographicView(10.0, 5.0, 6.0, 2048);
+  linear.LinearDepth = true;
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(linear));
+
+  LightView notANumber = OrthographicView(10.0, 5.0, 6.0, 2048);
+  notANumber.Projection[2][2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(notANumber));
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(OrthographicView(0.0, 5.0, 6.0, 2048)))
+    << "no texel size";
+  LightView inverted = PerspectiveView(60.0, 1.0, 4.0, 2048);
+  inverted.Projection = glm::perspective(glm::radians(60.0), 1.0, 4.0, 1.0);
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(inverted)) << "far before near";
+  LightView mislabelled = OrthographicView(10.0, 5.0, 6.0, 2048);
+  mislabelled.Perspective = true;
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(mislabelled)) << "no perspective projection";
+}
+
+// ---------------------------------------------------------------------------
 // ClipToTexture, IsFinite
 
 TEST(ClipToTexture, MapsClipCubeToUnitCube)

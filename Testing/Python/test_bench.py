@@ -62,10 +62,10 @@ def test_bench(program, output):
           >= float(rows[("model", "perpendicular", "uniform")]["flicker"]),
           "a technique changes at least where it flickers")
     check(rows[("model", "point", "uniform")]["flicker"] == "nan", "flicker only where asked")
-    check(float(rows[("model", "perpendicular", "uniform")]["memory_mib"]) == 16.0,
-          "one 2048^2 32-bit map is 16 MiB")
+    check(float(rows[("model", "perpendicular", "uniform")]["memory_mib"]) == 8.0,
+          "one 2048^2 map of 16-bit depth is 8 MiB")
     check(int(rows[("model", "perpendicular", "vtk-equal")]["resolution"]) == 1448,
-          "VTK at equal memory: 1448^2 colour + depth = 16 MiB")
+          "VTK at the memory of a 32-bit 2048^2 map: 1448^2 colour + depth = 16 MiB")
 
 
 def test_analyze(program, output):
