@@ -236,7 +236,7 @@ public:
   int GetNumberOfOwnFragmentCasterShaders() const;
   ///@}
 
-  /** Memory held by the shadow maps, in bytes. */
+  /** Memory held by the shadow maps, in bytes (depth maps: 2 or 4 per texel). */
   size_t GetShadowMapMemory() const;
 
   void Render(const vtkRenderState* s) override;
@@ -268,7 +268,9 @@ protected:
 
   /**
    * What a texel of the maps holds and how casters write it (see
-   * shadowmaps::MapStorage). Default: one 32-bit depth, written depth-only.
+   * shadowmaps::MapStorage). Default: one depth, written depth-only; the pass
+   * stores it in 16 bits instead of 32 where every view allows
+   * (shadowmaps::SixteenBitDepthSuffices).
    */
   virtual void GetMapStorage(shadowmaps::MapStorage& storage) const;
 
