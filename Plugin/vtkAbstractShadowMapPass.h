@@ -162,8 +162,10 @@ public:
   ///@{
   /**
    * Constant depth offset applied to casters, in units of the smallest
-   * resolvable depth difference (glPolygonOffset units). Clamped to [0, 10000];
-   * default 4.
+   * resolvable depth difference of the maps (glPolygonOffset units): about 2^-24
+   * of the light's depth range in 32-bit maps, 1/65535 in 16-bit ones, so a unit
+   * weighs 256 times more there (see GetMapStorage); the default stays below a
+   * quarter texel either way. Clamped to [0, 10000]; default 4.
    */
   vtkSetClampMacro(ConstantBias, double, 0.0, 10000.0);
   vtkGetMacro(ConstantBias, double);

@@ -1211,8 +1211,9 @@ TEST(SixteenBitDepthSuffices, NotForWarpedLinearOrDegenerateViews)
   LightView notANumber = OrthographicView(10.0, 5.0, 6.0, 2048);
   notANumber.Projection[2][2] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(notANumber));
-  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(OrthographicView(0.0, 5.0, 6.0, 2048)))
-    << "no texel size";
+  LightView noTexel = OrthographicView(10.0, 5.0, 6.0, 2048);
+  noTexel.TexelConstant = 0.0;
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(noTexel)) << "no texel size";
   LightView inverted = PerspectiveView(60.0, 1.0, 4.0, 2048);
   inverted.Projection = glm::perspective(glm::radians(60.0), 1.0, 4.0, 1.0);
   EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(inverted)) << "far before near";
