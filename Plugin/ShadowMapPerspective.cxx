@@ -41,12 +41,6 @@ glm::dmat4 FittingScale(const glm::dmat4& cameraProjection, double weight)
   return glm::scale(glm::dmat4(1.0), glm::pow(a, glm::dvec3(1.0 - weight)));
 }
 
-glm::dvec3 ToPoint(const glm::dmat4& m, const glm::dvec3& p)
-{
-  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-  return glm::dvec3(q) / q.w;
-}
-
 bool IsParallelProjection(const glm::dmat4& projection)
 {
   return projection[2][3] == 0.0;
@@ -146,7 +140,7 @@ double LightConeCosine(
   glm::dvec3 lo(Infinity), hi(-Infinity);
   for (const auto& p : body)
   {
-    points.push_back(ToPoint(post, p));
+    points.push_back(ProjectPoint(post, p));
     lo = glm::min(lo, points.back());
     hi = glm::max(hi, points.back());
   }
@@ -275,7 +269,7 @@ LightWindow FitWindow(const glm::dmat4& view, const std::vector<glm::dvec3>& poi
   window.Valid = true;
   for (const auto& p : points)
   {
-    const glm::dvec3 q = ToPoint(view, p);
+    const glm::dvec3 q = ProjectPoint(view, p);
     const double depth = -q.z;
     // The camera's axis (NarrowestConeAxis) keeps every point well in front.
     if (!(depth > 0.0) || !IsFiniteVector(q))
@@ -363,8 +357,8 @@ LightView FitDirectionalInSpace(const PerspectiveSpace& space, const glm::dvec3&
   glm::dvec3 lo(Infinity), hi(-Infinity);
   for (const auto& p : space.Points)
   {
-    lo = glm::min(lo, ToPoint(view, p));
-    hi = glm::max(hi, ToPoint(view, p));
+    lo = glm::min(lo, ProjectPoint(view, p));
+    hi = glm::max(hi, ProjectPoint(view, p));
   }
   const glm::dvec2 extent = glm::max(glm::dvec2(hi - lo), glm::dvec2(space.Radius * 1e-9));
   const glm::dvec2 margin = extent * (4.0 / std::max(resolution, 1));
@@ -519,7 +513,7 @@ PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dma
   space.AxisPoint = light.Positional
     ? AxisPointOfLight(light, body)
     : glm::dvec3(glm::inverse(cameraView) * glm::dvec4(0.0, 0.0, -typicalDepth, 1.0));
-  space.AxisPointImage = ToPoint(space.Transform, space.AxisPoint);
+  space.AxisPointImage = ProjectPoint(space.Transform, space.AxisPoint);
   const glm::dmat4& frame = light.Uniform.View;
   space.Right = PushForward(space.Transform, space.AxisPoint, glm::dvec3(glm::row(frame, 0)));
   space.Up = PushForward(space.Transform, space.AxisPoint, glm::dvec3(glm::row(frame, 1)));
@@ -572,9 +566,7 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
   double warpWeight)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) } : sceneBounds;
-  const double lightLength = glm::length(lightDirection);
-  const glm::dvec3 d = lightLength > 0.0 && std::isfinite(lightLength) ? lightDirection / lightLength
-                                                                          : glm::dvec3(0.0, 0.0, -1.0);
+  const glm::dvec3 d = SafeDirection(lightDirection);
   const glm::dmat4 camera = cameraProjection * cameraView;
   PerspectiveLight light;
   light.TowardLight = glm::dvec4(-d, 0.0);

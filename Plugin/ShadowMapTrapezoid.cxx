@@ -16,12 +16,6 @@ constexpr double Pi = 3.14159265358979323846;
 // the chain loses precision on nearer rectangles.
 constexpr double RectangleRatio = 1e5;
 
-glm::dvec3 ToPoint(const glm::dmat4& m, const glm::dvec3& p)
-{
-  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-  return glm::dvec3(q) / q.w;
-}
-
 glm::dvec2 Apply(const glm::dmat3& m, const glm::dvec2& p)
 {
   const glm::dvec3 q = m * glm::dvec3(p, 1.0);
@@ -181,21 +175,17 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
 {
   TrapezoidFrame frame;
   frame.Casters = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) } : sceneBounds;
-  const double lightLength = glm::length(lightDirection);
-  if (lightLength > 0.0 && std::isfinite(lightLength))
-  {
-    frame.LightDirection = lightDirection / lightLength;
-  }
+  frame.LightDirection = SafeDirection(lightDirection);
   // B = frustum ∩ scene (survey §4.1).
   frame.Body = IntersectFrustumWithBox(cameraViewProjection, frame.Casters);
   const glm::dmat4 inverse = glm::inverse(cameraViewProjection);
-  frame.NearCentre = ToPoint(inverse, glm::dvec3(0.0, 0.0, -1.0));
-  const glm::dvec3 axis = ToPoint(inverse, glm::dvec3(0.0, 0.0, 0.0)) - frame.NearCentre;
+  frame.NearCentre = ProjectPoint(inverse, glm::dvec3(0.0, 0.0, -1.0));
+  const glm::dvec3 axis = ProjectPoint(inverse, glm::dvec3(0.0, 0.0, 0.0)) - frame.NearCentre;
   if (glm::length(axis) > 0.0)
   {
     frame.ViewAxis = glm::normalize(axis);
   }
-  frame.CameraUp = ToPoint(inverse, glm::dvec3(0.0, 1.0, -1.0)) - frame.NearCentre;
+  frame.CameraUp = ProjectPoint(inverse, glm::dvec3(0.0, 1.0, -1.0)) - frame.NearCentre;
   frame.Focus = frame.NearCentre + frame.ViewAxis * std::max(focusDistance, 0.0);
   return FitTrapezoidFrame(frame, focusFraction, fadeAngleDegrees);
 }
@@ -219,7 +209,7 @@ TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction
   double bodyFar = 0.0;
   for (const auto& p : body)
   {
-    const glm::dvec3 q = ToPoint(map.LightView, p);
+    const glm::dvec3 q = ProjectPoint(map.LightView, p);
     projected.emplace_back(q);
     bodyFar = std::max(bodyFar, -q.z);
   }
@@ -235,7 +225,7 @@ TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction
   const glm::dvec2 axial = CentreLineFrame(sine > 1e-12 ? axisInLight / sine : glm::dvec2(0.0, 1.0),
     glm::dvec2(glm::dmat3(map.LightView) * frame.CameraUp), map.WarpWeight, map.QuarterTurns);
   const glm::dvec2 lateral(axial.y, -axial.x);
-  const glm::dvec2 nearInLight = glm::dvec2(ToPoint(map.LightView, frame.NearCentre));
+  const glm::dvec2 nearInLight = glm::dvec2(ProjectPoint(map.LightView, frame.NearCentre));
   const double tCentre = glm::dot(nearInLight, lateral);
 
   // Step 4: top and base perpendicular to the centre line, touching the hull.
@@ -262,7 +252,7 @@ TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction
   // The focus point P_L: delta from the near plane on the view axis [MT04];
   // delta' is its distance from the top edge along the centre line, kept
   // inside the trapezoid.
-  const glm::dvec2 focusInLight = glm::dvec2(ToPoint(map.LightView, frame.Focus));
+  const glm::dvec2 focusInLight = glm::dvec2(ProjectPoint(map.LightView, frame.Focus));
   const double deltaRaw = glm::dot(focusInLight, axial) - sTop;
   const double delta = std::min(std::max(deltaRaw, 1e-3 * lambda), lambda);
   map.FocusPoint = focusInLight + axial * (delta - deltaRaw);
@@ -455,7 +445,7 @@ glm::dvec4 DepthRow(const TrapezoidMap& map)
 
 glm::dvec3 MapToTexture(const TrapezoidMap& map, const glm::dvec3& world)
 {
-  const glm::dvec3 light = ToPoint(map.LightView, world);
+  const glm::dvec3 light = ProjectPoint(map.LightView, world);
   const glm::dvec2 ndc =
     glm::dmat2(QuarterTurnMatrix(map.QuarterTurns)) * TrapezoidToNdc(map, glm::dvec2(light));
   const double depth = glm::dot(DepthRow(map), glm::dvec4(world, 1.0));

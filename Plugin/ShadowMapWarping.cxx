@@ -15,12 +15,6 @@ namespace
 constexpr double Pi = 3.14159265358979323846;
 constexpr double Infinity = std::numeric_limits<double>::infinity();
 
-glm::dvec3 Apply(const glm::dmat4& m, const glm::dvec3& p)
-{
-  const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-  return glm::dvec3(q) / q.w;
-}
-
 // The focused uniform map, used wherever a warp is not possible.
 LightView Uniform(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection, const Aabb& scene,
   const glm::dvec3& lightDirection, int resolution)
@@ -70,7 +64,7 @@ double HalfAngleAlong(const glm::dmat4& cameraProjection, const glm::dvec2& inPl
   for (int i = 0; i < 4; ++i)
   {
     const glm::dvec3 ndc((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, -1.0);
-    const glm::dvec3 q = Apply(inverse, ndc);
+    const glm::dvec3 q = ProjectPoint(inverse, ndc);
     if (-q.z > 0.0)
     {
       tangent = std::max(tangent, std::abs(glm::dot(inPlane, glm::dvec2(q)) / -q.z));
@@ -90,7 +84,7 @@ void SetCameraTerms(WarpFrame& frame, const glm::dmat4& cameraView,
   frame.ZFar = 0.0;
   for (const auto& p : worldBody)
   {
-    const double depth = -Apply(cameraView, p).z;
+    const double depth = -ProjectPoint(cameraView, p).z;
     frame.ZNear = std::min(frame.ZNear, depth);
     frame.ZFar = std::max(frame.ZFar, depth);
   }
@@ -264,7 +258,7 @@ bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp
   double bodyNear = Infinity, bodyFar = -Infinity;
   for (const auto& p : body)
   {
-    const glm::dvec3 q = Apply(lightView, p);
+    const glm::dvec3 q = ProjectPoint(lightView, p);
     lo = glm::min(lo, glm::dvec2(q));
     hi = glm::max(hi, glm::dvec2(q));
     bodyNear = std::min(bodyNear, -q.z);
@@ -314,7 +308,7 @@ bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp
   // i.e. the division by the distance to the apex of a perspective frustum along y;
   // y' / (1 + y'/n) = n - n^2 / (n + y') is its hyperbolic depth. In homogeneous form
   // only the w row changes: w = 1 + (k / (P_f - P_n)) y'.
-  const glm::dvec3 apexFoot(Apply(lightView, eye).x, lo.y, -0.5 * (casterNear + bodyFar));
+  const glm::dvec3 apexFoot(ProjectPoint(lightView, eye).x, lo.y, -0.5 * (casterNear + bodyFar));
   glm::dmat4 warpMatrix(1.0);
   warpMatrix[1][3] = warpDepth > 0.0 ? strength / warpDepth : 0.0;
   warpMatrix = warpMatrix * glm::translate(glm::dmat4(1.0), -apexFoot);
@@ -345,14 +339,14 @@ bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp
   glm::dvec3 mapLo(Infinity), mapHi(-Infinity);
   for (const auto& p : body)
   {
-    const glm::dvec3 m = Apply(toMap * lightView, p);
+    const glm::dvec3 m = ProjectPoint(toMap * lightView, p);
     mapLo = glm::min(mapLo, m);
     mapHi = glm::max(mapHi, m);
   }
   for (int i = 0; i < 8; ++i)
   {
     const glm::dvec3 q((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? -casterNear : -bodyFar);
-    const glm::dvec3 m = Apply(toMap, q);
+    const glm::dvec3 m = ProjectPoint(toMap, q);
     mapLo.z = std::min(mapLo.z, m.z);
     mapHi.z = std::max(mapHi.z, m.z);
   }
@@ -375,8 +369,8 @@ bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp
   double texel = 0.0;
   for (const auto& p : body)
   {
-    const glm::dvec2 dx = (glm::dvec2(Apply(clip, p + right * step)) - glm::dvec2(Apply(clip, p - right * step))) / (2.0 * step);
-    const glm::dvec2 dy = (glm::dvec2(Apply(clip, p + warpAxis * step)) - glm::dvec2(Apply(clip, p - warpAxis * step))) / (2.0 * step);
+    const glm::dvec2 dx = (glm::dvec2(ProjectPoint(clip, p + right * step)) - glm::dvec2(ProjectPoint(clip, p - right * step))) / (2.0 * step);
+    const glm::dvec2 dy = (glm::dvec2(ProjectPoint(clip, p + warpAxis * step)) - glm::dvec2(ProjectPoint(clip, p - warpAxis * step))) / (2.0 * step);
     const double sigma = SmallestSingularValue(dx, dy);
     if (sigma > 0.0 && std::isfinite(sigma))
     {
@@ -512,7 +506,7 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
   const glm::dvec4 a = toLightSpace * glm::dvec4(eye + view * frame.ZNear, 1.0);
   const glm::dvec4 b = toLightSpace * glm::dvec4(eye + view * frame.ZFar, 1.0);
   const double step = 1e-3 * std::max(frame.ZFar - frame.ZNear, scene.Diagonal() * 1e-6);
-  const glm::dvec3 centre = Apply(toLightSpace, centroid);
+  const glm::dvec3 centre = ProjectPoint(toLightSpace, centroid);
   if (a.w > 0.0 && b.w > 0.0 && frame.ZFar > frame.ZNear)
   {
     frame.Eye = glm::dvec3(a) / a.w;
@@ -521,9 +515,9 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
   else
   {
     frame.Eye = centre;
-    frame.ViewDirection = Apply(toLightSpace, centroid + view * step) - centre;
+    frame.ViewDirection = ProjectPoint(toLightSpace, centroid + view * step) - centre;
   }
-  frame.CameraUp = Apply(toLightSpace, centroid + up * step) - centre;
+  frame.CameraUp = ProjectPoint(toLightSpace, centroid + up * step) - centre;
   if (!(glm::length(frame.ViewDirection) > 0.0) || !(glm::length(frame.CameraUp) > 0.0) ||
     !IsFiniteVector(frame.ViewDirection) || !IsFiniteVector(frame.CameraUp))
   {
