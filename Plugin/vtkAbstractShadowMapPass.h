@@ -66,6 +66,7 @@ namespace shadowmaps
 {
 struct LightView;
 struct MapStorage;
+struct ShadowLight;
 class TextureArray;
 }
 

@@ -40,6 +40,12 @@ glm::dvec2 SplitRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProj
   return range;
 }
 
+shadowmaps::DirectionalWarp WarpOf(int cascadeWarp)
+{
+  return cascadeWarp == vtkCascadedShadowMapPass::GMNPR_WARP ? shadowmaps::DirectionalWarp::GMNPR
+                                                             : shadowmaps::DirectionalWarp::LiSPSM;
+}
+
 // One cascade's view of a directional light.
 shadowmaps::LightView FitCascade(const glm::dmat4& cameraView, const glm::dmat4& subProjection,
   const shadowmaps::Aabb& scene, int resolution, const glm::dvec3& lightDirection, int fitMode,
@@ -51,11 +57,8 @@ shadowmaps::LightView FitCascade(const glm::dmat4& cameraView, const glm::dmat4&
   }
   if (cascadeWarp != vtkCascadedShadowMapPass::NO_WARP)
   {
-    const auto warp = cascadeWarp == vtkCascadedShadowMapPass::GMNPR_WARP
-      ? shadowmaps::DirectionalWarp::GMNPR
-      : shadowmaps::DirectionalWarp::LiSPSM;
     shadowmaps::LightView view = shadowmaps::FitDirectionalWarped(
-      cameraView, subProjection, scene, lightDirection, resolution, warp);
+      cameraView, subProjection, scene, lightDirection, resolution, WarpOf(cascadeWarp));
     view.TexelSizeFromGradient = view.Perspective;
     return view;
   }
@@ -205,8 +208,7 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
     this->FitLightViewsUniform(in, lightIndex);
     return;
   }
-  light.MayWarp = light.Kind == shadowmaps::LightKind::Directional && this->FitMode == TIGHT &&
-    this->CascadeWarp != NO_WARP;
+  light.MayWarp = this->FitMode == TIGHT && this->CascadeWarp != NO_WARP;
   double fade[2];
   const std::vector<double> splits = this->ComputeSplits(in, fade);
   this->LastSplits = splits;
@@ -247,13 +249,30 @@ void vtkCascadedShadowMapPass::TileSpotLight(Internals& in, int lightIndex) cons
   // misclassified fewer pixels than depth cascades in every benchmark scene.
   const int rows = std::max(static_cast<int>(std::sqrt(this->NumberOfCascades)), 1);
   const int columns = std::max(this->NumberOfCascades / rows, 1);
-  const shadowmaps::LightView whole = shadowmaps::FitSpotToLitBody(in.CameraViewProjection(),
-    in.SceneBounds, light.Position, light.Direction, light.ConeAngle, in.Resolution);
+  const shadowmaps::LightView whole = this->FitSpotMap(in, light);
   light.Tiled = true;
   light.Tiles = shadowmaps::MakeTileGrid(columns, rows, in.Resolution, this->FilterReachTexels());
   light.Views = shadowmaps::TileView(whole, light.Tiles);
   // Tiles share one texel size and are not blended.
   light.CascadeDepths.assign(light.Views.size(), glm::dvec3(0.0, NoBlend, NoBlend));
+}
+
+//------------------------------------------------------------------------------
+shadowmaps::LightView vtkCascadedShadowMapPass::FitSpotMap(
+  const Internals& in, const shadowmaps::ShadowLight& light) const
+{
+  if (light.MayWarp)
+  {
+    const shadowmaps::LightView warped = shadowmaps::FitSpotWarped(in.CameraView,
+      in.CameraProjection, in.SceneBounds, light.Position, light.Direction, light.ConeAngle,
+      in.Resolution, WarpOf(this->CascadeWarp));
+    if (shadowmaps::IsFinite(warped.ViewProjection()))
+    {
+      return warped;
+    }
+  }
+  return shadowmaps::FitSpotToLitBody(in.CameraViewProjection(), in.SceneBounds, light.Position,
+    light.Direction, light.ConeAngle, in.Resolution);
 }
 
 //------------------------------------------------------------------------------

@@ -135,13 +135,17 @@ TechniqueInstance MakeTechnique(const std::string& name, const std::string& setu
     technique.Pass = pass;
     technique.Resolution = resolution;
   }
-  else if (name == "csm" || name == "csm-tight")
+  else if (name == "csm" || name == "csm-tight" || name == "csm-lispsm")
   {
     // Four cascades of half the resolution: the memory of one map.
     auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
     pass->SetResolution(std::max(resolution / 2, 64));
     pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
     pass->SetFitMode(name == "csm" ? vtkCascadedShadowMapPass::STABLE : vtkCascadedShadowMapPass::TIGHT);
+    if (name == "csm-lispsm")
+    {
+      pass->SetCascadeWarp(vtkCascadedShadowMapPass::LISPSM_WARP);
+    }
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = pass->GetResolution();
@@ -727,7 +731,7 @@ Options WithReferences(Options options)
 std::vector<std::string> TechniqueNames()
 {
   return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
-    "csm-tight" };
+    "csm-tight", "csm-lispsm" };
 }
 
 //------------------------------------------------------------------------------

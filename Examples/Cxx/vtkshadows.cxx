@@ -108,8 +108,10 @@ void PrintUsage(std::ostream& out)
          "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
          "  --setups LIST            overhead,perpendicular,behind,facing,spot,point [all]\n"
          "  --techniques LIST        none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
-         "                           csm-tight [all] (csm: 4 cascades of N/2, stable or tight); none\n"
-         "                           and vtk are always measured (frame-time references)\n"
+         "                           csm-tight,csm-lispsm [all] (csm: 4 cascades of N/2, stable,\n"
+         "                           tight, or tight with LiSPSM in each cascade and in a spot's\n"
+         "                           tiled map); none and vtk are always measured (frame-time\n"
+         "                           references)\n"
          "  --technique NAME         one technique (with none and vtk)\n"
          "  --resolution N           map size of this project's techniques [2048]\n"
          "  --size WxH               image size [640x360]\n"
@@ -348,7 +350,8 @@ std::string ParseTechniques(const std::string& value, Options& options)
     if (std::find(names.begin(), names.end(), technique) == names.end())
     {
       return "unknown technique '" + technique +
-        "' (expected none, vtk, vtk-equal, uniform, psm, lispsm, tsm, gmnpr, csm or csm-tight)";
+        "' (expected none, vtk, vtk-equal, uniform, psm, lispsm, tsm, gmnpr, csm, csm-tight or "
+        "csm-lispsm)";
     }
   }
   options.bench.Techniques = SplitList(value);

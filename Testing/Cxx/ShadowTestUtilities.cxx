@@ -180,6 +180,21 @@ const unsigned char* RgbAt(vtkImageData* image, int x, int y)
 }
 } // namespace
 
+int CountUndersampled(vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  int count = 0;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      count += static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0))[0] == 255;
+    }
+  }
+  return count;
+}
+
 double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
 {
   const glm::ivec2 center = PixelAt(renderer, image, world);

@@ -56,6 +56,9 @@ double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3&
 /// RGB of the pixel where `world` is seen; -1 components when off the image.
 glm::ivec3 ColorAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
 
+/// Pixels a TEXEL_DENSITY analysis frame marks undersampled (full red).
+int CountUndersampled(vtkImageData* image);
+
 /// Writes `image` to the test output folder as <name>.png and compares it
 /// strictly with Testing/Data/Baseline/<name>.png. Returns an empty string on a
 /// match, else what differed. With SHADOWMAPS_UPDATE_BASELINES=1 in the

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <vector>
 
 using namespace shadowtest;
@@ -445,14 +446,16 @@ void ExpectShadowsAndLightBeside(
 
 // Compares a tiled spot's frame with the foundation's untiled map of the same
 // spot (the cone cropped to B by FitSpot, a little wider than the tiles' window,
-// which is cropped to B's lit part; tile cores lose the margin's texels). The
-// texel grids differ, so shadow edges move by a pixel; away from edges, where
-// a seam or a wrong tile would show, nothing may differ.
-void ExpectTheUntiledMapsFrameAwayFromEdges(
-  TestScene& scene, vtkImageData* image, int untiledResolution)
+// which is cropped to B's lit part; tile cores lose the margin's texels), or
+// with the warped pass's map in `warpMode`. The texel grids differ, so shadow
+// edges move by a pixel; away from edges, where a seam or a wrong tile would
+// show, nothing may differ.
+void ExpectTheUntiledMapsFrameAwayFromEdges(TestScene& scene, vtkImageData* image,
+  int untiledResolution, int warpMode = vtkWarpedShadowMapPass::UNIFORM)
 {
   vtkNew<vtkWarpedShadowMapPass> whole;
   whole->SetResolution(untiledResolution);
+  whole->SetWarpMode(warpMode);
   scene.Renderer->SetPass(whole);
   auto wholeImage = RenderAndCapture(scene.Window);
   int dims[3];
@@ -509,6 +512,42 @@ TEST(ShadowCascades, SpotLightsAreOneTiledMapPointLightsKeepCubeFaces)
   image = RenderAndCapture(scene.Window);
   EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << "a point light keeps its cube faces";
   EXPECT_LT(LuminanceAt(scene.Renderer, image, shadows.back()), ShadowedBelow);
+}
+
+// With TIGHT fitting, CascadeWarp warps a spot's whole map before it is tiled.
+TEST(ShadowCascades, CascadeWarpWarpsTheSpotsTiledMap)
+{
+  TestScene scene;
+  const std::vector<glm::dvec3> shadows = BuildTiledSpotScene(scene);
+  auto pass = MakeProbedPass();
+  pass->SetMaximumShadowDistance(0.0);
+  pass->SetFitMode(vtkCascadedShadowMapPass::TIGHT);
+  pass->SetCascadeWarp(vtkCascadedShadowMapPass::LISPSM_WARP);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4) << "2 x 2 tiles";
+  ExpectShadowsAndLightBeside(scene, image, shadows);
+  ExpectTheUntiledMapsFrameAwayFromEdges(
+    scene, image, 2 * pass->GetResolution(), vtkWarpedShadowMapPass::LISPSM);
+
+  // The warp moves texels toward the viewer: at 2 x 2 tiles of 256^2 the
+  // unwarped tiles undersample much of the ground near the camera.
+  auto undersampled = [&](int warp)
+  {
+    pass->SetCascadeWarp(warp);
+    pass->SetResolution(256);
+    pass->SetAnalysisView(vtkAbstractShadowMapPass::TEXEL_DENSITY);
+    scene.Renderer->SetPass(pass);
+    return CountUndersampled(RenderAndCapture(scene.Window));
+  };
+  const int uniform = undersampled(vtkCascadedShadowMapPass::NO_WARP);
+  const int warped = undersampled(vtkCascadedShadowMapPass::LISPSM_WARP);
+  std::cout << "undersampled pixels: unwarped tiles " << uniform << ", LiSPSM tiles " << warped
+            << "\n";
+  EXPECT_GT(uniform, 10000);
+  EXPECT_LT(warped, uniform / 2);
 }
 
 TEST(ShadowCascades, SpotTilesOfEveryGridShadeLikeTheUntiledMap)

@@ -58,21 +58,6 @@ const Mode WarpModes[] = { { vtkWarpedShadowMapPass::PSM, "PSM" },
   { vtkWarpedShadowMapPass::LISPSM, "LiSPSM" }, { vtkWarpedShadowMapPass::TSM, "TSM" },
   { vtkWarpedShadowMapPass::GMNPR, "GMNPR" } };
 
-int CountUndersampled(vtkImageData* image)
-{
-  int dims[3];
-  image->GetDimensions(dims);
-  int count = 0;
-  for (int y = 0; y < dims[1]; ++y)
-  {
-    for (int x = 0; x < dims[0]; ++x)
-    {
-      count += static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0))[0] == 255;
-    }
-  }
-  return count;
-}
-
 // Renders `scene` with the warp mode: no errors, the point `shadowed` dark, the lit
 // ground near and far lit, and the frame matches its baseline `name`.
 void RenderAndProbe(TestScene& scene, int mode, const std::string& name, const glm::dvec3& shadowed,

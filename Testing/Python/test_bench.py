@@ -36,18 +36,18 @@ def test_bench(program, output):
                  "--flicker-frames", "3", "--out", directory, *SMALL)
     check(result.returncode == 0, "bench failed: " + result.stderr[-2000:])
     table = [line for line in result.stdout.splitlines() if line.startswith("| model")]
-    check(len(table) == 20, "expected 20 table rows (2 set-ups x 10 techniques), got %d" % len(table))
+    check(len(table) == 22, "expected 22 table rows (2 set-ups x 11 techniques), got %d" % len(table))
     rows = rows_by_case(os.path.join(directory, "results.csv"))
     for setup in ("perpendicular", "point"):
         none = rows[("model", setup, "none")]
         check(float(none["false_shadow"]) == 0.0, setup + ": no shadows cannot shadow falsely")
         check(float(none["misclassified"]) > 0.5, setup + ": the scene has shadows to find")
         check(float(none["misclassified"]) == float(none["leak"]), setup + ": all leaks")
-        for technique in ("uniform", "psm", "lispsm", "tsm", "gmnpr", "csm", "csm-tight"):
+        for technique in ("uniform", "psm", "lispsm", "tsm", "gmnpr", "csm", "csm-tight", "csm-lispsm"):
             focused = rows[("model", setup, technique)]
             check(float(focused["misclassified"]) < 0.5 * float(none["misclassified"]),
                   setup + ": " + technique + " finds the shadows")
-        for technique in ("none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm", "csm-tight"):
+        for technique in ("none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm", "csm-tight", "csm-lispsm"):
             name = "model-%s-%s-errors.png" % (setup, technique)
             check(os.path.getsize(os.path.join(directory, name)) > 0, name + " written")
         check(os.path.getsize(os.path.join(directory, "model-%s-chart.png" % setup)) > 0, "chart")
