@@ -673,10 +673,9 @@ bool IsFiniteVector(const glm::dvec3& v)
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-bool SixteenBitDepthSuffices(const LightView& view)
+bool SixteenBitDepthSuffices(const LightView& view, double stepsPerTexel)
 {
   constexpr double Steps = 65535.0;
-  constexpr double StepsPerTexel = 16.0;
   const glm::dmat4& p = view.Projection;
   if (view.TexelSizeFromGradient || view.LinearDepth || !IsFinite(p) || p[0][3] != 0.0 ||
     p[1][3] != 0.0)
@@ -705,7 +704,7 @@ bool SixteenBitDepthSuffices(const LightView& view)
   {
     return false;
   }
-  return std::isfinite(step) && texel > 0.0 && step * StepsPerTexel <= texel;
+  return std::isfinite(step) && texel > 0.0 && step * stepsPerTexel <= texel;
 }
 
 bool IsFinite(const glm::dmat4& m)

@@ -192,10 +192,11 @@ int CubeFaceIndex(const glm::dvec3& d);
 
 /// Whether 16-bit normalized depth is precise enough for a view: its depth
 /// step (where it is coarsest: anywhere for an orthographic view, at the far
-/// plane for a perspective one) is at most 1/16 of the world size of a texel
-/// there, so the bias that covers a texel covers the rounding too. False for
-/// warped and linear-depth views and for projections of no other form.
-bool SixteenBitDepthSuffices(const LightView& view);
+/// plane for a perspective one) is at most 1/stepsPerTexel of the world size
+/// of a texel there (16 by default), so the bias that covers a texel covers the
+/// rounding too. False for warped and linear-depth views and for projections of
+/// no other form.
+bool SixteenBitDepthSuffices(const LightView& view, double stepsPerTexel = 16.0);
 
 /// Maps clip space [-1, 1]^3 to texture space [0, 1]^3.
 glm::dmat4 ClipToTexture();

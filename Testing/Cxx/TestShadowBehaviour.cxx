@@ -211,6 +211,16 @@ TEST(ShadowBehaviour, ParametersClamp)
   EXPECT_EQ(pass->GetPoissonSamples(), 32);
 }
 
+namespace
+{
+// Puts a caster `distance` up the light from above the scene's centre.
+void PlacePebbleUpTheLight(vtkActor* pebble, double distance)
+{
+  const glm::dvec3 up = glm::dvec3(0.0, 0.0, 1.5) - SunDirection * distance;
+  pebble->SetPosition(up.x, up.y, up.z);
+}
+} // namespace
+
 // Maps whose 16-bit depth steps stay far below their texels take half the
 // memory; a caster far up the light stretches the depth range beyond that, and
 // the map goes back to 32-bit floats. Shadows and lit ground alike either way.
@@ -233,8 +243,7 @@ TEST(ShadowBehaviour, DepthMapsAreSixteenBitWhereThatIsPreciseEnough)
       mapper->SetInputConnection(pebble->GetOutputPort());
       vtkNew<vtkActor> actor;
       actor->SetMapper(mapper);
-      const glm::dvec3 up = glm::dvec3(0.0, 0.0, 1.5) - SunDirection * 5000.0;
-      actor->SetPosition(up.x, up.y, up.z);
+      PlacePebbleUpTheLight(actor, 5000.0);
       scene.Renderer->AddActor(actor);
     }
     auto image = RenderAndCapture(scene.Window);
@@ -244,6 +253,46 @@ TEST(ShadowBehaviour, DepthMapsAreSixteenBitWhereThatIsPreciseEnough)
       ShadowedBelow);
     EXPECT_GT(LuminanceAt(scene.Renderer, image, litGround), LitAbove);
   }
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+}
+
+// Maps that are 32-bit need twice the 16-bit rule's margin to go back to 16
+// bits, so that a camera or caster hovering at the threshold does not switch the
+// format (reallocation, and the other format's bias) every frame.
+TEST(ShadowBehaviour, SixteenBitDepthNeedsTwiceTheMarginToComeBack)
+{
+  ErrorCounter errors;
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(0.01);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkActor> pebble;
+  pebble->SetMapper(mapper);
+  scene.Renderer->AddActor(pebble);
+  auto bytesPerTexel = [&](vtkWarpedShadowMapPass* pass, double distance)
+  {
+    PlacePebbleUpTheLight(pebble, distance);
+    scene.Renderer->SetPass(pass);
+    RenderAndCapture(scene.Window);
+    return pass->GetShadowMapMemory() / (size_t(2048) * 2048);
+  };
+  // Found by moving the pebble: a new pass keeps 16 bits up to about 44 units,
+  // a pass with 32-bit maps goes back to 16 bits below about 13.
+  constexpr double Near = 1.0;
+  constexpr double InTheBand = 28.0;
+  constexpr double Far = 5000.0;
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  EXPECT_EQ(bytesPerTexel(pass, Far), 4u);
+  EXPECT_EQ(bytesPerTexel(pass, InTheBand), 4u) << "32-bit maps need twice the margin";
+  EXPECT_EQ(bytesPerTexel(pass, Near), 2u);
+  EXPECT_EQ(bytesPerTexel(pass, InTheBand), 2u) << "16-bit maps keep the 16-bit rule";
+  vtkNew<vtkWarpedShadowMapPass> fresh;
+  EXPECT_EQ(bytesPerTexel(fresh, InTheBand), 2u) << "a new pass starts from the 16-bit rule";
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
+    ShadowedBelow);
   EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
 }
 

@@ -1182,6 +1182,7 @@ TEST(SixteenBitDepthSuffices, WhenTheStepIsAtMostASixteenthOfATexel)
     const double step = SixteenBitStepAt(view.Projection, 5.0 + 0.5 * depthRange);
     EXPECT_NEAR(step, depthRange / 65535.0, 1e-6 * step);
     EXPECT_EQ(shadowmaps::SixteenBitDepthSuffices(view), 16.0 * step <= view.TexelConstant);
+    EXPECT_EQ(shadowmaps::SixteenBitDepthSuffices(view, 32.0), 32.0 * step <= view.TexelConstant);
   }
   // Perspective: steps grow as the distance squared, texels linearly; the far
   // plane decides.
@@ -1192,11 +1193,15 @@ TEST(SixteenBitDepthSuffices, WhenTheStepIsAtMostASixteenthOfATexel)
     const double step = SixteenBitStepAt(view.Projection, farPlane);
     const double texel = view.TexelPerUnitDistance * farPlane;
     EXPECT_EQ(shadowmaps::SixteenBitDepthSuffices(view), 16.0 * step <= texel);
+    EXPECT_EQ(shadowmaps::SixteenBitDepthSuffices(view, 32.0), 32.0 * step <= texel);
   }
   EXPECT_TRUE(shadowmaps::SixteenBitDepthSuffices(OrthographicView(10.0, 5.0, 35.0, 2048)));
   EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(OrthographicView(10.0, 5.0, 105.0, 2048)));
   EXPECT_TRUE(shadowmaps::SixteenBitDepthSuffices(PerspectiveView(60.0, 1.0, 3.0, 2048)));
   EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(PerspectiveView(60.0, 1.0, 10.0, 2048)));
+  // The stricter rule that 32-bit maps must pass to go to 16 bits.
+  EXPECT_FALSE(shadowmaps::SixteenBitDepthSuffices(OrthographicView(10.0, 5.0, 35.0, 2048), 32.0));
+  EXPECT_TRUE(shadowmaps::SixteenBitDepthSuffices(OrthographicView(10.0, 5.0, 20.0, 2048), 32.0));
 }
 
 TEST(SixteenBitDepthSuffices, NotForWarpedLinearOrDegenerateViews)
