@@ -187,28 +187,6 @@ std::vector<double> SanitizeSplits(
   return splits;
 }
 
-glm::dvec2 ProjectionDepthRange(const glm::dmat4& projection)
-{
-  // View depth z maps to clip z = A z + B, clip w = c z + d (w row (0, 0, c, d)).
-  const double a = projection[2][2];
-  const double b = projection[3][2];
-  const double c = projection[2][3];
-  const double d = projection[3][3];
-  // Near: A z + B = -(c z + d); far: A z + B = c z + d. Depth = -z.
-  const double nearDenominator = a + c;
-  const double farDenominator = a - c;
-  if (nearDenominator == 0.0 || farDenominator == 0.0)
-  {
-    return { 0.0, 0.0 };
-  }
-  const glm::dvec2 range((b + d) / nearDenominator, (b - d) / farDenominator);
-  if (!Finite(range.x) || !Finite(range.y))
-  {
-    return { 0.0, 0.0 };
-  }
-  return range;
-}
-
 glm::dvec2 TightDepthRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const std::vector<Aabb>& props, double margin)
 {

@@ -55,11 +55,6 @@ std::vector<double> PracticalSplits(double zNear, double zFar, int cascades, dou
 std::vector<double> SanitizeSplits(
   const std::vector<double>& explicitSplits, double zNear, double zFar, std::string* problem);
 
-/// {near, far} depths (positive along -z) of a projection's near (clip z = -1) and far
-/// (clip z = +1) planes. Works for perspective and parallel projections, off-axis
-/// included, whose clip w row is (0, 0, c, d). {0, 0} if the planes are undefined.
-glm::dvec2 ProjectionDepthRange(const glm::dmat4& projection);
-
 /// The camera's depth range {near, far} tightened to the visible props: the
 /// projection's planes (ProjectionDepthRange) clamped to VisibleDepthRange widened
 /// by `margin` (a fraction) on both sides. The projection's planes when no prop is

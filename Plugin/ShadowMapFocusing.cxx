@@ -673,6 +673,28 @@ bool IsFiniteVector(const glm::dvec3& v)
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+glm::dvec2 ProjectionDepthRange(const glm::dmat4& projection)
+{
+  // View depth z maps to clip z = A z + B, clip w = c z + d (w row (0, 0, c, d)).
+  const double a = projection[2][2];
+  const double b = projection[3][2];
+  const double c = projection[2][3];
+  const double d = projection[3][3];
+  // Near: A z + B = -(c z + d); far: A z + B = c z + d. Depth = -z.
+  const double nearDenominator = a + c;
+  const double farDenominator = a - c;
+  if (nearDenominator == 0.0 || farDenominator == 0.0)
+  {
+    return { 0.0, 0.0 };
+  }
+  const glm::dvec2 range((b + d) / nearDenominator, (b - d) / farDenominator);
+  if (!std::isfinite(range.x) || !std::isfinite(range.y))
+  {
+    return { 0.0, 0.0 };
+  }
+  return range;
+}
+
 bool SixteenBitDepthSuffices(const LightView& view, double stepsPerTexel)
 {
   constexpr double Steps = 65535.0;
@@ -691,8 +713,9 @@ bool SixteenBitDepthSuffices(const LightView& view, double stepsPerTexel)
   else if (view.Perspective && p[2][3] == -1.0 && p[3][3] == 0.0)
   {
     // Window depth (f / (f - n)) (1 - n / d) at distance d: steps grow as d^2.
-    const double n = p[3][2] / (p[2][2] - 1.0);
-    const double f = p[3][2] / (p[2][2] + 1.0);
+    const glm::dvec2 planes = ProjectionDepthRange(p);
+    const double n = planes.x;
+    const double f = planes.y;
     if (!(n > 0.0 && f > n))
     {
       return false;

@@ -190,6 +190,11 @@ std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjecti
 /// Index of the cube face (order of FitCubeFaces) that sees direction d.
 int CubeFaceIndex(const glm::dvec3& d);
 
+/// {near, far} depths (positive along -z) of a projection's near (clip z = -1) and far
+/// (clip z = +1) planes. Works for perspective and parallel projections, off-axis
+/// included, whose clip w row is (0, 0, c, d). {0, 0} if the planes are undefined.
+glm::dvec2 ProjectionDepthRange(const glm::dmat4& projection);
+
 /// Whether 16-bit normalized depth is precise enough for a view: its depth
 /// step (where it is coarsest: anywhere for an orthographic view, at the far
 /// plane for a perspective one) is at most 1/stepsPerTexel of the world size

@@ -19,10 +19,9 @@ constexpr double Infinity = std::numeric_limits<double>::infinity();
 // cos 60 degrees: see SlideBackKeepingTheLightAway.
 constexpr double WidestLightConeCosine = 0.5;
 
-// Near plane distance of an OpenGL perspective projection.
 double NearDistance(const glm::dmat4& projection)
 {
-  return projection[3][2] / (projection[2][2] - 1.0);
+  return ProjectionDepthRange(projection).x;
 }
 
 // The light camera is fitted in post-perspective space scaled by a^(1 - weight),
@@ -35,8 +34,9 @@ double NearDistance(const glm::dmat4& projection)
 // perpendiculars are the world's; at weight 1 it is post-perspective space.
 glm::dmat4 FittingScale(const glm::dmat4& cameraProjection, double weight)
 {
-  const double near = NearDistance(cameraProjection);
-  const double far = cameraProjection[3][2] / (cameraProjection[2][2] + 1.0);
+  const glm::dvec2 planes = ProjectionDepthRange(cameraProjection);
+  const double near = planes.x;
+  const double far = planes.y;
   const glm::dvec3 a(near / cameraProjection[0][0], near / cameraProjection[1][1], 0.5 * (far - near));
   return glm::scale(glm::dmat4(1.0), glm::pow(a, glm::dvec3(1.0 - weight)));
 }
@@ -426,8 +426,9 @@ glm::dmat4 SlideBackPostPerspective(
     return p * cameraView;
   }
   // Frustum parameters of an OpenGL perspective matrix.
-  const double n = p[3][2] / (p[2][2] - 1.0);
-  const double f = p[3][2] / (p[2][2] + 1.0);
+  const glm::dvec2 planes = ProjectionDepthRange(p);
+  const double n = planes.x;
+  const double f = planes.y;
   const double width = 2.0 * n / p[0][0], height = 2.0 * n / p[1][1];
   const double l = 0.5 * width * (p[2][0] - 1.0), b = 0.5 * height * (p[2][1] - 1.0);
   // Same near-plane quad, seen from slideBack further back (Kozlov Fig. 14-6).
