@@ -558,8 +558,12 @@ int TileGrid::TileOf(const glm::dvec2& wholeNdc) const
 std::vector<LightView> TileView(const LightView& whole, const TileGrid& grid)
 {
   const glm::dvec2 fraction = grid.WindowFraction;
-  // Window sizes (near-plane extents over near, or widths) of the whole map.
-  const glm::dvec2 window(2.0 / whole.Projection[0][0], 2.0 / whole.Projection[1][1]);
+  // Window sizes (near-plane extents over near, or widths) of the whole map. A
+  // warped map has no such window: its texel size comes from its gradient, and
+  // the tiles' texels are the whole map's over the coarser window fraction.
+  const glm::dvec2 window = whole.TexelSizeFromGradient
+    ? glm::dvec2(1.0)
+    : glm::dvec2(2.0 / whole.Projection[0][0], 2.0 / whole.Projection[1][1]);
   const double texelScale =
     std::max(window.x * fraction.x, window.y * fraction.y) / std::max(window.x, window.y);
   std::vector<LightView> tiles;

@@ -19,6 +19,7 @@ constexpr double Infinity = std::numeric_limits<double>::infinity();
 // cos 60 degrees: see SlideBackKeepingTheLightAway.
 constexpr double WidestLightConeCosine = 0.5;
 
+// Near plane distance of a projection (0 if undefined).
 double NearDistance(const glm::dmat4& projection)
 {
   return ProjectionDepthRange(projection).x;

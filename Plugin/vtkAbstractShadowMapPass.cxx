@@ -133,13 +133,14 @@ bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb&
   return true;
 }
 
-// Views out of view hold no shadows, whatever their precision. Maps that are
-// 32-bit go to 16 bits only with twice the margin, so that a camera hovering at
-// the threshold does not reallocate the maps, and move the shadows' contacts by
-// the bias of the other format, every frame.
-bool SixteenBitDepthSuffices(const std::vector<ShadowLight>& lights, bool sixteenBitNow)
+// Views out of view hold no shadows, whatever their precision. Depth maps that
+// are 32-bit go to 16 bits only with twice the margin, so that a camera hovering
+// at the threshold does not reallocate the maps, and move the shadows' contacts
+// by the bias of the other format, every frame. Maps not allocated (new, or
+// released after a GL failure) and value maps take the 16-bit rule.
+bool SixteenBitDepthSuffices(const std::vector<ShadowLight>& lights, bool thirtyTwoBitNow)
 {
-  const double stepsPerTexel = sixteenBitNow ? 16.0 : 32.0;
+  const double stepsPerTexel = thirtyTwoBitNow ? 32.0 : 16.0;
   return std::all_of(lights.begin(), lights.end(), [&](const ShadowLight& light) {
     return std::all_of(light.Views.begin(), light.Views.end(), [&](const LightView& view) {
       return view.OutOfView || shadowmaps::SixteenBitDepthSuffices(view, stepsPerTexel);
@@ -558,10 +559,10 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   this->NumberOfShadowMapLayers = layers;
 
   this->GetMapStorage(r.Storage);
-  const bool sixteenBitNow =
-    r.Maps.GetResolution() == 0 || r.Maps.GetFormat() == shadowmaps::TexelFormat::Depth16;
+  const bool thirtyTwoBitNow =
+    r.Maps.GetResolution() != 0 && r.Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
   if (r.Storage.Format == shadowmaps::TexelFormat::Depth &&
-    SixteenBitDepthSuffices(in.Lights, sixteenBitNow))
+    SixteenBitDepthSuffices(in.Lights, thirtyTwoBitNow))
   {
     r.Storage.Format = shadowmaps::TexelFormat::Depth16;
   }

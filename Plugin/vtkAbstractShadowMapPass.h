@@ -66,7 +66,6 @@ namespace shadowmaps
 {
 struct LightView;
 struct MapStorage;
-struct ShadowLight;
 class TextureArray;
 }
 

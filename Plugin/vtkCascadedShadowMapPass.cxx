@@ -266,7 +266,9 @@ shadowmaps::LightView vtkCascadedShadowMapPass::FitSpotMap(
     const shadowmaps::LightView warped = shadowmaps::FitSpotWarped(in.CameraView,
       in.CameraProjection, in.SceneBounds, light.Position, light.Direction, light.ConeAngle,
       in.Resolution, WarpOf(this->CascadeWarp));
-    if (shadowmaps::IsFinite(warped.ViewProjection()))
+    // Where it cannot warp (parallel camera, empty body), FitSpotWarped gives the
+    // cone cropped to B; the lit part of B below is tighter.
+    if (warped.TexelSizeFromGradient)
     {
       return warped;
     }

@@ -22,10 +22,10 @@
  * with rows = floor(sqrt(NumberOfCascades)): 2 x 2 tiles, one 2048² map, for four
  * cascades of 1024²) and picked by where the receiver falls in that map: a spot's texels spread with the
  * distance to the light, not to the camera, and one such map misclassified fewer
- * pixels than depth cascades in every benchmark scene. FitMode, splits and
- * blending apply to directional lights, CascadeWarp to directional and spot
- * lights (a spot's whole map is warped before tiling); MaximumShadowDistance's
- * fade applies to all. Point lights, and spots wider than one map holds, keep the
+ * pixels than depth cascades in every benchmark scene. Splits, blending and
+ * STABLE fitting apply to directional lights; CascadeWarp, with TIGHT fitting,
+ * to directional and spot lights (a spot's whole map is warped before tiling);
+ * MaximumShadowDistance's fade applies to all. Point lights, and spots wider than one map holds, keep the
  * foundation's cube maps at the cascades' Resolution.
  *
  * Resolution is per cascade (default 1024: four cascades hold the memory of one
@@ -44,6 +44,11 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 
 #include <vector> // For SplitDistances
+
+namespace shadowmaps
+{
+struct ShadowLight;
+}
 
 class VTKRENDERINGSHADOWMAPS_EXPORT vtkCascadedShadowMapPass : public vtkAbstractShadowMapPass
 {
@@ -168,8 +173,9 @@ protected:
   std::vector<double> ComputeSplits(const Internals& internals, double fade[2]);
   /** A spot light's views: one cone map, in tiles of the cascades' layers. */
   void TileSpotLight(Internals& internals, int lightIndex) const;
-  /** The whole map of a spot light before tiling: warped by CascadeWarp when the light may warp. */
-  shadowmaps::LightView FitSpotMap(const Internals& internals, const shadowmaps::ShadowLight& light) const;
+  /** A spot's whole map before tiling, warped by CascadeWarp when the light may warp. */
+  shadowmaps::LightView FitSpotMap(
+    const Internals& internals, const shadowmaps::ShadowLight& light) const;
   /** How far the filter kernel reaches from a receiver's texel, in texels. */
   double FilterReachTexels() const;
 

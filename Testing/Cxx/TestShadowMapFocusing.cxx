@@ -1390,6 +1390,22 @@ TEST(TileView, CountsAndMarginClamp)
   // 2 x 2 tiles without margin: texels half the size.
   const auto halves = shadowmaps::TileView(whole, shadowmaps::MakeTileGrid(2, 2, 256, 0.0));
   EXPECT_DOUBLE_EQ(halves[3].TexelConstant, whole.TexelConstant / 2.0);
+
+  // A warped map's projection has no window (here turned half a turn, so its
+  // x and y scales are negative): tiles scale its per-distance texel by the
+  // coarser window fraction.
+  LightView warped = whole;
+  warped.Projection = glm::rotate(glm::dmat4(1.0), glm::pi<double>(), glm::dvec3(0, 0, 1)) *
+    glm::frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+  warped.Perspective = true;
+  warped.TexelSizeFromGradient = true;
+  warped.TexelConstant = 0.0;
+  warped.TexelPerUnitDistance = 2.0 / 256.0;
+  for (const auto& tile : shadowmaps::TileView(warped, shadowmaps::MakeTileGrid(3, 2, 256, 0.0)))
+  {
+    EXPECT_DOUBLE_EQ(tile.TexelPerUnitDistance, warped.TexelPerUnitDistance / 2.0);
+    EXPECT_EQ(tile.TexelConstant, 0.0);
+  }
 }
 
 TEST(TileView, PointsOutsideTheMapGetTheNearestTile)
