@@ -660,6 +660,22 @@ glm::dmat4 ClipToTexture()
   return glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) * glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
 }
 
+std::vector<glm::dvec3> ProjectAheadOfTheLight(
+  const std::vector<glm::dvec3>& points, const glm::dmat4& lightViewProjection)
+{
+  std::vector<glm::dvec3> projected;
+  for (const auto& p : points)
+  {
+    const glm::dvec4 q = lightViewProjection * glm::dvec4(p, 1.0);
+    if (!(q.w > 0.0))
+    {
+      return {};
+    }
+    projected.push_back(glm::dvec3(q) / q.w);
+  }
+  return projected;
+}
+
 std::vector<glm::dvec3> SpotFocusBody(
   const glm::dmat4& cameraViewProjection, const Aabb& scene, const glm::dmat4& lightViewProjection)
 {

@@ -67,6 +67,11 @@ std::vector<glm::dvec3> ConvexPolytopeVertices(const std::vector<Plane>& planes,
 std::vector<glm::dvec3> SpotFocusBody(
   const glm::dmat4& cameraViewProjection, const Aabb& scene, const glm::dmat4& lightViewProjection);
 
+/// Points taken through a projection and divided by w; empty if any has w <= 0
+/// (behind a light) or there are none.
+std::vector<glm::dvec3> ProjectAheadOfTheLight(
+  const std::vector<glm::dvec3>& points, const glm::dmat4& lightViewProjection);
+
 /// Vertices of the convex body frustum ∩ box: frustum corners inside the box,
 /// box corners inside the frustum, and the crossings of each body's edges with
 /// the other's faces. Empty when they do not meet. With the scene bounds as box

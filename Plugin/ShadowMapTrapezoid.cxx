@@ -341,20 +341,15 @@ LightView FitSpotTrapezoid(const glm::dmat4& cameraView, const glm::dmat4& camer
   // B = camera frustum ∩ scene ∩ the spot's frustum, and its view-depth range.
   const Aabb& scene = sceneBounds;
   const std::vector<glm::dvec3> worldBody = SpotFocusBody(cameraViewProjection, scene, toLightSpace);
-  if (worldBody.empty())
+  TrapezoidFrame frame;
+  frame.Body = ProjectAheadOfTheLight(worldBody, toLightSpace);
+  if (frame.Body.empty())
   {
     return cone;
   }
-  TrapezoidFrame frame;
   double zNear = Infinity, zFar = -Infinity;
   for (const auto& p : worldBody)
   {
-    const glm::dvec4 q = toLightSpace * glm::dvec4(p, 1.0);
-    if (!(q.w > 0.0))
-    {
-      return cone;
-    }
-    frame.Body.push_back(glm::dvec3(q) / q.w);
     const double depth = -(cameraView * glm::dvec4(p, 1.0)).z;
     zNear = std::min(zNear, depth);
     zFar = std::max(zFar, depth);

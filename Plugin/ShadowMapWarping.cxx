@@ -456,20 +456,15 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
   // B in the world, kept inside the spot's frustum so that it maps with w > 0.
   const Aabb scene = NonDegenerate(sceneBounds);
   const std::vector<glm::dvec3> worldBody = SpotFocusBody(cameraViewProjection, scene, toLightSpace);
-  if (worldBody.empty())
+  WarpFrame frame;
+  frame.Body = ProjectAheadOfTheLight(worldBody, toLightSpace);
+  if (frame.Body.empty())
   {
     return cone;
   }
-  WarpFrame frame;
   glm::dvec3 centroid(0.0);
   for (const auto& p : worldBody)
   {
-    const glm::dvec4 q = toLightSpace * glm::dvec4(p, 1.0);
-    if (!(q.w > 0.0))
-    {
-      return cone;
-    }
-    frame.Body.push_back(glm::dvec3(q) / q.w);
     centroid += p / double(worldBody.size());
   }
 

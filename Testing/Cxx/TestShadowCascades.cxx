@@ -489,6 +489,19 @@ void ExpectTheUntiledMapsFrameAwayFromEdges(TestScene& scene, vtkImageData* imag
   EXPECT_EQ(awayFromEdges, 0) << "pixels that differ from the untiled map's frame away from edges";
   EXPECT_LT(onEdges, dims[0] * dims[1] / 100) << "edge pixels that differ";
 }
+
+
+// Renders the tiled spot scene with `pass` (four cascades): no warning, 2 x 2 tiles.
+vtkSmartPointer<vtkImageData> RenderFourTiles(TestScene& scene, vtkCascadedShadowMapPass* pass)
+{
+  pass->SetMaximumShadowDistance(0.0);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4) << "2 x 2 tiles";
+  return image;
+}
 } // namespace
 
 TEST(ShadowCascades, SpotLightsAreOneTiledMapPointLightsKeepCubeFaces)
@@ -496,12 +509,7 @@ TEST(ShadowCascades, SpotLightsAreOneTiledMapPointLightsKeepCubeFaces)
   TestScene scene;
   const std::vector<glm::dvec3> shadows = BuildTiledSpotScene(scene);
   auto pass = MakeProbedPass();
-  pass->SetMaximumShadowDistance(0.0);
-  scene.Renderer->SetPass(pass);
-  ErrorCounter errors;
-  auto image = RenderAndCapture(scene.Window);
-  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4) << "2 x 2 tiles";
+  auto image = RenderFourTiles(scene, pass);
   ExpectShadowsAndLightBeside(scene, image, shadows);
   const std::string difference = CompareWithBaseline(image, "CascadesSpot");
   EXPECT_TRUE(difference.empty()) << difference;
@@ -520,14 +528,9 @@ TEST(ShadowCascades, CascadeWarpWarpsTheSpotsTiledMap)
   TestScene scene;
   const std::vector<glm::dvec3> shadows = BuildTiledSpotScene(scene);
   auto pass = MakeProbedPass();
-  pass->SetMaximumShadowDistance(0.0);
   pass->SetFitMode(vtkCascadedShadowMapPass::TIGHT);
   pass->SetCascadeWarp(vtkCascadedShadowMapPass::LISPSM_WARP);
-  scene.Renderer->SetPass(pass);
-  ErrorCounter errors;
-  auto image = RenderAndCapture(scene.Window);
-  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4) << "2 x 2 tiles";
+  auto image = RenderFourTiles(scene, pass);
   // Shading checks; unwarped tiles would pass them too.
   ExpectShadowsAndLightBeside(scene, image, shadows);
   ExpectTheUntiledMapsFrameAwayFromEdges(
