@@ -1,6 +1,7 @@
 // One test per defect of VTK's vtkShadowMapPass (GUIDE list), proving this
 // project does not have it.
 #include "ShadowTestUtilities.h"
+#include "vtkCascadedShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
 
 #include "vtkActor.h"
@@ -12,19 +13,26 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCubeSource.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightKit.h"
 #include "vtkLineSource.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace shadowtest;
 
@@ -182,6 +190,68 @@ TEST(ShadowDefects, TranslucentGeometryKept)
   const glm::ivec3 rgb = ColorAt(scene.Renderer, image, { -4.0, -4.1, 1.0 });
   EXPECT_GT(rgb[0], rgb[1] + 40) << "the red translucent pane tints what is behind it";
   EXPECT_GT(rgb[1], 20) << "and what is behind it still shows through";
+}
+
+// Volumes are drawn by the delegate's volumetric step, after the shadowed
+// opaque geometry and behind it where that geometry is nearer.
+TEST(ShadowDefects, VolumesRenderAndStayBehindOpaqueGeometry)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  // A red block of constant density behind the box (seen from the camera) and
+  // rising above it.
+  vtkNew<vtkImageData> density;
+  density->SetDimensions(13, 9, 11);
+  density->SetOrigin(2.5, 3.0, 0.05);
+  density->SetSpacing(0.25, 0.25, 0.25);
+  density->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  std::fill_n(static_cast<unsigned char*>(density->GetScalarPointer()), 13 * 9 * 11, 200);
+  vtkNew<vtkGPUVolumeRayCastMapper> mapper;
+  mapper->SetInputData(density);
+  vtkNew<vtkColorTransferFunction> red;
+  red->AddRGBPoint(0.0, 1.0, 0.0, 0.0);
+  red->AddRGBPoint(255.0, 1.0, 0.0, 0.0);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(255.0, 0.8);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(red);
+  property->SetScalarOpacity(opacity);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  scene.Renderer->AddVolume(volume);
+
+  const glm::dvec3 volumeAboveTheBox(4.0, 4.0, 2.4);
+  const glm::dvec3 boxFront(4.0, 1.25, 0.75);
+  const glm::dvec3 sphereShadow = GroundShadowOfSphereCenter(SunDirection);
+  auto plain = RenderAndCapture(scene.Window);
+  const glm::ivec3 plainVolume = ColorAt(scene.Renderer, plain, volumeAboveTheBox);
+  const glm::ivec3 plainBox = ColorAt(scene.Renderer, plain, boxFront);
+  ASSERT_GT(plainVolume[0], plainVolume[1] + 60) << "without shadows the volume shows red";
+  ASSERT_GT(plainBox[2], plainBox[0] + 40) << "and the box in front of it blue";
+
+  vtkNew<vtkWarpedShadowMapPass> warped;
+  vtkNew<vtkCascadedShadowMapPass> cascaded;
+  for (vtkAbstractShadowMapPass* pass : { static_cast<vtkAbstractShadowMapPass*>(warped),
+         static_cast<vtkAbstractShadowMapPass*>(cascaded) })
+  {
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    const glm::ivec3 atVolume = ColorAt(scene.Renderer, image, volumeAboveTheBox);
+    const glm::ivec3 atBox = ColorAt(scene.Renderer, image, boxFront);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(atVolume[c], plainVolume[c], 12) << pass->GetClassName() << " volume, channel " << c;
+      EXPECT_NEAR(atBox[c], plainBox[c], 12) << pass->GetClassName() << " box, channel " << c;
+    }
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, sphereShadow), ShadowedBelow)
+      << pass->GetClassName() << ": the sphere still shadows the ground";
+    const std::string difference =
+      CompareWithBaseline(image, std::string("Volume") + pass->GetClassName());
+    EXPECT_TRUE(difference.empty()) << difference;
+  }
+  scene.Renderer->SetPass(nullptr);
 }
 
 // Defect 6: empty texels are far, not occluders, whatever the background.
