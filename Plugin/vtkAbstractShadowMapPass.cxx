@@ -31,6 +31,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkTextureUnitManager.h"
+#include "vtkVolume.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -264,6 +265,14 @@ vtkMTimeType CasterMTime(vtkProp* prop)
   }
   return time;
 }
+
+// Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
+// depth map; as casters they would only re-render the maps on every transfer
+// function edit.
+bool DrawsIntoDepthMaps(vtkProp* prop)
+{
+  return prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop);
+}
 } // namespace
 
 struct vtkAbstractShadowMapPass::Resources
@@ -494,7 +503,7 @@ void vtkAbstractShadowMapPass::CollectPropsAndBounds(vtkOpenGLRenderer* renderer
       vtkNew<vtkInformation> keys;
       prop->SetPropertyKeys(keys);
     }
-    if (IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()) && prop->HasOpaqueGeometry())
+    if (IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()) && DrawsIntoDepthMaps(prop))
     {
       in.Casters.push_back({ prop, bounds });
     }
