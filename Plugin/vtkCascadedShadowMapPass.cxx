@@ -214,12 +214,12 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
   this->LastSplits = splits;
 
   light.Fade = glm::dvec2(fade[0], fade[1]);
-  light.Cascaded = true;
   if (light.Kind == shadowmaps::LightKind::Spot)
   {
     this->TileSpotLight(in, lightIndex);
     return;
   }
+  light.Cascaded = true;
 
   std::vector<shadowmaps::LightView> views;
   std::vector<glm::dvec3> depthsOfCascades;
@@ -253,8 +253,6 @@ void vtkCascadedShadowMapPass::TileSpotLight(Internals& in, int lightIndex) cons
   light.Tiled = true;
   light.Tiles = shadowmaps::MakeTileGrid(columns, rows, in.Resolution, this->FilterReachTexels());
   light.Views = shadowmaps::TileView(whole, light.Tiles);
-  // Tiles share one texel size and are not blended.
-  light.CascadeDepths.assign(light.Views.size(), glm::dvec3(0.0, NoBlend, NoBlend));
 }
 
 //------------------------------------------------------------------------------

@@ -42,8 +42,8 @@ struct ShadowLight
   /// Cascaded lights: Views are depth partitions of the camera frustum, picked
   /// per receiver by view depth (or map coverage) and blended at their splits.
   bool Cascaded = false;
-  /// Tiled lights (cascaded too, for the fade): Views are the tiles of one map,
-  /// laid out by Tiles and picked per receiver by where it falls in that map.
+  /// Tiled lights: Views are the tiles of one map, laid out by Tiles and picked
+  /// per receiver by where it falls in that map; they fade out like cascades.
   bool Tiled = false;
   TileGrid Tiles;
   /// Per cascade: {first view depth it shades, its far split, start of its blend band}.

@@ -137,8 +137,7 @@ void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIn
   const bool warped = light.Kind == shadowmaps::LightKind::Directional || spotWarp;
   light.MayWarp = warped && this->WarpMode != UNIFORM;
   light.MayStoreLinearDepth = warped && this->WarpMode == TSM;
-  if (this->WarpMode == UNIFORM ||
-    (light.Kind != shadowmaps::LightKind::Directional && !spotWarp))
+  if (!light.MayWarp)
   {
     this->FitLightViewsUniform(internals, lightIndex);
     return;
