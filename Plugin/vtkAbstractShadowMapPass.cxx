@@ -166,6 +166,11 @@ bool IsRigid(const glm::dmat4& m)
 // map. A non-rigid view (PSM: the light camera times the viewer's post-
 // perspective transform) cannot be a camera frame; the camera then sits at the
 // origin looking down -z and the whole transform is its projection.
+bool IsNonFinite(const LightView& view)
+{
+  return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
+}
+
 void SetCameraToView(vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view)
 {
   const bool rigid = IsRigid(view.View);
@@ -315,6 +320,7 @@ struct vtkAbstractShadowMapPass::Resources
 
   bool Active = false;
   bool WarnedTooManyLights = false;
+  bool WarnedNonFiniteViews = false;
   bool WarnedResolution = false;
   std::string LastGLError;
   std::string WarnedGLError;
@@ -558,12 +564,16 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     r.WarnedResolution = true;
   }
 
-  int layers = 0;
   for (int i = 0; i < static_cast<int>(in.Lights.size()); ++i)
   {
     this->ComputeLightViews(in, i);
-    in.Lights[i].FirstLayer = layers;
-    layers += static_cast<int>(in.Lights[i].Views.size());
+  }
+  this->DropLightsWithNonFiniteViews();
+  int layers = 0;
+  for (ShadowLight& light : in.Lights)
+  {
+    light.FirstLayer = layers;
+    layers += static_cast<int>(light.Views.size());
   }
   this->NumberOfShadowMapLayers = layers;
 
@@ -591,6 +601,35 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   r.WarnedGLError.clear();
   ++this->NumberOfShadowMapUpdates;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::DropLightsWithNonFiniteViews()
+{
+  std::vector<ShadowLight>& lights = this->Internal->Lights;
+  this->NumberOfNonFiniteViews = 0;
+  for (const ShadowLight& light : lights)
+  {
+    this->NumberOfNonFiniteViews += static_cast<int>(
+      std::count_if(light.Views.begin(), light.Views.end(), IsNonFinite));
+  }
+  if (this->NumberOfNonFiniteViews == 0)
+  {
+    this->Resource->WarnedNonFiniteViews = false;
+    return;
+  }
+  if (!this->Resource->WarnedNonFiniteViews)
+  {
+    vtkWarningMacro(<< this->NumberOfNonFiniteViews
+                    << " light view(s) came out with non-finite matrices; their lights cast no "
+                       "shadows until the views are finite again.");
+    this->Resource->WarnedNonFiniteViews = true;
+  }
+  lights.erase(std::remove_if(lights.begin(), lights.end(),
+                 [](const ShadowLight& light) {
+                   return std::any_of(light.Views.begin(), light.Views.end(), IsNonFinite);
+                 }),
+    lights.end());
 }
 
 //------------------------------------------------------------------------------

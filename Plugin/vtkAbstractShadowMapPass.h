@@ -223,6 +223,13 @@ public:
   /** Number of map layers (light views) in use in the last frame. */
   vtkGetMacro(NumberOfShadowMapLayers, int);
 
+  /**
+   * Light views of the last map update whose matrices were not finite (a
+   * degenerate scene or camera). Their lights cast no shadow in that frame, and
+   * a warning says so once until every view is finite again. 0 in a healthy frame.
+   */
+  vtkGetMacro(NumberOfNonFiniteViews, int);
+
   /** How many times the shadow maps were (re-)rendered since creation. */
   vtkGetMacro(NumberOfShadowMapUpdates, int);
 
@@ -311,6 +318,7 @@ protected:
   int NumberOfShadowMapLayers = 0;
   int NumberOfShadowMapUpdates = 0;
   int NumberOfCasterDraws = 0;
+  int NumberOfNonFiniteViews = 0;
 
   std::unique_ptr<Internals> Internal;
 
@@ -322,6 +330,7 @@ private:
   bool PrepareShadows(const vtkRenderState* s, vtkOpenGLRenderer* renderer);
   void CollectLights(vtkOpenGLRenderer* renderer);
   void CollectPropsAndBounds(vtkOpenGLRenderer* renderer);
+  void DropLightsWithNonFiniteViews();
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view);

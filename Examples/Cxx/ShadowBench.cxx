@@ -3,6 +3,7 @@
 #include "ShadowMetrics.h"
 #include "ShadowOracle.h"
 #include "ShadowScenes.h"
+#include "ShadowTechniques.h"
 
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
@@ -57,114 +58,9 @@ namespace shadowbench
 namespace
 {
 using shadoworacle::Truth;
-constexpr unsigned int VTKDefaultResolution = 1024;
 const double NotMeasured = std::numeric_limits<double>::quiet_NaN();
 
 // --- techniques -------------------------------------------------------------------
-
-/// One technique set up on a renderer: the pass and what the metrics need of it.
-struct TechniqueInstance
-{
-  vtkSmartPointer<vtkRenderPass> Pass; // null: no shadows
-  vtkAbstractShadowMapPass* Ours = nullptr;
-  vtkShadowMapPass* VTK = nullptr;
-  int Resolution = 0;
-};
-
-vtkSmartPointer<vtkRenderPass> MakeVTKPass(unsigned int resolution, vtkShadowMapPass*& shadows)
-{
-  vtkNew<vtkShadowMapPass> pass;
-  pass->GetShadowMapBakerPass()->SetResolution(resolution);
-  vtkNew<vtkRenderPassCollection> passes;
-  passes->AddItem(pass->GetShadowMapBakerPass());
-  passes->AddItem(pass);
-  vtkNew<vtkSequencePass> sequence;
-  sequence->SetPasses(passes);
-  auto camera = vtkSmartPointer<vtkCameraPass>::New();
-  camera->SetDelegatePass(sequence);
-  shadows = pass;
-  return camera;
-}
-
-/// Bytes of this project's maps for one light of the set-up at `resolution`:
-/// one depth layer (sun, spot) or six (point light).
-double OurMapBytes(const std::string& setup, int resolution)
-{
-  const double layers = setup == "point" ? 6.0 : 1.0;
-  return layers * 4.0 * resolution * static_cast<double>(resolution);
-}
-
-/// VTK's pass holds one 32-bit float colour map per shadowed light and one
-/// depth buffer of the same size for rendering them.
-double VTKMapBytes(unsigned int resolution)
-{
-  return 2.0 * 4.0 * resolution * static_cast<double>(resolution);
-}
-
-unsigned int VTKEqualMemoryResolution(const std::string& setup, int resolution)
-{
-  return static_cast<unsigned int>(std::floor(std::sqrt(OurMapBytes(setup, resolution) / 8.0)));
-}
-
-// The vtkWarpedShadowMapPass mode a technique name stands for; -1 if none.
-int WarpModeOf(const std::string& name)
-{
-  static const std::map<std::string, int> modes = { { "uniform", vtkWarpedShadowMapPass::UNIFORM },
-    { "psm", vtkWarpedShadowMapPass::PSM }, { "lispsm", vtkWarpedShadowMapPass::LISPSM },
-    { "tsm", vtkWarpedShadowMapPass::TSM }, { "gmnpr", vtkWarpedShadowMapPass::GMNPR } };
-  const auto found = modes.find(name);
-  return found == modes.end() ? -1 : found->second;
-}
-
-TechniqueInstance MakeTechnique(const std::string& name, const std::string& setup, int resolution)
-{
-  TechniqueInstance technique;
-  if (name == "vtk" || name == "vtk-equal")
-  {
-    technique.Resolution = static_cast<int>(
-      name == "vtk" ? VTKDefaultResolution : VTKEqualMemoryResolution(setup, resolution));
-    technique.Pass = MakeVTKPass(static_cast<unsigned int>(technique.Resolution), technique.VTK);
-  }
-  else if (WarpModeOf(name) >= 0)
-  {
-    auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
-    pass->SetResolution(resolution);
-    pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
-    pass->SetWarpMode(WarpModeOf(name));
-    technique.Ours = pass;
-    technique.Pass = pass;
-    technique.Resolution = resolution;
-  }
-  else if (name == "csm" || name == "csm-tight" || name == "csm-lispsm")
-  {
-    // Four cascades of half the resolution: the memory of one map.
-    auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
-    pass->SetResolution(std::max(resolution / 2, 64));
-    pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
-    pass->SetFitMode(name == "csm" ? vtkCascadedShadowMapPass::STABLE : vtkCascadedShadowMapPass::TIGHT);
-    if (name == "csm-lispsm")
-    {
-      pass->SetCascadeWarp(vtkCascadedShadowMapPass::LISPSM_WARP);
-    }
-    technique.Ours = pass;
-    technique.Pass = pass;
-    technique.Resolution = pass->GetResolution();
-  }
-  return technique;
-}
-
-double MemoryMiB(const TechniqueInstance& technique)
-{
-  if (technique.Ours)
-  {
-    return technique.Ours->GetShadowMapMemory() / (1024.0 * 1024.0);
-  }
-  if (technique.VTK)
-  {
-    return VTKMapBytes(static_cast<unsigned int>(technique.Resolution)) / (1024.0 * 1024.0);
-  }
-  return 0.0;
-}
 
 // --- rendering and capture --------------------------------------------------------
 
@@ -176,28 +72,6 @@ struct View
   int Width = 0;
   int Height = 0;
 };
-
-/// White, purely diffuse materials: the ratio of a render with shadows to one
-/// without is then the light's shadow factor at every pixel.
-void UseMeasurementMaterials(vtkRenderer* renderer)
-{
-  vtkActorCollection* actors = renderer->GetActors();
-  vtkCollectionSimpleIterator it;
-  actors->InitTraversal(it);
-  while (vtkActor* actor = actors->GetNextActor(it))
-  {
-    vtkProperty* property = actor->GetProperty();
-    property->SetColor(1.0, 1.0, 1.0);
-    property->SetAmbient(0.0);
-    property->SetDiffuse(1.0);
-    property->SetSpecular(0.0);
-    if (actor->GetMapper())
-    {
-      actor->GetMapper()->ScalarVisibilityOff();
-    }
-  }
-  renderer->SetBackground(0.0, 0.0, 0.0);
-}
 
 double Seconds(std::chrono::steady_clock::duration duration)
 {
@@ -211,45 +85,6 @@ double TimedRender(vtkRenderWindow* window)
   window->Render();
   static_cast<vtkOpenGLRenderWindow*>(window)->WaitForCompletion();
   return Seconds(std::chrono::steady_clock::now() - start);
-}
-
-std::vector<std::uint8_t> CaptureRGB(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> capture;
-  capture->SetInput(window);
-  capture->SetInputBufferTypeToRGB();
-  capture->ReadFrontBufferOff();
-  capture->Update();
-  vtkDataArray* scalars = capture->GetOutput()->GetPointData()->GetScalars();
-  auto* bytes = static_cast<std::uint8_t*>(scalars->GetVoidPointer(0));
-  return std::vector<std::uint8_t>(bytes, bytes + scalars->GetNumberOfValues());
-}
-
-std::vector<float> CaptureDepth(View& view)
-{
-  vtkNew<vtkFloatArray> depth;
-  view.Window->GetZbufferData(0, 0, view.Width - 1, view.Height - 1, depth);
-  return std::vector<float>(depth->GetPointer(0), depth->GetPointer(0) + depth->GetNumberOfValues());
-}
-
-bool WritePNG(const std::vector<std::uint8_t>& rgb, int width, int height, const std::string& path)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::copy(rgb.begin(), rgb.end(), static_cast<std::uint8_t*>(image->GetScalarPointer()));
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(image);
-  writer->Write();
-  return writer->GetErrorCode() == 0;
-}
-
-vtkLight* FirstLight(vtkRenderer* renderer)
-{
-  vtkLightCollection* lights = renderer->GetLights();
-  lights->InitTraversal();
-  return lights->GetNextItem();
 }
 
 /// The truth of the current view: primary rays, masked where the rasteriser
@@ -418,7 +253,7 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
     view.Renderer->SetPass(nullptr);
     view.Window->Render();
     const auto plain = CaptureRGB(view.Window);
-    const auto truth = TruthOfView(view, oracle, CaptureDepth(view));
+    const auto truth = TruthOfView(view, oracle, CaptureDepth(view.Window, view.Width, view.Height));
     for (size_t t = 0; t < techniques.size(); ++t)
     {
       view.Renderer->SetPass(techniques[t].Pass);
@@ -465,12 +300,12 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   const auto plain = CaptureRGB(view.Window);
   std::vector<std::uint8_t> valid;
   shadoworacle::Surface surface;
-  const auto truth = TruthOfView(view, oracle, CaptureDepth(view), &valid, &surface);
+  const auto truth = TruthOfView(view, oracle, CaptureDepth(view.Window, view.Width, view.Height), &valid, &surface);
 
   std::vector<TechniqueInstance> techniques;
   for (const std::string& name : options.Techniques)
   {
-    techniques.push_back(MakeTechnique(name, setup, options.Resolution));
+    techniques.push_back(MakeTechnique(name, setup == "point", options.Resolution));
   }
   log << "  " << scene << " / " << setup << ": frame times" << std::endl;
   const std::vector<Timing> timing = MeasureFrameTimes(view, techniques, options.TimedFrames);
@@ -726,13 +561,6 @@ Options WithReferences(Options options)
   return options;
 }
 } // namespace
-
-//------------------------------------------------------------------------------
-std::vector<std::string> TechniqueNames()
-{
-  return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
-    "csm-tight", "csm-lispsm" };
-}
 
 //------------------------------------------------------------------------------
 Options DefaultOptions()

@@ -20,7 +20,7 @@ struct Options
   std::string ModelFile;
   /// shadowscenes::LightSetupNames.
   std::vector<std::string> Setups;
-  /// TechniqueNames().
+  /// TechniqueNames() (ShadowTechniques.h).
   std::vector<std::string> Techniques;
   /// Map resolution of this project's techniques; VTK's pass runs at its
   /// default (1024) and at the resolution of equal memory ("vtk-equal").
@@ -39,12 +39,6 @@ struct Options
 /// Default lists: every benchmark scene, every light set-up, the techniques
 /// below, flicker along the path for the perpendicular sun.
 Options DefaultOptions();
-
-/// "none", "vtk" (VTK's vtkShadowMapPass at its default 1024^2), "vtk-equal"
-/// (the same at the memory of "uniform"), "uniform" (vtkWarpedShadowMapPass,
-/// focused uniform map, 2x2 PCF), "lispsm" and "gmnpr" (the same pass warped,
-/// 2x2 PCF).
-std::vector<std::string> TechniqueNames();
 
 /// Runs the benchmark: prints the markdown table on `out` and writes into the
 /// output directory results.md, results.csv, one error map PNG per case

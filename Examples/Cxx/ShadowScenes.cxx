@@ -8,6 +8,7 @@
 #include <vtkCamera.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkContourFilter.h>
+#include <vtkCubeSource.h>
 #include <vtkCutter.h>
 #include <vtkCylinderSource.h>
 #include <vtkDataObject.h>
@@ -36,11 +37,14 @@
 #include <vtkSmartPointer.h>
 #include <vtkSphereSource.h>
 #include <vtkStreamTracer.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
 #include <vtkTubeFilter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -1023,6 +1027,141 @@ vtkSmartPointer<vtkLight> MakeSetupLight(const ViewFrame& view, const std::strin
   return MakeSun(view, *sun);
 }
 
+
+// --- the sweep's procedural scenes --------------------------------------------------
+
+constexpr Color BuildingColor{ 0.78, 0.74, 0.70 };
+constexpr Color WallColor{ 0.85, 0.83, 0.78 };
+constexpr Color FurnitureColor{ 0.55, 0.40, 0.28 };
+
+/** An axis-aligned box as six quads with outward normals. */
+vtkSmartPointer<vtkPolyData> MakeBox(const double bounds[6])
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5]);
+  cube->Update();
+  return cube->GetOutput();
+}
+
+/** Boxes (xmin, xmax, ymin, ymax, zmin, zmax each) in one polydata. */
+vtkSmartPointer<vtkPolyData> MakeBoxes(const std::vector<std::array<double, 6>>& boxes)
+{
+  vtkNew<vtkAppendPolyData> append;
+  for (const auto& box : boxes)
+  {
+    append->AddInputData(MakeBox(box.data()));
+  }
+  append->Update();
+  return append->GetOutput();
+}
+
+/** A cylinder of `radius` from `base` along the unit `axis` for `length`. */
+vtkSmartPointer<vtkPolyData> MakeRod(
+  const double base[3], const double axis[3], double length, double radius)
+{
+  vtkNew<vtkCylinderSource> cylinder; // along y, centred at the origin
+  cylinder->SetRadius(radius);
+  cylinder->SetHeight(length);
+  cylinder->SetResolution(8);
+  // Rotate y onto the axis (about y x axis), then move the centre into place.
+  const double y[3] = { 0.0, 1.0, 0.0 };
+  double about[3];
+  vtkMath::Cross(y, axis, about);
+  const double angle = vtkMath::DegreesFromRadians(
+    std::atan2(vtkMath::Norm(about), vtkMath::Dot(y, axis)));
+  vtkNew<vtkTransform> transform;
+  transform->Translate(base[0] + 0.5 * length * axis[0], base[1] + 0.5 * length * axis[1],
+    base[2] + 0.5 * length * axis[2]);
+  if (vtkMath::Norm(about) > 1e-9)
+  {
+    transform->RotateWXYZ(angle, about);
+  }
+  vtkNew<vtkTransformPolyDataFilter> place;
+  place->SetInputConnection(cylinder->GetOutputPort());
+  place->SetTransform(transform);
+  place->Update();
+  return place->GetOutput();
+}
+
+std::vector<std::array<double, 6>> CityBuildings(const CityLayout& city)
+{
+  std::vector<std::array<double, 6>> buildings;
+  const double block = city.Pitch - city.StreetWidth;
+  for (int j = 0; j < city.Blocks; ++j)
+  {
+    for (int i = 0; i < city.Blocks; ++i)
+    {
+      const double x = city.StreetCenter(i) + 0.5 * city.StreetWidth;
+      const double y = city.StreetCenter(j) + 0.5 * city.StreetWidth;
+      const double height = 6.0 + 34.0 * CellNoise(i, j, 7);
+      // Some blocks hold two buildings of different heights.
+      if (CellNoise(i, j, 8) < 0.4)
+      {
+        const double lower = 0.4 * height;
+        buildings.push_back({ x, x + 0.5 * block, y, y + block, 0.0, height });
+        buildings.push_back({ x + 0.5 * block, x + block, y, y + block, 0.0, lower });
+      }
+      else
+      {
+        buildings.push_back({ x, x + block, y, y + block, 0.0, height });
+      }
+    }
+  }
+  return buildings;
+}
+
+constexpr double FieldHalfSide = 30.0;
+constexpr int FieldRods = 240;
+constexpr int FieldBoards = 40;
+
+/** Thin rods leaning up to 40 degrees and thin boards, scattered by CellNoise. */
+vtkSmartPointer<vtkPolyData> MakeThinCasters()
+{
+  vtkNew<vtkAppendPolyData> append;
+  for (int k = 0; k < FieldRods; ++k)
+  {
+    const double base[3] = { FieldHalfSide * (2.0 * CellNoise(k, 0, 11) - 1.0),
+      FieldHalfSide * (2.0 * CellNoise(k, 0, 12) - 1.0), 0.0 };
+    const double tilt = vtkMath::RadiansFromDegrees(40.0 * CellNoise(k, 0, 13));
+    const double heading = 2.0 * vtkMath::Pi() * CellNoise(k, 0, 14);
+    const double axis[3] = { std::sin(tilt) * std::cos(heading), std::sin(tilt) * std::sin(heading),
+      std::cos(tilt) };
+    const double length = 2.0 + 6.0 * CellNoise(k, 0, 15);
+    const double radius = 0.03 + 0.09 * CellNoise(k, 0, 16);
+    append->AddInputData(MakeRod(base, axis, length, radius));
+  }
+  std::vector<std::array<double, 6>> boards;
+  for (int k = 0; k < FieldBoards; ++k)
+  {
+    const double x = FieldHalfSide * (2.0 * CellNoise(k, 1, 11) - 1.0);
+    const double y = FieldHalfSide * (2.0 * CellNoise(k, 1, 12) - 1.0);
+    const double z = 0.5 + 4.0 * CellNoise(k, 1, 13);
+    const bool alongX = CellNoise(k, 1, 14) < 0.5;
+    const double halfLength = 1.0 + 2.0 * CellNoise(k, 1, 15);
+    const double halfWidth = 0.1 + 0.3 * CellNoise(k, 1, 16);
+    const double hx = alongX ? halfLength : halfWidth;
+    const double hy = alongX ? halfWidth : halfLength;
+    boards.push_back({ x - hx, x + hx, y - hy, y + hy, z, z + 0.04 });
+  }
+  append->AddInputData(MakeBoxes(boards));
+  append->Update();
+  return append->GetOutput();
+}
+
+/** A table, a shelf, a pillar and a ball inside the room. */
+std::vector<std::array<double, 6>> RoomFurniture(const RoomLayout& room)
+{
+  const double h = room.Height;
+  return {
+    { -4.0, 4.0, -2.0, 2.0, 0.36 * h, 0.38 * h },            // table top
+    { -3.8, -3.5, -1.8, -1.5, 0.0, 0.36 * h },               // its legs
+    { 3.5, 3.8, -1.8, -1.5, 0.0, 0.36 * h },
+    { -3.8, -3.5, 1.5, 1.8, 0.0, 0.36 * h },
+    { 3.5, 3.8, 1.5, 1.8, 0.0, 0.36 * h },
+    { room.HalfX - 1.2, room.HalfX, -5.0, 5.0, 0.5 * h, 0.52 * h }, // shelf on a wall
+    { -7.0, -6.0, 4.0, 5.0, 0.0, h },                        // floor-to-ceiling pillar
+  };
+}
 } // namespace
 
 void BuildDefaultScene(vtkRenderer* renderer)
@@ -1197,6 +1336,76 @@ std::vector<std::string> BenchmarkSceneNames()
   return { "outdoor", "paraview", "model" };
 }
 
+// --- the sweep's procedural scenes ---------------------------------------------------
+
+double CityLayout::StreetCenter(int i) const
+{
+  return -0.5 * this->Blocks * this->Pitch + i * this->Pitch;
+}
+
+CityLayout GetCityLayout()
+{
+  return CityLayout();
+}
+
+void BuildCityScene(vtkRenderer* renderer)
+{
+  const CityLayout city = GetCityLayout();
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  const double half = 0.5 * city.Blocks * city.Pitch + city.Pitch;
+  AddGround(renderer, -half, half, -half, half, 0.0);
+  AddActor(renderer, MakeBoxes(CityBuildings(city)), BuildingColor, 0.1);
+  // Street level, looking down the street x = StreetCenter(1).
+  const double position[3] = { city.StreetCenter(1), city.StreetCenter(0) - 10.0, 1.7 };
+  const double focalPoint[3] = { position[0], position[1] + 30.0, 4.0 };
+  SetCamera(renderer, position, focalPoint, 60.0);
+}
+
+void BuildFieldScene(vtkRenderer* renderer)
+{
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  const double half = 1.5 * FieldHalfSide;
+  AddGround(renderer, -half, half, -half, half, 0.0);
+  AddActor(renderer, MakeThinCasters(), PoleColor, 0.3);
+  const double position[3] = { 0.0, -1.4 * FieldHalfSide, 12.0 };
+  const double focalPoint[3] = { 0.0, 0.0, 0.0 };
+  SetCamera(renderer, position, focalPoint, 40.0);
+}
+
+RoomLayout GetRoomLayout()
+{
+  return RoomLayout();
+}
+
+void BuildRoomScene(vtkRenderer* renderer)
+{
+  const RoomLayout room = GetRoomLayout();
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  const double walls[6] = { -room.HalfX, room.HalfX, -room.HalfY, room.HalfY, 0.0, room.Height };
+  AddActor(renderer, MakeBox(walls), WallColor, 0.05);
+  AddActor(renderer, MakeBoxes(RoomFurniture(room)), FurnitureColor, 0.2);
+  vtkNew<vtkSphereSource> ball;
+  ball->SetCenter(5.0, 3.0, 1.5);
+  ball->SetRadius(1.5);
+  ball->SetThetaResolution(32);
+  ball->SetPhiResolution(16);
+  AddActor(renderer, ball->GetOutputPort(), SphereColor, 0.5);
+
+  const double position[3] = { -0.8 * room.HalfX, -0.8 * room.HalfY, 0.6 * room.Height };
+  const double focalPoint[3] = { 0.0, 0.0, 0.3 * room.Height };
+  SetCamera(renderer, position, focalPoint, 70.0);
+  const double lamp[3] = { 0.0, 0.0, 0.9 * room.Height };
+  const double below[3] = { 0.0, 0.0, 0.0 };
+  renderer->RemoveAllLights();
+  renderer->AutomaticLightCreationOff();
+  renderer->AddLight(MakePositionalLight(lamp, below, 180.0));
+}
+
+std::vector<std::string> SweepSceneNames()
+{
+  return { "default", "outdoor", "paraview", "model", "city", "field", "room" };
+}
+
 bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::string& error)
 {
   if (name == "default")
@@ -1218,7 +1427,23 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
   {
     return BuildModelScene(renderer, error);
   }
-  error = "unknown scene '" + name + "' (expected default, outdoor, paraview or model)";
+  if (name == "city")
+  {
+    BuildCityScene(renderer);
+    return true;
+  }
+  if (name == "field")
+  {
+    BuildFieldScene(renderer);
+    return true;
+  }
+  if (name == "room")
+  {
+    BuildRoomScene(renderer);
+    return true;
+  }
+  error = "unknown scene '" + name +
+    "' (expected default, outdoor, paraview, model, city, field or room)";
   return false;
 }
 

@@ -92,8 +92,54 @@ bool BuildModelScene(vtkRenderer* renderer, std::string& error);
 /** The benchmark's scenes, in order: "outdoor", "paraview", "model". */
 std::vector<std::string> BenchmarkSceneNames();
 
+// --- the sweep's procedural scenes (vtkshadows sweep) ---------------------------------
+
+/** Square blocks of box buildings between streets, centred at the origin. */
+struct CityLayout
+{
+  int Blocks = 6;          ///< blocks per side
+  double Pitch = 24.0;     ///< from one street's centre line to the next
+  double StreetWidth = 8.0;
+  /// Centre line of street i (0..Blocks), along x or y.
+  double StreetCenter(int i) const;
+};
+CityLayout GetCityLayout();
+
 /**
- * Builds a benchmark scene or "default" (BuildDefaultScene) into an empty
+ * GetCityLayout()'s blocks, each holding one building 6 to 40 units high or two
+ * of different heights, in one polydata on a ground reaching one block past
+ * the city; camera at street level (z = 1.7) looking down a street.
+ */
+void BuildCityScene(vtkRenderer* renderer);
+
+/**
+ * A scattered field of thin casters on a 90 x 90 ground: 240 rods (radius 0.03
+ * to 0.12, 2 to 8 long, leaning up to 40 degrees) and 40 boards 4 cm thick
+ * floating 0.5 to 4.5 units up, over the central 60 x 60; elevated camera.
+ */
+void BuildFieldScene(vtkRenderer* renderer);
+
+/** A closed room, inner size 2 HalfX x 2 HalfY x Height, floor at z = 0. */
+struct RoomLayout
+{
+  double HalfX = 12.0;
+  double HalfY = 8.0;
+  double Height = 8.0;
+};
+RoomLayout GetRoomLayout();
+
+/**
+ * GetRoomLayout()'s closed box (black background: nothing outside is seen from
+ * inside) with a table, a shelf, a floor-to-ceiling pillar and a ball; camera
+ * inside, one point light under the ceiling.
+ */
+void BuildRoomScene(vtkRenderer* renderer);
+
+/** The sweep's scenes: "default", the benchmark's, then "city", "field", "room". */
+std::vector<std::string> SweepSceneNames();
+
+/**
+ * Builds a benchmark scene, a sweep scene or "default" (BuildDefaultScene) into an empty
  * renderer. Returns false with a one-line `error` for an unknown name or a
  * scene that cannot be built.
  */

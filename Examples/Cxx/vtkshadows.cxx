@@ -4,11 +4,14 @@
 //   vtkshadows render [options]        see PrintUsage() below
 //   vtkshadows bench [options]
 //   vtkshadows analyze FILE [options]
+//   vtkshadows sweep [options]
 //
 // Every error prints one line "vtkshadows: error: ..." on stderr and exits
 // with status 2.
 #include "ShadowBench.h"
 #include "ShadowScenes.h"
+#include "ShadowSweep.h"
+#include "ShadowTechniques.h"
 
 #include "vtkWarpedShadowMapPass.h"
 
@@ -28,6 +31,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -59,9 +63,10 @@ enum class Filter
 
 struct Options
 {
-  std::string command; // "render", "bench" or "analyze"
+  std::string command; // "render", "bench", "analyze" or "sweep"
   bool help = false;
   shadowbench::Options bench = shadowbench::DefaultOptions();
+  shadowsweep::Options sweep;
   std::string scene = "default";
   std::string light = "sun";
   double azimuth = 60.0;
@@ -81,12 +86,15 @@ void PrintUsage(std::ostream& out)
   out << "usage: vtkshadows render [options]\n"
          "       vtkshadows bench [options]\n"
          "       vtkshadows analyze FILE [options]\n"
+         "       vtkshadows sweep [options]\n"
          "       vtkshadows --help\n"
          "\n"
          "render: renders a scene with shadows and writes a PNG; prints the PNG's absolute path.\n"
          "bench: measures every technique on the benchmark scenes against ray-traced truth;\n"
          "prints a markdown table, writes error maps, charts, results.md and results.csv.\n"
          "analyze: the same for a model file (.obj .ply .stl .vtp .gltf .glb) on a ground.\n"
+         "sweep: measures techniques against ray-traced truth on random scenes, cameras and\n"
+         "lights; prints each technique's distribution, worst cases and flagged cases.\n"
          "\n"
          "options of render:\n"
          "  --scene default|FILE     built-in scene or a model (.obj .ply .stl .vtp .gltf .glb)\n"
@@ -118,7 +126,20 @@ void PrintUsage(std::ostream& out)
          "  --flicker-frames N       frames of the camera path, 0 or 2..600 [60]\n"
          "  --flicker-setups LIST    set-ups measured along the path [perpendicular]\n"
          "  --timed-frames N         frames per frame-time figure, 1..100 [8]\n"
-         "  --out DIR                output directory [./bench]\n";
+         "  --out DIR                output directory [./bench]\n"
+         "\n"
+         "options of sweep:\n"
+         "  --cases N                random cases, 1..1000000 [200]\n"
+         "  --seed S                 seed of the sweep, 0..2^64-1 [1]\n"
+         "  --techniques LIST        as for bench, without none\n"
+         "                           [uniform,psm,lispsm,tsm,gmnpr,csm,csm-tight,csm-lispsm]\n"
+         "  --resolution N           map size [2048]\n"
+         "  --size WxH               base image size, each case scales each side by 0.5..1.5\n"
+         "                           [192x144]\n"
+         "  --min-counted N          counted pixels a case needs to enter the distributions [300]\n"
+         "  --replay SEED            render the one case of that seed (printed by a sweep),\n"
+         "                           with its frames and error maps\n"
+         "  --out DIR                output directory [./sweep]\n";
 }
 
 // --- value parsing -----------------------------------------------------------
@@ -405,6 +426,96 @@ std::string ParseOutputDirectory(const std::string& value, Options& options)
   return {};
 }
 
+/** Whole-string unsigned 64-bit integer. */
+bool ParseUnsigned64(const std::string& text, std::uint64_t& value)
+{
+  if (text.empty() || !std::isdigit(static_cast<unsigned char>(text[0])))
+  {
+    return false;
+  }
+  errno = 0;
+  char* end = nullptr;
+  const unsigned long long parsed = std::strtoull(text.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0')
+  {
+    return false;
+  }
+  value = static_cast<std::uint64_t>(parsed);
+  return true;
+}
+
+std::string ParseCases(const std::string& value, Options& options)
+{
+  int cases = 0;
+  if (!ParseInt(value, cases) || cases < 1 || cases > 1000000)
+  {
+    return "cases '" + value + "' is not an integer in 1..1000000";
+  }
+  options.sweep.Cases = cases;
+  return {};
+}
+
+std::string ParseSeed(const std::string& value, Options& options)
+{
+  return ParseUnsigned64(value, options.sweep.Seed)
+    ? std::string()
+    : "seed '" + value + "' is not an integer in 0..18446744073709551615";
+}
+
+std::string ParseReplay(const std::string& value, Options& options)
+{
+  options.sweep.Replay = true;
+  return ParseUnsigned64(value, options.sweep.ReplaySeed)
+    ? std::string()
+    : "replay seed '" + value + "' is not an integer in 0..18446744073709551615";
+}
+
+std::string ParseSweepTechniques(const std::string& value, Options& options)
+{
+  std::string error = ParseTechniques(value, options);
+  if (error.empty() &&
+    std::find(options.bench.Techniques.begin(), options.bench.Techniques.end(), "none") !=
+      options.bench.Techniques.end())
+  {
+    error = "technique 'none' has no shadows to sweep";
+  }
+  options.sweep.Techniques = options.bench.Techniques;
+  return error;
+}
+
+std::string ParseSweepResolution(const std::string& value, Options& options)
+{
+  std::string error = ParseResolution(value, options);
+  options.sweep.Resolution = options.resolution;
+  return error;
+}
+
+std::string ParseSweepSize(const std::string& value, Options& options)
+{
+  std::string error = ParseSize(value, options);
+  options.sweep.BaseWidth = options.width;
+  options.sweep.BaseHeight = options.height;
+  return error;
+}
+
+std::string ParseMinimumCounted(const std::string& value, Options& options)
+{
+  int counted = 0;
+  if (!ParseInt(value, counted) || counted < 0)
+  {
+    return "minimum counted pixels '" + value + "' is not a non-negative integer";
+  }
+  options.sweep.MinimumCounted = counted;
+  return {};
+}
+
+std::string ParseSweepOutputDirectory(const std::string& value, Options& options)
+{
+  std::string error = ParseOutputDirectory(value, options);
+  options.sweep.OutputDirectory = options.bench.OutputDirectory;
+  return error;
+}
+
 // --- command line --------------------------------------------------------------
 
 using OptionParser = std::function<std::string(const std::string&, Options&)>;
@@ -446,6 +557,21 @@ const std::map<std::string, OptionParser>& BenchOptionParsers(bool withScenes)
     return parsers;
   }();
   return withScenes ? bench : common;
+}
+
+const std::map<std::string, OptionParser>& SweepOptionParsers()
+{
+  static const std::map<std::string, OptionParser> parsers = {
+    { "--cases", ParseCases },
+    { "--seed", ParseSeed },
+    { "--techniques", ParseSweepTechniques },
+    { "--resolution", ParseSweepResolution },
+    { "--size", ParseSweepSize },
+    { "--min-counted", ParseMinimumCounted },
+    { "--replay", ParseReplay },
+    { "--out", ParseSweepOutputDirectory },
+  };
+  return parsers;
 }
 
 bool IsHelpFlag(const std::string& argument)
@@ -509,7 +635,7 @@ bool ParseCommandLine(
 {
   if (arguments.empty())
   {
-    error = "missing subcommand (expected render, bench or analyze)";
+    error = "missing subcommand (expected render, bench, analyze or sweep)";
     return false;
   }
   if (IsHelpFlag(arguments[0]) || arguments[0] == "help")
@@ -526,6 +652,10 @@ bool ParseCommandLine(
   {
     return ParseSubcommandOptions(arguments, 1, BenchOptionParsers(true), options, error);
   }
+  if (options.command == "sweep")
+  {
+    return ParseSubcommandOptions(arguments, 1, SweepOptionParsers(), options, error);
+  }
   if (options.command == "analyze")
   {
     if (arguments.size() < 2 || arguments[1].empty() || arguments[1][0] == '-')
@@ -541,7 +671,7 @@ bool ParseCommandLine(
     options.bench.ModelFile = arguments[1];
     return ParseSubcommandOptions(arguments, 2, BenchOptionParsers(false), options, error);
   }
-  error = "unknown subcommand '" + arguments[0] + "' (expected render, bench or analyze)";
+  error = "unknown subcommand '" + arguments[0] + "' (expected render, bench, analyze or sweep)";
   return false;
 }
 
@@ -712,9 +842,19 @@ int Run(const std::vector<std::string>& arguments)
     PrintUsage(std::cout);
     return EXIT_SUCCESS;
   }
-  const bool ok = options.command == "render"
-    ? RunRender(options, error)
-    : shadowbench::Run(options.bench, std::cout, std::cerr, error);
+  bool ok = false;
+  if (options.command == "render")
+  {
+    ok = RunRender(options, error);
+  }
+  else if (options.command == "sweep")
+  {
+    ok = shadowsweep::Run(options.sweep, std::cout, std::cerr, error);
+  }
+  else
+  {
+    ok = shadowbench::Run(options.bench, std::cout, std::cerr, error);
+  }
   if (!ok)
   {
     return Fail(error);

@@ -5,8 +5,6 @@
 #include "vtkCubeSource.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
-#include "vtkObjectFactory.h"
-#include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -272,66 +270,6 @@ std::string CompareWithBaseline(vtkImageData* image, const std::string& name)
     return text.str();
   }
   return {};
-}
-
-namespace
-{
-class CountingOutputWindow : public vtkOutputWindow
-{
-public:
-  static CountingOutputWindow* New();
-  vtkTypeMacro(CountingOutputWindow, vtkOutputWindow);
-  void DisplayErrorText(const char* text) override
-  {
-    ++this->Errors;
-    this->Log << "ERROR: " << text << "\n";
-  }
-  void DisplayWarningText(const char* text) override
-  {
-    ++this->Warnings;
-    this->Log << "WARNING: " << text << "\n";
-  }
-  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
-  void DisplayText(const char* text) override { this->Log << text << "\n"; }
-  int Errors = 0;
-  int Warnings = 0;
-  std::ostringstream Log;
-};
-vtkStandardNewMacro(CountingOutputWindow);
-} // namespace
-
-struct ErrorCounter::Impl
-{
-  vtkNew<CountingOutputWindow> Window;
-  vtkSmartPointer<vtkOutputWindow> Previous;
-};
-
-ErrorCounter::ErrorCounter()
-  : Pimpl(new Impl)
-{
-  this->Pimpl->Previous = vtkOutputWindow::GetInstance();
-  vtkOutputWindow::SetInstance(this->Pimpl->Window);
-}
-
-ErrorCounter::~ErrorCounter()
-{
-  vtkOutputWindow::SetInstance(this->Pimpl->Previous);
-  delete this->Pimpl;
-}
-
-int ErrorCounter::Errors() const
-{
-  return this->Pimpl->Window->Errors;
-}
-
-int ErrorCounter::Warnings() const
-{
-  return this->Pimpl->Window->Warnings;
-}
-
-std::string ErrorCounter::Text() const
-{
-  return this->Pimpl->Window->Log.str();
 }
 
 } // namespace shadowtest

@@ -3,6 +3,7 @@
 #ifndef ShadowTestUtilities_h
 #define ShadowTestUtilities_h
 
+#include "ShadowTechniques.h" // For ErrorCounter
 #include "vtkNew.h"
 #include "vtkRenderWindow.h" // For TestScene members
 #include "vtkRenderer.h"     // For TestScene members
@@ -66,19 +67,7 @@ int CountUndersampled(vtkImageData* image);
 std::string CompareWithBaseline(vtkImageData* image, const std::string& name);
 
 /// Counts VTK errors and warnings (shader compile failures arrive as errors).
-class ErrorCounter
-{
-public:
-  ErrorCounter();
-  ~ErrorCounter();
-  int Errors() const;
-  int Warnings() const;
-  std::string Text() const;
-
-private:
-  struct Impl;
-  Impl* Pimpl;
-};
+using ErrorCounter = shadowbench::MessageLog;
 
 constexpr double ShadowedBelow = 80.0;
 constexpr double LitAbove = 120.0;

@@ -1,0 +1,275 @@
+#include "ShadowTechniques.h"
+
+#include "vtkAbstractShadowMapPass.h"
+#include "vtkCascadedShadowMapPass.h"
+#include "vtkWarpedShadowMapPass.h"
+
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
+#include <vtkCameraPass.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkMapper.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkRenderPassCollection.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSequencePass.h>
+#include <vtkShadowMapBakerPass.h>
+#include <vtkShadowMapPass.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace shadowbench
+{
+namespace
+{
+constexpr unsigned int VTKDefaultResolution = 1024;
+
+vtkSmartPointer<vtkRenderPass> MakeVTKPass(unsigned int resolution, vtkShadowMapPass*& shadows)
+{
+  vtkNew<vtkShadowMapPass> pass;
+  pass->GetShadowMapBakerPass()->SetResolution(resolution);
+  vtkNew<vtkRenderPassCollection> passes;
+  passes->AddItem(pass->GetShadowMapBakerPass());
+  passes->AddItem(pass);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(passes);
+  auto camera = vtkSmartPointer<vtkCameraPass>::New();
+  camera->SetDelegatePass(sequence);
+  shadows = pass;
+  return camera;
+}
+
+/// Bytes of this project's maps for one light at `resolution`: one depth
+/// layer (sun, spot) or six (point light).
+double OurMapBytes(bool pointLight, int resolution)
+{
+  const double layers = pointLight ? 6.0 : 1.0;
+  return layers * 4.0 * resolution * static_cast<double>(resolution);
+}
+
+/// VTK's pass holds one 32-bit float colour map per shadowed light and one
+/// depth buffer of the same size for rendering them.
+double VTKMapBytes(unsigned int resolution)
+{
+  return 2.0 * 4.0 * resolution * static_cast<double>(resolution);
+}
+
+unsigned int VTKEqualMemoryResolution(bool pointLight, int resolution)
+{
+  return static_cast<unsigned int>(std::floor(std::sqrt(OurMapBytes(pointLight, resolution) / 8.0)));
+}
+
+// The vtkWarpedShadowMapPass mode a technique name stands for; -1 if none.
+int WarpModeOf(const std::string& name)
+{
+  static const std::map<std::string, int> modes = { { "uniform", vtkWarpedShadowMapPass::UNIFORM },
+    { "psm", vtkWarpedShadowMapPass::PSM }, { "lispsm", vtkWarpedShadowMapPass::LISPSM },
+    { "tsm", vtkWarpedShadowMapPass::TSM }, { "gmnpr", vtkWarpedShadowMapPass::GMNPR } };
+  const auto found = modes.find(name);
+  return found == modes.end() ? -1 : found->second;
+}
+
+class CountingOutputWindow : public vtkOutputWindow
+{
+public:
+  static CountingOutputWindow* New();
+  vtkTypeMacro(CountingOutputWindow, vtkOutputWindow);
+  void DisplayErrorText(const char* text) override
+  {
+    ++this->Errors;
+    this->Log << "ERROR: " << text << "\n";
+  }
+  void DisplayWarningText(const char* text) override
+  {
+    ++this->Warnings;
+    this->Log << "WARNING: " << text << "\n";
+  }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayText(const char* text) override { this->Log << text << "\n"; }
+  int Errors = 0;
+  int Warnings = 0;
+  std::ostringstream Log;
+};
+vtkStandardNewMacro(CountingOutputWindow);
+} // namespace
+
+//------------------------------------------------------------------------------
+std::vector<std::string> TechniqueNames()
+{
+  return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
+    "csm-tight", "csm-lispsm" };
+}
+
+//------------------------------------------------------------------------------
+bool IsTechnique(const std::string& name)
+{
+  const auto names = TechniqueNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+//------------------------------------------------------------------------------
+TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int resolution)
+{
+  TechniqueInstance technique;
+  if (name == "vtk" || name == "vtk-equal")
+  {
+    technique.Resolution = static_cast<int>(
+      name == "vtk" ? VTKDefaultResolution : VTKEqualMemoryResolution(pointLight, resolution));
+    technique.Pass = MakeVTKPass(static_cast<unsigned int>(technique.Resolution), technique.VTK);
+  }
+  else if (WarpModeOf(name) >= 0)
+  {
+    auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    pass->SetResolution(resolution);
+    pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
+    pass->SetWarpMode(WarpModeOf(name));
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = resolution;
+  }
+  else if (name == "csm" || name == "csm-tight" || name == "csm-lispsm")
+  {
+    // Four cascades of half the resolution: the memory of one map.
+    auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
+    pass->SetResolution(std::max(resolution / 2, 64));
+    pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
+    pass->SetFitMode(name == "csm" ? vtkCascadedShadowMapPass::STABLE : vtkCascadedShadowMapPass::TIGHT);
+    if (name == "csm-lispsm")
+    {
+      pass->SetCascadeWarp(vtkCascadedShadowMapPass::LISPSM_WARP);
+    }
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = pass->GetResolution();
+  }
+  return technique;
+}
+
+//------------------------------------------------------------------------------
+double MemoryMiB(const TechniqueInstance& technique)
+{
+  if (technique.Ours)
+  {
+    return technique.Ours->GetShadowMapMemory() / (1024.0 * 1024.0);
+  }
+  if (technique.VTK)
+  {
+    return VTKMapBytes(static_cast<unsigned int>(technique.Resolution)) / (1024.0 * 1024.0);
+  }
+  return 0.0;
+}
+
+//------------------------------------------------------------------------------
+void UseMeasurementMaterials(vtkRenderer* renderer)
+{
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    vtkProperty* property = actor->GetProperty();
+    property->SetColor(1.0, 1.0, 1.0);
+    property->SetAmbient(0.0);
+    property->SetDiffuse(1.0);
+    property->SetSpecular(0.0);
+    if (actor->GetMapper())
+    {
+      actor->GetMapper()->ScalarVisibilityOff();
+    }
+  }
+  renderer->SetBackground(0.0, 0.0, 0.0);
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::uint8_t> CaptureRGB(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  capture->Update();
+  vtkDataArray* scalars = capture->GetOutput()->GetPointData()->GetScalars();
+  auto* bytes = static_cast<std::uint8_t*>(scalars->GetVoidPointer(0));
+  return std::vector<std::uint8_t>(bytes, bytes + scalars->GetNumberOfValues());
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> CaptureDepth(vtkRenderWindow* window, int width, int height)
+{
+  vtkNew<vtkFloatArray> depth;
+  window->GetZbufferData(0, 0, width - 1, height - 1, depth);
+  return std::vector<float>(depth->GetPointer(0), depth->GetPointer(0) + depth->GetNumberOfValues());
+}
+
+//------------------------------------------------------------------------------
+bool WritePNG(const std::vector<std::uint8_t>& rgb, int width, int height, const std::string& path)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(rgb.begin(), rgb.end(), static_cast<std::uint8_t*>(image->GetScalarPointer()));
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(image);
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+
+//------------------------------------------------------------------------------
+vtkLight* FirstLight(vtkRenderer* renderer)
+{
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  return lights->GetNextItem();
+}
+
+//------------------------------------------------------------------------------
+struct MessageLog::Impl
+{
+  vtkNew<CountingOutputWindow> Window;
+  vtkSmartPointer<vtkOutputWindow> Previous;
+};
+
+MessageLog::MessageLog()
+  : Pimpl(new Impl)
+{
+  this->Pimpl->Previous = vtkOutputWindow::GetInstance();
+  vtkOutputWindow::SetInstance(this->Pimpl->Window);
+}
+
+MessageLog::~MessageLog()
+{
+  vtkOutputWindow::SetInstance(this->Pimpl->Previous);
+  delete this->Pimpl;
+}
+
+int MessageLog::Errors() const
+{
+  return this->Pimpl->Window->Errors;
+}
+
+int MessageLog::Warnings() const
+{
+  return this->Pimpl->Window->Warnings;
+}
+
+std::string MessageLog::Text() const
+{
+  return this->Pimpl->Window->Log.str();
+}
+
+} // namespace shadowbench

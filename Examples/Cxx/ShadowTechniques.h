@@ -1,0 +1,84 @@
+// The techniques the benchmark and the sweep measure, by name, and the
+// captures both take of a view: shared by ShadowBench and ShadowSweep.
+#ifndef ShadowTechniques_h
+#define ShadowTechniques_h
+
+#include <vtkSmartPointer.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+class vtkAbstractShadowMapPass;
+class vtkLight;
+class vtkRenderPass;
+class vtkRenderWindow;
+class vtkRenderer;
+class vtkShadowMapPass;
+
+namespace shadowbench
+{
+
+/// One technique set up on a renderer: the pass and what the metrics need of it.
+struct TechniqueInstance
+{
+  vtkSmartPointer<vtkRenderPass> Pass; // null: no shadows
+  vtkAbstractShadowMapPass* Ours = nullptr;
+  vtkShadowMapPass* VTK = nullptr;
+  int Resolution = 0;
+};
+
+/// "none", "vtk" (VTK's vtkShadowMapPass at its default 1024^2), "vtk-equal"
+/// (the same at the memory of "uniform"), "uniform" (vtkWarpedShadowMapPass,
+/// focused uniform map, 2x2 PCF), "psm", "lispsm", "tsm" and "gmnpr" (the same
+/// pass warped), "csm", "csm-tight" and "csm-lispsm" (vtkCascadedShadowMapPass,
+/// four cascades of half the resolution: stable, tight, tight with LiSPSM).
+std::vector<std::string> TechniqueNames();
+
+/// True for a name in TechniqueNames().
+bool IsTechnique(const std::string& name);
+
+/// The technique `name` at `resolution` for a light set-up (VTK's pass at
+/// equal memory needs to know whether the light is a point light).
+TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int resolution);
+
+/// Memory of the technique's maps after a render, in MiB.
+double MemoryMiB(const TechniqueInstance& technique);
+
+/// White, purely diffuse materials: the ratio of a render with shadows to one
+/// without is then the light's shadow factor at every pixel.
+void UseMeasurementMaterials(vtkRenderer* renderer);
+
+/// The frame last rendered, RGB, row 0 at the bottom.
+std::vector<std::uint8_t> CaptureRGB(vtkRenderWindow* window);
+
+/// Window depths in [0, 1] of the first width x height pixels.
+std::vector<float> CaptureDepth(vtkRenderWindow* window, int width, int height);
+
+/// Writes RGB bytes as a PNG; false if it cannot.
+bool WritePNG(const std::vector<std::uint8_t>& rgb, int width, int height, const std::string& path);
+
+/// The renderer's first light (nullptr if it has none).
+vtkLight* FirstLight(vtkRenderer* renderer);
+
+/// While alive, takes every VTK error and warning instead of the output
+/// window that was there (restored on destruction), counting and keeping them.
+class MessageLog
+{
+public:
+  MessageLog();
+  ~MessageLog();
+  MessageLog(const MessageLog&) = delete;
+  MessageLog& operator=(const MessageLog&) = delete;
+  int Errors() const;
+  int Warnings() const;
+  std::string Text() const;
+
+private:
+  struct Impl;
+  Impl* Pimpl;
+};
+
+} // namespace shadowbench
+
+#endif
