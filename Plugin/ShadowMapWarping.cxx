@@ -529,6 +529,12 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
   fit.View = fit.View * toLightSpace;
   fit.Perspective = true;
   fit.TexelSizeFromGradient = true;
+  // The warp divides the spot's post-perspective depth, already hyperbolic in
+  // the distance to the light, by its own w: stored as rasterized, depths far
+  // from the light crowd into a sliver of the range that the receivers' float
+  // transform cannot resolve. The warp's w does not depend on depth, so the
+  // spot's own depth is stored instead, as for the spot's TSM.
+  fit.LinearDepth = true;
   fit.TexelConstant = 0.0;
   fit.TexelPerUnitDistance = cone.TexelPerUnitDistance;
   return IsFinite(fit.ViewProjection()) ? fit : cone;

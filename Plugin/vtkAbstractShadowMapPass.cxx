@@ -604,6 +604,26 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ApplyDepthBias(const LightView& view)
+{
+  // 32-bit depth (linear-depth views are never 16-bit): one polygon-offset unit
+  // is 2^-24 for depths in [0.5, 1).
+  constexpr float DepthUnit = 1.0f / 16777216.0f;
+  const auto slope = static_cast<float>(this->SlopeScaledBias);
+  const auto constant = static_cast<float>(this->ConstantBias);
+  if (view.LinearDepth)
+  {
+    glPolygonOffset(0.0f, 0.0f);
+    this->Resource->CasterPass->SetLinearDepthBias({ { slope, constant * DepthUnit } });
+  }
+  else
+  {
+    glPolygonOffset(slope, constant);
+    this->Resource->CasterPass->SetLinearDepthBias({ { 0.0f, 0.0f } });
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::DropLightsWithNonFiniteViews()
 {
   std::vector<ShadowLight>& lights = this->Internal->Lights;
@@ -693,7 +713,6 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   state->vtkglDepthFunc(GL_LEQUAL);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(static_cast<float>(this->SlopeScaledBias), static_cast<float>(this->ConstantBias));
   const bool minimumBlending =
     r.Storage.Format == shadowmaps::TexelFormat::TwoFloats && r.Storage.MinimumBlending;
   if (minimumBlending)
@@ -775,6 +794,7 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
 
   SetCameraToView(r.LightCamera, r.LightProjection, view);
   r.CasterPass->SetWindowToInverseW(WindowToInverseW(view, in.Resolution));
+  this->ApplyDepthBias(view);
 
   const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
   std::vector<vtkProp*> visible;

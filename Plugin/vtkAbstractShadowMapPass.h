@@ -334,6 +334,7 @@ private:
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view);
+  void ApplyDepthBias(const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer);
   void StoreReceiverUniforms();
   void UpdateReceiverShaderKey(const vtkRenderState* s);

@@ -136,7 +136,7 @@ void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIn
   const bool spotWarp = light.Kind == shadowmaps::LightKind::Spot && !light.Cube;
   const bool warped = light.Kind == shadowmaps::LightKind::Directional || spotWarp;
   light.MayWarp = warped && this->WarpMode != UNIFORM;
-  light.MayStoreLinearDepth = warped && this->WarpMode == TSM;
+  light.MayStoreLinearDepth = (warped && this->WarpMode == TSM) || (spotWarp && light.MayWarp);
   if (!light.MayWarp)
   {
     this->FitLightViewsUniform(internals, lightIndex);

@@ -409,6 +409,23 @@ std::string ImagePath(const Options& options, const Case& drawn, const std::stri
   return options.OutputDirectory + "/" + std::to_string(drawn.Seed) + "-" + name + ".png";
 }
 
+/// The frame, its error map and, for this project's passes, the light's maps.
+void WriteReplayImages(SceneView& view, const Case& drawn, const std::string& name,
+  const shadowbench::TechniqueInstance& technique, const std::vector<std::uint8_t>& frame,
+  const std::vector<std::uint8_t>& errors, const Options& options)
+{
+  shadowbench::WritePNG(frame, drawn.Width, drawn.Height, ImagePath(options, drawn, name));
+  shadowbench::WritePNG(errors, drawn.Width, drawn.Height, ImagePath(options, drawn, name + "-errors"));
+  if (technique.Ours)
+  {
+    technique.Ours->SetAnalysisView(vtkAbstractShadowMapPass::SHADOW_MAP);
+    view.Window->Render();
+    shadowbench::WritePNG(shadowbench::CaptureRGB(view.Window), drawn.Width, drawn.Height,
+      ImagePath(options, drawn, name + "-maps"));
+    technique.Ours->SetAnalysisView(vtkAbstractShadowMapPass::NO_ANALYSIS);
+  }
+}
+
 TechniqueResult MeasureTechnique(SceneView& view, const Case& drawn, const std::string& name,
   const std::vector<std::uint8_t>& plain, const std::vector<Truth>& truth, const Options& options)
 {
@@ -436,9 +453,7 @@ TechniqueResult MeasureTechnique(SceneView& view, const Case& drawn, const std::
   }
   if (options.Replay)
   {
-    shadowbench::WritePNG(rgb, drawn.Width, drawn.Height, ImagePath(options, drawn, name));
-    shadowbench::WritePNG(shadowmetrics::ErrorMap(truth, factor), drawn.Width, drawn.Height,
-      ImagePath(options, drawn, name + "-errors"));
+    WriteReplayImages(view, drawn, name, technique, rgb, shadowmetrics::ErrorMap(truth, factor), options);
   }
   view.Renderer->SetPass(nullptr);
   technique.Pass->ReleaseGraphicsResources(view.Window);
@@ -576,9 +591,23 @@ void PrintFlagged(const std::vector<CaseResult>& results, std::ostream& out)
   }
 }
 
+std::string Coordinates(const glm::dvec3& p)
+{
+  std::ostringstream text;
+  text << std::setprecision(9) << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return text.str();
+}
+
 void PrintReplay(const CaseResult& result, std::ostream& out)
 {
-  out << Describe(result.Drawn) << "\n\ncounted pixels " << result.Counted << ", shadowed in truth "
+  const CameraCase& camera = result.Drawn.Camera;
+  const LightCase& light = result.Drawn.Light;
+  out << Describe(result.Drawn) << "\n\ncamera: position " << Coordinates(camera.Position)
+      << ", focal point " << Coordinates(camera.FocalPoint) << ", view up "
+      << Coordinates(camera.ViewUp) << ", clipping range [" << camera.Near << ", " << camera.Far
+      << "]\nlight (" << (light.CameraLight ? "camera" : "scene") << " light): position "
+      << Coordinates(light.Position) << ", focal point " << Coordinates(light.FocalPoint)
+      << ", cone angle " << light.ConeAngle << "\n\ncounted pixels " << result.Counted << ", shadowed in truth "
       << result.TruthShadowed << "\n\n| technique | misclassified % | false shadow % | leak % | "
       << "flags |\n|---|---:|---:|---:|---|\n";
   for (const TechniqueResult& t : result.Techniques)
@@ -812,6 +841,12 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
     for (std::size_t i : indices)
     {
       const Case drawn = DrawCase(seeds[i], view.Bounds, options.BaseWidth, options.BaseHeight);
+      if (options.Replay)
+      {
+        out << "scene bounds: x [" << view.Bounds[0] << ", " << view.Bounds[1] << "], y ["
+            << view.Bounds[2] << ", " << view.Bounds[3] << "], z [" << view.Bounds[4] << ", "
+            << view.Bounds[5] << "]\n";
+      }
       results[i] = MeasureCase(view, drawn, options);
       log << "case " << ++done << "/" << seeds.size() << " " << Describe(drawn) << std::endl;
     }

@@ -148,8 +148,10 @@ std::vector<Distribution> Summarise(const std::vector<CaseResult>& results, int 
  * Runs the sweep (or the replay of Options::ReplaySeed): prints a markdown
  * report on `out` (distributions, worst cases with their seeds, flagged cases)
  * and writes results.md and results.csv to the output directory, and for a
- * replay the frames and error maps (<seed>-<technique>-errors.png: leaks red,
- * false shadows blue). Progress goes to `log`. The results are also returned
+ * replay the frames (<seed>-<technique>.png, measured with white diffuse
+ * materials; <seed>-none.png without shadows), error maps
+ * (<seed>-<technique>-errors.png: leaks red, false shadows blue) and this
+ * project's maps (<seed>-<technique>-maps.png, the SHADOW_MAP analysis view). Progress goes to `log`. The results are also returned
  * through `results` when given. Returns false with a one-line `error` on bad
  * options or failure to build a scene.
  */

@@ -750,7 +750,7 @@ TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
     const LightView fit = FitSpotWith(warp, cameraView, cameraProjection, scene, spot, axis, 30.0, 1024);
     ASSERT_TRUE(shadowmaps::IsFinite(fit.ViewProjection()));
     EXPECT_TRUE(fit.TexelSizeFromGradient);
-    EXPECT_EQ(fit.LinearDepth, warp == SpotWarp::TSM) << Name(warp);
+    EXPECT_EQ(fit.LinearDepth, warp != SpotWarp::PSM) << Name(warp);
     const glm::dmat4 m = fit.ViewProjection();
     for (const glm::dvec3& ground : { glm::dvec3(-1.4, 0.5, 0.0), glm::dvec3(2.0, 4.0, 0.0),
            glm::dvec3(-3.0, -5.0, 0.0) })
@@ -776,33 +776,36 @@ TEST(ShadowMapWarping, SpotWarpKeepsLightRaysAndDepthOrder)
   }
 }
 
-// A spot's TSM stores the spot's own depth, not warped by the trapezoid: points at
-// one depth of the cone map store one depth, and stored depth is affine in the
-// cone map's.
-TEST(ShadowMapWarping, SpotTSMStoresTheConeMapsDepth)
+// A spot's TSM, LiSPSM and GMNPR maps store the spot's own depth, not warped
+// by the trapezoid or the light-space perspective: points at one depth of the
+// cone map store one depth, and stored depth is affine in the cone map's. (Stored
+// as rasterized, a warp crowds the depths far from the light into a sliver.)
+TEST(ShadowMapWarping, SpotWarpsStoreTheConeMapsDepth)
 {
   const SpotOverGround set;
   const auto& [cameraView, cameraProjection, scene, spot, axis] = set;
-  const LightView tsm =
-    shadowmaps::FitSpotTrapezoid(cameraView, cameraProjection, scene, spot, axis, 30.0, 1024);
-  ASSERT_TRUE(tsm.LinearDepth);
   const glm::dmat4 cone =
     shadowmaps::FitSpot(cameraProjection * cameraView, scene, spot, axis, 30.0, 1024).ViewProjection();
-  const glm::dvec3 inverseW = shadowmaps::NdcToInverseW(tsm);
-  // The stored depth (before the 0.5 z + 0.5 of the texture) of a cone-map point.
-  auto stored = [&](const glm::dvec3& conePoint) {
-    const glm::dvec4 world = glm::inverse(cone) * glm::dvec4(conePoint, 1.0);
-    const glm::dvec4 clip = tsm.ViewProjection() * world;
-    const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
-    return clip.z / clip.w / glm::dot(inverseW, glm::dvec3(ndc, 1.0));
-  };
-  const double a = stored({ -0.5, -0.3, 0.2 });
-  EXPECT_NEAR(stored({ 0.6, 0.4, 0.2 }), a, 1e-9);
-  EXPECT_NEAR(stored({ 0.1, -0.7, 0.2 }), a, 1e-9);
-  const double b = stored({ 0.1, 0.2, 0.6 });
-  const double c = stored({ -0.4, 0.5, 0.8 });
-  EXPECT_GT(std::abs(b - a), 1e-3);
-  EXPECT_NEAR((c - a) / (0.8 - 0.2), (b - a) / (0.6 - 0.2), 1e-9);
+  for (SpotWarp warp : { SpotWarp::TSM, SpotWarp::LiSPSM, SpotWarp::GMNPR })
+  {
+    const LightView fit = FitSpotWith(warp, cameraView, cameraProjection, scene, spot, axis, 30.0, 1024);
+    ASSERT_TRUE(fit.LinearDepth) << Name(warp);
+    const glm::dvec3 inverseW = shadowmaps::NdcToInverseW(fit);
+    // The stored depth (before the 0.5 z + 0.5 of the texture) of a cone-map point.
+    auto stored = [&](const glm::dvec3& conePoint) {
+      const glm::dvec4 world = glm::inverse(cone) * glm::dvec4(conePoint, 1.0);
+      const glm::dvec4 clip = fit.ViewProjection() * world;
+      const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+      return clip.z / clip.w / glm::dot(inverseW, glm::dvec3(ndc, 1.0));
+    };
+    const double a = stored({ -0.5, -0.3, 0.2 });
+    EXPECT_NEAR(stored({ 0.6, 0.4, 0.2 }), a, 1e-9) << Name(warp);
+    EXPECT_NEAR(stored({ 0.1, -0.7, 0.2 }), a, 1e-9) << Name(warp);
+    const double b = stored({ 0.1, 0.2, 0.6 });
+    const double c = stored({ -0.4, 0.5, 0.8 });
+    EXPECT_GT(std::abs(b - a), 1e-3) << Name(warp);
+    EXPECT_NEAR((c - a) / (0.8 - 0.2), (b - a) / (0.6 - 0.2), 1e-9) << Name(warp);
+  }
 }
 
 // Degenerate spot set-ups give finite matrices: camera looking along the spot's
