@@ -468,10 +468,54 @@ glm::dvec3 AxisPointOfLight(const PerspectiveLight& light, const std::vector<glm
   return position + axis * distance;
 }
 
+// Where a ray from p (inside the box) along v leaves the box; p when v is zero.
+glm::dvec3 ExitFromBox(const Aabb& box, const glm::dvec3& p, const glm::dvec3& v, double limit)
+{
+  double t = limit;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (v[axis] > 0.0)
+    {
+      t = std::min(t, (box.Max[axis] - p[axis]) / v[axis]);
+    }
+    else if (v[axis] < 0.0)
+    {
+      t = std::min(t, (box.Min[axis] - p[axis]) / v[axis]);
+    }
+  }
+  return p + v * std::max(t, 0.0);
+}
+
+// The slide-back that puts every caster able to shadow B in front of the
+// virtual camera. Those casters lie on the segments from B toward the light,
+// inside the scene; the GPU clips whatever has w <= 0 in post-perspective space,
+// so a caster behind the viewer (a light behind the viewer, a building over a
+// street-level camera's shoulder) would vanish from the map and its shadow with
+// it. Stamminger and Drettakis, and Kozlov (001, the virtual slide-back), move
+// the virtual camera back until such casters are in front of it.
+double SlideBackHoldingCasters(const glm::dmat4& cameraView, const std::vector<glm::dvec3>& body,
+  const Aabb& scene, const glm::dvec4& towardLight)
+{
+  double nearest = Infinity;
+  for (const auto& p : body)
+  {
+    const glm::dvec3 toward = towardLight.w != 0.0
+      ? glm::dvec3(towardLight) / towardLight.w - p
+      : glm::dvec3(towardLight);
+    const glm::dvec3 end = ExitFromBox(scene, p, toward, towardLight.w != 0.0 ? 1.0 : Infinity);
+    for (const glm::dvec3& q : { p, end })
+    {
+      nearest = std::min(nearest, -(cameraView * glm::dvec4(q, 1.0)).z);
+    }
+  }
+  const double margin = 1e-3 * scene.Diagonal();
+  return std::isfinite(nearest) && nearest < margin ? margin - nearest : 0.0;
+}
+
 // The PSM of either light kind for receivers `body` (see FitPerspective).
 PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
-  const std::vector<glm::dvec3>& body, const PerspectiveLight& light, int resolution,
-  double slideBack, double weight)
+  const std::vector<glm::dvec3>& body, const Aabb& scene, const PerspectiveLight& light,
+  int resolution, double slideBack, double weight)
 {
   PerspectiveMap map;
   map.PostPerspective = cameraProjection * cameraView;
@@ -487,7 +531,8 @@ PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dma
   // by sliding the virtual camera back to (z + slideBack) / w - z, so that the
   // map moves about evenly as the weight grows.
   const double typicalDepth = TypicalDepth(cameraView, cameraProjection, body);
-  const double slide = (typicalDepth + std::max(slideBack, 0.0)) / weight - typicalDepth;
+  const double slide = std::max((typicalDepth + std::max(slideBack, 0.0)) / weight - typicalDepth,
+    SlideBackHoldingCasters(cameraView, body, scene, light.TowardLight));
   // A point light inside the view's reach sees B within its cone in the world,
   // but unscaled post-perspective space can open that cone to nearly a
   // half-space: its fit is made in the fully rescaled space.
@@ -585,7 +630,7 @@ PerspectiveMap FitPerspective(const glm::dmat4& cameraView, const glm::dmat4& ca
   }
   // Unit-cube clipping (Kozlov §14.1.3): the receivers B in post-perspective space.
   PerspectiveMap map = FitPerspectiveToBody(cameraView, cameraProjection,
-    PerspectiveBody(camera, scene), light, resolution, slideBack, weight);
+    PerspectiveBody(camera, scene), scene, light, resolution, slideBack, weight);
   if (map.Kind == PsmLightKind::Uniform)
   {
     map.LightPosition = d;
@@ -616,7 +661,7 @@ PerspectiveMap FitSpotPerspective(const glm::dmat4& cameraView, const glm::dmat4
     return map;
   }
   PerspectiveMap map = FitPerspectiveToBody(
-    cameraView, cameraProjection, body, light, resolution, slideBack, weight);
+    cameraView, cameraProjection, body, scene, light, resolution, slideBack, weight);
   // Texels vary too much across a warped map for the cone's per-distance formula.
   map.Light.TexelSizeFromGradient = map.Kind != PsmLightKind::Uniform;
   return map;

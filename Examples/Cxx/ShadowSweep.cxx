@@ -485,6 +485,36 @@ CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& option
   return result;
 }
 
+/// Measures items (case seeds or cases) one scene at a time, each scene built
+/// once for all of its items; results in the items' order.
+template <typename Item, typename SceneOf, typename Measure>
+bool MeasureInSceneOrder(const std::vector<Item>& items, SceneOf sceneOf, Measure measure,
+  std::vector<CaseResult>& results, std::ostream& log, std::string& error)
+{
+  std::map<std::string, std::vector<std::size_t>> itemsOfScene;
+  for (std::size_t i = 0; i < items.size(); ++i)
+  {
+    itemsOfScene[sceneOf(items[i])].push_back(i);
+  }
+  results.assign(items.size(), CaseResult());
+  std::size_t done = 0;
+  for (const auto& [scene, indices] : itemsOfScene)
+  {
+    SceneView view;
+    if (!BuildSceneView(view, scene, error))
+    {
+      return false;
+    }
+    for (std::size_t i : indices)
+    {
+      results[i] = measure(view, items[i]);
+      log << "case " << ++done << "/" << items.size() << " " << Describe(results[i].Drawn)
+          << std::endl;
+    }
+  }
+  return true;
+}
+
 // --- reporting -------------------------------------------------------------------------
 
 std::string Number(double value, int digits = 2)
@@ -804,6 +834,20 @@ std::vector<Distribution> Summarise(const std::vector<CaseResult>& results, int 
 }
 
 //------------------------------------------------------------------------------
+bool MeasureCases(const std::vector<Case>& cases, const Options& options,
+  std::vector<CaseResult>& results, std::ostream& log, std::string& error)
+{
+  if (!ValidateOptions(options, error))
+  {
+    return false;
+  }
+  return MeasureInSceneOrder(
+    cases, [](const Case& drawn) { return drawn.Scene; },
+    [&](SceneView& view, const Case& drawn) { return MeasureCase(view, drawn, options); }, results,
+    log, error);
+}
+
+//------------------------------------------------------------------------------
 bool Run(const Options& options, std::ostream& out, std::ostream& log, std::string& error,
   std::vector<CaseResult>* resultsOut)
 {
@@ -823,33 +867,23 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
       seeds.push_back(CaseSeed(options.Seed, i));
     }
   }
-  // One scene at a time, built once for all of its cases.
-  std::map<std::string, std::vector<std::size_t>> casesOfScene;
-  for (std::size_t i = 0; i < seeds.size(); ++i)
-  {
-    casesOfScene[SceneOfCase(seeds[i])].push_back(i);
-  }
-  std::vector<CaseResult> results(seeds.size());
-  std::size_t done = 0;
-  for (const auto& [scene, indices] : casesOfScene)
-  {
-    SceneView view;
-    if (!BuildSceneView(view, scene, error))
-    {
-      return false;
-    }
-    for (std::size_t i : indices)
-    {
-      const Case drawn = DrawCase(seeds[i], view.Bounds, options.BaseWidth, options.BaseHeight);
+  std::vector<CaseResult> results;
+  const bool measured = MeasureInSceneOrder(
+    seeds, [](std::uint64_t seed) { return SceneOfCase(seed); },
+    [&](SceneView& view, std::uint64_t seed) {
+      const Case drawn = DrawCase(seed, view.Bounds, options.BaseWidth, options.BaseHeight);
       if (options.Replay)
       {
         out << "scene bounds: x [" << view.Bounds[0] << ", " << view.Bounds[1] << "], y ["
             << view.Bounds[2] << ", " << view.Bounds[3] << "], z [" << view.Bounds[4] << ", "
             << view.Bounds[5] << "]\n";
       }
-      results[i] = MeasureCase(view, drawn, options);
-      log << "case " << ++done << "/" << seeds.size() << " " << Describe(drawn) << std::endl;
-    }
+      return MeasureCase(view, drawn, options);
+    },
+    results, log, error);
+  if (!measured)
+  {
+    return false;
   }
 
   std::ostringstream report;

@@ -145,6 +145,15 @@ struct Distribution
 std::vector<Distribution> Summarise(const std::vector<CaseResult>& results, int minimumCounted);
 
 /**
+ * Measures given cases (a regression test builds its case by hand) with
+ * options' techniques, resolution and, with Replay on, images in its output
+ * directory. False with a one-line `error` on bad options or a scene that
+ * cannot be built.
+ */
+bool MeasureCases(const std::vector<Case>& cases, const Options& options,
+  std::vector<CaseResult>& results, std::ostream& log, std::string& error);
+
+/**
  * Runs the sweep (or the replay of Options::ReplaySeed): prints a markdown
  * report on `out` (distributions, worst cases with their seeds, flagged cases)
  * and writes results.md and results.csv to the output directory, and for a

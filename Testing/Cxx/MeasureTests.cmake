@@ -27,6 +27,15 @@ add_executable(TestShadowMetrics Cxx/TestShadowMetrics.cxx)
 target_link_libraries(TestShadowMetrics PRIVATE ShadowMetrics GTest::gtest_main)
 gtest_discover_tests(TestShadowMetrics)
 
+# The robustness sweep: its draws, its regression cases and a fixed-seed sweep.
+add_executable(TestShadowSweep Cxx/TestShadowSweep.cxx)
+target_link_libraries(TestShadowSweep PRIVATE ShadowBench glm::glm GTest::gtest_main)
+target_compile_definitions(TestShadowSweep PRIVATE
+  SHADOWMAPS_TEST_OUTPUT_DIR="${CMAKE_CURRENT_BINARY_DIR}/Output")
+vtk_module_autoinit(TARGETS TestShadowSweep MODULES ${shadowbench_vtk_modules}
+  ${shadowscenes_vtk_modules} ${shadowtechniques_vtk_modules} ShadowMaps::RenderingShadowMaps)
+gtest_discover_tests(TestShadowSweep DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 900)
+
 if (TARGET vtkshadows)
   add_test(NAME CLI.BenchAndAnalyze
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_bench.py"
