@@ -408,8 +408,14 @@ bool FitPointInSpace(const PerspectiveSpace& space, const glm::dvec3& eye, bool 
   }
   else
   {
-    // Casters lie between the light and B: near toward the light.
-    const double zNear = 1e-3 * window.Near;
+    // Casters lie between the light and B, but the near plane stays close to B:
+    // the pass renders casters with depth clamping, so those nearer the light
+    // land on the near plane and still occlude everything behind it, while depth
+    // keeps its precision where the receivers are. A near plane toward the light
+    // (a thousandth of B's distance) left float depth too coarse to tell a
+    // receiver from the surface it lies on: a spot ahead of a street-level
+    // camera had acne over most of the street.
+    const double zNear = 0.5 * window.Near;
     fit.Projection =
       glm::frustum(lo.x * zNear, hi.x * zNear, lo.y * zNear, hi.y * zNear, zNear, window.Far * 1.001);
   }

@@ -713,6 +713,11 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   state->vtkglDepthFunc(GL_LEQUAL);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
+  // Casters nearer the light than a view's near plane are clamped onto it rather
+  // than clipped ("pancaking"): they still occlude all that lies behind them, so
+  // a fit may put its near plane where depth precision is needed.
+  const GLboolean depthClampWasOn = glIsEnabled(GL_DEPTH_CLAMP);
+  glEnable(GL_DEPTH_CLAMP);
   const bool minimumBlending =
     r.Storage.Format == shadowmaps::TexelFormat::TwoFloats && r.Storage.MinimumBlending;
   if (minimumBlending)
@@ -747,6 +752,10 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 
   renderer->SetActiveCamera(userCamera);
   glPolygonOffset(0.0f, 0.0f);
+  if (!depthClampWasOn)
+  {
+    glDisable(GL_DEPTH_CLAMP);
+  }
   if (minimumBlending)
   {
     state->vtkglBlendEquation(GL_FUNC_ADD);
