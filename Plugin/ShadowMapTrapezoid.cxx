@@ -253,7 +253,12 @@ TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction
   // delta' is its distance from the top edge along the centre line, kept
   // inside the trapezoid.
   const glm::dvec2 focusInLight = glm::dvec2(ProjectPoint(map.LightView, frame.Focus));
-  const double deltaRaw = glm::dot(focusInLight, axial) - sTop;
+  // Where the near-plane centre lies before the hull's top (the camera's axis
+  // passing beside B), delta is still measured from the top: measured from the
+  // near-plane centre it could vanish, and eta with it, warping B onto a sliver.
+  const double focusSpan = glm::dot(focusInLight - nearInLight, axial);
+  const double deltaRaw = std::max(glm::dot(focusInLight, axial) - sTop,
+    glm::dot(nearInLight, axial) < sTop ? focusSpan : -Infinity);
   const double delta = std::min(std::max(deltaRaw, 1e-3 * lambda), lambda);
   map.FocusPoint = focusInLight + axial * (delta - deltaRaw);
 

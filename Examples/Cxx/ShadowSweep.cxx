@@ -471,6 +471,9 @@ CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& option
   view.Window->Render();
   const auto plain = shadowbench::CaptureRGB(view.Window);
   const auto truth = TruthOfFrame(view, drawn.Width, drawn.Height);
+  vtkLight* light = shadowbench::FirstLight(view.Renderer);
+  light->GetTransformedPosition(&result.LightWorldPosition.x);
+  light->GetTransformedFocalPoint(&result.LightWorldFocalPoint.x);
   result.Counted = std::count_if(
     truth.begin(), truth.end(), [](Truth t) { return t != Truth::Ignored; });
   result.TruthShadowed = std::count(truth.begin(), truth.end(), Truth::Shadowed);
@@ -637,7 +640,9 @@ void PrintReplay(const CaseResult& result, std::ostream& out)
       << Coordinates(camera.ViewUp) << ", clipping range [" << camera.Near << ", " << camera.Far
       << "]\nlight (" << (light.CameraLight ? "camera" : "scene") << " light): position "
       << Coordinates(light.Position) << ", focal point " << Coordinates(light.FocalPoint)
-      << ", cone angle " << light.ConeAngle << "\n\ncounted pixels " << result.Counted << ", shadowed in truth "
+      << ", cone angle " << light.ConeAngle << "; in the world: position "
+      << Coordinates(result.LightWorldPosition) << ", focal point "
+      << Coordinates(result.LightWorldFocalPoint) << "\n\ncounted pixels " << result.Counted << ", shadowed in truth "
       << result.TruthShadowed << "\n\n| technique | misclassified % | false shadow % | leak % | "
       << "flags |\n|---|---:|---:|---:|---|\n";
   for (const TechniqueResult& t : result.Techniques)

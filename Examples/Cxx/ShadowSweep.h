@@ -122,6 +122,9 @@ struct TechniqueResult
 struct CaseResult
 {
   Case Drawn;
+  /// The light in world coordinates as rendered (camera lights too).
+  glm::dvec3 LightWorldPosition{ 0.0 };
+  glm::dvec3 LightWorldFocalPoint{ 0.0 };
   std::int64_t Counted = 0;
   std::int64_t TruthShadowed = 0;
   std::vector<TechniqueResult> Techniques;

@@ -253,4 +253,34 @@ TEST(ShadowSweepDefects, PSMSpotAheadOfAStreetLevelCameraHasNoAcne)
   }
 }
 
+// Sweep seed 11504923083347240446: a parallel camera high over the outdoor
+// scene with a camera spot light. The camera's axis crossed the spot's space
+// beside B, so TSM measured its focus distance from a near-plane centre before
+// the hull's top; delta was clamped to almost nothing and the trapezoid warped B
+// onto a sliver of the map: no shadow at all (33.92% misclassified against the
+// uniform map's 3.65).
+TEST(ShadowSweepDefects, TSMOfAParallelCameraKeepsItsShadow)
+{
+  Case drawn;
+  drawn.Scene = "outdoor";
+  drawn.Camera.Position = { -91.8934423, -213.582565, 187.322814 };
+  drawn.Camera.FocalPoint = { -193.839745, 30.1996377, 11.2924842 };
+  drawn.Camera.Parallel = true;
+  drawn.Camera.ParallelScale = 28.9;
+  drawn.Camera.Near = 0.0380267;
+  drawn.Camera.Far = 645.054;
+  drawn.Width = 139;
+  drawn.Height = 152;
+  drawn.Light.Kind = LightKind::Spot;
+  drawn.Light.CameraLight = true;
+  drawn.Light.Position = { 0.810233793, -0.492660125, 1.03350414 };
+  drawn.Light.FocalPoint = { 0.196506443, 0.128543125, 0.0 };
+  drawn.Light.ConeAngle = 59.6994;
+  const CaseResult result = MeasureOne(drawn, { "uniform", "tsm" });
+  ASSERT_GT(result.TruthShadowed, 1000);
+  ExpectNoFlags(result);
+  const double uniform = Misclassified(result, "uniform");
+  EXPECT_LT(Misclassified(result, "tsm"), 2.0 * uniform + 1.0); // 6.66 against 3.65
+}
+
 } // namespace
