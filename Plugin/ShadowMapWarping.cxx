@@ -225,6 +225,32 @@ double WarpFade(double gammaRadians, const WarpOptions& options)
   return t * t * (3.0 - 2.0 * t);
 }
 
+namespace
+{
+// A warped fit stores depth linear in light space, as TSM does (thesis 000:
+// multiply z back by w): the projection's depth row becomes the light-space
+// depth from `nearDepth` to `farDepth` mapped to [-1, 1], independent of the
+// warp's w, which is at least 1 over B and its casters (the warp's apex lies
+// behind B's near side) and does not depend on depth. Rasterized depth is then
+// that depth over w, inside the clip volume and ordered along every light ray,
+// and casters and receivers recover the linear depth from the map position.
+// Stored as rasterized, the warp's own depth crowds the far part of B into a
+// sliver of the range, where a slope-scaled offset taken on it (the warp makes
+// a large caster's window-space slope steep) pushed casters behind receivers.
+void StoreLinearDepth(LightView& fit, double nearDepth, double farDepth)
+{
+  const double range = std::max(farDepth - nearDepth, std::abs(farDepth) * 1e-9 + 1e-300);
+  const double lower = nearDepth - 1e-3 * range;
+  const double upper = farDepth + 1e-3 * range;
+  // Light-view z is minus the depth: z_clip = (2 (-z) - (lower + upper)) / (upper - lower).
+  fit.Projection[0][2] = 0.0;
+  fit.Projection[1][2] = 0.0;
+  fit.Projection[2][2] = -2.0 / (upper - lower);
+  fit.Projection[3][2] = -(lower + upper) / (upper - lower);
+  fit.LinearDepth = true;
+}
+} // namespace
+
 bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp,
   const WarpOptions& options, LightView& fit)
 {
@@ -356,6 +382,10 @@ bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp
   fit.View = lightView;
   fit.Projection = BoxToClip(mapLo - margin, mapLo + extent + margin) * toMap;
   fit.Perspective = warped;
+  if (warped)
+  {
+    StoreLinearDepth(fit, casterNear, bodyFar);
+  }
   if (!IsFinite(fit.Projection) || !IsFiniteVector(mapLo) || !IsFiniteVector(mapHi))
   {
     return false;
@@ -529,11 +559,8 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
   fit.View = fit.View * toLightSpace;
   fit.Perspective = true;
   fit.TexelSizeFromGradient = true;
-  // The warp divides the spot's post-perspective depth, already hyperbolic in
-  // the distance to the light, by its own w: stored as rasterized, depths far
-  // from the light crowd into a sliver of the range that the receivers' float
-  // transform cannot resolve. The warp's w does not depend on depth, so the
-  // spot's own depth is stored instead, as for the spot's TSM.
+  // The stored depth is affine in the spot's post-perspective depth, as for the
+  // spot's TSM (the warp's W is a plane over the map there too).
   fit.LinearDepth = true;
   fit.TexelConstant = 0.0;
   fit.TexelPerUnitDistance = cone.TexelPerUnitDistance;

@@ -209,8 +209,8 @@ void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
     return;
   }
   light.MayWarp = this->FitMode == TIGHT && this->CascadeWarp != NO_WARP;
-  // A warped spot map stores the spot's own depth (FitSpotWarped).
-  light.MayStoreLinearDepth = light.MayWarp && light.Kind == shadowmaps::LightKind::Spot;
+  // Warped maps store linear depth (FitWarpedFrame, FitSpotWarped).
+  light.MayStoreLinearDepth = light.MayWarp;
   double fade[2];
   const std::vector<double> splits = this->ComputeSplits(in, fade);
   this->LastSplits = splits;

@@ -136,7 +136,8 @@ void vtkWarpedShadowMapPass::ComputeLightViews(Internals& internals, int lightIn
   const bool spotWarp = light.Kind == shadowmaps::LightKind::Spot && !light.Cube;
   const bool warped = light.Kind == shadowmaps::LightKind::Directional || spotWarp;
   light.MayWarp = warped && this->WarpMode != UNIFORM;
-  light.MayStoreLinearDepth = (warped && this->WarpMode == TSM) || (spotWarp && light.MayWarp);
+  // Every warp but PSM stores linear depth (PSM's w depends on depth).
+  light.MayStoreLinearDepth = light.MayWarp && this->WarpMode != PSM;
   if (!light.MayWarp)
   {
     this->FitLightViewsUniform(internals, lightIndex);

@@ -41,4 +41,8 @@ if (TARGET vtkshadows)
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_bench.py"
             "$<TARGET_FILE:vtkshadows>" "${CMAKE_CURRENT_BINARY_DIR}/Output")
   set_tests_properties(CLI.BenchAndAnalyze PROPERTIES TIMEOUT 900)
+  add_test(NAME CLI.Sweep
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_sweep.py"
+            "$<TARGET_FILE:vtkshadows>" "${CMAKE_CURRENT_BINARY_DIR}/Output")
+  set_tests_properties(CLI.Sweep PROPERTIES TIMEOUT 900)
 endif ()

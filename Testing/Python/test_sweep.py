@@ -1,0 +1,91 @@
+"""vtkshadows sweep, end to end on a few small cases.
+
+usage: test_sweep.py VTKSHADOWS OUTPUT_DIR
+
+Checks that a sweep writes one row per case and technique, that its report
+names the worst cases by seed, that replaying a seed renders that very case
+(the same figures, with frames, error maps and maps) and that bad options
+are refused with one error line and exit status 2.
+"""
+import csv
+import os
+import subprocess
+import sys
+
+SMALL = ["--size", "96x72", "--resolution", "512"]
+TECHNIQUES = ["uniform", "lispsm", "csm"]
+
+
+def run(program, *arguments):
+    return subprocess.run([program, *arguments], capture_output=True, text=True, timeout=600)
+
+
+def check(condition, message):
+    if not condition:
+        print("FAIL:", message)
+        sys.exit(1)
+
+
+def read_rows(path):
+    with open(path, newline="") as stream:
+        return list(csv.DictReader(stream))
+
+
+def test_sweep_and_replay(program, output):
+    directory = os.path.join(output, "sweep")
+    result = run(program, "sweep", "--cases", "6", "--seed", "4", "--techniques",
+                 ",".join(TECHNIQUES), "--min-counted", "0", "--out", directory, *SMALL)
+    check(result.returncode == 0, "sweep failed: " + result.stderr[-2000:])
+    rows = read_rows(os.path.join(directory, "results.csv"))
+    check(len(rows) == 6 * len(TECHNIQUES), "one row per case and technique, got %d" % len(rows))
+    for technique in TECHNIQUES:
+        check(("| " + technique + " | 6 |") in result.stdout, technique + " summarised over 6 cases")
+    for row in rows:
+        check(0.0 <= float(row["misclassified"]) <= 100.0, "misclassified is a percentage")
+        check(row["gl_errors"] == "0" and row["nonfinite_views"] == "0", "no GL error, finite views")
+    seeds = sorted({row["seed"] for row in rows})
+    check(len(seeds) == 6, "six different case seeds")
+
+    # The case with the most counted pixels, replayed alone, gives the same figures.
+    seed = max(seeds, key=lambda s: int(next(r["counted"] for r in rows if r["seed"] == s)))
+    replay_dir = os.path.join(output, "replay")
+    result = run(program, "sweep", "--replay", seed, "--techniques", ",".join(TECHNIQUES),
+                 "--out", replay_dir, *SMALL)
+    check(result.returncode == 0, "replay failed: " + result.stderr[-2000:])
+    check(("seed " + seed) in result.stdout, "replay describes the case")
+    replayed = {row["technique"]: row for row in read_rows(os.path.join(replay_dir, "results.csv"))}
+    for row in rows:
+        if row["seed"] == seed:
+            check(replayed[row["technique"]]["misclassified"] == row["misclassified"],
+                  "replay of %s reproduces %s" % (seed, row["technique"]))
+    for name in ["none"] + TECHNIQUES + [t + "-errors" for t in TECHNIQUES] + [t + "-maps" for t in TECHNIQUES]:
+        path = os.path.join(replay_dir, "%s-%s.png" % (seed, name))
+        check(os.path.isfile(path) and os.path.getsize(path) > 0, path + " written")
+
+
+def test_errors(program):
+    for arguments, expected in [
+        (["sweep", "--cases", "0"], "cases"),
+        (["sweep", "--seed", "-1"], "seed"),
+        (["sweep", "--replay", "abc"], "replay seed"),
+        (["sweep", "--techniques", "none"], "no shadows"),
+        (["sweep", "--techniques", "magic"], "unknown technique"),
+        (["sweep", "--bogus", "1"], "unknown option"),
+    ]:
+        result = run(program, *arguments)
+        lines = [line for line in result.stderr.splitlines() if line.strip()]
+        check(result.returncode == 2, "%s: exit 2, got %d" % (arguments, result.returncode))
+        check(len(lines) == 1 and expected in lines[0] and lines[0].startswith("vtkshadows: error:"),
+              "%s: message %r" % (arguments, result.stderr))
+
+
+def main():
+    program, output = sys.argv[1], sys.argv[2]
+    os.makedirs(output, exist_ok=True)
+    test_errors(program)
+    test_sweep_and_replay(program, output)
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
