@@ -97,10 +97,14 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
       projection * in.CameraView, in.SceneBounds, direction, delta, this->TSMFocusFraction);
     return shadowmaps::TrapezoidLightView(map, in.Resolution);
   }
+  // LiSPSM's n_opt = z_n + sqrt(z_f z_n) (and GMNPR's lambda) take z_n as the
+  // near distance of the frustum focused on what is visible: with a camera's
+  // near plane a hair in front of it the warp spends the map on empty air.
+  const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
   const shadowmaps::WarpOptions options = this->LightSpaceWarpOptions();
   const auto warp = this->WarpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR
                                             : shadowmaps::DirectionalWarp::LiSPSM;
-  return shadowmaps::FitDirectionalWarped(in.CameraView, in.CameraProjection, in.SceneBounds,
+  return shadowmaps::FitDirectionalWarped(in.CameraView, projection, in.SceneBounds,
     direction, in.Resolution, warp, options);
 }
 
