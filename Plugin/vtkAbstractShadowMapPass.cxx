@@ -35,6 +35,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -604,7 +605,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ApplyDepthBias(const LightView& view)
+void vtkAbstractShadowMapPass::ApplyDepthBias(const ShadowLight& light, const LightView& view)
 {
   // 32-bit depth (linear-depth views are never 16-bit): one polygon-offset unit
   // is 2^-24 for depths in [0.5, 1).
@@ -613,13 +614,21 @@ void vtkAbstractShadowMapPass::ApplyDepthBias(const LightView& view)
   const auto constant = static_cast<float>(this->ConstantBias);
   if (view.LinearDepth)
   {
+    // A directional light's linear depth spans its casters and B: its
+    // slope-scaled term is capped at what a 45 degree surface needs in a
+    // uniform map as deep as it is wide (SlopeScaledBias texels' worth, 2 /
+    // resolution at the default). A spot's stored depth is its post-perspective
+    // depth, crowded toward 1: no such cap.
+    const float cap = light.Kind == LightKind::Directional
+      ? slope * 1.0f / static_cast<float>(std::max(this->Internal->Resolution, 1))
+      : std::numeric_limits<float>::max();
     glPolygonOffset(0.0f, 0.0f);
-    this->Resource->CasterPass->SetLinearDepthBias({ { slope, constant * DepthUnit } });
+    this->Resource->CasterPass->SetLinearDepthBias({ { slope, constant * DepthUnit, cap } });
   }
   else
   {
     glPolygonOffset(slope, constant);
-    this->Resource->CasterPass->SetLinearDepthBias({ { 0.0f, 0.0f } });
+    this->Resource->CasterPass->SetLinearDepthBias({ { 0.0f, 0.0f, 0.0f } });
   }
 }
 
@@ -745,6 +754,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
       ok = r.Maps.BindLayer(state, light.FirstLayer + static_cast<int>(v), r.LastGLError);
       if (ok)
       {
+        this->ApplyDepthBias(light, light.Views[v]);
         this->RenderCastersIntoView(renderer, light.Views[v]);
       }
     }
@@ -803,7 +813,6 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
 
   SetCameraToView(r.LightCamera, r.LightProjection, view);
   r.CasterPass->SetWindowToInverseW(WindowToInverseW(view, in.Resolution));
-  this->ApplyDepthBias(view);
 
   const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
   std::vector<vtkProp*> visible;

@@ -65,6 +65,7 @@ class vtkRenderPass;
 namespace shadowmaps
 {
 struct LightView;
+struct ShadowLight;
 struct MapStorage;
 class TextureArray;
 }
@@ -334,7 +335,7 @@ private:
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view);
-  void ApplyDepthBias(const shadowmaps::LightView& view);
+  void ApplyDepthBias(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer);
   void StoreReceiverUniforms();
   void UpdateReceiverShaderKey(const vtkRenderState* s);

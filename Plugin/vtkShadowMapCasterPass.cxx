@@ -127,7 +127,7 @@ bool vtkShadowMapCasterPass::SetShaderParameters(
   if (this->LinearDepth && program->IsUniformUsed("vtkShadowWindowToInverseW"))
   {
     program->SetUniform3f("vtkShadowWindowToInverseW", this->WindowToInverseW.data());
-    program->SetUniform2f("vtkShadowLinearDepthBias", this->LinearDepthBias.data());
+    program->SetUniform3f("vtkShadowLinearDepthBias", this->LinearDepthBias.data());
   }
   return true;
 }

@@ -56,11 +56,12 @@ public:
   void SetWindowToInverseW(const std::array<float, 3>& row) { this->WindowToInverseW = row; }
 
   /**
-   * With LinearDepth on: the slope-scaled factor and constant offset (depth
-   * units) added to the depth a linear-depth view stores, in place of the
-   * rasterizer's polygon offset; {0, 0} for views that keep their depth.
+   * With LinearDepth on: the slope-scaled factor, the constant offset and the
+   * cap of the slope-scaled term (depth units) added to the depth a
+   * linear-depth view stores, in place of the rasterizer's polygon offset;
+   * zeros for views that keep their depth.
    */
-  void SetLinearDepthBias(const std::array<float, 2>& bias) { this->LinearDepthBias = bias; }
+  void SetLinearDepthBias(const std::array<float, 3>& bias) { this->LinearDepthBias = bias; }
 
   ///@{
   /** Add this pass to (remove it from) the render passes of the state's props. */
@@ -91,7 +92,7 @@ protected:
   std::string StoreCode;
   bool LinearDepth = false;
   std::array<float, 3> WindowToInverseW{ { 0.0f, 0.0f, 1.0f } };
-  std::array<float, 2> LinearDepthBias{ { 0.0f, 0.0f } };
+  std::array<float, 3> LinearDepthBias{ { 0.0f, 0.0f, 0.0f } };
   int NumberOfDepthOnlyShaders = 0;
   int NumberOfOwnFragmentShaders = 0;
 
