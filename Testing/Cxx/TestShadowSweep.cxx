@@ -357,16 +357,17 @@ namespace
 // pixels stay within the bounds below, and its worst case within 3 times the
 // uniform map's (the acceptance rule for the long sweep).
 //
-// Where the bounds come from: this very sweep measured at commit 16c1fb7, after
-// the fixes above (61 of the 100 cases have the 300 counted pixels a
-// distribution needs), 95th percentile / worst in %:
-//   uniform 6.84 / 23.63, psm 6.23 / 23.63, lispsm 6.23 / 23.63, tsm 9.44 / 23.63,
-//   gmnpr 6.23 / 23.63, csm 12.50 / 34.18, csm-tight 9.29 / 34.18, csm-lispsm 9.29 / 34.18.
-// The worst case of all is a pole field seen from inside with a point light among
-// the poles (seed 2862276549587705694), where poles thinner than a pixel decide
-// most counted pixels. Each bound is the measured figure with about 25% of room;
-// before the fixes the same sweep would fail them (LiSPSM's and GMNPR's spots
-// lost whole shadows, 92.9% of a case; PSM lost casters behind the camera).
+// Where the bounds come from: this very sweep (seed 2) measured at commit
+// fb9992a, after the fixes above (52 of the 100 cases have the 300 counted
+// pixels a distribution needs), 95th percentile / worst in %:
+//   uniform 7.20 / 17.46, psm 5.92 / 17.46, lispsm 6.56 / 17.46, tsm 7.32 / 17.46,
+//   gmnpr 6.50 / 17.46, csm, csm-tight and csm-lispsm 8.23 / 22.14.
+// The worst case of all, for every technique, is the pole field seen from among
+// the poles (seed 17456342516546928867), where poles thinner than a pixel decide
+// most counted pixels. Each bound is the measured figure with about 25% of room.
+// Before the fixes (commit ce51ee5) the same sweep measured LiSPSM 14.89 / 59.49
+// and GMNPR 14.89 / 65.41 (a sun below the ground, seed 16779381718558883358),
+// over these bounds and over 3 times the uniform map's worst.
 struct SweepBound
 {
   const char* Technique;
@@ -374,21 +375,21 @@ struct SweepBound
   double Worst;
 };
 constexpr SweepBound SweepBounds[] = {
-  { "uniform", 8.5, 29.0 },
-  { "psm", 8.0, 29.0 },
-  { "lispsm", 8.0, 29.0 },
-  { "tsm", 12.0, 29.0 },
-  { "gmnpr", 8.0, 29.0 },
-  { "csm", 15.5, 42.0 },
-  { "csm-tight", 12.0, 42.0 },
-  { "csm-lispsm", 12.0, 42.0 },
+  { "uniform", 9.0, 22.0 },
+  { "psm", 7.5, 22.0 },
+  { "lispsm", 8.5, 22.0 },
+  { "tsm", 9.5, 22.0 },
+  { "gmnpr", 8.5, 22.0 },
+  { "csm", 10.5, 28.0 },
+  { "csm-tight", 10.5, 28.0 },
+  { "csm-lispsm", 10.5, 28.0 },
 };
 
 TEST(ShadowSweep, FixedSeedSweepStaysWithinItsBounds)
 {
   shadowsweep::Options options;
   options.Cases = 100;
-  options.Seed = 2026;
+  options.Seed = 2;
   options.BaseWidth = 160;
   options.BaseHeight = 120;
   options.OutputDirectory = std::string(SHADOWMAPS_TEST_OUTPUT_DIR) + "/sweep";
@@ -411,7 +412,7 @@ TEST(ShadowSweep, FixedSeedSweepStaysWithinItsBounds)
   {
     const auto& d = distributions[i];
     ASSERT_EQ(d.Technique, SweepBounds[i].Technique);
-    EXPECT_GT(d.Cases, 50) << d.Technique;
+    EXPECT_GT(d.Cases, 40) << d.Technique;
     EXPECT_LE(d.Percentile95, SweepBounds[i].Percentile95) << d.Technique;
     EXPECT_LE(d.Worst, SweepBounds[i].Worst) << d.Technique << ", worst seed " << d.WorstSeed;
     EXPECT_LE(d.Worst, 3.0 * d.UniformWorst) << d.Technique << ", worst seed " << d.WorstSeed;
