@@ -46,7 +46,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -386,17 +385,6 @@ bool BuildScene(View& view, const std::string& scene, const Options& options, st
 
 // --- output ------------------------------------------------------------------------
 
-std::string Number(double value, int digits = 2)
-{
-  if (std::isnan(value))
-  {
-    return "n/a";
-  }
-  std::ostringstream text;
-  text << std::fixed << std::setprecision(digits) << value;
-  return text.str();
-}
-
 /// Frame time of `row` divided by that of technique `reference` in the same case.
 double Ratio(const std::vector<Row>& rows, const Row& row, const std::string& reference,
   double Timing::*which)
@@ -422,20 +410,20 @@ void PrintTable(const std::vector<Row>& rows, std::ostream& out)
   {
     out << "| " << row.Scene << " | " << row.Setup << " | " << row.Technique << " | "
         << (row.Resolution > 0 ? std::to_string(row.Resolution) + "²" : "-") << " | "
-        << Number(row.MemoryMiB, 1) << " | " << Number(row.Errors.Misclassified) << " | "
-        << Number(row.Errors.FalseShadow) << " | " << Number(row.Errors.LightLeak) << " | "
-        << Number(row.Errors.InnerMisclassified) << " | "
-        << Number(row.Errors.MeanAbsoluteDifference, 3) << " | " << Number(row.Undersampled)
+        << FormatNumber(row.MemoryMiB, 1) << " | " << FormatNumber(row.Errors.Misclassified) << " | "
+        << FormatNumber(row.Errors.FalseShadow) << " | " << FormatNumber(row.Errors.LightLeak) << " | "
+        << FormatNumber(row.Errors.InnerMisclassified) << " | "
+        << FormatNumber(row.Errors.MeanAbsoluteDifference, 3) << " | " << FormatNumber(row.Undersampled)
         << " | "
-        << (std::isnan(row.Flicker) ? std::string("-") : Number(row.Flicker, 3)) << " | "
+        << (std::isnan(row.Flicker) ? std::string("-") : FormatNumber(row.Flicker, 3)) << " | "
         << (std::isnan(row.Changes)
                ? std::string("-")
-               : Number(row.Changes, 3) + " (" + Number(row.TruthChanges, 3) + ")")
-        << " | " << Number(Ratio(rows, row, "none", &Timing::First)) << " | "
-        << Number(Ratio(rows, row, "none", &Timing::Steady)) << " | "
-        << Number(Ratio(rows, row, "vtk", &Timing::Steady)) << " | "
-        << Number(Ratio(rows, row, "none", &Timing::Moving)) << " | "
-        << Number(Ratio(rows, row, "vtk", &Timing::Moving)) << " |\n";
+               : FormatNumber(row.Changes, 3) + " (" + FormatNumber(row.TruthChanges, 3) + ")")
+        << " | " << FormatNumber(Ratio(rows, row, "none", &Timing::First)) << " | "
+        << FormatNumber(Ratio(rows, row, "none", &Timing::Steady)) << " | "
+        << FormatNumber(Ratio(rows, row, "vtk", &Timing::Steady)) << " | "
+        << FormatNumber(Ratio(rows, row, "none", &Timing::Moving)) << " | "
+        << FormatNumber(Ratio(rows, row, "vtk", &Timing::Moving)) << " |\n";
   }
 }
 
@@ -537,14 +525,7 @@ bool ValidateOptions(const Options& options, std::string& error)
     error = "no scene to measure";
     return false;
   }
-  std::error_code ignored;
-  std::filesystem::create_directories(options.OutputDirectory, ignored);
-  if (!std::filesystem::is_directory(options.OutputDirectory))
-  {
-    error = "cannot create output directory '" + options.OutputDirectory + "'";
-    return false;
-  }
-  return true;
+  return MakeOutputDirectory(options.OutputDirectory, error);
 }
 
 /// Frame times are ratios to "none" and "vtk": measure them even if not asked.

@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -34,6 +33,7 @@ namespace shadowsweep
 namespace
 {
 using shadoworacle::Truth;
+using shadowbench::FormatNumber;
 
 // --- drawing cases ------------------------------------------------------------------
 
@@ -520,17 +520,6 @@ bool MeasureInSceneOrder(const std::vector<Item>& items, SceneOf sceneOf, Measur
 
 // --- reporting -------------------------------------------------------------------------
 
-std::string Number(double value, int digits = 2)
-{
-  if (std::isnan(value))
-  {
-    return "n/a";
-  }
-  std::ostringstream text;
-  text << std::fixed << std::setprecision(digits) << value;
-  return text.str();
-}
-
 const TechniqueResult* Find(const CaseResult& result, const std::string& technique)
 {
   for (const TechniqueResult& t : result.Techniques)
@@ -556,10 +545,10 @@ void PrintDistributions(const std::vector<Distribution>& distributions, std::ost
       << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Distribution& d : distributions)
   {
-    out << "| " << d.Technique << " | " << d.Cases << " | " << Number(d.Median) << " | "
-        << Number(d.Percentile95) << " | " << Number(d.Worst) << " | " << d.WorstSeed << " | "
-        << Number(d.UniformWorst) << " | "
-        << Number(d.UniformWorst > 0.0 ? d.Worst / d.UniformWorst
+    out << "| " << d.Technique << " | " << d.Cases << " | " << FormatNumber(d.Median) << " | "
+        << FormatNumber(d.Percentile95) << " | " << FormatNumber(d.Worst) << " | " << d.WorstSeed << " | "
+        << FormatNumber(d.UniformWorst) << " | "
+        << FormatNumber(d.UniformWorst > 0.0 ? d.Worst / d.UniformWorst
                                        : std::numeric_limits<double>::quiet_NaN())
         << " | " << d.Flagged << " |\n";
   }
@@ -589,8 +578,8 @@ void PrintWorstCases(const std::vector<CaseResult>& results, const Options& opti
     for (std::size_t i = 0; i < shown; ++i)
     {
       out << "| " << options.Techniques[t] << " | " << counted[i]->Drawn.Seed << " | "
-          << Number(counted[i]->Techniques[t].Errors.Misclassified) << " | "
-          << Number(UniformMisclassified(*counted[i])) << " | " << Describe(counted[i]->Drawn)
+          << FormatNumber(counted[i]->Techniques[t].Errors.Misclassified) << " | "
+          << FormatNumber(UniformMisclassified(*counted[i])) << " | " << Describe(counted[i]->Drawn)
           << " |\n";
     }
   }
@@ -647,8 +636,8 @@ void PrintReplay(const CaseResult& result, std::ostream& out)
       << "flags |\n|---|---:|---:|---:|---|\n";
   for (const TechniqueResult& t : result.Techniques)
   {
-    out << "| " << t.Technique << " | " << Number(t.Errors.Misclassified) << " | "
-        << Number(t.Errors.FalseShadow) << " | " << Number(t.Errors.LightLeak) << " | "
+    out << "| " << t.Technique << " | " << FormatNumber(t.Errors.Misclassified) << " | "
+        << FormatNumber(t.Errors.FalseShadow) << " | " << FormatNumber(t.Errors.LightLeak) << " | "
         << t.Flags() << " |\n";
   }
   for (const TechniqueResult& t : result.Techniques)
@@ -699,14 +688,7 @@ bool ValidateOptions(const Options& options, std::string& error)
     error = "no case to draw";
     return false;
   }
-  std::error_code ignored;
-  std::filesystem::create_directories(options.OutputDirectory, ignored);
-  if (!std::filesystem::is_directory(options.OutputDirectory))
-  {
-    error = "cannot create output directory '" + options.OutputDirectory + "'";
-    return false;
-  }
-  return true;
+  return shadowbench::MakeOutputDirectory(options.OutputDirectory, error);
 }
 
 double Percentile(std::vector<double> values, double fraction)

@@ -29,6 +29,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -216,6 +218,19 @@ std::vector<float> CaptureDepth(vtkRenderWindow* window, int width, int height)
 }
 
 //------------------------------------------------------------------------------
+bool MakeOutputDirectory(const std::string& directory, std::string& error)
+{
+  std::error_code ignored;
+  std::filesystem::create_directories(directory, ignored);
+  if (!std::filesystem::is_directory(directory))
+  {
+    error = "cannot create output directory '" + directory + "'";
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool WritePNG(const std::vector<std::uint8_t>& rgb, int width, int height, const std::string& path)
 {
   vtkNew<vtkImageData> image;
@@ -227,6 +242,18 @@ bool WritePNG(const std::vector<std::uint8_t>& rgb, int width, int height, const
   writer->SetInputData(image);
   writer->Write();
   return writer->GetErrorCode() == 0;
+}
+
+//------------------------------------------------------------------------------
+std::string FormatNumber(double value, int digits)
+{
+  if (std::isnan(value))
+  {
+    return "n/a";
+  }
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(digits) << value;
+  return text.str();
 }
 
 //------------------------------------------------------------------------------

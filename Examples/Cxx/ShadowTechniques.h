@@ -55,8 +55,15 @@ std::vector<std::uint8_t> CaptureRGB(vtkRenderWindow* window);
 /// Window depths in [0, 1] of the first width x height pixels.
 std::vector<float> CaptureDepth(vtkRenderWindow* window, int width, int height);
 
+/// Creates `directory` if needed; false with a one-line `error` if it is not
+/// a directory afterwards.
+bool MakeOutputDirectory(const std::string& directory, std::string& error);
+
 /// Writes RGB bytes as a PNG; false if it cannot.
 bool WritePNG(const std::vector<std::uint8_t>& rgb, int width, int height, const std::string& path);
+
+/// value with `digits` decimals; "n/a" for NaN (the tables' number format).
+std::string FormatNumber(double value, int digits = 2);
 
 /// The renderer's first light (nullptr if it has none).
 vtkLight* FirstLight(vtkRenderer* renderer);

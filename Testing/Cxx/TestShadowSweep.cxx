@@ -148,11 +148,12 @@ CaseResult MeasureOne(const Case& drawn, const std::vector<std::string>& techniq
   return results.empty() ? CaseResult() : results.front();
 }
 
-Case CityCase(const glm::dvec3& eye, const glm::dvec3& focal, double viewAngle, double nearPlane,
-  double farPlane, int width, int height)
+/// A perspective case by hand (the sweep prints these figures for a seed).
+Case MakeCase(const std::string& scene, const glm::dvec3& eye, const glm::dvec3& focal,
+  double viewAngle, double nearPlane, double farPlane, int width, int height)
 {
   Case drawn;
-  drawn.Scene = "city";
+  drawn.Scene = scene;
   drawn.Camera.Position = eye;
   drawn.Camera.FocalPoint = focal;
   drawn.Camera.ViewAngle = viewAngle;
@@ -161,6 +162,23 @@ Case CityCase(const glm::dvec3& eye, const glm::dvec3& focal, double viewAngle, 
   drawn.Width = width;
   drawn.Height = height;
   return drawn;
+}
+
+Case CityCase(const glm::dvec3& eye, const glm::dvec3& focal, double viewAngle, double nearPlane,
+  double farPlane, int width, int height)
+{
+  return MakeCase("city", eye, focal, viewAngle, nearPlane, farPlane, width, height);
+}
+
+/// Sets the case's light (camera lights in camera-light coordinates).
+void SetLight(Case& drawn, LightKind kind, const glm::dvec3& position, const glm::dvec3& focal,
+  double coneAngle = 180.0, bool cameraLight = false)
+{
+  drawn.Light.Kind = kind;
+  drawn.Light.Position = position;
+  drawn.Light.FocalPoint = focal;
+  drawn.Light.ConeAngle = coneAngle;
+  drawn.Light.CameraLight = cameraLight;
 }
 
 void ExpectNoFlags(const CaseResult& result)
@@ -193,10 +211,8 @@ TEST(ShadowSweepDefects, WarpedSpotOverTheCityKeepsItsShadows)
 {
   Case drawn = CityCase({ -15.6120837, -88.8140133, 25.8177729 },
     { -6.92328864, -16.4845458, 36.3250963 }, 44.8, 1.96153, 234.275, 273, 151);
-  drawn.Light.Kind = LightKind::Spot;
-  drawn.Light.Position = { -81.9046138, 62.4703818, 25.2727842 };
-  drawn.Light.FocalPoint = { 31.792049, -30.0796561, 3.57617251 };
-  drawn.Light.ConeAngle = 52.8927;
+  SetLight(drawn, LightKind::Spot, { -81.9046138, 62.4703818, 25.2727842 },
+    { 31.792049, -30.0796561, 3.57617251 }, 52.8927);
   const CaseResult result = MeasureOne(drawn, { "uniform", "lispsm", "gmnpr", "tsm", "csm-lispsm" });
   ASSERT_GT(result.TruthShadowed, 5000);
   ExpectNoFlags(result);
@@ -218,9 +234,8 @@ TEST(ShadowSweepDefects, PSMKeepsCastersBehindTheCamera)
 {
   Case drawn = CityCase({ -22.1915206, -1.89835282, 1.5946588 },
     { -22.1915206, -84.0799536, -2.40510733 }, 79.8, 0.00202302, 163.705, 222, 210);
-  drawn.Light.Kind = LightKind::Directional;
-  drawn.Light.Position = { -170.28219, 133.587541, 187.77337 };
-  drawn.Light.FocalPoint = { 0.0, 0.0, 19.314188 };
+  SetLight(drawn, LightKind::Directional, { -170.28219, 133.587541, 187.77337 },
+    { 0.0, 0.0, 19.314188 });
   const CaseResult result = MeasureOne(drawn, { "uniform", "psm" });
   ASSERT_GT(result.TruthShadowed, 20000);
   ExpectNoFlags(result);
@@ -242,10 +257,7 @@ TEST(ShadowSweepDefects, PSMSpotAheadOfAStreetLevelCameraHasNoAcne)
   for (const auto& [ahead, height] : placements)
   {
     Case drawn = CityCase({ x, y, 1.7 }, { x, y + 30.0, 4.0 }, 60.0, 0.1, 300.0, 320, 180);
-    drawn.Light.Kind = LightKind::Spot;
-    drawn.Light.Position = { x, y + ahead, height };
-    drawn.Light.FocalPoint = { x, y + ahead + 10.0, 0.0 };
-    drawn.Light.ConeAngle = 45.0;
+    SetLight(drawn, LightKind::Spot, { x, y + ahead, height }, { x, y + ahead + 10.0, 0.0 }, 45.0);
     const CaseResult result = MeasureOne(drawn, { "uniform", "psm" });
     ASSERT_GT(result.Counted, 300);
     ExpectNoFlags(result);
@@ -262,21 +274,12 @@ TEST(ShadowSweepDefects, PSMSpotAheadOfAStreetLevelCameraHasNoAcne)
 // uniform map's 3.65).
 TEST(ShadowSweepDefects, TSMOfAParallelCameraKeepsItsShadow)
 {
-  Case drawn;
-  drawn.Scene = "outdoor";
-  drawn.Camera.Position = { -91.8934423, -213.582565, 187.322814 };
-  drawn.Camera.FocalPoint = { -193.839745, 30.1996377, 11.2924842 };
+  Case drawn = MakeCase("outdoor", { -91.8934423, -213.582565, 187.322814 },
+    { -193.839745, 30.1996377, 11.2924842 }, 30.0, 0.0380267, 645.054, 139, 152);
   drawn.Camera.Parallel = true;
   drawn.Camera.ParallelScale = 28.9;
-  drawn.Camera.Near = 0.0380267;
-  drawn.Camera.Far = 645.054;
-  drawn.Width = 139;
-  drawn.Height = 152;
-  drawn.Light.Kind = LightKind::Spot;
-  drawn.Light.CameraLight = true;
-  drawn.Light.Position = { 0.810233793, -0.492660125, 1.03350414 };
-  drawn.Light.FocalPoint = { 0.196506443, 0.128543125, 0.0 };
-  drawn.Light.ConeAngle = 59.6994;
+  SetLight(drawn, LightKind::Spot, { 0.810233793, -0.492660125, 1.03350414 },
+    { 0.196506443, 0.128543125, 0.0 }, 59.6994, true);
   const CaseResult result = MeasureOne(drawn, { "uniform", "tsm" });
   ASSERT_GT(result.TruthShadowed, 1000);
   ExpectNoFlags(result);
@@ -292,18 +295,9 @@ TEST(ShadowSweepDefects, TSMOfAParallelCameraKeepsItsShadow)
 // plane rather than the nearest visible prop, spent the map on empty air.
 TEST(ShadowSweepDefects, LightSpaceWarpsOfANearCameraKeepTheirShadows)
 {
-  Case drawn;
-  drawn.Scene = "outdoor";
-  drawn.Camera.Position = { -198.112774, -50.247388, 6.55481869 };
-  drawn.Camera.FocalPoint = { -60.3179959, -129.677882, 7.4158134 };
-  drawn.Camera.ViewAngle = 14.0;
-  drawn.Camera.Near = 0.00777166;
-  drawn.Camera.Far = 502.198;
-  drawn.Width = 118;
-  drawn.Height = 100;
-  drawn.Light.Kind = LightKind::Directional;
-  drawn.Light.Position = { -271.975303, -109.5064, -476.03903 };
-  drawn.Light.FocalPoint = { 0.0, 0.0, 8.0 };
+  Case drawn = MakeCase("outdoor", { -198.112774, -50.247388, 6.55481869 },
+    { -60.3179959, -129.677882, 7.4158134 }, 14.0, 0.00777166, 502.198, 118, 100);
+  SetLight(drawn, LightKind::Directional, { -271.975303, -109.5064, -476.03903 }, { 0.0, 0.0, 8.0 });
   const CaseResult result = MeasureOne(drawn, { "uniform", "lispsm", "gmnpr" });
   ASSERT_GT(result.TruthShadowed, 1000);
   ExpectNoFlags(result);
@@ -322,19 +316,10 @@ TEST(ShadowSweepDefects, LightSpaceWarpsOfANearCameraKeepTheirShadows)
 // views is now capped.
 TEST(ShadowSweepDefects, WarpedMapsCapTheirSlopeScaledBias)
 {
-  Case drawn;
-  drawn.Scene = "outdoor";
-  drawn.Camera.Position = { 79.3192044, 36.069493, 1.31014905 };
-  drawn.Camera.FocalPoint = { 110.129294, -127.392304, 4.48799495 };
-  drawn.Camera.ViewAngle = 78.9;
-  drawn.Camera.Near = 0.0650592;
-  drawn.Camera.Far = 502.138;
-  drawn.Width = 152;
-  drawn.Height = 80;
-  drawn.Light.Kind = LightKind::Directional;
-  drawn.Light.CameraLight = true;
-  drawn.Light.Position = { -0.547604836, -0.554201624, 0.919559925 };
-  drawn.Light.FocalPoint = { -0.0498706733, 0.0744071923, 0.0 };
+  Case drawn = MakeCase("outdoor", { 79.3192044, 36.069493, 1.31014905 },
+    { 110.129294, -127.392304, 4.48799495 }, 78.9, 0.0650592, 502.138, 152, 80);
+  SetLight(drawn, LightKind::Directional, { -0.547604836, -0.554201624, 0.919559925 },
+    { -0.0498706733, 0.0744071923, 0.0 }, 180.0, true);
   const CaseResult result = MeasureOne(drawn, { "uniform", "lispsm", "gmnpr" });
   ASSERT_GT(result.TruthShadowed, 1000);
   ExpectNoFlags(result);
