@@ -474,9 +474,14 @@ glm::dvec3 AxisPointOfLight(const PerspectiveLight& light, const std::vector<glm
   return position + axis * distance;
 }
 
-// Where a ray from p (inside the box) along v leaves the box; p when v is zero.
+// Where a ray from p (inside the box) along v leaves the box, going at most
+// limit times v; p when v is zero.
 glm::dvec3 ExitFromBox(const Aabb& box, const glm::dvec3& p, const glm::dvec3& v, double limit)
 {
+  if (v == glm::dvec3(0.0))
+  {
+    return p;
+  }
   double t = limit;
   for (int axis = 0; axis < 3; ++axis)
   {

@@ -254,13 +254,14 @@ TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction
   // inside the trapezoid.
   const glm::dvec2 focusInLight = glm::dvec2(ProjectPoint(map.LightView, frame.Focus));
   // Where the near-plane centre lies before the hull's top (the camera's axis
-  // passing beside B), delta is still measured from the top: measured from the
-  // near-plane centre it could vanish, and eta with it, warping B onto a sliver.
+  // passing beside B), the focus span, its distance from that centre, is laid
+  // off from the top instead: the focus itself can lie before the top, and delta
+  // measured to it would vanish, eta with it, warping B onto a sliver.
   const double focusSpan = glm::dot(focusInLight - nearInLight, axial);
   const double deltaRaw = std::max(glm::dot(focusInLight, axial) - sTop,
     glm::dot(nearInLight, axial) < sTop ? focusSpan : -Infinity);
   const double delta = std::min(std::max(deltaRaw, 1e-3 * lambda), lambda);
-  map.FocusPoint = focusInLight + axial * (delta - deltaRaw);
+  map.FocusPoint = focusInLight + axial * (sTop + delta - glm::dot(focusInLight, axial));
 
   // Target line of the focus point, NDC Y (top -1, base +1): the paper's
   // 2 * fraction - 1 (0.6 for the 80% line), faded toward the unwarped value

@@ -35,11 +35,11 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <limits>
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -162,16 +162,16 @@ bool IsRigid(const glm::dmat4& m)
   return largest < 1e-9 && m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0;
 }
 
-// Points the VTK camera at a light view. A rigid view becomes the camera's frame
-// and the projection is explicit, so VTK's tiled aspect ratio cannot distort the
-// map. A non-rigid view (PSM: the light camera times the viewer's post-
-// perspective transform) cannot be a camera frame; the camera then sits at the
-// origin looking down -z and the whole transform is its projection.
 bool IsNonFinite(const LightView& view)
 {
   return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
 }
 
+// Points the VTK camera at a light view. A rigid view becomes the camera's frame
+// and the projection is explicit, so VTK's tiled aspect ratio cannot distort the
+// map. A non-rigid view (PSM: the light camera times the viewer's post-
+// perspective transform) cannot be a camera frame; the camera then sits at the
+// origin looking down -z and the whole transform is its projection.
 void SetCameraToView(vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view)
 {
   const bool rigid = IsRigid(view.View);
@@ -420,7 +420,10 @@ bool vtkAbstractShadowMapPass::PrepareShadows(const vtkRenderState*, vtkOpenGLRe
     return false;
   }
   this->CollectPropsAndBounds(renderer);
-  return this->UpdateShadowMaps(renderer);
+  const bool ready = this->UpdateShadowMaps(renderer);
+  // Lights whose views were not finite are gone by now.
+  this->NumberOfShadowedLights = static_cast<int>(this->Internal->Lights.size());
+  return ready;
 }
 
 //------------------------------------------------------------------------------
@@ -570,6 +573,11 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     this->ComputeLightViews(in, i);
   }
   this->DropLightsWithNonFiniteViews();
+  if (in.Lights.empty())
+  {
+    this->NumberOfShadowMapLayers = 0;
+    return false;
+  }
   int layers = 0;
   for (ShadowLight& light : in.Lights)
   {
@@ -620,7 +628,7 @@ void vtkAbstractShadowMapPass::ApplyDepthBias(const ShadowLight& light, const Li
     // resolution at the default). A spot's stored depth is its post-perspective
     // depth, crowded toward 1: no such cap.
     const float cap = light.Kind == LightKind::Directional
-      ? slope * 1.0f / static_cast<float>(std::max(this->Internal->Resolution, 1))
+      ? slope / static_cast<float>(std::max(this->Internal->Resolution, 1))
       : std::numeric_limits<float>::max();
     glPolygonOffset(0.0f, 0.0f);
     this->Resource->CasterPass->SetLinearDepthBias({ { slope, constant * DepthUnit, cap } });
@@ -636,13 +644,16 @@ void vtkAbstractShadowMapPass::ApplyDepthBias(const ShadowLight& light, const Li
 void vtkAbstractShadowMapPass::DropLightsWithNonFiniteViews()
 {
   std::vector<ShadowLight>& lights = this->Internal->Lights;
+  const std::size_t before = lights.size();
   this->NumberOfNonFiniteViews = 0;
-  for (const ShadowLight& light : lights)
-  {
-    this->NumberOfNonFiniteViews += static_cast<int>(
-      std::count_if(light.Views.begin(), light.Views.end(), IsNonFinite));
-  }
-  if (this->NumberOfNonFiniteViews == 0)
+  lights.erase(std::remove_if(lights.begin(), lights.end(),
+                 [this](const ShadowLight& light) {
+                   const auto nonFinite = std::count_if(light.Views.begin(), light.Views.end(), IsNonFinite);
+                   this->NumberOfNonFiniteViews += static_cast<int>(nonFinite);
+                   return nonFinite > 0;
+                 }),
+    lights.end());
+  if (lights.size() == before)
   {
     this->Resource->WarnedNonFiniteViews = false;
     return;
@@ -654,11 +665,6 @@ void vtkAbstractShadowMapPass::DropLightsWithNonFiniteViews()
                        "shadows until the views are finite again.");
     this->Resource->WarnedNonFiniteViews = true;
   }
-  lights.erase(std::remove_if(lights.begin(), lights.end(),
-                 [](const ShadowLight& light) {
-                   return std::any_of(light.Views.begin(), light.Views.end(), IsNonFinite);
-                 }),
-    lights.end());
 }
 
 //------------------------------------------------------------------------------

@@ -21,7 +21,9 @@
  * its ShadowAttenuation scales how dark its shadows are.
  *
  * Maps are rendered with a minimal caster fragment shader into one texture
- * array, one layer per light view. What a light's views are (ComputeLightViews)
+ * array, one layer per light view. Casters nearer the light than a view's near
+ * plane are clamped onto it (depth clamping) rather than clipped, so they still
+ * occlude what lies behind them. What a light's views are (ComputeLightViews)
  * and what a texel stores (GetMapStorage, GetReceiverLookupCode: one depth by
  * default, or two float values such as two depth layers or moments) are the
  * subclass's choice.
@@ -166,7 +168,9 @@ public:
    * resolvable depth difference of the maps (glPolygonOffset units): about 2^-24
    * of the light's depth range in 32-bit maps, 1/65535 in 16-bit ones, so a unit
    * weighs 256 times more there (see GetMapStorage); the default stays below a
-   * quarter texel either way. Clamped to [0, 10000]; default 4.
+   * quarter texel either way. Views that store linear depth (the TSM, LiSPSM and
+   * GMNPR warps) are always 32-bit and add it, as 2^-24 per unit, to the depth
+   * they store. Clamped to [0, 10000]; default 4.
    */
   vtkSetClampMacro(ConstantBias, double, 0.0, 10000.0);
   vtkGetMacro(ConstantBias, double);
@@ -175,7 +179,10 @@ public:
   ///@{
   /**
    * Slope-scaled depth offset applied to casters: the depth offset grows by
-   * this factor times m = max(|dz/dx|, |dz/dy|). Clamped to [0, 100]; default 2.
+   * this factor times m = max(|dz/dx|, |dz/dy|). Views that store linear depth
+   * take m on the depth they store; for directional lights this term is capped
+   * at SlopeScaledBias / Resolution (a 45 degree surface in a uniform map), as a
+   * warp's far texels are many times the mean. Clamped to [0, 100]; default 2.
    */
   vtkSetClampMacro(SlopeScaledBias, double, 0.0, 100.0);
   vtkGetMacro(SlopeScaledBias, double);

@@ -76,9 +76,14 @@ shadowmaps::WarpOptions vtkWarpedShadowMapPass::LightSpaceWarpOptions() const
 LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int lightIndex) const
 {
   const glm::dvec3& direction = in.Lights[lightIndex].Direction;
+  // Every warp measures the view's depths on the frustum focused on what is
+  // visible: PSM spends its map as 1 / depth from the near plane, TSM measures
+  // its focus distance from it, and LiSPSM's n_opt = z_n + sqrt(z_f z_n) (and
+  // GMNPR's lambda) take its z_n. A camera's own near plane can be a hair in
+  // front of it, and the warp then spends the map on empty air.
+  const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
   if (this->WarpMode == PSM)
   {
-    const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
     const double weight = shadowmaps::PerspectiveWarpWeight(ViewDirection(in.CameraView), direction);
     return shadowmaps::FitPerspective(in.CameraView, projection, in.SceneBounds, direction,
       in.Resolution, PSMSlideBackFor(this->PSMSlideBack, projection), weight)
@@ -86,10 +91,6 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
   }
   if (this->WarpMode == TSM)
   {
-    // Martin and Tan measure delta from the near plane of a focused frustum: one
-    // whose near plane is far in front of everything visible would put the
-    // focus point before the trapezoid's top edge.
-    const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
     const double delta = this->TSMFocusDistance > 0.0
       ? this->TSMFocusDistance
       : 0.2 * FocusBodyDepth(in.CameraView, projection, in.SceneBounds);
@@ -97,10 +98,6 @@ LightView vtkWarpedShadowMapPass::FitDirectionalLight(const Internals& in, int l
       projection * in.CameraView, in.SceneBounds, direction, delta, this->TSMFocusFraction);
     return shadowmaps::TrapezoidLightView(map, in.Resolution);
   }
-  // LiSPSM's n_opt = z_n + sqrt(z_f z_n) (and GMNPR's lambda) take z_n as the
-  // near distance of the frustum focused on what is visible: with a camera's
-  // near plane a hair in front of it the warp spends the map on empty air.
-  const glm::dmat4 projection = TightProjection(in.CameraView, in.CameraProjection, in.PropBounds);
   const shadowmaps::WarpOptions options = this->LightSpaceWarpOptions();
   const auto warp = this->WarpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR
                                             : shadowmaps::DirectionalWarp::LiSPSM;

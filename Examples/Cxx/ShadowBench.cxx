@@ -89,15 +89,10 @@ double TimedRender(vtkRenderWindow* window)
 /// The truth of the current view: primary rays, masked where the rasteriser
 /// disagrees, then one shadow ray per pixel.
 std::vector<Truth> TruthOfView(View& view, const shadoworacle::Oracle& oracle,
-  const std::vector<float>& depth, std::vector<std::uint8_t>* valid = nullptr,
   shadoworacle::Surface* surfaceOut = nullptr)
 {
-  shadoworacle::Surface surface = oracle.Trace(view.Renderer, view.Width, view.Height);
-  shadoworacle::Oracle::MaskRasterMismatch(surface, view.Renderer, depth);
-  if (valid)
-  {
-    *valid = surface.Valid;
-  }
+  shadoworacle::Surface surface =
+    VisibleSurface(oracle, view.Renderer, view.Window, view.Width, view.Height);
   std::vector<Truth> truth = oracle.Classify(surface, FirstLight(view.Renderer));
   if (surfaceOut)
   {
@@ -252,7 +247,7 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
     view.Renderer->SetPass(nullptr);
     view.Window->Render();
     const auto plain = CaptureRGB(view.Window);
-    const auto truth = TruthOfView(view, oracle, CaptureDepth(view.Window, view.Width, view.Height));
+    const auto truth = TruthOfView(view, oracle);
     for (size_t t = 0; t < techniques.size(); ++t)
     {
       view.Renderer->SetPass(techniques[t].Pass);
@@ -297,9 +292,9 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   view.Renderer->SetPass(nullptr);
   view.Window->Render();
   const auto plain = CaptureRGB(view.Window);
-  std::vector<std::uint8_t> valid;
   shadoworacle::Surface surface;
-  const auto truth = TruthOfView(view, oracle, CaptureDepth(view.Window, view.Width, view.Height), &valid, &surface);
+  const auto truth = TruthOfView(view, oracle, &surface);
+  const std::vector<std::uint8_t>& valid = surface.Valid;
 
   std::vector<TechniqueInstance> techniques;
   for (const std::string& name : options.Techniques)

@@ -17,6 +17,7 @@
 #include <vtk_glew.h>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <array>
@@ -88,6 +89,13 @@ struct Box
 Box BoxOf(const double bounds[6])
 {
   return { { bounds[0], bounds[2], bounds[4] }, { bounds[1], bounds[3], bounds[5] } };
+}
+
+/// A case's first draw, so that its scene is known before the scene is built.
+std::string DrawScene(Random& random)
+{
+  const auto scenes = shadowscenes::SweepSceneNames();
+  return scenes[random.Index(static_cast<int>(scenes.size()))];
 }
 
 /// The city's streets at street level: along a random street, eye height.
@@ -379,15 +387,6 @@ int CountGLErrors(vtkRenderWindow* window)
   return count;
 }
 
-/// The truth of the frame last rendered without shadows.
-std::vector<Truth> TruthOfFrame(SceneView& view, int width, int height)
-{
-  shadoworacle::Surface surface = view.Oracle.Trace(view.Renderer, width, height);
-  shadoworacle::Oracle::MaskRasterMismatch(
-    surface, view.Renderer, shadowbench::CaptureDepth(view.Window, width, height));
-  return view.Oracle.Classify(surface, shadowbench::FirstLight(view.Renderer));
-}
-
 bool LostTheShadow(const std::vector<Truth>& truth, const std::vector<float>& factor)
 {
   constexpr int EnoughShadowedPixels = 50;
@@ -470,10 +469,12 @@ CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& option
   view.Renderer->SetPass(nullptr);
   view.Window->Render();
   const auto plain = shadowbench::CaptureRGB(view.Window);
-  const auto truth = TruthOfFrame(view, drawn.Width, drawn.Height);
   vtkLight* light = shadowbench::FirstLight(view.Renderer);
-  light->GetTransformedPosition(&result.LightWorldPosition.x);
-  light->GetTransformedFocalPoint(&result.LightWorldFocalPoint.x);
+  const auto truth = view.Oracle.Classify(
+    shadowbench::VisibleSurface(view.Oracle, view.Renderer, view.Window, drawn.Width, drawn.Height),
+    light);
+  light->GetTransformedPosition(glm::value_ptr(result.LightWorldPosition));
+  light->GetTransformedFocalPoint(glm::value_ptr(result.LightWorldFocalPoint));
   result.Counted = std::count_if(
     truth.begin(), truth.end(), [](Truth t) { return t != Truth::Ignored; });
   result.TruthShadowed = std::count(truth.begin(), truth.end(), Truth::Shadowed);
@@ -560,16 +561,16 @@ void PrintWorstCases(const std::vector<CaseResult>& results, const Options& opti
 {
   constexpr std::size_t Shown = 3;
   out << "\n| technique | seed | misclassified % | uniform % | case |\n|---|---:|---:|---:|---|\n";
+  std::vector<const CaseResult*> counted;
+  for (const CaseResult& result : results)
+  {
+    if (result.Counted >= options.MinimumCounted)
+    {
+      counted.push_back(&result);
+    }
+  }
   for (std::size_t t = 0; t < options.Techniques.size(); ++t)
   {
-    std::vector<const CaseResult*> counted;
-    for (const CaseResult& result : results)
-    {
-      if (result.Counted >= options.MinimumCounted)
-      {
-        counted.push_back(&result);
-      }
-    }
     const std::size_t shown = std::min(Shown, counted.size());
     std::partial_sort(counted.begin(), counted.begin() + shown, counted.end(),
       [t](const CaseResult* a, const CaseResult* b) {
@@ -672,9 +673,14 @@ bool ValidateOptions(const Options& options, std::string& error)
 {
   for (const std::string& name : options.Techniques)
   {
-    if (!shadowbench::IsTechnique(name) || name == "none")
+    if (!shadowbench::IsTechnique(name))
     {
       error = "unknown technique '" + name + "'";
+      return false;
+    }
+    if (name == "none")
+    {
+      error = "technique 'none' has no shadows to sweep";
       return false;
     }
   }
@@ -737,19 +743,17 @@ std::uint64_t CaseSeed(std::uint64_t sweepSeed, int index)
 //------------------------------------------------------------------------------
 std::string SceneOfCase(std::uint64_t caseSeed)
 {
-  const auto scenes = shadowscenes::SweepSceneNames();
   Random random(caseSeed);
-  return scenes[random.Index(static_cast<int>(scenes.size()))];
+  return DrawScene(random);
 }
 
 //------------------------------------------------------------------------------
 Case DrawCase(std::uint64_t caseSeed, const double bounds[6], int baseWidth, int baseHeight)
 {
-  const auto scenes = shadowscenes::SweepSceneNames();
   Random random(caseSeed);
   Case drawn;
   drawn.Seed = caseSeed;
-  drawn.Scene = scenes[random.Index(static_cast<int>(scenes.size()))]; // as SceneOfCase
+  drawn.Scene = DrawScene(random);
   const Box box = BoxOf(bounds);
   drawn.Camera = DrawCamera(random, drawn.Scene, box);
   drawn.Light = DrawLight(random, drawn.Scene, box, drawn.Camera);

@@ -130,7 +130,8 @@ struct CaseResult
   std::vector<TechniqueResult> Techniques;
 };
 
-/// Per technique over the cases with at least MinimumCounted counted pixels.
+/// Per technique over the cases with at least MinimumCounted counted pixels
+/// (flags over every case).
 struct Distribution
 {
   std::string Technique;
@@ -141,6 +142,7 @@ struct Distribution
   std::uint64_t WorstSeed = 0;
   /// Worst of the uniform map over the same cases (NaN if not measured).
   double UniformWorst = 0.0;
+  /// Flagged cases among all cases, whatever their counted pixels.
   int Flagged = 0;
 };
 

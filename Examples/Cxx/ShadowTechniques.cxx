@@ -257,6 +257,15 @@ std::string FormatNumber(double value, int digits)
 }
 
 //------------------------------------------------------------------------------
+shadoworacle::Surface VisibleSurface(const shadoworacle::Oracle& oracle, vtkRenderer* renderer,
+  vtkRenderWindow* window, int width, int height)
+{
+  shadoworacle::Surface surface = oracle.Trace(renderer, width, height);
+  shadoworacle::Oracle::MaskRasterMismatch(surface, renderer, CaptureDepth(window, width, height));
+  return surface;
+}
+
+//------------------------------------------------------------------------------
 vtkLight* FirstLight(vtkRenderer* renderer)
 {
   vtkLightCollection* lights = renderer->GetLights();

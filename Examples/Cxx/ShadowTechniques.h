@@ -3,6 +3,8 @@
 #ifndef ShadowTechniques_h
 #define ShadowTechniques_h
 
+#include "ShadowOracle.h"
+
 #include <vtkSmartPointer.h>
 
 #include <cstdint>
@@ -64,6 +66,12 @@ bool WritePNG(const std::vector<std::uint8_t>& rgb, int width, int height, const
 
 /// value with `digits` decimals; "n/a" for NaN (the tables' number format).
 std::string FormatNumber(double value, int digits = 2);
+
+/// The oracle's view of the frame `renderer` last rendered into `window`
+/// (width x height pixels): one primary ray per pixel, pixels where the
+/// rasterised depth disagrees (silhouettes, skipped geometry) made invalid.
+shadoworacle::Surface VisibleSurface(const shadoworacle::Oracle& oracle, vtkRenderer* renderer,
+  vtkRenderWindow* window, int width, int height);
 
 /// The renderer's first light (nullptr if it has none).
 vtkLight* FirstLight(vtkRenderer* renderer);

@@ -473,12 +473,6 @@ std::string ParseReplay(const std::string& value, Options& options)
 std::string ParseSweepTechniques(const std::string& value, Options& options)
 {
   std::string error = ParseTechniques(value, options);
-  if (error.empty() &&
-    std::find(options.bench.Techniques.begin(), options.bench.Techniques.end(), "none") !=
-      options.bench.Techniques.end())
-  {
-    error = "technique 'none' has no shadows to sweep";
-  }
   options.sweep.Techniques = options.bench.Techniques;
   return error;
 }

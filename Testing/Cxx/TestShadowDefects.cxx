@@ -2,6 +2,7 @@
 // project does not have it.
 #include "ShadowTestUtilities.h"
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkShadowMapInternals.h"
 #include "vtkWarpedShadowMapPass.h"
 
 #include "vtkActor.h"
@@ -20,6 +21,7 @@
 #include "vtkLight.h"
 #include "vtkLightKit.h"
 #include "vtkLineSource.h"
+#include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPolyDataMapper.h"
@@ -33,6 +35,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -431,4 +434,49 @@ TEST(ShadowDefects, VolumesRenderBehindOpaqueGeometryAndCastNothing)
     opacity->AddPoint(255.0, 0.8);
   }
   scene.Renderer->SetPass(nullptr);
+}
+
+namespace
+{
+/// Warped views with a NaN in their projection, as a degenerate scene could give.
+class vtkTestNonFiniteViewsPass : public vtkWarpedShadowMapPass
+{
+public:
+  static vtkTestNonFiniteViewsPass* New();
+  vtkTypeMacro(vtkTestNonFiniteViewsPass, vtkWarpedShadowMapPass);
+
+protected:
+  void ComputeLightViews(Internals& internals, int lightIndex) override
+  {
+    this->Superclass::ComputeLightViews(internals, lightIndex);
+    internals.Lights[lightIndex].Views.front().Projection[0][0] = std::nan("");
+  }
+};
+vtkStandardNewMacro(vtkTestNonFiniteViewsPass);
+} // namespace
+
+// A light whose views come out non-finite casts no shadow, with one warning and
+// no shader error, even when it is the only light (the receivers would otherwise
+// be built for zero lights); the frame is the unshadowed one.
+TEST(ShadowDefects, NonFiniteLightViewsRenderWithoutShadows)
+{
+  TestScene scene;
+  scene.SetSun(glm::dvec3(-0.4, 0.3, -1.0));
+  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(glm::dvec3(-0.4, 0.3, -1.0));
+  vtkSmartPointer<vtkImageData> unshadowed = RenderAndCapture(scene.Window);
+  vtkNew<vtkTestNonFiniteViewsPass> pass;
+  scene.Renderer->SetPass(pass);
+  ErrorCounter counter;
+  vtkSmartPointer<vtkImageData> frame = RenderAndCapture(scene.Window);
+  RenderAndCapture(scene.Window);
+  EXPECT_EQ(counter.Errors(), 0) << counter.Text();
+  EXPECT_EQ(counter.Warnings(), 1) << counter.Text();
+  EXPECT_NE(counter.Text().find("non-finite"), std::string::npos) << counter.Text();
+  EXPECT_EQ(pass->GetNumberOfNonFiniteViews(), 1);
+  EXPECT_EQ(pass->GetNumberOfShadowedLights(), 0);
+  EXPECT_GT(LuminanceAt(scene.Renderer, frame, shadowed), LitAbove);
+  EXPECT_NEAR(LuminanceAt(scene.Renderer, frame, shadowed),
+    LuminanceAt(scene.Renderer, unshadowed, shadowed), 2.0);
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
 }

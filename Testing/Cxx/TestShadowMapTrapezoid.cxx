@@ -159,6 +159,36 @@ TEST(TrapezoidTSM, FocusPointMapsToThe80PercentLine)
   EXPECT_NEAR(0.5 * shadowmaps::TrapezoidToNdc(oblique, oblique.FocusPoint).y + 0.5, 0.8, Tolerance);
 }
 
+// A camera's axis beside B (its near-plane centre before the hull's top, as a
+// parallel camera's can be beside a spot's cone): the focus span is laid off
+// from the hull's top, the trapezoid keeps a real vanishing distance, and the
+// focus point still maps to the 80% line.
+TEST(TrapezoidTSM, NearPlaneCentreBeforeTheHullLaysTheFocusOffFromTheTop)
+{
+  shadowmaps::TrapezoidFrame frame;
+  const shadowmaps::Aabb body{ glm::dvec3(-5.0, 20.0, 0.0), glm::dvec3(5.0, 40.0, 2.0) };
+  const auto corners = body.Corners();
+  frame.Body.assign(corners.begin(), corners.end());
+  frame.Casters = body;
+  frame.LightDirection = glm::dvec3(0.0, 0.0, -1.0);
+  frame.ViewAxis = glm::dvec3(0.0, 1.0, 0.0);
+  frame.CameraUp = glm::dvec3(0.0, 0.0, 1.0);
+  frame.NearCentre = glm::dvec3(0.0, 0.0, 1.0); // 20 units before the hull's top
+  frame.Focus = frame.NearCentre + frame.ViewAxis * 4.0;
+  const TrapezoidMap map = shadowmaps::FitTrapezoidFrame(frame);
+  ASSERT_TRUE(IsFinite(map));
+  EXPECT_DOUBLE_EQ(map.WarpWeight, 1.0);
+  // Measured from the hull's top, the focus (4 units past the near-plane
+  // centre, 16 before the top) gave delta 1e-3 of the hull's depth and eta with it.
+  const double lambda = 20.0;
+  EXPECT_GT(map.VanishingDistance, 0.05 * lambda);
+  EXPECT_NEAR(0.5 * shadowmaps::TrapezoidToNdc(map, map.FocusPoint).y + 0.5, map.FocusLine, Tolerance);
+  const glm::dvec2 topCentre = 0.5 * (map.Corners[0] + map.Corners[1]);
+  const glm::dvec2 baseCentre = 0.5 * (map.Corners[2] + map.Corners[3]);
+  const glm::dvec2 axial = glm::normalize(baseCentre - topCentre);
+  EXPECT_NEAR(glm::dot(map.FocusPoint - topCentre, axial), 4.0, 1e-9);
+}
+
 TEST(TrapezoidTSM, EveryHullAndBodyPointMapsInsideTheSquare)
 {
   for (const auto& setup : Sweep())

@@ -318,6 +318,45 @@ TEST(ShadowMapWarping, LiSPSMImplementedNearDistanceFollowsFalloff)
   }
 }
 
+// A directional warp stores depth linear in light space: recovered from the
+// map as the casters and receivers do (z / w times the W given by the map
+// position), the stored depth is the same for points at one distance along the
+// light, affine in that distance, in [-1, 1] over B, and the rasterized z / w
+// stays inside the clip volume. (Stored as rasterized, the warp's depth crowds
+// the far part of B into a sliver.)
+TEST(ShadowMapWarping, DirectionalWarpsStoreLinearLightSpaceDepth)
+{
+  const Camera camera = MakeCamera(1.0, 100.0);
+  const Aabb scene = EnclosingScene(camera);
+  const glm::dvec3 light = LightAtAngle(glm::radians(45.0));
+  for (DirectionalWarp warp : { DirectionalWarp::LiSPSM, DirectionalWarp::GMNPR })
+  {
+    const LightView fit = shadowmaps::FitDirectionalWarped(
+      camera.View, camera.Projection, scene, light, Resolution, warp);
+    ASSERT_TRUE(fit.Perspective);
+    ASSERT_TRUE(fit.LinearDepth);
+    const glm::dvec3 inverseW = shadowmaps::NdcToInverseW(fit);
+    auto stored = [&](const glm::dvec3& world) {
+      const glm::dvec4 clip = fit.ViewProjection() * glm::dvec4(world, 1.0);
+      EXPECT_LE(std::abs(clip.z / clip.w), 1.0);
+      const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+      return clip.z / clip.w / glm::dot(inverseW, glm::dvec3(ndc, 1.0));
+    };
+    const glm::dvec3 across = glm::normalize(glm::cross(light, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 inB(0.0, 0.0, -20.0); // on the camera's axis, inside B
+    const double a = stored(inB);
+    EXPECT_NEAR(stored(inB + across * 3.0), a, 1e-9);
+    const double b = stored(inB + light * 2.0);
+    const double c = stored(inB + light * 5.0);
+    EXPECT_GT(b, a) << "depth grows away from the light";
+    EXPECT_NEAR((c - a) / 5.0, (b - a) / 2.0, 1e-9);
+    for (const glm::dvec3& p : shadowmaps::IntersectFrustumWithBox(camera.Projection * camera.View, scene))
+    {
+      EXPECT_LE(std::abs(stored(p)), 1.0 + 1e-9);
+    }
+  }
+}
+
 TEST(ShadowMapWarping, GMNPRImplementedNearDistanceIsLambdaTimesWarpDepth)
 {
   for (double f : { 100.0, 800.0 })
