@@ -507,13 +507,14 @@ glm::dvec3 ExitFromBox(const Aabb& box, const glm::dvec3& p, const glm::dvec3& v
 double SlideBackHoldingCasters(const glm::dmat4& cameraView, const std::vector<glm::dvec3>& body,
   const Aabb& scene, const glm::dvec4& towardLight)
 {
+  const bool positional = towardLight.w != 0.0;
   double nearest = Infinity;
   for (const auto& p : body)
   {
-    const glm::dvec3 toward = towardLight.w != 0.0
-      ? glm::dvec3(towardLight) / towardLight.w - p
-      : glm::dvec3(towardLight);
-    const glm::dvec3 end = ExitFromBox(scene, p, toward, towardLight.w != 0.0 ? 1.0 : Infinity);
+    // Up to the light's position, or out of the scene toward a directional light.
+    const glm::dvec3 toward =
+      positional ? glm::dvec3(towardLight) / towardLight.w - p : glm::dvec3(towardLight);
+    const glm::dvec3 end = ExitFromBox(scene, p, toward, positional ? 1.0 : Infinity);
     for (const glm::dvec3& q : { p, end })
     {
       nearest = std::min(nearest, -(cameraView * glm::dvec4(q, 1.0)).z);

@@ -8,26 +8,19 @@ misses point-light shadows entirely, the focused map beats VTK's pass.
 """
 import csv
 import os
-import subprocess
 import sys
+
+from clitools import check, check_usage_error, run
 
 MODEL = "/usr/share/assimp/models/STL/Spider_binary.stl"
 SMALL = ["--size", "192x108", "--timed-frames", "1"]
 
-
-def run(program, *arguments):
-    return subprocess.run([program, *arguments], capture_output=True, text=True, timeout=600)
 
 
 def rows_by_case(path):
     with open(path, newline="") as stream:
         return {(r["scene"], r["light"], r["technique"]): r for r in csv.DictReader(stream)}
 
-
-def check(condition, message):
-    if not condition:
-        print("FAIL:", message)
-        sys.exit(1)
 
 
 def test_bench(program, output):
@@ -87,10 +80,7 @@ def test_errors(program):
         (["analyze"], "needs a model FILE"),
         (["analyze", "/nonexistent.stl", "--flicker-frames", "0"], "error"),
     ]:
-        result = run(program, *arguments)
-        check(result.returncode == 2, "%s: exit 2, got %d" % (arguments, result.returncode))
-        check(expected in result.stderr and result.stderr.startswith("vtkshadows: error:"),
-              "%s: message %r" % (arguments, result.stderr))
+        check_usage_error(program, arguments, expected)
 
 
 def main():

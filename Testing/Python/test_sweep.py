@@ -9,21 +9,14 @@ are refused with one error line and exit status 2.
 """
 import csv
 import os
-import subprocess
 import sys
+
+from clitools import check, check_usage_error, run
 
 SMALL = ["--size", "96x72", "--resolution", "512"]
 TECHNIQUES = ["uniform", "lispsm", "csm"]
 
 
-def run(program, *arguments):
-    return subprocess.run([program, *arguments], capture_output=True, text=True, timeout=600)
-
-
-def check(condition, message):
-    if not condition:
-        print("FAIL:", message)
-        sys.exit(1)
 
 
 def read_rows(path):
@@ -72,11 +65,8 @@ def test_errors(program):
         (["sweep", "--techniques", "magic"], "unknown technique"),
         (["sweep", "--bogus", "1"], "unknown option"),
     ]:
-        result = run(program, *arguments)
-        lines = [line for line in result.stderr.splitlines() if line.strip()]
-        check(result.returncode == 2, "%s: exit 2, got %d" % (arguments, result.returncode))
-        check(len(lines) == 1 and expected in lines[0] and lines[0].startswith("vtkshadows: error:"),
-              "%s: message %r" % (arguments, result.stderr))
+        lines = check_usage_error(program, arguments, expected)
+        check(len(lines) == 1, "%s: one error line, got %r" % (arguments, lines))
 
 
 def main():
