@@ -1,6 +1,10 @@
 # Declares ShadowMaps::RenderingShadowMaps (included from the root CMakeLists.txt
-# when vtk_module_build() visits the module directory).
+# when vtk_module_build() visits the module directory). The folders of Plugin/
+# are its layers: Math (pure functions of the fits), Views and Representations
+# (the two strategies of a pass), OpenGL (GL objects and receiver shader code)
+# and Passes (the vtkRenderPass subclasses that coordinate them).
 set(shadowmaps_shaders
+  vtkShadowMapsAnalysisFS
   vtkShadowMapsCasterFS
   vtkShadowMapsDepthLookupFS
   vtkShadowMapsLinearDepthFS
@@ -18,31 +22,50 @@ foreach (shader IN LISTS shadowmaps_shaders)
   list(APPEND shadowmaps_shader_headers "${header}")
 endforeach ()
 
+set(shadowmaps_folders Math OpenGL Passes Representations Views)
+
 vtk_module_add_module(ShadowMaps::RenderingShadowMaps
   CLASSES
-    Plugin/vtkAbstractShadowMapPass
-    Plugin/vtkCascadedShadowMapPass
-    Plugin/vtkWarpedShadowMapPass
+    Plugin/Passes/vtkAbstractShadowMapPass
+    Plugin/Passes/vtkCascadedShadowMapPass
+    Plugin/Passes/vtkDepthShadowMapPass
+    Plugin/Passes/vtkWarpedShadowMapPass
+    Plugin/Representations/vtkDepthShadowMapRepresentation
+    Plugin/Representations/vtkShadowMapRepresentation
+    Plugin/Views/vtkCascadedShadowMapViews
+    Plugin/Views/vtkShadowMapViews
+    Plugin/Views/vtkUniformShadowMapViews
+    Plugin/Views/vtkWarpedShadowMapViews
   PRIVATE_CLASSES
-    Plugin/vtkShadowMapCasterPass
+    Plugin/Passes/vtkShadowMapCasterPass
   SOURCES
-    Plugin/ShadowMapCascades.cxx
-    Plugin/ShadowMapFocusing.cxx
-    Plugin/ShadowMapPerspective.cxx
-    Plugin/ShadowMapTextureArray.cxx
-    Plugin/ShadowMapTrapezoid.cxx
-    Plugin/ShadowMapWarping.cxx
+    Plugin/Math/ShadowMapCascades.cxx
+    Plugin/Math/ShadowMapFocusing.cxx
+    Plugin/Math/ShadowMapPerspective.cxx
+    Plugin/Math/ShadowMapTrapezoid.cxx
+    Plugin/Math/ShadowMapWarping.cxx
+    Plugin/OpenGL/ShadowMapAnalysis.cxx
+    Plugin/OpenGL/ShadowMapReceiverShader.cxx
+    Plugin/OpenGL/ShadowMapTextureArray.cxx
     ${shadowmaps_shader_sources}
+  HEADERS
+    # What a downstream views or representation class needs.
+    Plugin/Math/ShadowMapFocusing.h
+    Plugin/OpenGL/ShadowMapTextureArray.h
+    Plugin/Views/ShadowMapLight.h
   PRIVATE_HEADERS
-    Plugin/ShadowMapCascades.h
-    Plugin/ShadowMapFocusing.h
-    Plugin/ShadowMapPerspective.h
-    Plugin/ShadowMapTextureArray.h
-    Plugin/ShadowMapTrapezoid.h
-    Plugin/ShadowMapWarping.h
-    Plugin/vtkShadowMapInternals.h
+    Plugin/Math/ShadowMapCascades.h
+    Plugin/Math/ShadowMapPerspective.h
+    Plugin/Math/ShadowMapTrapezoid.h
+    Plugin/Math/ShadowMapWarping.h
+    Plugin/OpenGL/ShadowMapAnalysis.h
+    Plugin/OpenGL/ShadowMapReceiverShader.h
     ${shadowmaps_shader_headers})
+foreach (folder IN LISTS shadowmaps_folders)
+  vtk_module_include(ShadowMaps::RenderingShadowMaps
+    PUBLIC "$<BUILD_INTERFACE:${CMAKE_CURRENT_LIST_DIR}/${folder}>")
+endforeach ()
 vtk_module_include(ShadowMaps::RenderingShadowMaps
   PUBLIC "$<BUILD_INTERFACE:${CMAKE_CURRENT_LIST_DIR}>"
   PRIVATE "$<BUILD_INTERFACE:${CMAKE_CURRENT_BINARY_DIR}>")
-vtk_module_link(ShadowMaps::RenderingShadowMaps PRIVATE glm::glm)
+vtk_module_link(ShadowMaps::RenderingShadowMaps PUBLIC glm::glm)

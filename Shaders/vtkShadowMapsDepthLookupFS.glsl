@@ -1,7 +1,10 @@
-// Lookup of depth maps: the PCF family. Hard and 2x2 PCF differ only in the
+// Lookup of depth maps (vtkDepthShadowMapRepresentation): the PCF family. Hard and 2x2 PCF differ only in the
 // map's texture filter (nearest / linear).
 
 uniform sampler2DArrayShadow vtkShadowMaps;
+// Per-texel rotations (cos, sin) of the Poisson disc.
+uniform sampler2D vtkShadowNoise;
+uniform float vtkShadowFilterRadius;
 
 float vtkShadowCompare(vec2 uv, float depth, int layer)
 {
@@ -49,7 +52,7 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
 #if VTK_SHADOW_FILTER <= 1
   return vtkShadowCompare(mapCoord.xy, mapCoord.z, layer);
 #elif VTK_SHADOW_FILTER == 2
-  float texel = vtkShadowCascade[layer].w / vtkShadowMapResolution;
+  float texel = vtkShadowViews[layer].FilterScale / vtkShadowMapResolution;
   float center = 0.5 * float(VTK_SHADOW_KERNEL - 1);
   float lit = 0.0;
   for (int j = 0; j < VTK_SHADOW_KERNEL; ++j)
@@ -66,7 +69,7 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
   // the light and does not crawl when the camera moves (thesis 000, jittered PCF).
   vec2 rotation = texture(vtkShadowNoise, mapCoord.xy * vtkShadowMapResolution / 32.0).xy;
   mat2 rotate = mat2(rotation.x, rotation.y, -rotation.y, rotation.x);
-  float radius = vtkShadowFilterRadius * vtkShadowCascade[layer].w / vtkShadowMapResolution;
+  float radius = vtkShadowFilterRadius * vtkShadowViews[layer].FilterScale / vtkShadowMapResolution;
   float lit = 0.0;
   for (int i = 0; i < VTK_SHADOW_POISSON_SAMPLES; ++i)
   {

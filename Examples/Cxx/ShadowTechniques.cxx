@@ -137,7 +137,7 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
   {
     auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
     pass->SetResolution(resolution);
-    pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
+    pass->SetFilter(vtkDepthShadowMapPass::PCF_2X2);
     pass->SetWarpMode(WarpModeOf(name));
     technique.Ours = pass;
     technique.Pass = pass;
@@ -148,7 +148,7 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
     // Four cascades of half the resolution: the memory of one map.
     auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
     pass->SetResolution(std::max(resolution / 2, 64));
-    pass->SetFilter(vtkAbstractShadowMapPass::PCF_2X2);
+    pass->SetFilter(vtkDepthShadowMapPass::PCF_2X2);
     pass->SetFitMode(name == "csm" ? vtkCascadedShadowMapPass::STABLE : vtkCascadedShadowMapPass::TIGHT);
     if (name == "csm-lispsm")
     {

@@ -676,14 +676,14 @@ int ToPassFilter(Filter filter)
   switch (filter)
   {
     case Filter::Hard:
-      return vtkAbstractShadowMapPass::HARD;
+      return vtkDepthShadowMapPass::HARD;
     case Filter::PCFNxN:
-      return vtkAbstractShadowMapPass::PCF_NXN;
+      return vtkDepthShadowMapPass::PCF_NXN;
     case Filter::Poisson:
-      return vtkAbstractShadowMapPass::POISSON;
+      return vtkDepthShadowMapPass::POISSON;
     case Filter::PCF2x2:
     default:
-      return vtkAbstractShadowMapPass::PCF_2X2;
+      return vtkDepthShadowMapPass::PCF_2X2;
   }
 }
 

@@ -202,7 +202,7 @@ TEST(ShadowBehaviour, ParametersClamp)
   pass->SetKernelSize(11);
   EXPECT_EQ(pass->GetKernelSize(), 7);
   pass->SetFilter(42);
-  EXPECT_EQ(pass->GetFilter(), vtkAbstractShadowMapPass::POISSON);
+  EXPECT_EQ(pass->GetFilter(), vtkDepthShadowMapPass::POISSON);
   pass->SetNormalOffset(-1.0);
   EXPECT_EQ(pass->GetNormalOffset(), 0.0);
   pass->SetCasterFaces(-3);
@@ -410,7 +410,7 @@ TEST(ShadowBehaviour, SwitchingPassesAndReleasing)
   EXPECT_EQ(pass->GetShadowMapMemory(), 0u);
   EXPECT_LT(ShadowLuminance(scene), ShadowedBelow);
   vtkNew<vtkWarpedShadowMapPass> other;
-  other->SetFilter(vtkAbstractShadowMapPass::POISSON);
+  other->SetFilter(vtkDepthShadowMapPass::POISSON);
   scene.Renderer->SetPass(other);
   EXPECT_LT(ShadowLuminance(scene), ShadowedBelow);
   EXPECT_EQ(errors.Errors(), 0) << errors.Text();

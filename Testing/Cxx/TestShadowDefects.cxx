@@ -2,7 +2,8 @@
 // project does not have it.
 #include "ShadowTestUtilities.h"
 #include "vtkCascadedShadowMapPass.h"
-#include "vtkShadowMapInternals.h"
+#include "ShadowMapLight.h"
+#include "vtkWarpedShadowMapViews.h"
 #include "vtkWarpedShadowMapPass.h"
 
 #include "vtkActor.h"
@@ -439,20 +440,19 @@ TEST(ShadowDefects, VolumesRenderBehindOpaqueGeometryAndCastNothing)
 namespace
 {
 /// Warped views with a NaN in their projection, as a degenerate scene could give.
-class vtkTestNonFiniteViewsPass : public vtkWarpedShadowMapPass
+class vtkTestNonFiniteViews : public vtkWarpedShadowMapViews
 {
 public:
-  static vtkTestNonFiniteViewsPass* New();
-  vtkTypeMacro(vtkTestNonFiniteViewsPass, vtkWarpedShadowMapPass);
+  static vtkTestNonFiniteViews* New();
+  vtkTypeMacro(vtkTestNonFiniteViews, vtkWarpedShadowMapViews);
 
-protected:
-  void ComputeLightViews(Internals& internals, int lightIndex) override
+  void FitLight(const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) override
   {
-    this->Superclass::ComputeLightViews(internals, lightIndex);
-    internals.Lights[lightIndex].Views.front().Projection[0][0] = std::nan("");
+    this->Superclass::FitLight(frame, light);
+    light.Views.front().Projection[0][0] = std::nan("");
   }
 };
-vtkStandardNewMacro(vtkTestNonFiniteViewsPass);
+vtkStandardNewMacro(vtkTestNonFiniteViews);
 } // namespace
 
 // A light whose views come out non-finite casts no shadow, with one warning and
@@ -464,7 +464,9 @@ TEST(ShadowDefects, NonFiniteLightViewsRenderWithoutShadows)
   scene.SetSun(glm::dvec3(-0.4, 0.3, -1.0));
   const glm::dvec3 shadowed = GroundShadowOfSphereCenter(glm::dvec3(-0.4, 0.3, -1.0));
   vtkSmartPointer<vtkImageData> unshadowed = RenderAndCapture(scene.Window);
-  vtkNew<vtkTestNonFiniteViewsPass> pass;
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  vtkNew<vtkTestNonFiniteViews> views;
+  pass->SetViews(views);
   scene.Renderer->SetPass(pass);
   ErrorCounter counter;
   vtkSmartPointer<vtkImageData> frame = RenderAndCapture(scene.Window);

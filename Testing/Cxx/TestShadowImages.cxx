@@ -71,7 +71,7 @@ TEST(ShadowImages, SunHard)
   TestScene scene;
   scene.SetSun(SunDirection);
   vtkNew<vtkWarpedShadowMapPass> pass;
-  pass->SetFilter(vtkAbstractShadowMapPass::HARD);
+  pass->SetFilter(vtkDepthShadowMapPass::HARD);
   RenderAndCheck(scene, pass, "SunHard", GroundShadowOfSphereCenter(SunDirection), { -5, -4, 0 });
 }
 
@@ -80,7 +80,7 @@ TEST(ShadowImages, SunPcf5x5)
   TestScene scene;
   scene.SetSun(SunDirection);
   vtkNew<vtkWarpedShadowMapPass> pass;
-  pass->SetFilter(vtkAbstractShadowMapPass::PCF_NXN);
+  pass->SetFilter(vtkDepthShadowMapPass::PCF_NXN);
   pass->SetKernelSize(5);
   pass->SetResolution(512);
   RenderAndCheck(scene, pass, "SunPcf5x5", GroundShadowOfSphereCenter(SunDirection), { -5, -4, 0 });
@@ -91,7 +91,7 @@ TEST(ShadowImages, SunPoisson)
   TestScene scene;
   scene.SetSun(SunDirection);
   vtkNew<vtkWarpedShadowMapPass> pass;
-  pass->SetFilter(vtkAbstractShadowMapPass::POISSON);
+  pass->SetFilter(vtkDepthShadowMapPass::POISSON);
   pass->SetFilterRadius(3.0);
   pass->SetResolution(512);
   RenderAndCheck(scene, pass, "SunPoisson", GroundShadowOfSphereCenter(SunDirection), { -5, -4, 0 });
@@ -121,7 +121,7 @@ TEST(ShadowImages, FiltersSoftenThePenumbra)
     }
     return count;
   };
-  const int hard = intermediatePixels(vtkAbstractShadowMapPass::HARD);
-  const int poisson = intermediatePixels(vtkAbstractShadowMapPass::POISSON);
+  const int hard = intermediatePixels(vtkDepthShadowMapPass::HARD);
+  const int poisson = intermediatePixels(vtkDepthShadowMapPass::POISSON);
   EXPECT_GT(poisson, hard);
 }

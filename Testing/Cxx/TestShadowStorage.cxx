@@ -1,10 +1,16 @@
-// The texel-storage hooks of vtkAbstractShadowMapPass, exercised by two small
+// The representation strategy (vtkShadowMapRepresentation), exercised by small
 // subclasses defined here: a moments map (two filterable values per texel, the
 // storage of variance shadow maps) and a nearest-front / nearest-back map
-// written with minimum blending (the storage of dual-depth maps).
+// written with minimum blending (the storage of dual-depth maps). Each runs with
+// the uniform, cascaded and warped views: the two choices are independent.
 #include "ShadowTestUtilities.h"
-#include "vtkAbstractShadowMapPass.h"
-#include "vtkShadowMapInternals.h"
+#include "vtkCascadedShadowMapPass.h"
+#include "vtkDepthShadowMapPass.h"
+#include "vtkDepthShadowMapRepresentation.h"
+#include "vtkShadowMapRepresentation.h"
+#include "vtkShadowMapViews.h"
+#include "vtkWarpedShadowMapViews.h"
+#include "vtkWarpedShadowMapPass.h"
 
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
@@ -17,28 +23,14 @@ namespace
 {
 const glm::dvec3 SunDirection = glm::normalize(glm::dvec3(-0.4, 0.3, -1.0));
 
-/// The focused uniform views; the subclasses below choose only the storage.
-class vtkTestUniformViewsPass : public vtkAbstractShadowMapPass
-{
-public:
-  vtkTypeMacro(vtkTestUniformViewsPass, vtkAbstractShadowMapPass);
-
-protected:
-  void ComputeLightViews(Internals& internals, int lightIndex) override
-  {
-    this->FitLightViewsUniform(internals, lightIndex);
-  }
-};
-
 /// Stores (depth, depth^2) with mipmaps and looks up with Chebyshev's bound.
-class vtkTestMomentsShadowMapPass : public vtkTestUniformViewsPass
+class vtkTestMomentsRepresentation : public vtkShadowMapRepresentation
 {
 public:
-  static vtkTestMomentsShadowMapPass* New();
-  vtkTypeMacro(vtkTestMomentsShadowMapPass, vtkTestUniformViewsPass);
+  static vtkTestMomentsRepresentation* New();
+  vtkTypeMacro(vtkTestMomentsRepresentation, vtkShadowMapRepresentation);
   int PostProcessCalls = 0;
 
-protected:
   void GetMapStorage(shadowmaps::MapStorage& storage) const override
   {
     storage = shadowmaps::MapStorage();
@@ -64,23 +56,31 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
 }
 )";
   }
-  bool PostProcessShadowMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray& maps) override
+  // The depth maps' default offset: the moments' mean stays just behind the
+  // casters' lit faces, so that Chebyshev's bound does not darken them.
+  shadowmaps::DepthOffset GetCasterDepthOffset() const override
+  {
+    shadowmaps::DepthOffset offset;
+    offset.SlopeScaled = 2.0;
+    offset.Constant = 4.0;
+    return offset;
+  }
+  bool PostProcessMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray& maps) override
   {
     ++this->PostProcessCalls;
     return maps.GetFormat() == shadowmaps::TexelFormat::TwoFloats && maps.GetTextureName() != 0;
   }
 };
-vtkStandardNewMacro(vtkTestMomentsShadowMapPass);
+vtkStandardNewMacro(vtkTestMomentsRepresentation);
 
 /// Keeps the nearest front face and the nearest back face of every texel and
 /// compares receivers with their midpoint: no bias needed on closed casters.
-class vtkTestFrontBackShadowMapPass : public vtkTestUniformViewsPass
+class vtkTestFrontBackRepresentation : public vtkShadowMapRepresentation
 {
 public:
-  static vtkTestFrontBackShadowMapPass* New();
-  vtkTypeMacro(vtkTestFrontBackShadowMapPass, vtkTestUniformViewsPass);
+  static vtkTestFrontBackRepresentation* New();
+  vtkTypeMacro(vtkTestFrontBackRepresentation, vtkShadowMapRepresentation);
 
-protected:
   void GetMapStorage(shadowmaps::MapStorage& storage) const override
   {
     storage = shadowmaps::MapStorage();
@@ -89,6 +89,7 @@ protected:
     storage.StoreCode = "  gl_FragData[0] = gl_FrontFacing ? vec4(vtkShadowCasterDepth, 1.0, 0.0, 1.0)"
                         " : vec4(1.0, vtkShadowCasterDepth, 0.0, 1.0);";
   }
+  bool GetLinearFiltering() const override { return false; }
   std::string GetReceiverLookupCode() const override
   {
     return R"(
@@ -101,21 +102,19 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
 )";
   }
 };
-vtkStandardNewMacro(vtkTestFrontBackShadowMapPass);
+vtkStandardNewMacro(vtkTestFrontBackRepresentation);
 
 /// Depth maps whose lookup code can be swapped for one that inverts visibility.
-class vtkTestSwappedLookupPass : public vtkTestUniformViewsPass
+class vtkTestSwappedLookupRepresentation : public vtkDepthShadowMapRepresentation
 {
 public:
-  static vtkTestSwappedLookupPass* New();
-  vtkTypeMacro(vtkTestSwappedLookupPass, vtkTestUniformViewsPass);
+  static vtkTestSwappedLookupRepresentation* New();
+  vtkTypeMacro(vtkTestSwappedLookupRepresentation, vtkDepthShadowMapRepresentation);
   void SetInverted(bool inverted)
   {
     this->Inverted = inverted;
     this->Modified();
   }
-
-protected:
   std::string GetReceiverLookupCode() const override
   {
     if (!this->Inverted)
@@ -124,15 +123,41 @@ protected:
     }
     return R"(
 uniform sampler2DArrayShadow vtkShadowMaps;
+uniform sampler2D vtkShadowNoise;
+uniform float vtkShadowFilterRadius;
 float vtkShadowLookup(vec3 mapCoord, int layer)
 {
   return 1.0 - texture(vtkShadowMaps, vec4(mapCoord.xy, float(layer), mapCoord.z));
 }
 )";
   }
+
+private:
   bool Inverted = false;
 };
-vtkStandardNewMacro(vtkTestSwappedLookupPass);
+vtkStandardNewMacro(vtkTestSwappedLookupRepresentation);
+
+/// The three views strategies, as the passes that preset them.
+vtkSmartPointer<vtkAbstractShadowMapPass> MakePass(const std::string& views)
+{
+  if (views == "Cascaded")
+  {
+    return vtkSmartPointer<vtkCascadedShadowMapPass>::New();
+  }
+  if (views == "Warped")
+  {
+    auto warped = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    warped->SetWarpModeToLiSPSM();
+    return warped;
+  }
+  return vtkSmartPointer<vtkDepthShadowMapPass>::New();
+}
+
+// Baseline name: the storage, then the views unless uniform.
+std::string BaselineName(const std::string& storage, const std::string& views)
+{
+  return "Storage" + storage + (views == "Uniform" ? std::string() : views);
+}
 
 void ExpectShadowUnderSphere(TestScene& scene, vtkImageData* image)
 {
@@ -142,33 +167,41 @@ void ExpectShadowUnderSphere(TestScene& scene, vtkImageData* image)
 }
 } // namespace
 
-TEST(ShadowStorage, MomentsWithMipmaps)
+class ShadowStorageViews : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(ShadowStorageViews, MomentsWithMipmaps)
 {
   TestScene scene;
   scene.SetSun(SunDirection);
-  vtkNew<vtkTestMomentsShadowMapPass> pass;
+  auto pass = MakePass(GetParam());
+  vtkNew<vtkTestMomentsRepresentation> moments;
+  pass->SetRepresentation(moments);
   pass->SetResolution(256);
   ErrorCounter errors;
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
   ExpectShadowUnderSphere(scene, image);
-  EXPECT_EQ(pass->PostProcessCalls, pass->GetNumberOfShadowMapUpdates());
+  EXPECT_EQ(moments->PostProcessCalls, pass->GetNumberOfShadowMapUpdates());
   // Two floats per texel plus a third for the mipmaps, and one shared depth buffer.
-  const size_t values = 256 * 256 * 8;
-  EXPECT_EQ(pass->GetShadowMapMemory(), values + values / 3 + 256 * 256 * 4);
-  const std::string difference = CompareWithBaseline(image, "StorageMoments");
+  const size_t values = 256 * 256 * 8 * pass->GetNumberOfShadowMapLayers();
+  const size_t depth = 256 * 256 * 4;
+  EXPECT_EQ(pass->GetShadowMapMemory(), values + values / 3 + depth);
+  const std::string difference = CompareWithBaseline(image, BaselineName("Moments", GetParam()));
   EXPECT_TRUE(difference.empty()) << difference;
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
 }
 
-TEST(ShadowStorage, FrontAndBackByMinimumBlendingNeedNoBias)
+TEST_P(ShadowStorageViews, FrontAndBackByMinimumBlendingNeedNoBias)
 {
   TestScene scene;
   scene.SetSun(SunDirection);
-  vtkNew<vtkTestFrontBackShadowMapPass> pass;
-  pass->SetFilter(vtkAbstractShadowMapPass::HARD);
-  pass->SetConstantBias(0.0);
-  pass->SetSlopeScaledBias(0.0);
+  auto pass = MakePass(GetParam());
+  vtkNew<vtkTestFrontBackRepresentation> frontBack;
+  pass->SetRepresentation(frontBack);
   pass->SetNormalOffset(0.0);
   ErrorCounter errors;
   scene.Renderer->SetPass(pass);
@@ -179,23 +212,68 @@ TEST(ShadowStorage, FrontAndBackByMinimumBlendingNeedNoBias)
   // is applied: the midpoint lies inside the casters.
   EXPECT_GT(LuminanceAt(scene.Renderer, image, glm::dvec3(0, 0, 1.5) - SunDirection), LitAbove);
   EXPECT_GT(LuminanceAt(scene.Renderer, image, { 4, 2, 1.5 }), LitAbove);
-  const std::string difference = CompareWithBaseline(image, "StorageFrontBack");
+  const std::string difference = CompareWithBaseline(image, BaselineName("FrontBack", GetParam()));
   EXPECT_TRUE(difference.empty()) << difference;
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
 }
 
-// A subclass's lookup code is part of the receivers' shaders: when it changes,
-// they are rebuilt.
+INSTANTIATE_TEST_SUITE_P(Views, ShadowStorageViews,
+  ::testing::Values("Uniform", "Cascaded", "Warped"),
+  [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+// A representation's lookup code is part of the receivers' shaders: when it
+// changes, they are rebuilt.
 TEST(ShadowStorage, ChangedLookupCodeRebuildsReceivers)
 {
   TestScene scene;
   scene.SetSun(SunDirection);
-  vtkNew<vtkTestSwappedLookupPass> pass;
+  vtkNew<vtkDepthShadowMapPass> pass;
+  vtkNew<vtkTestSwappedLookupRepresentation> swapped;
+  pass->SetRepresentation(swapped);
   pass->SetResolution(256);
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
   ExpectShadowUnderSphere(scene, image);
-  pass->SetInverted(true);
+  swapped->SetInverted(true);
   image = RenderAndCapture(scene.Window);
   EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)), LitAbove);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, { -5, -4, 0 }), ShadowedBelow);
+}
+
+// SetRepresentation(nullptr) and SetViews(nullptr) restore the preset's own.
+TEST(ShadowStorage, NullRestoresThePresetStrategies)
+{
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  vtkShadowMapRepresentation* depth = pass->GetRepresentation();
+  vtkShadowMapViews* warped = pass->GetViews();
+  EXPECT_EQ(depth, pass->GetDepthRepresentation());
+  EXPECT_EQ(warped, pass->GetWarpedViews());
+  vtkNew<vtkTestMomentsRepresentation> moments;
+  pass->SetRepresentation(moments);
+  EXPECT_EQ(pass->GetRepresentation(), moments.Get());
+  pass->SetRepresentation(nullptr);
+  EXPECT_EQ(pass->GetRepresentation(), depth);
+  pass->SetViews(nullptr);
+  EXPECT_EQ(pass->GetViews(), warped);
+}
+
+// A parameter of a strategy is a parameter of the pass: changing it re-renders the maps.
+TEST(ShadowStorage, StrategyParametersReRenderTheMaps)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  scene.Window->Render();
+  scene.Window->Render();
+  const int updates = pass->GetNumberOfShadowMapUpdates();
+  pass->GetWarpedViews()->SetWarpModeToTSM();
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates + 1);
+  pass->GetDepthRepresentation()->SetSlopeScaledBias(3.0);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates + 2);
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
 }

@@ -1,6 +1,6 @@
 /**
- * @class   vtkCascadedShadowMapPass
- * @brief   Cascaded shadow maps for directional lights; tiled maps for spots.
+ * @class   vtkCascadedShadowMapViews
+ * @brief   Cascaded shadow-map views for directional lights; tiled maps for spots.
  *
  * The camera's view depth up to MaximumShadowDistance is split into
  * NumberOfCascades partitions (survey 003 §4.3.1, PSSM's practical scheme, or
@@ -28,33 +28,32 @@
  * MaximumShadowDistance's fade applies to all. Point lights, and spots wider than one map holds, keep the
  * foundation's cube maps at the cascades' Resolution.
  *
- * Resolution is per cascade (default 1024: four cascades hold the memory of one
- * 2048² map).
+ * The views of vtkCascadedShadowMapPass; any pass takes them:
  *
  * @code
- * vtkNew<vtkCascadedShadowMapPass> shadows;
- * shadows->SetMaximumShadowDistance(200.0);
- * renderer->SetPass(shadows);
+ * vtkNew<vtkCascadedShadowMapViews> cascades;
+ * cascades->SetNumberOfCascades(3);
+ * pass->SetViews(cascades);
  * @endcode
  */
-#ifndef vtkCascadedShadowMapPass_h
-#define vtkCascadedShadowMapPass_h
+#ifndef vtkCascadedShadowMapViews_h
+#define vtkCascadedShadowMapViews_h
 
-#include "vtkAbstractShadowMapPass.h"
 #include "vtkRenderingShadowMapsModule.h" // For export macro
+#include "vtkShadowMapViews.h"
 
 #include <vector> // For SplitDistances
 
 namespace shadowmaps
 {
-struct ShadowLight;
+struct LightView;
 }
 
-class VTKRENDERINGSHADOWMAPS_EXPORT vtkCascadedShadowMapPass : public vtkAbstractShadowMapPass
+class VTKRENDERINGSHADOWMAPS_EXPORT vtkCascadedShadowMapViews : public vtkShadowMapViews
 {
 public:
-  static vtkCascadedShadowMapPass* New();
-  vtkTypeMacro(vtkCascadedShadowMapPass, vtkAbstractShadowMapPass);
+  static vtkCascadedShadowMapViews* New();
+  vtkTypeMacro(vtkCascadedShadowMapViews, vtkShadowMapViews);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -125,6 +124,8 @@ public:
    */
   vtkSetClampMacro(FitMode, int, STABLE, TIGHT);
   vtkGetMacro(FitMode, int);
+  void SetFitModeToStable() { this->SetFitMode(STABLE); }
+  void SetFitModeToTight() { this->SetFitMode(TIGHT); }
   ///@}
 
   enum CascadeWarpType
@@ -141,6 +142,9 @@ public:
    */
   vtkSetClampMacro(CascadeWarp, int, NO_WARP, GMNPR_WARP);
   vtkGetMacro(CascadeWarp, int);
+  void SetCascadeWarpToNoWarp() { this->SetCascadeWarp(NO_WARP); }
+  void SetCascadeWarpToLiSPSM() { this->SetCascadeWarp(LISPSM_WARP); }
+  void SetCascadeWarpToGMNPR() { this->SetCascadeWarp(GMNPR_WARP); }
   ///@}
 
   enum SelectionType
@@ -153,6 +157,8 @@ public:
   /** How receivers pick their cascade. Default BY_DEPTH. */
   vtkSetClampMacro(Selection, int, BY_DEPTH, BY_COVERAGE);
   vtkGetMacro(Selection, int);
+  void SetSelectionToByDepth() { this->SetSelection(BY_DEPTH); }
+  void SetSelectionToByCoverage() { this->SetSelection(BY_COVERAGE); }
   ///@}
 
   ///@{
@@ -164,20 +170,25 @@ public:
   double GetSplit(int i) const;
   ///@}
 
-protected:
-  vtkCascadedShadowMapPass();
-  ~vtkCascadedShadowMapPass() override = default;
+  VTK_WRAPEXCLUDE void FitLight(
+    const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) override;
 
-  void ComputeLightViews(Internals& internals, int lightIndex) override;
+protected:
+  vtkCascadedShadowMapViews() = default;
+  ~vtkCascadedShadowMapViews() override = default;
+
   /** This frame's split depths; fade receives the depths shadows fade over ({0, 0}: none). */
-  std::vector<double> ComputeSplits(const Internals& internals, double fade[2]);
+  std::vector<double> ComputeSplits(const shadowmaps::ShadowFrame& frame, double fade[2]);
+  /** A directional light's views: one per depth partition. */
+  void FitCascades(const shadowmaps::ShadowFrame& frame, const std::vector<double>& splits,
+    shadowmaps::ShadowLight& light) const;
   /** A spot light's views: one cone map, in tiles of the cascades' layers. */
-  void TileSpotLight(Internals& internals, int lightIndex) const;
+  void TileSpotLight(const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) const;
   /** A spot's whole map before tiling, warped by CascadeWarp when the light may warp. */
   shadowmaps::LightView FitSpotMap(
-    const Internals& internals, const shadowmaps::ShadowLight& light) const;
-  /** How far the filter kernel reaches from a receiver's texel, in texels. */
-  double FilterReachTexels() const;
+    const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
+  /** Whether this light's cascades (or tiles) may be warped. */
+  bool MayWarp() const;
 
   int NumberOfCascades = 4;
   double SplitLambda = 0.75;
@@ -192,8 +203,8 @@ protected:
   bool SplitProblemReported = false;
 
 private:
-  vtkCascadedShadowMapPass(const vtkCascadedShadowMapPass&) = delete;
-  void operator=(const vtkCascadedShadowMapPass&) = delete;
+  vtkCascadedShadowMapViews(const vtkCascadedShadowMapViews&) = delete;
+  void operator=(const vtkCascadedShadowMapViews&) = delete;
 };
 
 #endif

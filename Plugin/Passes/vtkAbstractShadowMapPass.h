@@ -1,51 +1,51 @@
 /**
  * @class   vtkAbstractShadowMapPass
- * @brief   Shared base of the shadow-map passes: lights, casters, receivers, filters, bias.
+ * @brief   The shadow-map pass: coordinates lights, casters, views, maps and receivers.
  *
  * A shadow-map pass renders the scene through a delegate (by default a
  * vtkRenderStepsPass, so opaque, translucent, volume and overlay geometry all
- * draw) after rendering one depth map per view of every shadowed light. One
- * line turns shadows on:
+ * draw) after rendering the shadow maps of every shadowed light. It makes two
+ * independent choices, each a strategy object:
+ * - where a light's views go: a vtkShadowMapViews (SetViews): focused uniform
+ *   maps, warped maps (vtkWarpedShadowMapViews) or cascades
+ *   (vtkCascadedShadowMapViews);
+ * - what a texel stores: a vtkShadowMapRepresentation (SetRepresentation): one
+ *   depth with the PCF filters (vtkDepthShadowMapRepresentation), or values a
+ *   subclass chooses.
+ * The concrete passes are presets: vtkDepthShadowMapPass (depth maps, any
+ * views), vtkWarpedShadowMapPass and vtkCascadedShadowMapPass. One line turns
+ * shadows on:
  *
  * @code
  * renderer->SetPass(vtkNew<vtkWarpedShadowMapPass>());
  * @endcode
  *
- * Every switched-on light that is not a headlight casts shadows: directional
- * lights (scene or camera lights), spot lights (cone angle below 90 degrees;
- * cones wider than 60 degrees use six cube faces) and point lights (positional
- * with a cone of 90 degrees or more: six cube faces). At most
+ * Every frame: collect the shadowed lights and the casters; if anything the
+ * maps depend on changed (camera, a light, a caster, a caster's input data, the
+ * window size, a parameter of the pass or of its strategies), fit each light's
+ * views, render the casters into one texture array (one layer per view) and
+ * let the representation post-process it; then bind the maps and render the
+ * scene through the delegate, with the shadow test injected into the
+ * receivers' shaders (shadowmaps::ReceiverShader).
+ *
+ * Lights: every switched-on light that is not a headlight casts shadows:
+ * directional lights (scene or camera lights), spot lights (cone angle below 90
+ * degrees; cones wider than 60 degrees use six cube faces) and point lights
+ * (positional with a cone of 90 degrees or more: six cube faces). At most
  * VTK_MAX_SHADOWED_LIGHTS lights are shadowed; further lights still light the
  * scene, unshadowed, and a warning says so. A light opts out with
  * light->GetInformation()->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
  * its ShadowAttenuation scales how dark its shadows are.
  *
- * Maps are rendered with a minimal caster fragment shader into one texture
- * array, one layer per light view. Casters nearer the light than a view's near
- * plane are clamped onto it (depth clamping) rather than clipped, so they still
- * occlude what lies behind them. What a light's views are (ComputeLightViews)
- * and what a texel stores (GetMapStorage, GetReceiverLookupCode: one depth by
- * default, or two float values such as two depth layers or moments) are the
- * subclass's choice.
+ * Casters are rendered with a minimal caster fragment shader. Casters nearer
+ * the light than a view's near plane are clamped onto it (depth clamping)
+ * rather than clipped, so they still occlude what lies behind them.
  *
  * Receivers: the shadow test is injected into the fragment shaders of
  * vtkOpenGLPolyDataMapper and its subclasses, per light, scaling that light's
  * diffuse and specular (Phong) or radiance (PBR) terms. Unlit draws compile
  * unchanged and render without shadows. Actors opt out through their property
  * keys: CASTS_SHADOWS() = 0 (not a caster), RECEIVES_SHADOWS() = 0.
- *
- * Bias (thesis 000 §3.2, Kozlov 001): constant and slope-scaled depth offset
- * applied when the casters are rendered (m = max(|dz/dx|, |dz/dy|)), and a
- * normal offset measured in texels and scaled by the world-space texel size at
- * the receiver.
- *
- * Filtering: hard (1 tap), hardware 2x2 bilinear PCF, N x N PCF of bilinear
- * taps, and Poisson-disc PCF rotated per texel by a noise texture addressed in
- * light space, so the pattern stays put while the camera moves.
- *
- * The maps are re-rendered only when the camera, a light, a caster, a caster's
- * input data (including upstream pipeline changes), the window size or a pass
- * parameter changed.
  *
  * If the GL context cannot provide the maps (allocation or framebuffer
  * failure) the pass warns once and renders the frame without shadows.
@@ -57,19 +57,18 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
-#include <string> // For GetReceiverLookupCode
+#include <string> // For ReportGLFailure
+#include <vector> // For MapSignature
 
-class vtkCamera;
 class vtkInformationIntegerKey;
-class vtkLight;
 class vtkOpenGLRenderer;
 class vtkRenderPass;
+class vtkShadowMapRepresentation;
+class vtkShadowMapViews;
 namespace shadowmaps
 {
 struct LightView;
 struct ShadowLight;
-struct MapStorage;
-class TextureArray;
 }
 
 #define VTK_MAX_SHADOWED_LIGHTS 8
@@ -101,6 +100,25 @@ public:
 
   ///@{
   /**
+   * Where each light's views go. A pass's preset keeps its own views object;
+   * setting nullptr restores it. Its parameters' changes re-render the maps.
+   */
+  void SetViews(vtkShadowMapViews* views);
+  vtkShadowMapViews* GetViews();
+  ///@}
+
+  ///@{
+  /**
+   * What a texel of the maps stores and how receivers read it. A pass's preset
+   * keeps its own representation; setting nullptr restores it. Its parameters'
+   * changes re-render the maps and rebuild the receivers' shaders as needed.
+   */
+  void SetRepresentation(vtkShadowMapRepresentation* representation);
+  vtkShadowMapRepresentation* GetRepresentation();
+  ///@}
+
+  ///@{
+  /**
    * Width and height of each shadow map in texels. Default 2048, clamped to
    * [64, 16384] here and to the GL maximum texture size at render time.
    */
@@ -123,69 +141,9 @@ public:
    */
   vtkSetClampMacro(CasterFaces, int, FRONT_FACES, BOTH_FACES);
   vtkGetMacro(CasterFaces, int);
-  ///@}
-
-  enum FilterType
-  {
-    HARD = 0,
-    PCF_2X2 = 1,
-    PCF_NXN = 2,
-    POISSON = 3
-  };
-
-  ///@{
-  /**
-   * Shadow filter. HARD: one nearest tap. PCF_2X2: one hardware bilinear
-   * comparison. PCF_NXN: N x N bilinear comparisons (KernelSize). POISSON: a
-   * rotated Poisson disc of PoissonSamples taps within FilterRadius texels.
-   * Clamped to [HARD, POISSON]; default PCF_2X2.
-   */
-  vtkSetClampMacro(Filter, int, HARD, POISSON);
-  vtkGetMacro(Filter, int);
-  ///@}
-
-  ///@{
-  /** N of the N x N PCF filter. Clamped to [2, 7]; default 3. */
-  vtkSetClampMacro(KernelSize, int, 2, 7);
-  vtkGetMacro(KernelSize, int);
-  ///@}
-
-  ///@{
-  /** Radius of the Poisson filter, in texels. Clamped to [0.5, 16]; default 2. */
-  vtkSetClampMacro(FilterRadius, double, 0.5, 16.0);
-  vtkGetMacro(FilterRadius, double);
-  ///@}
-
-  ///@{
-  /** Taps of the Poisson filter. Clamped to [4, 32]; default 16. */
-  vtkSetClampMacro(PoissonSamples, int, 4, 32);
-  vtkGetMacro(PoissonSamples, int);
-  ///@}
-
-  ///@{
-  /**
-   * Constant depth offset applied to casters, in units of the smallest
-   * resolvable depth difference of the maps (glPolygonOffset units): about 2^-24
-   * of the light's depth range in 32-bit maps, 1/65535 in 16-bit ones, so a unit
-   * weighs 256 times more there (see GetMapStorage); the default stays below a
-   * quarter texel either way. Views that store linear depth (the TSM, LiSPSM and
-   * GMNPR warps) are always 32-bit and add it, as 2^-24 per unit, to the depth
-   * they store. Clamped to [0, 10000]; default 4.
-   */
-  vtkSetClampMacro(ConstantBias, double, 0.0, 10000.0);
-  vtkGetMacro(ConstantBias, double);
-  ///@}
-
-  ///@{
-  /**
-   * Slope-scaled depth offset applied to casters: the depth offset grows by
-   * this factor times m = max(|dz/dx|, |dz/dy|). Views that store linear depth
-   * take m on the depth they store; for directional lights this term is capped
-   * at SlopeScaledBias / Resolution (a 45 degree surface in a uniform map), as a
-   * warp's far texels are many times the mean. Clamped to [0, 100]; default 2.
-   */
-  vtkSetClampMacro(SlopeScaledBias, double, 0.0, 100.0);
-  vtkGetMacro(SlopeScaledBias, double);
+  void SetCasterFacesToFront() { this->SetCasterFaces(FRONT_FACES); }
+  void SetCasterFacesToBack() { this->SetCasterFaces(BACK_FACES); }
+  void SetCasterFacesToBoth() { this->SetCasterFaces(BOTH_FACES); }
   ///@}
 
   ///@{
@@ -221,6 +179,11 @@ public:
    */
   vtkSetClampMacro(AnalysisView, int, NO_ANALYSIS, PARTITION);
   vtkGetMacro(AnalysisView, int);
+  void SetAnalysisViewToNone() { this->SetAnalysisView(NO_ANALYSIS); }
+  void SetAnalysisViewToShadowFactor() { this->SetAnalysisView(SHADOW_FACTOR); }
+  void SetAnalysisViewToTexelDensity() { this->SetAnalysisView(TEXEL_DENSITY); }
+  void SetAnalysisViewToShadowMap() { this->SetAnalysisView(SHADOW_MAP); }
+  void SetAnalysisViewToPartition() { this->SetAnalysisView(PARTITION); }
   vtkSetClampMacro(AnalysisLight, int, 0, VTK_MAX_SHADOWED_LIGHTS - 1);
   vtkGetMacro(AnalysisLight, int);
   ///@}
@@ -267,57 +230,21 @@ public:
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
   vtkMTimeType GetShaderStageMTime() override;
 
+  /** Includes the views' and the representation's modification times. */
+  vtkMTimeType GetMTime() override;
+
 protected:
-  /** Per-frame state: shadowed lights and their views (vtkShadowMapInternals.h). */
-  struct Internals;
-
-  vtkAbstractShadowMapPass();
+  /**
+   * A pass of the given default views and representation (the preset that
+   * SetViews(nullptr) and SetRepresentation(nullptr) restore).
+   */
+  vtkAbstractShadowMapPass(
+    vtkShadowMapViews* defaultViews, vtkShadowMapRepresentation* defaultRepresentation);
   ~vtkAbstractShadowMapPass() override;
-
-  /**
-   * Fill `views` with the views of `light` for this frame. The base class
-   * provides the focused uniform fits (see FitLightViewsUniform).
-   */
-  virtual void ComputeLightViews(Internals& internals, int lightIndex) = 0;
-
-  /** The focused uniform fit for light lightIndex (directional, spot or cube). */
-  void FitLightViewsUniform(Internals& internals, int lightIndex);
-
-  /**
-   * What a texel of the maps holds and how casters write it (see
-   * shadowmaps::MapStorage). Default: one depth, written depth-only; the pass
-   * stores it in 16 bits instead of 32 where every view allows
-   * (shadowmaps::SixteenBitDepthSuffices).
-   */
-  virtual void GetMapStorage(shadowmaps::MapStorage& storage) const;
-
-  /**
-   * GLSL appended to the receivers' shadow code. It declares the sampler
-   * `vtkShadowMaps` (a sampler2DArrayShadow for depth storage, a sampler2DArray
-   * for value storage) and defines `float vtkShadowLookup(vec3 mapCoord, int
-   * layer)`: the visibility in [0, 1] of a receiver at depth mapCoord.z seen at
-   * texture coordinates mapCoord.xy of map layer `layer`. The filter settings
-   * arrive as the VTK_SHADOW_* macros and uniforms of vtkShadowMapsReceiverFS.
-   * Default: the PCF family over depth maps (vtkShadowMapsDepthLookupFS).
-   */
-  virtual std::string GetReceiverLookupCode() const;
-
-  /**
-   * Called after the casters were rendered into all layers (and mipmaps
-   * built), before receivers sample them: blur or other map filtering goes
-   * here. Returning false reports a GL failure: the frame renders unshadowed.
-   */
-  virtual bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps);
 
   vtkRenderPass* DelegatePass = nullptr;
   int Resolution = 2048;
   int CasterFaces = BOTH_FACES;
-  int Filter = PCF_2X2;
-  int KernelSize = 3;
-  double FilterRadius = 2.0;
-  int PoissonSamples = 16;
-  double ConstantBias = 4.0;
-  double SlopeScaledBias = 2.0;
   double NormalOffset = 1.0;
   int AnalysisView = NO_ANALYSIS;
   int AnalysisLight = 0;
@@ -328,29 +255,30 @@ protected:
   int NumberOfCasterDraws = 0;
   int NumberOfNonFiniteViews = 0;
 
+private:
+  /** This frame's lights, casters and views; the GL objects and the last map update. */
+  struct Internals;
   std::unique_ptr<Internals> Internal;
 
-private:
-  /** GL objects, helper passes and the state of the last map update. */
-  struct Resources;
-  std::unique_ptr<Resources> Resource;
-
-  bool PrepareShadows(const vtkRenderState* s, vtkOpenGLRenderer* renderer);
+  bool PrepareShadows(vtkOpenGLRenderer* renderer);
   void CollectLights(vtkOpenGLRenderer* renderer);
-  void CollectPropsAndBounds(vtkOpenGLRenderer* renderer);
-  void DropLightsWithNonFiniteViews();
+  void CollectCastersAndCamera(vtkOpenGLRenderer* renderer);
+  std::vector<vtkMTimeType> MapSignature(vtkOpenGLRenderer* renderer);
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
+  int UsableResolution();
+  bool FitViews();
+  void DropLightsWithNonFiniteViews();
+  void AssignLayers();
+  void ChooseStorage();
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view);
   void ApplyDepthBias(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer);
-  void StoreReceiverUniforms();
   void UpdateReceiverShaderKey(const vtkRenderState* s);
   void BindShadowTextures(vtkOpenGLRenderer* renderer);
   void UnbindShadowTextures(vtkOpenGLRenderer* renderer);
-  void ReportGLFailure(const std::string& error);
   void RenderShadowMapView(vtkOpenGLRenderer* renderer);
-  std::string AnalysisCode() const;
+  void ReportGLFailure(const std::string& error);
 
   vtkAbstractShadowMapPass(const vtkAbstractShadowMapPass&) = delete;
   void operator=(const vtkAbstractShadowMapPass&) = delete;

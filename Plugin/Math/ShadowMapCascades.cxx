@@ -432,6 +432,12 @@ int SelectCascadeByDepth(const std::vector<double>& splits, double viewDepth)
   return index;
 }
 
+double BlendBandStart(const std::vector<double>& splits, int index, double blendFraction)
+{
+  const double fraction = std::min(std::max(blendFraction, 0.0), 1.0);
+  return splits[index + 1] - fraction * (splits[index + 1] - splits[index]);
+}
+
 double CascadeBlendWeight(
   const std::vector<double>& splits, int index, double viewDepth, double blendFraction)
 {
@@ -440,14 +446,13 @@ double CascadeBlendWeight(
   {
     return 0.0;
   }
-  const double fraction = std::min(std::max(blendFraction, 0.0), 1.0);
-  const double end = splits[index + 1];
-  const double band = fraction * (end - splits[index]);
+  const double start = BlendBandStart(splits, index, blendFraction);
+  const double band = splits[index + 1] - start;
   if (!(band > 0.0))
   {
     return 0.0;
   }
-  const double w = (viewDepth - (end - band)) / band;
+  const double w = (viewDepth - start) / band;
   return Finite(w) ? std::min(std::max(w, 0.0), 1.0) : 0.0;
 }
 
@@ -461,8 +466,7 @@ glm::dvec2 CascadeDepthRange(const std::vector<double>& splits, int index, doubl
   double zNear = splits[index];
   if (index > 0 && Finite(blendFraction))
   {
-    const double fraction = std::min(std::max(blendFraction, 0.0), 1.0);
-    zNear = splits[index] - fraction * (splits[index] - splits[index - 1]);
+    zNear = BlendBandStart(splits, index - 1, blendFraction);
   }
   return { zNear, splits[index + 1] };
 }

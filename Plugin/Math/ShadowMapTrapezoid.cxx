@@ -484,4 +484,15 @@ LightView TrapezoidLightView(const TrapezoidMap& map, int resolution)
   return view;
 }
 
+glm::dvec3 TextureToInverseW(const LightView& view)
+{
+  if (!view.LinearDepth)
+  {
+    return glm::dvec3(0.0);
+  }
+  // x_ndc = 2 u - 1.
+  const glm::dvec3 r = NdcToInverseW(view);
+  return glm::dvec3(2.0 * r.x, 2.0 * r.y, r.z - r.x - r.y);
+}
+
 } // namespace shadowmaps

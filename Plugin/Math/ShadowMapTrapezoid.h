@@ -153,6 +153,10 @@ LightView TrapezoidLightView(const TrapezoidMap& map, int resolution);
 /// and for singular projections.
 glm::dvec3 NdcToInverseW(const LightView& view);
 
+/// NdcToInverseW over texture coordinates (u, v, 1) instead of NDC, for
+/// receivers of linear-depth views; zero for the other views.
+glm::dvec3 TextureToInverseW(const LightView& view);
+
 } // namespace shadowmaps
 
 #endif

@@ -1,5 +1,9 @@
 #include "vtkAbstractShadowMapPass.h"
 
+#include "ShadowMapAnalysis.h"
+#include "ShadowMapLight.h"
+#include "ShadowMapReceiverShader.h"
+#include "ShadowMapTextureArray.h"
 #include "ShadowMapTrapezoid.h"
 
 #include "vtkActor.h"
@@ -14,22 +18,16 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
-#include "vtkShaderProgram.h"
 #include "vtkShadowMapCasterPass.h"
-#include "vtkShadowMapInternals.h"
-#include "vtkShadowMapsDepthLookupFS.h"
-#include "vtkShadowMapsReceiverFS.h"
-#include "vtkShadowMapsViewFS.h"
+#include "vtkShadowMapRepresentation.h"
+#include "vtkShadowMapViews.h"
 #include "vtkSmartPointer.h"
-#include "vtkTextureObject.h"
 #include "vtkTextureUnitManager.h"
 #include "vtkVolume.h"
 #include "vtk_glew.h"
@@ -38,10 +36,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <functional>
 #include <limits>
-#include <random>
-#include <sstream>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -55,10 +50,6 @@ using shadowmaps::ShadowLight;
 
 namespace
 {
-// Cones wider than this (half angle, degrees) are rendered as six cube faces:
-// one perspective map that wide wastes most of its texels at the rim.
-constexpr double WidestSingleMapCone = 60.0;
-constexpr int NoiseSize = 32;
 
 glm::dmat4 ToGlm(vtkMatrix4x4* m)
 {
@@ -93,32 +84,6 @@ bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
 glm::dvec3 ToGlm(const double v[3])
 {
   return { v[0], v[1], v[2] };
-}
-
-// Polydata draws are patched where the mapper applies light i's colour: Phong's
-// diffuse and specular sums and PBR's radiance (vtkOpenGLPolyDataMapper 9.1).
-int InjectShadowFactor(std::string& fragmentShader, int shaderIndex, int lightIndex)
-{
-  const std::string color = "lightColor" + std::to_string(shaderIndex);
-  const std::string factor = "vtkShadowFactor" + std::to_string(lightIndex);
-  const std::pair<std::string, std::string> patterns[] = {
-    { "diffuse += (df * " + color + ");", "diffuse += (df * " + color + " * " + factor + ");" },
-    { "specular += (sf * " + color + ");", "specular += (sf * " + color + " * " + factor + ");" },
-    { "radiance = " + color + ";", "radiance = " + color + " * " + factor + ";" },
-    { "radiance = " + color + " * attenuation;",
-      "radiance = " + color + " * " + factor + " * attenuation;" },
-  };
-  int replaced = 0;
-  for (const auto& pattern : patterns)
-  {
-    for (size_t at = fragmentShader.find(pattern.first); at != std::string::npos;
-         at = fragmentShader.find(pattern.first, at + pattern.second.size()))
-    {
-      fragmentShader.replace(at, pattern.first.size(), pattern.second);
-      ++replaced;
-    }
-  }
-  return replaced;
 }
 
 bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb& box)
@@ -189,19 +154,6 @@ void SetCameraToView(vtkCamera* camera, vtkMatrix4x4* projection, const LightVie
   camera->Modified();
 }
 
-// 1 / W as a plane over texture coordinates (u, v, 1) for receivers of
-// linear-depth views; zero for the others.
-glm::vec3 TextureToInverseW(const LightView& view)
-{
-  if (!view.LinearDepth)
-  {
-    return glm::vec3(0.0f);
-  }
-  // x_ndc = 2 u - 1.
-  const glm::dvec3 r = shadowmaps::NdcToInverseW(view);
-  return glm::vec3(2.0 * r.x, 2.0 * r.y, r.z - r.x - r.y);
-}
-
 // 1 / W as a plane over window coordinates (gl_FragCoord.xy) of a map of
 // `resolution` texels, for casters of linear-depth views; (0, 0, 1) for the others.
 std::array<float, 3> WindowToInverseW(const LightView& view, int resolution)
@@ -211,31 +163,9 @@ std::array<float, 3> WindowToInverseW(const LightView& view, int resolution)
     return { { 0.0f, 0.0f, 1.0f } };
   }
   // u = x_window / resolution.
-  const glm::vec3 t = TextureToInverseW(view);
+  const glm::vec3 t(shadowmaps::TextureToInverseW(view));
   const float scale = 1.0f / static_cast<float>(std::max(resolution, 1));
   return { { t.x * scale, t.y * scale, t.z } };
-}
-
-// Per-texel rotations (cos, sin) of the Poisson disc.
-vtkSmartPointer<vtkTextureObject> CreateRotationNoise(vtkOpenGLRenderWindow* window)
-{
-  std::mt19937 generator(20261122);
-  std::uniform_real_distribution<float> angle(0.0f, 6.2831853f);
-  std::vector<float> rotations(NoiseSize * NoiseSize * 2);
-  for (size_t i = 0; i < rotations.size(); i += 2)
-  {
-    const float a = angle(generator);
-    rotations[i] = std::cos(a);
-    rotations[i + 1] = std::sin(a);
-  }
-  auto noise = vtkSmartPointer<vtkTextureObject>::New();
-  noise->SetContext(window);
-  noise->SetWrapS(vtkTextureObject::Repeat);
-  noise->SetWrapT(vtkTextureObject::Repeat);
-  noise->SetMinificationFilter(vtkTextureObject::Nearest);
-  noise->SetMagnificationFilter(vtkTextureObject::Nearest);
-  noise->Create2DFromRaw(NoiseSize, NoiseSize, 2, VTK_FLOAT, rotations.data());
-  return noise;
 }
 
 // The bits of a matrix, so that the signature follows the camera's values
@@ -272,6 +202,13 @@ vtkMTimeType CasterMTime(vtkProp* prop)
   return time;
 }
 
+// A prop that renders into the maps, with its world bounds.
+struct Caster
+{
+  vtkProp* Prop = nullptr;
+  Aabb Bounds;
+};
+
 // Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
 // depth map; as casters they would only re-render the maps on every transfer
 // function edit.
@@ -281,19 +218,28 @@ bool DrawsIntoDepthMaps(vtkProp* prop)
 }
 } // namespace
 
-struct vtkAbstractShadowMapPass::Resources
+struct vtkAbstractShadowMapPass::Internals
 {
+  // The strategies: the preset's own, or the user's.
+  vtkSmartPointer<vtkShadowMapViews> DefaultViews;
+  vtkSmartPointer<vtkShadowMapRepresentation> DefaultRepresentation;
+  vtkSmartPointer<vtkShadowMapViews> Views;
+  vtkSmartPointer<vtkShadowMapRepresentation> Representation;
+
+  // The frame being rendered.
+  shadowmaps::ShadowFrame Frame;
+  std::vector<shadowmaps::ShadowLight> Lights;
+  std::vector<Caster> Casters;
+
+  // The maps and what renders them.
   shadowmaps::TextureArray Maps;
   shadowmaps::MapStorage Storage;
-  std::string LookupCode; // GetReceiverLookupCode() of the current maps
-  size_t LookupCodeHash = 0;
   vtkNew<vtkShadowMapCasterPass> CasterPass;
   vtkNew<vtkOpaquePass> OpaquePass;
   vtkNew<vtkCamera> LightCamera;
   vtkNew<vtkMatrix4x4> LightProjection;
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
-  vtkSmartPointer<vtkTextureObject> Noise;
-  std::unique_ptr<vtkOpenGLQuadHelper> MapViewQuad;
+  shadowmaps::MapView MapView;
 
   // What the maps were last rendered for; empty when they must be re-rendered.
   std::vector<vtkMTimeType> Signature;
@@ -301,22 +247,13 @@ struct vtkAbstractShadowMapPass::Resources
   /// The lights and views the maps were rendered for (reused with the maps).
   std::vector<shadowmaps::ShadowLight> RenderedLights;
 
+  // The receivers' shader code and uniforms of the current maps.
+  shadowmaps::ReceiverCode Code;
+  shadowmaps::ReceiverUniforms Uniforms;
   // Receiver shaders depend on these; GetShaderStageMTime() follows them.
   std::string ShaderKey;
   std::vector<vtkProp*> NonReceivers;
   vtkTimeStamp ShaderKeyTime;
-
-  // Uniform values of the current maps.
-  std::vector<float> ViewToMap;
-  std::vector<float> TexelSizes;
-  /// Per view: 1 / W as a plane over texture (u, v, 1) for linear-depth views, else 0.
-  std::vector<float> DepthInverseW;
-  std::vector<float> Cascades;
-  std::vector<float> TileGrids;
-  std::vector<float> CascadeLights;
-  std::vector<float> LightPositions;
-  std::vector<float> Attenuations;
-  glm::mat4 ViewToWorld{ 1.0f };
   int MapUnit = -1;
 
   bool Active = false;
@@ -328,11 +265,15 @@ struct vtkAbstractShadowMapPass::Resources
 };
 
 //------------------------------------------------------------------------------
-vtkAbstractShadowMapPass::vtkAbstractShadowMapPass()
+vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
+  vtkShadowMapViews* defaultViews, vtkShadowMapRepresentation* defaultRepresentation)
   : Internal(new Internals)
-  , Resource(new Resources)
 {
-  this->Resource->ShaderKeyTime.Modified();
+  this->Internal->DefaultViews = defaultViews;
+  this->Internal->DefaultRepresentation = defaultRepresentation;
+  this->Internal->Views = defaultViews;
+  this->Internal->Representation = defaultRepresentation;
+  this->Internal->ShaderKeyTime.Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -361,21 +302,63 @@ void vtkAbstractShadowMapPass::SetDelegatePass(vtkRenderPass* delegate)
 }
 
 //------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SetViews(vtkShadowMapViews* views)
+{
+  vtkShadowMapViews* chosen = views ? views : this->Internal->DefaultViews.Get();
+  if (chosen != this->Internal->Views)
+  {
+    this->Internal->Views = chosen;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkShadowMapViews* vtkAbstractShadowMapPass::GetViews()
+{
+  return this->Internal->Views;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SetRepresentation(vtkShadowMapRepresentation* representation)
+{
+  vtkShadowMapRepresentation* chosen =
+    representation ? representation : this->Internal->DefaultRepresentation.Get();
+  if (chosen != this->Internal->Representation)
+  {
+    this->Internal->Representation = chosen;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkShadowMapRepresentation* vtkAbstractShadowMapPass::GetRepresentation()
+{
+  return this->Internal->Representation;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkAbstractShadowMapPass::GetMTime()
+{
+  return std::max({ this->Superclass::GetMTime(), this->Internal->Views->GetMTime(),
+    this->Internal->Representation->GetMTime() });
+}
+
+//------------------------------------------------------------------------------
 size_t vtkAbstractShadowMapPass::GetShadowMapMemory() const
 {
-  return this->Resource->Maps.GetMemoryBytes();
+  return this->Internal->Maps.GetMemoryBytes();
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfDepthOnlyCasterShaders() const
 {
-  return this->Resource->CasterPass->GetNumberOfDepthOnlyShaders();
+  return this->Internal->CasterPass->GetNumberOfDepthOnlyShaders();
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfOwnFragmentCasterShaders() const
 {
-  return this->Resource->CasterPass->GetNumberOfOwnFragmentShaders();
+  return this->Internal->CasterPass->GetNumberOfOwnFragmentShaders();
 }
 
 //------------------------------------------------------------------------------
@@ -384,10 +367,10 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   vtkOpenGLClearErrorMacro();
   auto* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   vtkRenderPass* delegate =
-    this->DelegatePass ? this->DelegatePass : this->Resource->DefaultDelegate.Get();
+    this->DelegatePass ? this->DelegatePass : this->Internal->DefaultDelegate.Get();
 
-  Resources& r = *this->Resource;
-  r.Active = renderer && this->PrepareShadows(s, renderer);
+  Internals& r = *this->Internal;
+  r.Active = renderer && this->PrepareShadows(renderer);
   if (r.Active)
   {
     this->UpdateReceiverShaderKey(s);
@@ -409,7 +392,7 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::PrepareShadows(const vtkRenderState*, vtkOpenGLRenderer* renderer)
+bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer)
 {
   renderer->UpdateLightsGeometryToFollowCamera();
   this->CollectLights(renderer);
@@ -419,7 +402,7 @@ bool vtkAbstractShadowMapPass::PrepareShadows(const vtkRenderState*, vtkOpenGLRe
     this->NumberOfShadowMapLayers = 0;
     return false;
   }
-  this->CollectPropsAndBounds(renderer);
+  this->CollectCastersAndCamera(renderer);
   const bool ready = this->UpdateShadowMaps(renderer);
   // Lights whose views were not finite are gone by now.
   this->NumberOfShadowedLights = static_cast<int>(this->Internal->Lights.size());
@@ -459,37 +442,27 @@ void vtkAbstractShadowMapPass::CollectLights(vtkOpenGLRenderer* renderer)
     shadowLight.Direction = ToGlm(light->GetTransformedFocalPoint()) - shadowLight.Position;
     shadowLight.ConeAngle = light->GetConeAngle();
     shadowLight.Attenuation = std::min(std::max(light->GetShadowAttenuation(), 0.0f), 1.0f);
-    if (!light->GetPositional())
-    {
-      shadowLight.Kind = LightKind::Directional;
-    }
-    else if (shadowLight.ConeAngle < 90.0)
-    {
-      shadowLight.Kind = LightKind::Spot;
-      shadowLight.Cube = shadowLight.ConeAngle > WidestSingleMapCone;
-    }
-    else
-    {
-      shadowLight.Kind = LightKind::Point;
-      shadowLight.Cube = true;
-    }
+    shadowLight.Kind = !light->GetPositional() ? LightKind::Directional
+      : shadowLight.ConeAngle < 90.0           ? LightKind::Spot
+                                               : LightKind::Point;
     lights.push_back(shadowLight);
   }
-  if (skipped > 0 && !this->Resource->WarnedTooManyLights)
+  if (skipped > 0 && !this->Internal->WarnedTooManyLights)
   {
     vtkWarningMacro(<< skipped << " light(s) beyond the first " << VTK_MAX_SHADOWED_LIGHTS
                     << " shadowed lights cast no shadows; they still light the scene.");
   }
-  this->Resource->WarnedTooManyLights = skipped > 0;
+  this->Internal->WarnedTooManyLights = skipped > 0;
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::CollectPropsAndBounds(vtkOpenGLRenderer* renderer)
+void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* renderer)
 {
-  Internals& in = *this->Internal;
-  in.Casters.clear();
-  in.PropBounds.clear();
-  in.SceneBounds = Aabb();
+  Internals& r = *this->Internal;
+  shadowmaps::ShadowFrame& frame = r.Frame;
+  r.Casters.clear();
+  frame.PropBounds.clear();
+  frame.SceneBounds = Aabb();
   vtkCollectionSimpleIterator it;
   vtkPropCollection* props = renderer->GetViewProps();
   props->InitTraversal(it);
@@ -504,8 +477,8 @@ void vtkAbstractShadowMapPass::CollectPropsAndBounds(vtkOpenGLRenderer* renderer
     {
       continue;
     }
-    in.SceneBounds.Add(bounds);
-    in.PropBounds.push_back(bounds);
+    frame.SceneBounds.Add(bounds);
+    frame.PropBounds.push_back(bounds);
     if (!prop->GetPropertyKeys())
     {
       // Render passes create the keys on first use, which modifies the prop;
@@ -515,96 +488,72 @@ void vtkAbstractShadowMapPass::CollectPropsAndBounds(vtkOpenGLRenderer* renderer
     }
     if (IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()) && DrawsIntoDepthMaps(prop))
     {
-      in.Casters.push_back({ prop, bounds });
+      r.Casters.push_back({ prop, bounds });
     }
   }
 
   vtkCamera* camera = renderer->GetActiveCamera();
-  in.CameraView = ToGlm(camera->GetViewTransformMatrix());
-  in.CameraProjection =
+  frame.CameraView = ToGlm(camera->GetViewTransformMatrix());
+  frame.CameraProjection =
     ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
+  frame.FilterReachTexels = r.Representation->GetFilterReachTexels();
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
+std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRenderer* renderer)
 {
-  Internals& in = *this->Internal;
-  Resources& r = *this->Resource;
-
+  const Internals& r = *this->Internal;
   int size[2];
   int origin[2];
   renderer->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
   std::vector<vtkMTimeType> signature = { this->GetMTime(), renderer->GetLights()->GetMTime(),
     renderer->GetViewProps()->GetMTime(), static_cast<vtkMTimeType>(size[0]),
     static_cast<vtkMTimeType>(size[1]) };
-  AppendMatrixBits(in.CameraView, signature);
-  AppendMatrixBits(in.CameraProjection, signature);
-  for (const auto& light : in.Lights)
+  AppendMatrixBits(r.Frame.CameraView, signature);
+  AppendMatrixBits(r.Frame.CameraProjection, signature);
+  for (const auto& light : r.Lights)
   {
     signature.push_back(reinterpret_cast<vtkMTimeType>(light.Light));
     signature.push_back(light.Light->GetMTime());
   }
-  for (const auto& caster : in.Casters)
+  for (const auto& caster : r.Casters)
   {
     signature.push_back(reinterpret_cast<vtkMTimeType>(caster.Prop));
     signature.push_back(CasterMTime(caster.Prop));
   }
+  return signature;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
+{
+  Internals& r = *this->Internal;
+  std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
   if (r.MapsValid && signature == r.Signature)
   {
     // CollectLights rebuilt the lights without views; the maps hold these.
-    in.Lights = r.RenderedLights;
+    r.Lights = r.RenderedLights;
     return true;
   }
   r.Signature.clear();
   r.MapsValid = false;
 
-  GLint maximumSize = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumSize);
-  in.Resolution = std::min(this->Resolution, std::max(static_cast<int>(maximumSize), 64));
-  if (in.Resolution != this->Resolution && !r.WarnedResolution)
+  r.Frame.Resolution = this->UsableResolution();
+  if (!this->FitViews())
   {
-    vtkWarningMacro(<< "Resolution " << this->Resolution << " exceeds the GL maximum texture size; using "
-                    << in.Resolution << ".");
-    r.WarnedResolution = true;
-  }
-
-  for (int i = 0; i < static_cast<int>(in.Lights.size()); ++i)
-  {
-    this->ComputeLightViews(in, i);
-  }
-  this->DropLightsWithNonFiniteViews();
-  if (in.Lights.empty())
-  {
-    this->NumberOfShadowMapLayers = 0;
     return false;
   }
-  int layers = 0;
-  for (ShadowLight& light : in.Lights)
-  {
-    light.FirstLayer = layers;
-    layers += static_cast<int>(light.Views.size());
-  }
-  this->NumberOfShadowMapLayers = layers;
-
-  this->GetMapStorage(r.Storage);
-  const bool thirtyTwoBitNow =
-    r.Maps.GetResolution() != 0 && r.Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
-  if (r.Storage.Format == shadowmaps::TexelFormat::Depth &&
-    SixteenBitDepthSuffices(in.Lights, thirtyTwoBitNow))
-  {
-    r.Storage.Format = shadowmaps::TexelFormat::Depth16;
-  }
-  r.LookupCode = this->GetReceiverLookupCode();
-  r.LookupCodeHash = std::hash<std::string>{}(r.LookupCode);
+  this->ChooseStorage();
   std::string error;
-  if (!r.Maps.Reserve(in.Resolution, layers, r.Storage.Format, r.Storage.Mipmaps, error) ||
+  if (!r.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Storage.Format,
+        r.Storage.Mipmaps, error) ||
     !this->RenderShadowMaps(renderer))
   {
     this->ReportGLFailure(error.empty() ? r.LastGLError : error);
     return false;
   }
-  this->StoreReceiverUniforms();
-  r.RenderedLights = in.Lights;
+  r.Uniforms.Pack(r.Lights, r.Frame.CameraView);
+  r.RenderedLights = r.Lights;
   r.Signature = std::move(signature);
   r.MapsValid = true;
   r.WarnedGLError.clear();
@@ -613,13 +562,71 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::UsableResolution()
+{
+  Internals& r = *this->Internal;
+  GLint maximumSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumSize);
+  const int usable = std::min(this->Resolution, std::max(static_cast<int>(maximumSize), 64));
+  if (usable != this->Resolution && !r.WarnedResolution)
+  {
+    vtkWarningMacro(<< "Resolution " << this->Resolution
+                    << " exceeds the GL maximum texture size; using " << usable << ".");
+    r.WarnedResolution = true;
+  }
+  return usable;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::FitViews()
+{
+  Internals& r = *this->Internal;
+  for (ShadowLight& light : r.Lights)
+  {
+    r.Views->FitLight(r.Frame, light);
+  }
+  this->DropLightsWithNonFiniteViews();
+  this->AssignLayers();
+  return !r.Lights.empty();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::AssignLayers()
+{
+  int layers = 0;
+  for (ShadowLight& light : this->Internal->Lights)
+  {
+    light.FirstLayer = layers;
+    layers += static_cast<int>(light.Views.size());
+  }
+  this->NumberOfShadowMapLayers = layers;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ChooseStorage()
+{
+  Internals& r = *this->Internal;
+  r.Representation->GetMapStorage(r.Storage);
+  const bool thirtyTwoBitNow =
+    r.Maps.GetResolution() != 0 && r.Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
+  if (r.Storage.Format == shadowmaps::TexelFormat::Depth &&
+    SixteenBitDepthSuffices(r.Lights, thirtyTwoBitNow))
+  {
+    r.Storage.Format = shadowmaps::TexelFormat::Depth16;
+  }
+  r.Code.Definitions = r.Representation->GetReceiverDefinitions();
+  r.Code.Lookup = r.Representation->GetReceiverLookupCode();
+}
+
+//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ApplyDepthBias(const ShadowLight& light, const LightView& view)
 {
   // 32-bit depth (linear-depth views are never 16-bit): one polygon-offset unit
   // is 2^-24 for depths in [0.5, 1).
   constexpr float DepthUnit = 1.0f / 16777216.0f;
-  const auto slope = static_cast<float>(this->SlopeScaledBias);
-  const auto constant = static_cast<float>(this->ConstantBias);
+  const shadowmaps::DepthOffset offset = this->GetRepresentation()->GetCasterDepthOffset();
+  const auto slope = static_cast<float>(offset.SlopeScaled);
+  const auto constant = static_cast<float>(offset.Constant);
   if (view.LinearDepth)
   {
     // A directional light's linear depth spans its casters and B: its
@@ -628,15 +635,15 @@ void vtkAbstractShadowMapPass::ApplyDepthBias(const ShadowLight& light, const Li
     // resolution at the default). A spot's stored depth is its post-perspective
     // depth, crowded toward 1: no such cap.
     const float cap = light.Kind == LightKind::Directional
-      ? slope / static_cast<float>(std::max(this->Internal->Resolution, 1))
+      ? slope / static_cast<float>(std::max(this->Internal->Frame.Resolution, 1))
       : std::numeric_limits<float>::max();
     glPolygonOffset(0.0f, 0.0f);
-    this->Resource->CasterPass->SetLinearDepthBias({ { slope, constant * DepthUnit, cap } });
+    this->Internal->CasterPass->SetLinearDepthBias({ { slope, constant * DepthUnit, cap } });
   }
   else
   {
     glPolygonOffset(slope, constant);
-    this->Resource->CasterPass->SetLinearDepthBias({ { 0.0f, 0.0f, 0.0f } });
+    this->Internal->CasterPass->SetLinearDepthBias({ { 0.0f, 0.0f, 0.0f } });
   }
 }
 
@@ -655,64 +662,22 @@ void vtkAbstractShadowMapPass::DropLightsWithNonFiniteViews()
     lights.end());
   if (lights.size() == before)
   {
-    this->Resource->WarnedNonFiniteViews = false;
+    this->Internal->WarnedNonFiniteViews = false;
     return;
   }
-  if (!this->Resource->WarnedNonFiniteViews)
+  if (!this->Internal->WarnedNonFiniteViews)
   {
     vtkWarningMacro(<< this->NumberOfNonFiniteViews
                     << " light view(s) came out with non-finite matrices; their lights cast no "
                        "shadows until the views are finite again.");
-    this->Resource->WarnedNonFiniteViews = true;
+    this->Internal->WarnedNonFiniteViews = true;
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::FitLightViewsUniform(Internals& in, int lightIndex)
-{
-  ShadowLight& light = in.Lights[lightIndex];
-  light.Views.clear();
-  if (light.Cube)
-  {
-    const auto faces = shadowmaps::FitCubeFacesToView(
-      in.CameraViewProjection(), in.SceneBounds, light.Position, in.Resolution);
-    light.Views.assign(faces.begin(), faces.end());
-  }
-  else if (light.Kind == LightKind::Spot)
-  {
-    light.Views.push_back(shadowmaps::FitSpot(in.CameraViewProjection(), in.SceneBounds,
-      light.Position, light.Direction, light.ConeAngle, in.Resolution));
-  }
-  else
-  {
-    light.Views.push_back(shadowmaps::FitDirectional(
-      in.CameraViewProjection(), in.SceneBounds, light.Direction, in.Resolution));
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::GetMapStorage(shadowmaps::MapStorage& storage) const
-{
-  storage = shadowmaps::MapStorage();
-}
-
-//------------------------------------------------------------------------------
-std::string vtkAbstractShadowMapPass::GetReceiverLookupCode() const
-{
-  return vtkShadowMapsDepthLookupFS;
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::PostProcessShadowMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray&)
-{
-  return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 {
-  Internals& in = *this->Internal;
-  Resources& r = *this->Resource;
+  Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
 
@@ -747,13 +712,13 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   r.CasterPass->SetCasterFaces(this->CasterFaces);
   r.CasterPass->SetStoreCode(
     r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string());
-  r.CasterPass->SetLinearDepth(std::any_of(in.Lights.begin(), in.Lights.end(), [](const ShadowLight& l) {
+  r.CasterPass->SetLinearDepth(std::any_of(r.Lights.begin(), r.Lights.end(), [](const ShadowLight& l) {
     return std::any_of(l.Views.begin(), l.Views.end(), [](const LightView& v) { return v.LinearDepth; });
   }));
   this->NumberOfCasterDraws = 0;
 
   bool ok = true;
-  for (ShadowLight& light : in.Lights)
+  for (ShadowLight& light : r.Lights)
   {
     for (size_t v = 0; v < light.Views.size() && ok; ++v)
     {
@@ -780,7 +745,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   if (ok)
   {
     r.Maps.GenerateMipmaps();
-    ok = this->PostProcessShadowMaps(renderer, r.Maps);
+    ok = this->GetRepresentation()->PostProcessMaps(renderer, r.Maps);
     if (!ok)
     {
       r.LastGLError = "the shadow maps could not be post-processed";
@@ -792,9 +757,9 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer)
 {
-  Resources& r = *this->Resource;
+  Internals& r = *this->Internal;
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
-  state->vtkglViewport(0, 0, this->Internal->Resolution, this->Internal->Resolution);
+  state->vtkglViewport(0, 0, r.Frame.Resolution, r.Frame.Resolution);
   state->vtkglClearDepth(1.0);
   GLbitfield buffers = GL_DEPTH_BUFFER_BIT;
   if (r.Storage.Format == shadowmaps::TexelFormat::TwoFloats)
@@ -809,8 +774,7 @@ void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::RenderCastersIntoView(
   vtkOpenGLRenderer* renderer, const LightView& view)
 {
-  Internals& in = *this->Internal;
-  Resources& r = *this->Resource;
+  Internals& r = *this->Internal;
   this->ClearLayer(renderer);
   if (view.OutOfView)
   {
@@ -818,11 +782,11 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
   }
 
   SetCameraToView(r.LightCamera, r.LightProjection, view);
-  r.CasterPass->SetWindowToInverseW(WindowToInverseW(view, in.Resolution));
+  r.CasterPass->SetWindowToInverseW(WindowToInverseW(view, r.Frame.Resolution));
 
   const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
   std::vector<vtkProp*> visible;
-  for (const auto& caster : in.Casters)
+  for (const auto& caster : r.Casters)
   {
     if (FrustumMeetsBox(planes, caster.Bounds))
     {
@@ -843,74 +807,11 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::StoreReceiverUniforms()
-{
-  Internals& in = *this->Internal;
-  Resources& r = *this->Resource;
-  r.ViewToMap.clear();
-  r.TexelSizes.clear();
-  r.DepthInverseW.clear();
-  r.Cascades.clear();
-  r.TileGrids.clear();
-  r.CascadeLights.clear();
-  r.LightPositions.clear();
-  const glm::dmat4 viewToWorld = glm::inverse(in.CameraView);
-  r.Attenuations.clear();
-  const glm::dmat4 toTexture = shadowmaps::ClipToTexture();
-  for (const ShadowLight& light : in.Lights)
-  {
-    for (const LightView& view : light.Views)
-    {
-      const glm::dmat4 viewToMapD = toTexture * view.ViewProjection() * viewToWorld;
-      const glm::vec3 inverseW = TextureToInverseW(view);
-      r.DepthInverseW.insert(r.DepthInverseW.end(), glm::value_ptr(inverseW), glm::value_ptr(inverseW) + 3);
-      const size_t cascade = static_cast<size_t>(&view - light.Views.data());
-      // Cascades of one light share their texel formula's kind (constant for
-      // directional, per unit distance for spot), so the sum compares them.
-      const double firstTexel =
-        light.Views.front().TexelConstant + light.Views.front().TexelPerUnitDistance;
-      const double texel = view.TexelConstant + view.TexelPerUnitDistance;
-      const glm::vec4 depths = light.Cascaded && cascade < light.CascadeDepths.size()
-        ? glm::vec4(glm::vec3(light.CascadeDepths[cascade]),
-            firstTexel > 0.0 && texel > 0.0 ? firstTexel / texel : 1.0)
-        : glm::vec4(0.0f, 1e38f, 1e38f, 1.0f);
-      r.Cascades.insert(r.Cascades.end(), glm::value_ptr(depths), glm::value_ptr(depths) + 4);
-      const glm::mat4 viewToMap(viewToMapD);
-      r.ViewToMap.insert(r.ViewToMap.end(), glm::value_ptr(viewToMap), glm::value_ptr(viewToMap) + 16);
-      // A negative constant tells the receiver to use the map's local gradient.
-      r.TexelSizes.push_back(
-        view.TexelSizeFromGradient ? -1.0f : static_cast<float>(view.TexelConstant));
-      r.TexelSizes.push_back(static_cast<float>(view.TexelPerUnitDistance));
-    }
-    const glm::dvec3 positionVC(in.CameraView * glm::dvec4(light.Position, 1.0));
-    r.LightPositions.push_back(static_cast<float>(positionVC.x));
-    r.LightPositions.push_back(static_cast<float>(positionVC.y));
-    r.LightPositions.push_back(static_cast<float>(positionVC.z));
-    r.Attenuations.push_back(light.Attenuation);
-    r.CascadeLights.push_back(static_cast<float>(light.Fade.x));
-    r.CascadeLights.push_back(static_cast<float>(light.Fade.y));
-    r.CascadeLights.push_back(static_cast<float>(light.CoverageBlendFraction));
-    const shadowmaps::TileGrid& tiles = light.Tiles;
-    const float grid[4] = { static_cast<float>(tiles.Columns), static_cast<float>(tiles.Rows),
-      static_cast<float>(tiles.WindowFraction.x), static_cast<float>(tiles.WindowFraction.y) };
-    r.TileGrids.insert(r.TileGrids.end(), grid, grid + 4);
-  }
-  r.ViewToWorld = glm::mat4(viewToWorld);
-}
-
-//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
 {
-  Resources& r = *this->Resource;
-  std::ostringstream key;
-  key << this->Filter << ' ' << this->KernelSize << ' ' << this->PoissonSamples << ' '
-      << this->NumberOfShadowMapLayers << ' ' << r.LookupCodeHash
-      << ' ' << this->AnalysisView << ' ' << this->AnalysisLight << ';';
-  for (const ShadowLight& light : this->Internal->Lights)
-  {
-    key << light.ShaderIndex << ':' << light.FirstLayer << ':' << light.ViewKind() << ':'
-        << light.Views.size() << ':' << light.ReceiverFeatures() << ' ';
-  }
+  Internals& r = *this->Internal;
+  shadowmaps::AddAnalysisReceiverCode(this->AnalysisView, this->AnalysisLight, r.Lights, r.Code);
+  std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code);
   std::vector<vtkProp*> nonReceivers;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -920,9 +821,9 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
       nonReceivers.push_back(prop);
     }
   }
-  if (key.str() != r.ShaderKey || nonReceivers != r.NonReceivers)
+  if (key != r.ShaderKey || nonReceivers != r.NonReceivers)
   {
-    r.ShaderKey = key.str();
+    r.ShaderKey = std::move(key);
     r.NonReceivers = std::move(nonReceivers);
     r.ShaderKeyTime.Modified();
   }
@@ -931,25 +832,21 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
 {
-  Resources& r = *this->Resource;
+  Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   // Work on our own unit: creating a texture binds it to the active unit, which
   // may hold another pass's texture (e.g. the tone-mapping pass's colour).
   r.MapUnit = window->GetTextureUnitManager()->Allocate();
   glActiveTexture(GL_TEXTURE0 + r.MapUnit);
-  if (!r.Noise)
-  {
-    r.Noise = CreateRotationNoise(window);
-  }
-  r.Noise->Activate();
-  r.Maps.SetLinearFiltering(this->Filter != HARD);
+  r.Representation->ActivateReceiverResources(window);
+  r.Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
   r.Maps.BindToUnit(r.MapUnit);
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::UnbindShadowTextures(vtkOpenGLRenderer* renderer)
 {
-  Resources& r = *this->Resource;
+  Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   if (r.MapUnit >= 0)
   {
@@ -958,13 +855,13 @@ void vtkAbstractShadowMapPass::UnbindShadowTextures(vtkOpenGLRenderer* renderer)
     window->GetTextureUnitManager()->Free(r.MapUnit);
     r.MapUnit = -1;
   }
-  r.Noise->Deactivate();
+  this->GetRepresentation()->DeactivateReceiverResources();
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
 {
-  Resources& r = *this->Resource;
+  Internals& r = *this->Internal;
   r.Maps.Release();
   r.MapsValid = false;
   this->NumberOfShadowMapLayers = 0;
@@ -981,10 +878,7 @@ bool vtkAbstractShadowMapPass::PreReplaceShaderValues(std::string&, std::string&
 {
   // Markers for PostReplaceShaderValues, which knows whether the mapper
   // generated per-light code to patch.
-  vtkShaderProgram::Substitute(
-    fragmentShader, "//VTK::Light::Dec", "//VTK::Light::Dec\n//VTK::ShadowMaps::Dec", false);
-  vtkShaderProgram::Substitute(
-    fragmentShader, "//VTK::Light::Impl", "//VTK::ShadowMaps::Impl\n//VTK::Light::Impl", false);
+  shadowmaps::ReceiverShader::MarkInjectionPoints(fragmentShader);
   return true;
 }
 
@@ -992,167 +886,60 @@ bool vtkAbstractShadowMapPass::PreReplaceShaderValues(std::string&, std::string&
 bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string&,
   std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  // The receiver's position is taken in the fragment shader, not the vertex
-  // shader, because impostor mappers compute their true surface per fragment.
-  std::ostringstream impl;
-  if (this->Resource->Active && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS()))
-  {
-    const auto& lights = this->Internal->Lights;
-    for (int k = 0; k < static_cast<int>(lights.size()); ++k)
-    {
-      if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, k) > 0)
-      {
-        impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor(vertexVC.xyz, "
-             << "vtkShadowNormalVC, " << k << ", " << lights[k].FirstLayer << ", "
-             << lights[k].ViewKind() << ", " << lights[k].Views.size() << ", "
-             << lights[k].ReceiverFeatures() << ");\n";
-      }
-    }
-  }
-  if (impl.tellp() <= 0)
-  {
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", "");
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl", "");
-    return true;
-  }
-  const std::string analysis = this->AnalysisCode();
-  if (!analysis.empty())
-  {
-    // After everything that sets the colour: main() is the last function.
-    const size_t end = fragmentShader.rfind('}');
-    if (end != std::string::npos)
-    {
-      fragmentShader.insert(end, analysis);
-    }
-  }
-  std::ostringstream dec;
-  if (!analysis.empty())
-  {
-    dec << "#define VTK_SHADOW_ANALYSIS " << this->AnalysisView << "\n";
-  }
-  dec << "#define VTK_SHADOW_FILTER " << this->Filter << "\n"
-      << "#define VTK_SHADOW_KERNEL " << this->KernelSize << "\n"
-      << "#define VTK_SHADOW_POISSON_SAMPLES " << this->PoissonSamples << "\n"
-      << "#define VTK_SHADOW_MAX_VIEWS " << std::max(this->NumberOfShadowMapLayers, 1) << "\n"
-      << "#define VTK_SHADOW_MAX_LIGHTS " << this->Internal->Lights.size() << "\n"
-      << vtkShadowMapsReceiverFS << this->Resource->LookupCode;
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", dec.str());
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
-    "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n" +
-      impl.str());
+  const Internals& r = *this->Internal;
+  const bool receives =
+    r.Active && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
+  shadowmaps::ReceiverShader::Inject(
+    fragmentShader, r.Lights, this->NumberOfShadowMapLayers, r.Code, receives);
   return true;
-}
-
-//------------------------------------------------------------------------------
-std::string vtkAbstractShadowMapPass::AnalysisCode() const
-{
-  const auto& lights = this->Internal->Lights;
-  if (this->AnalysisView == NO_ANALYSIS || this->AnalysisView == SHADOW_MAP ||
-    this->AnalysisLight >= static_cast<int>(lights.size()))
-  {
-    return std::string();
-  }
-  const ShadowLight& light = lights[this->AnalysisLight];
-  std::ostringstream code;
-  code << "  gl_FragData[0] = vtkShadowAnalysisColor(vertexVC.xyz, vtkShadowNormalVC, "
-       << this->AnalysisLight << ", " << light.FirstLayer << ", " << light.ViewKind() << ", "
-       << light.Views.size() << ", " << light.ReceiverFeatures() << ");\n";
-  return code.str();
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
-{
-  Resources& r = *this->Resource;
-  const auto& lights = this->Internal->Lights;
-  if (this->AnalysisLight >= static_cast<int>(lights.size()))
-  {
-    return;
-  }
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (!r.MapViewQuad)
-  {
-    r.MapViewQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, vtkShadowMapsViewFS, ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(r.MapViewQuad->Program);
-  }
-  vtkShaderProgram* program = r.MapViewQuad->Program;
-  if (!program || !program->GetCompiled())
-  {
-    this->ReportGLFailure("the shadow-map view shader did not compile");
-    return;
-  }
-  const ShadowLight& light = lights[this->AnalysisLight];
-  program->SetUniformi("vtkShadowMaps", r.MapUnit);
-  program->SetUniformi("vtkShadowFirstView", light.FirstLayer);
-  program->SetUniformi("vtkShadowViewCount", static_cast<int>(light.Views.size()));
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  r.Maps.SetDepthComparison(false);
-  r.MapViewQuad->Render();
-  r.Maps.SetDepthComparison(true);
 }
 
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
-  Resources& r = *this->Resource;
-  if (!r.Active || !program->IsUniformUsed("vtkShadowViewToMap"))
+  Internals& r = *this->Internal;
+  if (r.Active && shadowmaps::ReceiverUniforms::IsReceiver(program))
   {
-    return true;
+    r.Uniforms.Apply(program, r.MapUnit, r.Frame.Resolution, this->NormalOffset);
+    r.Representation->SetReceiverUniforms(program);
   }
-  const int views = static_cast<int>(r.TexelSizes.size() / 2);
-  const int lights = static_cast<int>(r.Attenuations.size());
-  program->SetUniformi("vtkShadowMaps", r.MapUnit);
-  program->SetUniformi("vtkShadowNoise", r.Noise->GetTextureUnit());
-  program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(r.ViewToWorld));
-  program->SetUniformMatrix4x4v("vtkShadowViewToMap", views, r.ViewToMap.data());
-  program->SetUniform2fv(
-    "vtkShadowTexelSize", views, reinterpret_cast<const float(*)[2]>(r.TexelSizes.data()));
-  program->SetUniform3fv(
-    "vtkShadowDepthInverseW", views, reinterpret_cast<const float(*)[3]>(r.DepthInverseW.data()));
-  program->SetUniform4fv("vtkShadowCascade", views, reinterpret_cast<const float(*)[4]>(r.Cascades.data()));
-  program->SetUniform4fv(
-    "vtkShadowTileGrid", lights, reinterpret_cast<const float(*)[4]>(r.TileGrids.data()));
-  program->SetUniform3fv(
-    "vtkShadowCascadeLight", lights, reinterpret_cast<const float(*)[3]>(r.CascadeLights.data()));
-  program->SetUniform3fv(
-    "vtkShadowLightPositionVC", lights, reinterpret_cast<const float(*)[3]>(r.LightPositions.data()));
-  program->SetUniform1fv("vtkShadowAttenuation", lights, r.Attenuations.data());
-  program->SetUniformf("vtkShadowMapResolution", static_cast<float>(this->Internal->Resolution));
-  program->SetUniformf("vtkShadowNormalOffset", static_cast<float>(this->NormalOffset));
-  program->SetUniformf("vtkShadowFilterRadius", static_cast<float>(this->FilterRadius));
   return true;
 }
 
 //------------------------------------------------------------------------------
 vtkMTimeType vtkAbstractShadowMapPass::GetShaderStageMTime()
 {
-  return this->Resource->ShaderKeyTime.GetMTime();
+  return this->Internal->ShaderKeyTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
+{
+  Internals& r = *this->Internal;
+  if (this->AnalysisLight >= static_cast<int>(r.Lights.size()))
+  {
+    return;
+  }
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  if (!r.MapView.Render(window, r.Maps, r.MapUnit, r.Lights[this->AnalysisLight]))
+  {
+    this->ReportGLFailure("the shadow-map view shader did not compile");
+  }
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
 {
-  Resources& r = *this->Resource;
+  Internals& r = *this->Internal;
   r.Maps.Release();
   r.MapsValid = false;
   r.Signature.clear();
-  if (r.Noise)
+  r.MapView.ReleaseGraphicsResources(window);
+  r.Representation->ReleaseGraphicsResources(window);
+  if (r.DefaultRepresentation != r.Representation)
   {
-    r.Noise->ReleaseGraphicsResources(window);
-    r.Noise = nullptr;
-  }
-  if (r.MapViewQuad)
-  {
-    r.MapViewQuad->ReleaseGraphicsResources(window);
-    r.MapViewQuad.reset();
+    r.DefaultRepresentation->ReleaseGraphicsResources(window);
   }
   r.CasterPass->ReleaseGraphicsResources(window);
   r.OpaquePass->ReleaseGraphicsResources(window);
@@ -1168,18 +955,18 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "Views:\n";
+  this->Internal->Views->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "Representation:\n";
+  this->Internal->Representation->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "CasterFaces: " << this->CasterFaces << "\n";
-  os << indent << "Filter: " << this->Filter << "\n";
-  os << indent << "KernelSize: " << this->KernelSize << "\n";
-  os << indent << "FilterRadius: " << this->FilterRadius << "\n";
-  os << indent << "PoissonSamples: " << this->PoissonSamples << "\n";
-  os << indent << "ConstantBias: " << this->ConstantBias << "\n";
-  os << indent << "SlopeScaledBias: " << this->SlopeScaledBias << "\n";
   os << indent << "NormalOffset: " << this->NormalOffset << "\n";
   os << indent << "AnalysisView: " << this->AnalysisView << "\n";
   os << indent << "AnalysisLight: " << this->AnalysisLight << "\n";
   os << indent << "NumberOfShadowedLights: " << this->NumberOfShadowedLights << "\n";
   os << indent << "NumberOfShadowMapLayers: " << this->NumberOfShadowMapLayers << "\n";
+  os << indent << "NumberOfNonFiniteViews: " << this->NumberOfNonFiniteViews << "\n";
   os << indent << "NumberOfShadowMapUpdates: " << this->NumberOfShadowMapUpdates << "\n";
+  os << indent << "NumberOfCasterDraws: " << this->NumberOfCasterDraws << "\n";
 }

@@ -1,6 +1,6 @@
 /**
- * @class   vtkWarpedShadowMapPass
- * @brief   Warped shadow maps: focused uniform, PSM, LiSPSM, TSM and GMNPR.
+ * @class   vtkWarpedShadowMapViews
+ * @brief   Warped shadow-map views: focused uniform, PSM, LiSPSM, TSM and GMNPR.
  *
  * WarpMode chooses how a directional light's map is parameterised:
  * - UNIFORM (default): an orthographic map fitted to the focus body B;
@@ -30,33 +30,33 @@
  * linear), and by PSM as a point light in the camera's post-perspective space.
  * Point lights, and spots wider than one map holds, use the uniform cube faces.
  *
- * Uniform fit: directional lights get an orthographic map fitted to the focus body B
- * (view frustum ∩ scene bounds, survey 003 §4.1) with its near plane pulled back
- * to the nearest caster inside the map's side planes (ComputeNearAndFar, text
- * 004); spot lights get their cone's frustum cropped to B; point lights get six
- * 90 degree faces. Filtering, bias and resource handling come from
- * vtkAbstractShadowMapPass.
+ * UNIFORM is vtkUniformShadowMapViews' fit. The views of
+ * vtkWarpedShadowMapPass; any pass takes them:
  *
  * @code
- * renderer->SetPass(vtkNew<vtkWarpedShadowMapPass>());
+ * vtkNew<vtkWarpedShadowMapViews> views;
+ * views->SetWarpModeToLiSPSM();
+ * pass->SetViews(views);
  * @endcode
  */
-#ifndef vtkWarpedShadowMapPass_h
-#define vtkWarpedShadowMapPass_h
+#ifndef vtkWarpedShadowMapViews_h
+#define vtkWarpedShadowMapViews_h
 
-#include "vtkAbstractShadowMapPass.h"
 #include "vtkRenderingShadowMapsModule.h" // For export macro
+#include "vtkShadowMapViews.h"
 
 namespace shadowmaps
 {
+enum class DirectionalWarp;
+struct LightView;
 struct WarpOptions;
 }
 
-class VTKRENDERINGSHADOWMAPS_EXPORT vtkWarpedShadowMapPass : public vtkAbstractShadowMapPass
+class VTKRENDERINGSHADOWMAPS_EXPORT vtkWarpedShadowMapViews : public vtkShadowMapViews
 {
 public:
-  static vtkWarpedShadowMapPass* New();
-  vtkTypeMacro(vtkWarpedShadowMapPass, vtkAbstractShadowMapPass);
+  static vtkWarpedShadowMapViews* New();
+  vtkTypeMacro(vtkWarpedShadowMapViews, vtkShadowMapViews);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum WarpModeType
@@ -69,9 +69,14 @@ public:
   };
 
   ///@{
-  /** How directional maps are warped. Clamped to [UNIFORM, TSM]; default UNIFORM. */
+  /** How directional and spot maps are warped. Clamped to [UNIFORM, TSM]; default UNIFORM. */
   vtkSetClampMacro(WarpMode, int, UNIFORM, TSM);
   vtkGetMacro(WarpMode, int);
+  void SetWarpModeToUniform() { this->SetWarpMode(UNIFORM); }
+  void SetWarpModeToLiSPSM() { this->SetWarpMode(LISPSM); }
+  void SetWarpModeToGMNPR() { this->SetWarpMode(GMNPR); }
+  void SetWarpModeToPSM() { this->SetWarpMode(PSM); }
+  void SetWarpModeToTSM() { this->SetWarpMode(TSM); }
   ///@}
 
   ///@{
@@ -120,14 +125,20 @@ public:
   vtkGetMacro(TSMFocusFraction, double);
   ///@}
 
-protected:
-  vtkWarpedShadowMapPass() = default;
-  ~vtkWarpedShadowMapPass() override = default;
+  VTK_WRAPEXCLUDE void FitLight(
+    const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) override;
 
-  void ComputeLightViews(Internals& internals, int lightIndex) override;
-  /** The warped map of directional light lightIndex for the chosen WarpMode. */
-  shadowmaps::LightView FitDirectionalLight(const Internals& internals, int lightIndex) const;
-  shadowmaps::LightView FitSpotLight(const Internals& internals, int lightIndex) const;
+  /** The light-space warp of a mode: GMNPR for GMNPR, LiSPSM for the others. */
+  VTK_WRAPEXCLUDE static shadowmaps::DirectionalWarp LightSpaceWarpOf(int warpMode);
+
+protected:
+  vtkWarpedShadowMapViews() = default;
+  ~vtkWarpedShadowMapViews() override = default;
+
+  shadowmaps::LightView FitDirectionalLight(
+    const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
+  shadowmaps::LightView FitSpotLight(
+    const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
   /** LiSPSM and GMNPR settings (free parameter, falloff). */
   shadowmaps::WarpOptions LightSpaceWarpOptions() const;
 
@@ -139,8 +150,8 @@ protected:
   double TSMFocusFraction = 0.8;
 
 private:
-  vtkWarpedShadowMapPass(const vtkWarpedShadowMapPass&) = delete;
-  void operator=(const vtkWarpedShadowMapPass&) = delete;
+  vtkWarpedShadowMapViews(const vtkWarpedShadowMapViews&) = delete;
+  void operator=(const vtkWarpedShadowMapViews&) = delete;
 };
 
 #endif

@@ -133,6 +133,11 @@ LightView FitCascadeStable(const glm::dmat4& cameraView, const glm::dmat4& subPr
 /// than 2 values.
 int SelectCascadeByDepth(const std::vector<double>& splits, double viewDepth);
 
+/// View depth where cascade index's blend band into cascade index + 1 starts: the
+/// last blendFraction (clamped to [0, 1]) of its depth range
+/// [splits[index], splits[index + 1]]. index + 1 must be a valid split.
+double BlendBandStart(const std::vector<double>& splits, int index, double blendFraction);
+
 /// Weight of cascade index + 1 for a receiver at viewDepth in cascade index: the last
 /// blendFraction (clamped to [0, 1]) of cascade index's depth range
 /// [splits[index], splits[index + 1]] is a linear ramp from 0 (start of the band) to 1

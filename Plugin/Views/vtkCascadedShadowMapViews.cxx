@@ -1,19 +1,19 @@
-#include "vtkCascadedShadowMapPass.h"
+#include "vtkCascadedShadowMapViews.h"
 
 #include "ShadowMapCascades.h"
+#include "ShadowMapLight.h"
 #include "ShadowMapWarping.h"
 #include "vtkObjectFactory.h"
-#include "vtkShadowMapInternals.h"
+#include "vtkWarpedShadowMapViews.h"
 
 #include <algorithm>
 #include <cmath>
 
-vtkStandardNewMacro(vtkCascadedShadowMapPass);
+vtkStandardNewMacro(vtkCascadedShadowMapViews);
 
 namespace
 {
 constexpr int MaximumCascades = 8;
-constexpr double NoBlend = 1e38;
 
 // Stable cascades round the visible depth range out to levels 2^(1/4) apart.
 constexpr int StableRangeStepsPerOctave = 4;
@@ -40,25 +40,19 @@ glm::dvec2 SplitRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProj
   return range;
 }
 
-shadowmaps::DirectionalWarp WarpOf(int cascadeWarp)
-{
-  return cascadeWarp == vtkCascadedShadowMapPass::GMNPR_WARP ? shadowmaps::DirectionalWarp::GMNPR
-                                                             : shadowmaps::DirectionalWarp::LiSPSM;
-}
-
 // One cascade's view of a directional light.
 shadowmaps::LightView FitCascade(const glm::dmat4& cameraView, const glm::dmat4& subProjection,
   const shadowmaps::Aabb& scene, int resolution, const glm::dvec3& lightDirection, int fitMode,
   int cascadeWarp)
 {
-  if (fitMode == vtkCascadedShadowMapPass::STABLE)
+  if (fitMode == vtkCascadedShadowMapViews::STABLE)
   {
     return shadowmaps::FitCascadeStable(cameraView, subProjection, scene, lightDirection, resolution);
   }
-  if (cascadeWarp != vtkCascadedShadowMapPass::NO_WARP)
+  if (cascadeWarp != vtkCascadedShadowMapViews::NO_WARP)
   {
     shadowmaps::LightView view = shadowmaps::FitDirectionalWarped(
-      cameraView, subProjection, scene, lightDirection, resolution, WarpOf(cascadeWarp));
+      cameraView, subProjection, scene, lightDirection, resolution, vtkWarpedShadowMapViews::LightSpaceWarpOf(cascadeWarp));
     view.TexelSizeFromGradient = view.Perspective;
     return view;
   }
@@ -67,13 +61,7 @@ shadowmaps::LightView FitCascade(const glm::dmat4& cameraView, const glm::dmat4&
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
-{
-  this->Resolution = 1024;
-}
-
-//------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::SetNumberOfCascades(int count)
+void vtkCascadedShadowMapViews::SetNumberOfCascades(int count)
 {
   const int clamped = std::min(std::max(count, 1), MaximumCascades);
   if (clamped != count)
@@ -89,7 +77,7 @@ void vtkCascadedShadowMapPass::SetNumberOfCascades(int count)
 }
 
 //------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::SetSplitLambda(double lambda)
+void vtkCascadedShadowMapViews::SetSplitLambda(double lambda)
 {
   const double clamped = std::isnan(lambda) ? 0.75 : std::min(std::max(lambda, 0.0), 1.0);
   if (clamped != lambda)
@@ -104,7 +92,7 @@ void vtkCascadedShadowMapPass::SetSplitLambda(double lambda)
 }
 
 //------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::AddSplitDistance(double distance)
+void vtkCascadedShadowMapViews::AddSplitDistance(double distance)
 {
   this->SplitDistances.push_back(distance);
   this->SplitProblemReported = false;
@@ -112,7 +100,7 @@ void vtkCascadedShadowMapPass::AddSplitDistance(double distance)
 }
 
 //------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::RemoveAllSplitDistances()
+void vtkCascadedShadowMapViews::RemoveAllSplitDistances()
 {
   if (!this->SplitDistances.empty())
   {
@@ -123,13 +111,13 @@ void vtkCascadedShadowMapPass::RemoveAllSplitDistances()
 }
 
 //------------------------------------------------------------------------------
-double vtkCascadedShadowMapPass::GetSplit(int i) const
+double vtkCascadedShadowMapViews::GetSplit(int i) const
 {
   return i >= 0 && i < static_cast<int>(this->LastSplits.size()) ? this->LastSplits[i] : 0.0;
 }
 
 //------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::SetMaximumShadowDistance(double distance)
+void vtkCascadedShadowMapViews::SetMaximumShadowDistance(double distance)
 {
   const double clamped = std::isfinite(distance) && distance > 0.0 ? distance : 0.0;
   if (clamped != distance)
@@ -146,7 +134,8 @@ void vtkCascadedShadowMapPass::SetMaximumShadowDistance(double distance)
 }
 
 //------------------------------------------------------------------------------
-std::vector<double> vtkCascadedShadowMapPass::ComputeSplits(const Internals& in, double fade[2])
+std::vector<double> vtkCascadedShadowMapViews::ComputeSplits(
+  const shadowmaps::ShadowFrame& in, double fade[2])
 {
   glm::dvec2 range =
     SplitRange(in.CameraView, in.CameraProjection, in.PropBounds, this->FitMode == STABLE);
@@ -200,72 +189,83 @@ std::vector<double> vtkCascadedShadowMapPass::ComputeSplits(const Internals& in,
 }
 
 //------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::ComputeLightViews(Internals& in, int lightIndex)
+bool vtkCascadedShadowMapViews::MayWarp() const
 {
-  shadowmaps::ShadowLight& light = in.Lights[lightIndex];
-  if (light.Cube)
+  return this->FitMode == TIGHT && this->CascadeWarp != NO_WARP;
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapViews::FitLight(
+  const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light)
+{
+  if (shadowmaps::NeedsCubeFaces(light))
   {
-    this->FitLightViewsUniform(in, lightIndex);
+    light.PossibleFeatures = 0;
+    vtkShadowMapViews::FitUniformViews(frame, light);
     return;
   }
-  light.MayWarp = this->FitMode == TIGHT && this->CascadeWarp != NO_WARP;
   // Warped maps store linear depth (FitWarpedFrame, FitSpotWarped).
-  light.MayStoreLinearDepth = light.MayWarp;
+  light.PossibleFeatures =
+    this->MayWarp() ? shadowmaps::GradientTexels | shadowmaps::LinearDepths : 0;
   double fade[2];
-  const std::vector<double> splits = this->ComputeSplits(in, fade);
+  const std::vector<double> splits = this->ComputeSplits(frame, fade);
   this->LastSplits = splits;
-
   light.Fade = glm::dvec2(fade[0], fade[1]);
   if (light.Kind == shadowmaps::LightKind::Spot)
   {
-    this->TileSpotLight(in, lightIndex);
+    this->TileSpotLight(frame, light);
     return;
   }
-  light.Cascaded = true;
+  this->FitCascades(frame, splits, light);
+}
 
-  std::vector<shadowmaps::LightView> views;
-  std::vector<glm::dvec3> depthsOfCascades;
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapViews::FitCascades(const shadowmaps::ShadowFrame& frame,
+  const std::vector<double>& splits, shadowmaps::ShadowLight& light) const
+{
+  light.Layout = shadowmaps::ViewLayout::Cascades;
+  light.Views.clear();
+  light.CascadeDepths.clear();
   const int cascades = static_cast<int>(splits.size()) - 1;
   for (int c = 0; c < cascades; ++c)
   {
     const glm::dvec2 depths = shadowmaps::CascadeDepthRange(splits, c, this->BlendFraction);
-    const glm::dmat4 sub = shadowmaps::SubFrustumProjection(in.CameraProjection, depths.x, depths.y);
-    views.push_back(FitCascade(
-      in.CameraView, sub, in.SceneBounds, in.Resolution, light.Direction, this->FitMode, this->CascadeWarp));
-    const double blendStart = splits[c + 1] - this->BlendFraction * (splits[c + 1] - splits[c]);
-    depthsOfCascades.emplace_back(
-      splits[c], splits[c + 1], this->BlendFraction > 0.0 && c + 1 < cascades ? blendStart : NoBlend);
+    const glm::dmat4 sub =
+      shadowmaps::SubFrustumProjection(frame.CameraProjection, depths.x, depths.y);
+    light.Views.push_back(FitCascade(frame.CameraView, sub, frame.SceneBounds, frame.Resolution,
+      light.Direction, this->FitMode, this->CascadeWarp));
+    const bool blends = this->BlendFraction > 0.0 && c + 1 < cascades;
+    light.CascadeDepths.emplace_back(splits[c], splits[c + 1],
+      blends ? shadowmaps::BlendBandStart(splits, c, this->BlendFraction) : shadowmaps::NoBlendBand);
   }
-  light.Views = std::move(views);
-  light.CascadeDepths = std::move(depthsOfCascades);
   light.CoverageBlendFraction = this->Selection == BY_COVERAGE ? this->BlendFraction : -1.0;
 }
 
 //------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::TileSpotLight(Internals& in, int lightIndex) const
+void vtkCascadedShadowMapViews::TileSpotLight(
+  const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) const
 {
-  shadowmaps::ShadowLight& light = in.Lights[lightIndex];
   // The cascades' layers hold one map of the cone cropped to the lit part of
   // the view, at sqrt(cascades) times the resolution: a spot's texels are
   // spread by the distance to the light, not to the camera, and one such map
   // misclassified fewer pixels than depth cascades in every benchmark scene.
   const int rows = std::max(static_cast<int>(std::sqrt(this->NumberOfCascades)), 1);
   const int columns = std::max(this->NumberOfCascades / rows, 1);
-  const shadowmaps::LightView whole = this->FitSpotMap(in, light);
-  light.Tiled = true;
-  light.Tiles = shadowmaps::MakeTileGrid(columns, rows, in.Resolution, this->FilterReachTexels());
+  const shadowmaps::LightView whole = this->FitSpotMap(frame, light);
+  light.Layout = shadowmaps::ViewLayout::Tiles;
+  light.Tiles = shadowmaps::MakeTileGrid(columns, rows, frame.Resolution, frame.FilterReachTexels);
   light.Views = shadowmaps::TileView(whole, light.Tiles);
 }
 
 //------------------------------------------------------------------------------
-shadowmaps::LightView vtkCascadedShadowMapPass::FitSpotMap(
-  const Internals& in, const shadowmaps::ShadowLight& light) const
+shadowmaps::LightView vtkCascadedShadowMapViews::FitSpotMap(
+  const shadowmaps::ShadowFrame& in, const shadowmaps::ShadowLight& light) const
 {
-  if (light.MayWarp)
+  if (this->MayWarp())
   {
     const shadowmaps::LightView warped = shadowmaps::FitSpotWarped(in.CameraView,
       in.CameraProjection, in.SceneBounds, light.Position, light.Direction, light.ConeAngle,
-      in.Resolution, WarpOf(this->CascadeWarp));
+      in.Resolution, vtkWarpedShadowMapViews::LightSpaceWarpOf(this->CascadeWarp));
     // Where it cannot warp (parallel camera, empty body), FitSpotWarped gives the
     // cone cropped to B; the lit part of B below is tighter.
     if (warped.TexelSizeFromGradient)
@@ -278,21 +278,7 @@ shadowmaps::LightView vtkCascadedShadowMapPass::FitSpotMap(
 }
 
 //------------------------------------------------------------------------------
-double vtkCascadedShadowMapPass::FilterReachTexels() const
-{
-  switch (this->Filter)
-  {
-    case PCF_NXN:
-      return 0.5 * this->KernelSize + 1.0;
-    case POISSON:
-      return this->FilterRadius + 1.0;
-    default:
-      return 1.0;
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
+void vtkCascadedShadowMapViews::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfCascades: " << this->NumberOfCascades << "\n";

@@ -1,0 +1,46 @@
+// The analysis views of a shadow-map pass (vtkAbstractShadowMapPass::AnalysisView):
+// the receiver code that recolours the scene (visibility, texel density,
+// partition) and the SHADOW_MAP view that draws a light's maps over the frame.
+#ifndef ShadowMapAnalysis_h
+#define ShadowMapAnalysis_h
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkWindow;
+
+namespace shadowmaps
+{
+struct ReceiverCode;
+struct ShadowLight;
+class TextureArray;
+
+/// Fills code's analysis members for analysis view `view` of light `light`
+/// (vtkAbstractShadowMapPass's AnalysisViewType values); leaves them empty for
+/// none, for SHADOW_MAP and for a light index out of range.
+void AddAnalysisReceiverCode(
+  int view, int light, const std::vector<ShadowLight>& lights, ReceiverCode& code);
+
+/// The SHADOW_MAP view: one light's maps tiled over the viewport, depth as grey.
+class MapView
+{
+public:
+  MapView();
+  ~MapView();
+  MapView(const MapView&) = delete;
+  MapView& operator=(const MapView&) = delete;
+
+  /// Draws the maps of `light`, bound to texture unit `mapUnit`. False when the
+  /// view's shader does not compile.
+  bool Render(vtkOpenGLRenderWindow* window, TextureArray& maps, int mapUnit, const ShadowLight& light);
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+};
+} // namespace shadowmaps
+
+#endif

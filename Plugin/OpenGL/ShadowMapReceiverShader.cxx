@@ -1,0 +1,273 @@
+#include "ShadowMapReceiverShader.h"
+
+#include "ShadowMapLight.h"
+#include "ShadowMapTrapezoid.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapsReceiverFS.h"
+
+#include <algorithm>
+#include <functional>
+#include <sstream>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace shadowmaps
+{
+namespace
+{
+// Polydata draws are patched where the mapper applies light i's colour: Phong's
+// diffuse and specular sums and PBR's radiance (vtkOpenGLPolyDataMapper 9.1).
+int InjectShadowFactor(std::string& fragmentShader, int shaderIndex, int lightIndex)
+{
+  const std::string color = "lightColor" + std::to_string(shaderIndex);
+  const std::string factor = "vtkShadowFactor" + std::to_string(lightIndex);
+  const std::pair<std::string, std::string> patterns[] = {
+    { "diffuse += (df * " + color + ");", "diffuse += (df * " + color + " * " + factor + ");" },
+    { "specular += (sf * " + color + ");", "specular += (sf * " + color + " * " + factor + ");" },
+    { "radiance = " + color + ";", "radiance = " + color + " * " + factor + ";" },
+    { "radiance = " + color + " * attenuation;",
+      "radiance = " + color + " * " + factor + " * attenuation;" },
+  };
+  int replaced = 0;
+  for (const auto& pattern : patterns)
+  {
+    for (size_t at = fragmentShader.find(pattern.first); at != std::string::npos;
+         at = fragmentShader.find(pattern.first, at + pattern.second.size()))
+    {
+      fragmentShader.replace(at, pattern.first.size(), pattern.second);
+      ++replaced;
+    }
+  }
+  return replaced;
+}
+
+void ClearMarkers(std::string& fragmentShader)
+{
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", "");
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl", "");
+}
+
+// The receiver functions and what they need around them.
+std::string Declarations(const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code)
+{
+  std::ostringstream dec;
+  dec << ReceiverShaderConstants() << code.Definitions
+      << "#define VTK_SHADOW_MAX_VIEWS " << std::max(layers, 1) << "\n"
+      << "#define VTK_SHADOW_MAX_LIGHTS " << lights.size() << "\n"
+      << vtkShadowMapsReceiverFS << code.Lookup << code.AnalysisFunctions;
+  return dec.str();
+}
+
+glm::vec3 ToFloat(const glm::dvec3& v)
+{
+  return glm::vec3(v);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+std::string ReceiverShaderConstants()
+{
+  const std::pair<const char*, int> constants[] = {
+    { "VTK_SHADOW_LAYOUT_SINGLE", static_cast<int>(ViewLayout::Single) },
+    { "VTK_SHADOW_LAYOUT_CUBE_FACES", static_cast<int>(ViewLayout::CubeFaces) },
+    { "VTK_SHADOW_LAYOUT_CASCADES", static_cast<int>(ViewLayout::Cascades) },
+    { "VTK_SHADOW_LAYOUT_TILES", static_cast<int>(ViewLayout::Tiles) },
+    { "VTK_SHADOW_FEATURE_GRADIENT_TEXELS", GradientTexels },
+    { "VTK_SHADOW_FEATURE_DISTANT_TEXELS", DistantTexels },
+    { "VTK_SHADOW_FEATURE_LINEAR_DEPTHS", LinearDepths },
+  };
+  std::ostringstream defines;
+  for (const auto& constant : constants)
+  {
+    defines << "#define " << constant.first << " " << constant.second << "\n";
+  }
+  return defines.str();
+}
+
+//------------------------------------------------------------------------------
+std::string ReceiverCallArguments(const ShadowLight& light, int index)
+{
+  std::ostringstream arguments;
+  arguments << "vertexVC.xyz, vtkShadowNormalVC, " << index << ", " << light.FirstLayer << ", "
+            << static_cast<int>(light.Layout) << ", " << light.Views.size() << ", "
+            << ReceiverFeatures(light);
+  return arguments.str();
+}
+
+//------------------------------------------------------------------------------
+void ReceiverShader::MarkInjectionPoints(std::string& fragmentShader)
+{
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::Light::Dec", "//VTK::Light::Dec\n//VTK::ShadowMaps::Dec", false);
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::Light::Impl", "//VTK::ShadowMaps::Impl\n//VTK::Light::Impl", false);
+}
+
+//------------------------------------------------------------------------------
+void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
+  int layers, const ReceiverCode& code, bool receives)
+{
+  // The receiver's position is taken in the fragment shader, not the vertex
+  // shader, because impostor mappers compute their true surface per fragment.
+  std::ostringstream impl;
+  for (int k = 0; receives && k < static_cast<int>(lights.size()); ++k)
+  {
+    if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, k) > 0)
+    {
+      impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor("
+           << ReceiverCallArguments(lights[k], k) << ");\n";
+    }
+  }
+  if (impl.tellp() <= 0)
+  {
+    ClearMarkers(fragmentShader);
+    return;
+  }
+  if (!code.AnalysisStatement.empty())
+  {
+    // After everything that sets the colour: main() is the last function.
+    const size_t end = fragmentShader.rfind('}');
+    if (end != std::string::npos)
+    {
+      fragmentShader.insert(end, code.AnalysisStatement);
+    }
+  }
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::ShadowMaps::Dec", Declarations(lights, layers, code));
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
+    "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n" + impl.str());
+}
+
+//------------------------------------------------------------------------------
+std::string ReceiverShader::Key(
+  const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code)
+{
+  const std::hash<std::string> hash;
+  std::ostringstream key;
+  key << layers << ' ' << hash(code.Definitions) << ' ' << hash(code.Lookup) << ' '
+      << hash(code.AnalysisFunctions) << ' ' << hash(code.AnalysisStatement) << ';';
+  for (const ShadowLight& light : lights)
+  {
+    key << light.ShaderIndex << ':' << light.FirstLayer << ':' << static_cast<int>(light.Layout)
+        << ':' << light.Views.size() << ':' << ReceiverFeatures(light) << ' ';
+  }
+  return key.str();
+}
+
+//------------------------------------------------------------------------------
+ReceiverUniforms::View ReceiverUniforms::PackView(
+  const ShadowLight& light, std::size_t index, const glm::dmat4& viewToWorld)
+{
+  const LightView& view = light.Views[index];
+  View packed;
+  packed.ViewToMap = glm::mat4(ClipToTexture() * view.ViewProjection() * viewToWorld);
+  // A negative constant tells the receiver to use the map's local gradient.
+  packed.TexelSize = glm::vec2(
+    view.TexelSizeFromGradient ? -1.0f : static_cast<float>(view.TexelConstant),
+    static_cast<float>(view.TexelPerUnitDistance));
+  packed.DepthInverseW = ToFloat(TextureToInverseW(view));
+  if (light.Layout == ViewLayout::Cascades && index < light.CascadeDepths.size())
+  {
+    packed.Cascade = ToFloat(light.CascadeDepths[index]);
+    // Cascades of one light share their texel formula's kind (constant for
+    // directional, per unit distance for spot), so the sum compares them.
+    const LightView& first = light.Views.front();
+    const double firstTexel = first.TexelConstant + first.TexelPerUnitDistance;
+    const double texel = view.TexelConstant + view.TexelPerUnitDistance;
+    packed.FilterScale = static_cast<float>(firstTexel > 0.0 && texel > 0.0 ? firstTexel / texel : 1.0);
+  }
+  return packed;
+}
+
+//------------------------------------------------------------------------------
+ReceiverUniforms::Light ReceiverUniforms::PackLight(
+  const ShadowLight& light, const glm::dmat4& cameraView)
+{
+  Light packed;
+  packed.PositionVC = ToFloat(glm::dvec3(cameraView * glm::dvec4(light.Position, 1.0)));
+  packed.Attenuation = light.Attenuation;
+  packed.Fade = glm::vec2(light.Fade);
+  packed.CoverageBand = static_cast<float>(light.CoverageBlendFraction);
+  packed.TileGrid = glm::vec4(static_cast<float>(light.Tiles.Columns),
+    static_cast<float>(light.Tiles.Rows), static_cast<float>(light.Tiles.WindowFraction.x),
+    static_cast<float>(light.Tiles.WindowFraction.y));
+  return packed;
+}
+
+//------------------------------------------------------------------------------
+void ReceiverUniforms::Pack(const std::vector<ShadowLight>& lights, const glm::dmat4& cameraView)
+{
+  const glm::dmat4 viewToWorld = glm::inverse(cameraView);
+  this->Views.clear();
+  this->Lights.clear();
+  for (const ShadowLight& light : lights)
+  {
+    for (std::size_t v = 0; v < light.Views.size(); ++v)
+    {
+      this->Views.push_back(PackView(light, v, viewToWorld));
+    }
+    this->Lights.push_back(PackLight(light, cameraView));
+  }
+  this->ViewToWorld = glm::mat4(viewToWorld);
+  this->NameMembers();
+}
+
+//------------------------------------------------------------------------------
+void ReceiverUniforms::NameMembers()
+{
+  const auto name = [](const char* array, std::size_t i, std::initializer_list<const char*> members) {
+    std::vector<std::string> names;
+    for (const char* member : members)
+    {
+      names.push_back(std::string(array) + "[" + std::to_string(i) + "]." + member);
+    }
+    return names;
+  };
+  for (std::size_t i = this->ViewNames.size(); i < this->Views.size(); ++i)
+  {
+    this->ViewNames.push_back(name(
+      "vtkShadowViews", i, { "ViewToMap", "TexelSize", "DepthInverseW", "Cascade", "FilterScale" }));
+  }
+  for (std::size_t i = this->LightNames.size(); i < this->Lights.size(); ++i)
+  {
+    this->LightNames.push_back(name(
+      "vtkShadowLights", i, { "PositionVC", "Attenuation", "Fade", "CoverageBand", "TileGrid" }));
+  }
+}
+
+//------------------------------------------------------------------------------
+bool ReceiverUniforms::IsReceiver(vtkShaderProgram* program)
+{
+  return program->IsUniformUsed("vtkShadowViews[0].ViewToMap");
+}
+
+//------------------------------------------------------------------------------
+void ReceiverUniforms::Apply(
+  vtkShaderProgram* program, int mapUnit, int resolution, double normalOffset)
+{
+  for (std::size_t i = 0; i < this->Views.size(); ++i)
+  {
+    View& view = this->Views[i];
+    const std::vector<std::string>& names = this->ViewNames[i];
+    program->SetUniformMatrix4x4(names[0].c_str(), glm::value_ptr(view.ViewToMap));
+    program->SetUniform2f(names[1].c_str(), glm::value_ptr(view.TexelSize));
+    program->SetUniform3f(names[2].c_str(), glm::value_ptr(view.DepthInverseW));
+    program->SetUniform3f(names[3].c_str(), glm::value_ptr(view.Cascade));
+    program->SetUniformf(names[4].c_str(), view.FilterScale);
+  }
+  for (std::size_t i = 0; i < this->Lights.size(); ++i)
+  {
+    const Light& light = this->Lights[i];
+    const std::vector<std::string>& names = this->LightNames[i];
+    program->SetUniform3f(names[0].c_str(), glm::value_ptr(light.PositionVC));
+    program->SetUniformf(names[1].c_str(), light.Attenuation);
+    program->SetUniform2f(names[2].c_str(), glm::value_ptr(light.Fade));
+    program->SetUniformf(names[3].c_str(), light.CoverageBand);
+    program->SetUniform4f(names[4].c_str(), glm::value_ptr(light.TileGrid));
+  }
+  program->SetUniformi("vtkShadowMaps", mapUnit);
+  program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(this->ViewToWorld));
+  program->SetUniformf("vtkShadowMapResolution", static_cast<float>(resolution));
+  program->SetUniformf("vtkShadowNormalOffset", static_cast<float>(normalOffset));
+}
+} // namespace shadowmaps

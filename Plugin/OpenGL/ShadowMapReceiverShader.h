@@ -1,0 +1,102 @@
+// The receivers' side of a shadow-map pass: the GLSL injected into the mappers'
+// fragment shaders (ReceiverShader) and the uniforms it reads (ReceiverUniforms).
+// The pass decides what to inject; these classes know how.
+#ifndef ShadowMapReceiverShader_h
+#define ShadowMapReceiverShader_h
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+class vtkShaderProgram;
+
+namespace shadowmaps
+{
+struct ShadowLight;
+
+/// The C++ constants the receivers' GLSL shares, as #defines: the view layouts
+/// (VTK_SHADOW_LAYOUT_*) and receiver features (VTK_SHADOW_FEATURE_*).
+std::string ReceiverShaderConstants();
+
+/// The arguments every per-light receiver function takes for light `index`
+/// (vtkShadowFactor, vtkShadowAnalysisColor): position, normal, light index,
+/// first layer, layout, view count and features, the last four as literals.
+std::string ReceiverCallArguments(const ShadowLight& light, int index);
+
+/// What the pass injects besides the shared receiver functions.
+struct ReceiverCode
+{
+  /// Before the receiver functions: the representation's #defines.
+  std::string Definitions;
+  /// After them: the representation's lookup (defines vtkShadowLookup).
+  std::string Lookup;
+  /// After the lookup: the analysis view's functions (empty: none).
+  std::string AnalysisFunctions;
+  /// At the end of main(): the analysis view's statement (empty: none).
+  std::string AnalysisStatement;
+};
+
+class ReceiverShader
+{
+public:
+  /// Before the mapper's own replacements: markers where the shadow code goes.
+  static void MarkInjectionPoints(std::string& fragmentShader);
+
+  /// Scales each light's diffuse and specular (Phong) or radiance (PBR) terms
+  /// by its shadow factor where the mapper generated them, and puts the shadow
+  /// code at the markers. `receives` false, or a shader without per-light code
+  /// (unlit), only loses the markers.
+  static void Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
+    int layers, const ReceiverCode& code, bool receives);
+
+  /// A key of everything Inject's result depends on but the shader it patches.
+  static std::string Key(const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code);
+};
+
+/// The uniforms of the receiver functions for one map update: one struct per
+/// view (vtkShadowViews) and per light (vtkShadowLights).
+class ReceiverUniforms
+{
+public:
+  /// Packs the lights' views for a camera with view matrix `cameraView`.
+  void Pack(const std::vector<ShadowLight>& lights, const glm::dmat4& cameraView);
+
+  /// Whether `program` is a receiver of the shadow code.
+  static bool IsReceiver(vtkShaderProgram* program);
+
+  /// Sets the packed uniforms, the maps' texture unit and resolution and the
+  /// receivers' normal offset (texels).
+  void Apply(vtkShaderProgram* program, int mapUnit, int resolution, double normalOffset);
+
+private:
+  struct View
+  {
+    glm::mat4 ViewToMap{ 1.0f };
+    glm::vec2 TexelSize{ 0.0f };
+    glm::vec3 DepthInverseW{ 0.0f };
+    glm::vec3 Cascade{ 0.0f, 1e38f, 1e38f };
+    float FilterScale = 1.0f;
+  };
+  struct Light
+  {
+    glm::vec3 PositionVC{ 0.0f };
+    float Attenuation = 1.0f;
+    glm::vec2 Fade{ 0.0f };
+    float CoverageBand = -1.0f;
+    glm::vec4 TileGrid{ 0.0f };
+  };
+  static View PackView(const ShadowLight& light, std::size_t index, const glm::dmat4& viewToWorld);
+  static Light PackLight(const ShadowLight& light, const glm::dmat4& cameraView);
+  void NameMembers();
+
+  std::vector<View> Views;
+  std::vector<Light> Lights;
+  glm::mat4 ViewToWorld{ 1.0f };
+  /// "vtkShadowViews[i]." and "vtkShadowLights[i]." member names, made once.
+  std::vector<std::vector<std::string>> ViewNames;
+  std::vector<std::vector<std::string>> LightNames;
+};
+} // namespace shadowmaps
+
+#endif

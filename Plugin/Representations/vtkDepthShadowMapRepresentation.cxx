@@ -1,0 +1,139 @@
+#include "vtkDepthShadowMapRepresentation.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapsDepthLookupFS.h"
+#include "vtkTextureObject.h"
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkDepthShadowMapRepresentation);
+
+namespace
+{
+constexpr int NoiseSize = 32;
+
+vtkSmartPointer<vtkTextureObject> CreateRotationNoise(vtkOpenGLRenderWindow* window)
+{
+  std::mt19937 generator(20261122);
+  std::uniform_real_distribution<float> angle(0.0f, 6.2831853f);
+  std::vector<float> rotations(NoiseSize * NoiseSize * 2);
+  for (size_t i = 0; i < rotations.size(); i += 2)
+  {
+    const float a = angle(generator);
+    rotations[i] = std::cos(a);
+    rotations[i + 1] = std::sin(a);
+  }
+  auto noise = vtkSmartPointer<vtkTextureObject>::New();
+  noise->SetContext(window);
+  noise->SetWrapS(vtkTextureObject::Repeat);
+  noise->SetWrapT(vtkTextureObject::Repeat);
+  noise->SetMinificationFilter(vtkTextureObject::Nearest);
+  noise->SetMagnificationFilter(vtkTextureObject::Nearest);
+  noise->Create2DFromRaw(NoiseSize, NoiseSize, 2, VTK_FLOAT, rotations.data());
+  return noise;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkDepthShadowMapRepresentation::vtkDepthShadowMapRepresentation() = default;
+
+//------------------------------------------------------------------------------
+vtkDepthShadowMapRepresentation::~vtkDepthShadowMapRepresentation() = default;
+
+//------------------------------------------------------------------------------
+std::string vtkDepthShadowMapRepresentation::GetReceiverLookupCode() const
+{
+  return vtkShadowMapsDepthLookupFS;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkDepthShadowMapRepresentation::GetReceiverDefinitions() const
+{
+  std::ostringstream definitions;
+  definitions << "#define VTK_SHADOW_FILTER " << this->Filter << "\n"
+              << "#define VTK_SHADOW_KERNEL " << this->KernelSize << "\n"
+              << "#define VTK_SHADOW_POISSON_SAMPLES " << this->PoissonSamples << "\n";
+  return definitions.str();
+}
+
+//------------------------------------------------------------------------------
+double vtkDepthShadowMapRepresentation::GetFilterReachTexels() const
+{
+  switch (this->Filter)
+  {
+    case PCF_NXN:
+      return 0.5 * this->KernelSize + 1.0;
+    case POISSON:
+      return this->FilterRadius + 1.0;
+    default:
+      return 1.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkDepthShadowMapRepresentation::GetLinearFiltering() const
+{
+  return this->Filter != HARD;
+}
+
+//------------------------------------------------------------------------------
+shadowmaps::DepthOffset vtkDepthShadowMapRepresentation::GetCasterDepthOffset() const
+{
+  shadowmaps::DepthOffset offset;
+  offset.SlopeScaled = this->SlopeScaledBias;
+  offset.Constant = this->ConstantBias;
+  return offset;
+}
+
+//------------------------------------------------------------------------------
+void vtkDepthShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow* window)
+{
+  if (!this->Noise)
+  {
+    this->Noise = CreateRotationNoise(window);
+  }
+  this->Noise->Activate();
+}
+
+//------------------------------------------------------------------------------
+void vtkDepthShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformi("vtkShadowNoise", this->Noise->GetTextureUnit());
+  program->SetUniformf("vtkShadowFilterRadius", static_cast<float>(this->FilterRadius));
+}
+
+//------------------------------------------------------------------------------
+void vtkDepthShadowMapRepresentation::DeactivateReceiverResources()
+{
+  if (this->Noise)
+  {
+    this->Noise->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDepthShadowMapRepresentation::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Noise)
+  {
+    this->Noise->ReleaseGraphicsResources(window);
+    this->Noise = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDepthShadowMapRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Filter: " << this->Filter << "\n";
+  os << indent << "KernelSize: " << this->KernelSize << "\n";
+  os << indent << "FilterRadius: " << this->FilterRadius << "\n";
+  os << indent << "PoissonSamples: " << this->PoissonSamples << "\n";
+  os << indent << "ConstantBias: " << this->ConstantBias << "\n";
+  os << indent << "SlopeScaledBias: " << this->SlopeScaledBias << "\n";
+}

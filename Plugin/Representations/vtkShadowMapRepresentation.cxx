@@ -1,0 +1,55 @@
+#include "vtkShadowMapRepresentation.h"
+
+//------------------------------------------------------------------------------
+void vtkShadowMapRepresentation::GetMapStorage(shadowmaps::MapStorage& storage) const
+{
+  storage = shadowmaps::MapStorage();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowMapRepresentation::GetReceiverDefinitions() const
+{
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+double vtkShadowMapRepresentation::GetFilterReachTexels() const
+{
+  return 1.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowMapRepresentation::GetLinearFiltering() const
+{
+  return true;
+}
+
+//------------------------------------------------------------------------------
+shadowmaps::DepthOffset vtkShadowMapRepresentation::GetCasterDepthOffset() const
+{
+  return shadowmaps::DepthOffset();
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowMapRepresentation::PostProcessMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray&)
+{
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow*) {}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram*) {}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapRepresentation::DeactivateReceiverResources() {}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapRepresentation::ReleaseGraphicsResources(vtkWindow*) {}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

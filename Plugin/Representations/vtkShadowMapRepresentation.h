@@ -1,0 +1,132 @@
+/**
+ * @class   vtkShadowMapRepresentation
+ * @brief   What a texel of the shadow maps stores: one strategy of a shadow-map pass.
+ *
+ * A shadow-map pass (vtkAbstractShadowMapPass) makes two independent choices:
+ * where each light's views go (vtkShadowMapViews) and what a texel of their maps
+ * stores (this class). A representation says
+ * - what the casters write (GetMapStorage: one depth, or two float values
+ *   written by a GLSL snippet, optionally with minimum blending);
+ * - how the maps are post-processed once rendered (PostProcessMaps: blur,
+ *   mipmaps);
+ * - how receivers read them (GetReceiverLookupCode: the GLSL that defines
+ *   vtkShadowLookup, usually one file of Shaders/), with its own parameters
+ *   (GetReceiverDefinitions, SetReceiverUniforms);
+ * - the depth offset its casters need (GetCasterDepthOffset).
+ *
+ * Adding a representation is one subclass and one GLSL file; it then works with
+ * every views strategy (uniform, warped, cascaded). vtkDepthShadowMapRepresentation
+ * is the depth map with the PCF filter family. A change of a representation's
+ * parameters re-renders the maps of every pass that uses it.
+ */
+#ifndef vtkShadowMapRepresentation_h
+#define vtkShadowMapRepresentation_h
+
+#include "ShadowMapTextureArray.h" // For TexelFormat, TextureArray
+#include "vtkObject.h"
+#include "vtkRenderingShadowMapsModule.h" // For export macro
+#include "vtkWrappingHints.h"             // For VTK_WRAPEXCLUDE
+
+#include <string> // For the GLSL code
+
+class vtkOpenGLRenderer;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkWindow;
+
+namespace shadowmaps
+{
+/// What a texel of the maps holds and how the casters write it.
+struct MapStorage
+{
+  TexelFormat Format = TexelFormat::Depth;
+  /// TwoFloats: GLSL statements that read `float vtkShadowCasterDepth` (the
+  /// fragment's window depth; gl_FrontFacing is available too) and write
+  /// gl_FragData[0].xy. Ignored for depth storage.
+  std::string StoreCode;
+  /// TwoFloats: each channel keeps the minimum over all fragments of a texel
+  /// (blending with GL_MIN, no depth test), e.g. nearest front and back faces.
+  /// Otherwise the nearest fragment's values are kept (depth test).
+  bool MinimumBlending = false;
+  /// TwoFloats: values of a texel no caster covers.
+  float ClearValues[2] = { 1.0f, 1.0f };
+  /// TwoFloats: build a mipmap chain after rendering (filterable storage).
+  bool Mipmaps = false;
+};
+
+/// Depth offset applied to the casters (glPolygonOffset's factor and units).
+struct DepthOffset
+{
+  double SlopeScaled = 0.0;
+  double Constant = 0.0;
+};
+} // namespace shadowmaps
+
+class VTKRENDERINGSHADOWMAPS_EXPORT vtkShadowMapRepresentation : public vtkObject
+{
+public:
+  vtkTypeMacro(vtkShadowMapRepresentation, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * What a texel holds and how casters write it. Default: one depth, written
+   * depth-only; the pass stores it in 16 bits instead of 32 where every view
+   * allows (shadowmaps::SixteenBitDepthSuffices).
+   */
+  VTK_WRAPEXCLUDE virtual void GetMapStorage(shadowmaps::MapStorage& storage) const;
+
+  /**
+   * GLSL appended to the receivers' shadow code (vtkShadowMapsReceiverFS). It
+   * declares the sampler `vtkShadowMaps` (a sampler2DArrayShadow for depth
+   * storage, a sampler2DArray for value storage) and defines `float
+   * vtkShadowLookup(vec3 mapCoord, int layer)`: the visibility in [0, 1] of a
+   * receiver at depth mapCoord.z seen at texture coordinates mapCoord.xy of map
+   * layer `layer`. `vtkShadowViews[layer].FilterScale` is the layer's texel
+   * size over its light's first layer's, for kernels that keep their world size.
+   */
+  virtual std::string GetReceiverLookupCode() const = 0;
+
+  /** GLSL put before the receivers' shadow code, e.g. #defines of the parameters. Default none. */
+  virtual std::string GetReceiverDefinitions() const;
+
+  /** How far the lookup reaches from a receiver's texel, in texels. Default 1. */
+  virtual double GetFilterReachTexels() const;
+
+  /** Whether the maps are sampled with linear filtering. Default true. */
+  virtual bool GetLinearFiltering() const;
+
+  /** The depth offset of the casters. Default none. */
+  VTK_WRAPEXCLUDE virtual shadowmaps::DepthOffset GetCasterDepthOffset() const;
+
+  /**
+   * Called after the casters were rendered into all layers (and mipmaps
+   * built), before receivers sample them: blur or other map filtering goes
+   * here. Returning false reports a GL failure: the frame renders unshadowed.
+   */
+  VTK_WRAPEXCLUDE virtual bool PostProcessMaps(
+    vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps);
+
+  ///@{
+  /**
+   * Receiver resources: ActivateReceiverResources before the scene is drawn
+   * (bind textures of the representation's own), SetReceiverUniforms per
+   * receiver program, DeactivateReceiverResources after. Default: nothing.
+   */
+  VTK_WRAPEXCLUDE virtual void ActivateReceiverResources(vtkOpenGLRenderWindow* window);
+  VTK_WRAPEXCLUDE virtual void SetReceiverUniforms(vtkShaderProgram* program);
+  VTK_WRAPEXCLUDE virtual void DeactivateReceiverResources();
+  ///@}
+
+  /** Releases the GL objects of the representation's own. */
+  virtual void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkShadowMapRepresentation() = default;
+  ~vtkShadowMapRepresentation() override = default;
+
+private:
+  vtkShadowMapRepresentation(const vtkShadowMapRepresentation&) = delete;
+  void operator=(const vtkShadowMapRepresentation&) = delete;
+};
+
+#endif

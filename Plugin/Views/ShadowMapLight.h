@@ -1,0 +1,140 @@
+// What a views strategy (vtkShadowMapViews) receives and fills: the frame being
+// rendered and one shadowed light with its views. Plain data, no VTK state.
+#ifndef ShadowMapLight_h
+#define ShadowMapLight_h
+
+#include "ShadowMapFocusing.h" // For Aabb, LightView, TileGrid
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+class vtkLight;
+
+namespace shadowmaps
+{
+enum class LightKind
+{
+  Directional,
+  Spot,
+  Point
+};
+
+/// How a light's views cover the receivers; the receivers' shader picks a view
+/// by it (vtkShadowSelectView). The values are emitted into the GLSL as the
+/// VTK_SHADOW_LAYOUT_* defines (ReceiverShaderConstants).
+enum class ViewLayout
+{
+  /// One view.
+  Single = 0,
+  /// Six 90 degree faces around the light, +x, -x, +y, -y, +z, -z, picked by
+  /// the direction from the light.
+  CubeFaces = 1,
+  /// Depth partitions of the camera frustum, picked by view depth (or map
+  /// coverage) and blended at their splits (ShadowLight::CascadeDepths).
+  Cascades = 2,
+  /// The tiles of one map (ShadowLight::Tiles), picked by where the receiver
+  /// falls in that map.
+  Tiles = 3
+};
+
+/// Receiver code a light's views may need, as bits. Code a light cannot need is
+/// compiled out of its receivers (software rasterisers run both sides of every
+/// branch). Emitted into the GLSL as the VTK_SHADOW_FEATURE_* defines.
+enum ReceiverFeature : int
+{
+  /// Warped maps: the texel size comes from the map's local gradient.
+  GradientTexels = 1,
+  /// Positional lights: texels grow with the distance to the light.
+  DistantTexels = 2,
+  /// Maps that store depth linear in light space; 1 / W is recovered.
+  LinearDepths = 4
+};
+
+/// Cones wider than this (half angle, degrees) are rendered as six cube faces:
+/// one perspective map that wide wastes most of its texels at the rim.
+constexpr double WidestSingleMapCone = 60.0;
+
+/// A light that casts shadows this frame.
+struct ShadowLight
+{
+  vtkLight* Light = nullptr;
+  /// Index of the light in the mappers' generated lighting code (lightColor<i>).
+  int ShaderIndex = 0;
+  LightKind Kind = LightKind::Directional;
+  glm::dvec3 Position{ 0.0 };
+  /// From the light toward what it lights.
+  glm::dvec3 Direction{ 0.0, 0.0, -1.0 };
+  double ConeAngle = 90.0;
+  float Attenuation = 1.0f;
+  /// The first map layer of the light's views (set by the pass).
+  int FirstLayer = 0;
+
+  ViewLayout Layout = ViewLayout::Single;
+  std::vector<LightView> Views;
+  /// Tiles layout: how the views tile one map.
+  TileGrid Tiles;
+  /// Cascades layout, per cascade: {first view depth it shades, its far split,
+  /// start of its blend band into the next (NoBlendBand: none)}.
+  std::vector<glm::dvec3> CascadeDepths;
+  /// Cascades layout: picked by map coverage instead of view depth, the finest
+  /// map that holds the receiver, blended into the next over this outer
+  /// fraction of the map's half-width. Negative: picked by depth.
+  double CoverageBlendFraction = -1.0;
+  /// View depths over which the shadows fade out; no fade unless y > x.
+  glm::dvec2 Fade{ 0.0, 0.0 };
+  /// ReceiverFeature bits the views strategy's settings may produce for this
+  /// light, whatever this frame's fit: a fit turning uniform as the camera
+  /// moves must not rebuild the receivers' shaders.
+  int PossibleFeatures = 0;
+};
+
+/// Cascade blend-band start meaning "no band".
+constexpr double NoBlendBand = 1e38;
+
+/// True for the lights one perspective map cannot hold: point lights and spots
+/// wider than WidestSingleMapCone. Every views strategy gives them cube faces.
+inline bool NeedsCubeFaces(const ShadowLight& light)
+{
+  return light.Kind == LightKind::Point ||
+    (light.Kind == LightKind::Spot && light.ConeAngle > WidestSingleMapCone);
+}
+
+/// The ReceiverFeature bits the light's receivers are compiled with: the
+/// possible ones and whatever this frame's views need.
+inline int ReceiverFeatures(const ShadowLight& light)
+{
+  int features = light.PossibleFeatures;
+  if (light.Kind != LightKind::Directional)
+  {
+    features |= DistantTexels;
+  }
+  for (const LightView& view : light.Views)
+  {
+    features |= (view.TexelSizeFromGradient ? GradientTexels : 0) |
+      (view.TexelPerUnitDistance != 0.0 ? DistantTexels : 0) | (view.LinearDepth ? LinearDepths : 0);
+  }
+  return features;
+}
+
+/// The frame a light's views are fitted for.
+struct ShadowFrame
+{
+  glm::dmat4 CameraView{ 1.0 };
+  glm::dmat4 CameraProjection{ 1.0 };
+  /// Union of PropBounds.
+  Aabb SceneBounds;
+  /// Bounds of every visible prop.
+  std::vector<Aabb> PropBounds;
+  /// Map width and height in texels.
+  int Resolution = 0;
+  /// How far the representation's filter reaches from a receiver's texel, in
+  /// texels (vtkShadowMapRepresentation::GetFilterReachTexels): tiles keep a
+  /// border that wide.
+  double FilterReachTexels = 1.0;
+
+  glm::dmat4 CameraViewProjection() const { return this->CameraProjection * this->CameraView; }
+};
+} // namespace shadowmaps
+
+#endif
