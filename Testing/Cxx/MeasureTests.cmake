@@ -1,4 +1,4 @@
-# Tests of the measurement code: the exact shadow oracle (Examples/Cxx/
+# Tests of the measurement code: the exact shadow oracle (Measurement/
 # ShadowOracle.cxx, library ShadowMeasure), the metrics and `vtkshadows bench`. Included from Testing/CMakeLists.txt, so relative paths are
 # relative to Testing/. The tests render, so they run under xvfb-run.
 if (NOT TARGET ShadowMeasure)

@@ -1,4 +1,4 @@
-// The exact shadow oracle (Examples/Cxx/ShadowOracle.h) against closed-form
+// The exact shadow oracle (Measurement/ShadowOracle.h) against closed-form
 // shadow areas and against VTK's own rasteriser. Run under xvfb-run.
 //
 // The expected areas are computed from the scene's geometry, never from a

@@ -1,4 +1,4 @@
-// The robustness sweep (Examples/Cxx/ShadowSweep.h): its case draws, the
+// The robustness sweep (Measurement/ShadowSweep.h): its case draws, the
 // defects it found, each rebuilt by hand as a regression case, and a fixed-seed
 // sweep held to bounds taken from the measured distribution.
 #include "ShadowScenes.h"

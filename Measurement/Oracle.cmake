@@ -1,4 +1,4 @@
-# ShadowMeasure: the exact shadow oracle (Cxx/ShadowOracle.cxx, Embree 3) that
+# ShadowMeasure: the exact shadow oracle (ShadowOracle.cxx, Embree 3) that
 # the benchmarks and tests measure shadow maps against. Included at the end of
 # Examples/CMakeLists.txt.
 find_package(Threads REQUIRED)
@@ -12,8 +12,8 @@ set(shadowmeasure_vtk_modules
   VTK::RenderingCore      # actors, mappers, vtkGlyph3DMapper, vtkPointGaussianMapper
   VTK::RenderingOpenGL2)  # vtkCompositePolyDataMapper2
 
-add_library(ShadowMeasure STATIC Cxx/ShadowOracle.cxx)
-target_include_directories(ShadowMeasure PUBLIC "${CMAKE_CURRENT_SOURCE_DIR}/Cxx")
+add_library(ShadowMeasure STATIC ShadowOracle.cxx)
+target_include_directories(ShadowMeasure PUBLIC "${CMAKE_CURRENT_SOURCE_DIR}")
 target_link_libraries(ShadowMeasure
   PUBLIC
     glm::glm

@@ -1,0 +1,25 @@
+# The module as a user gets it: `cmake -P InstallTest.cmake` with
+#   STEP=install     installs BUILD_DIR into OUT/prefix;
+#   STEP=downstream  configures, builds and runs Examples/Downstream against it
+#                    (the program checks a shadow on its own image);
+# SOURCE_DIR, BUILD_DIR and OUT are set by Testing/CMakeLists.txt.
+function (run_or_fail what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result)
+  if (NOT result EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${result}): ${ARGN}")
+  endif ()
+endfunction ()
+
+if (STEP STREQUAL "install")
+  file(REMOVE_RECURSE "${OUT}/prefix")
+  run_or_fail("install" "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${OUT}/prefix")
+elseif (STEP STREQUAL "downstream")
+  file(REMOVE_RECURSE "${OUT}/downstream")
+  run_or_fail("configure" "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/Examples/Downstream"
+    -B "${OUT}/downstream" -G Ninja -DCMAKE_BUILD_TYPE=Release
+    "-DCMAKE_PREFIX_PATH=${OUT}/prefix")
+  run_or_fail("build" "${CMAKE_COMMAND}" --build "${OUT}/downstream")
+  run_or_fail("run" "${OUT}/downstream/ToonShadows" "${OUT}/toon.png")
+else ()
+  message(FATAL_ERROR "Unknown STEP '${STEP}'.")
+endif ()
