@@ -1,5 +1,6 @@
 #include "ShadowOracle.h"
 
+#include "ShadowMapGlm.h"
 #include "vtkAbstractShadowMapPass.h"
 
 #include <vtkActor.h>
@@ -58,6 +59,7 @@ struct SceneRelease
 {
   void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
 };
+using shadowmaps::ToGlm;
 using DeviceHandle = std::unique_ptr<RTCDeviceTy, DeviceRelease>;
 using SceneHandle = std::unique_ptr<RTCSceneTy, SceneRelease>;
 
@@ -474,24 +476,6 @@ double SurfaceOffsetOf(const std::vector<Mesh>& meshes)
 
 //------------------------------------------------------------------------------
 // Camera, lights, rays
-
-glm::dmat4 ToGlm(vtkMatrix4x4* matrix)
-{
-  glm::dmat4 result;
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int column = 0; column < 4; ++column)
-    {
-      result[column][row] = matrix->GetElement(row, column);
-    }
-  }
-  return result;
-}
-
-glm::dvec3 ToGlm(const double v[3])
-{
-  return { v[0], v[1], v[2] };
-}
 
 struct CameraFrame
 {

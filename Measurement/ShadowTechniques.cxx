@@ -40,21 +40,6 @@ namespace
 {
 constexpr unsigned int VTKDefaultResolution = 1024;
 
-vtkSmartPointer<vtkRenderPass> MakeVTKPass(unsigned int resolution, vtkShadowMapPass*& shadows)
-{
-  vtkNew<vtkShadowMapPass> pass;
-  pass->GetShadowMapBakerPass()->SetResolution(resolution);
-  vtkNew<vtkRenderPassCollection> passes;
-  passes->AddItem(pass->GetShadowMapBakerPass());
-  passes->AddItem(pass);
-  vtkNew<vtkSequencePass> sequence;
-  sequence->SetPasses(passes);
-  auto camera = vtkSmartPointer<vtkCameraPass>::New();
-  camera->SetDelegatePass(sequence);
-  shadows = pass;
-  return camera;
-}
-
 /// Bytes of this project's maps for one light at `resolution`: one depth
 /// layer (sun, spot) or six (point light).
 double OurMapBytes(bool pointLight, int resolution)
@@ -110,6 +95,25 @@ vtkStandardNewMacro(CountingOutputWindow);
 } // namespace
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(unsigned int resolution, vtkShadowMapPass** shadows)
+{
+  vtkNew<vtkShadowMapPass> pass; // its opaque sequence renders lights + opaque geometry
+  pass->GetShadowMapBakerPass()->SetResolution(resolution);
+  vtkNew<vtkRenderPassCollection> passes;
+  passes->AddItem(pass->GetShadowMapBakerPass());
+  passes->AddItem(pass);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(passes);
+  auto camera = vtkSmartPointer<vtkCameraPass>::New();
+  camera->SetDelegatePass(sequence);
+  if (shadows)
+  {
+    *shadows = pass;
+  }
+  return camera;
+}
+
+//------------------------------------------------------------------------------
 std::vector<std::string> TechniqueNames()
 {
   return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
@@ -131,7 +135,7 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
   {
     technique.Resolution = static_cast<int>(
       name == "vtk" ? VTKDefaultResolution : VTKEqualMemoryResolution(pointLight, resolution));
-    technique.Pass = MakeVTKPass(static_cast<unsigned int>(technique.Resolution), technique.VTK);
+    technique.Pass = MakeVTKShadowMapPass(static_cast<unsigned int>(technique.Resolution), &technique.VTK);
   }
   else if (WarpModeOf(name) >= 0)
   {

@@ -30,6 +30,12 @@ struct TechniqueInstance
   int Resolution = 0;
 };
 
+/// VTK's own shadow maps, set up as in VTK's TestShadowMapPass (camera pass,
+/// then the baker and the shadow pass in sequence); `shadows`, if given,
+/// receives the vtkShadowMapPass.
+vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(
+  unsigned int resolution, vtkShadowMapPass** shadows = nullptr);
+
 /// "none", "vtk" (VTK's vtkShadowMapPass at its default 1024^2), "vtk-equal"
 /// (the same at the memory of "uniform"), "uniform" (vtkWarpedShadowMapPass,
 /// focused uniform map, 2x2 PCF), "psm", "lispsm", "tsm" and "gmnpr" (the same

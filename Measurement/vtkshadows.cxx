@@ -13,17 +13,12 @@
 #include "ShadowSweep.h"
 #include "ShadowTechniques.h"
 
-#include "vtkWarpedShadowMapPass.h"
+#include "vtkDepthShadowMapPass.h"
 
-#include <vtkCameraPass.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-#include <vtkRenderPassCollection.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkSequencePass.h>
-#include <vtkShadowMapBakerPass.h>
-#include <vtkShadowMapPass.h>
 #include <vtkSmartPointer.h>
 #include <vtkWindowToImageFilter.h>
 
@@ -46,21 +41,6 @@ namespace
 
 constexpr int ExitUsageError = 2;
 
-enum class Technique
-{
-  Warped, // vtkWarpedShadowMapPass in Options::warpMode
-  VTK,     // VTK's vtkShadowMapPass
-  None     // VTK's default rendering
-};
-
-enum class Filter
-{
-  Hard,
-  PCF2x2,
-  PCFNxN,
-  Poisson
-};
-
 struct Options
 {
   std::string command; // "render", "bench", "analyze" or "sweep"
@@ -71,10 +51,9 @@ struct Options
   std::string light = "sun";
   double azimuth = 60.0;
   double elevation = 45.0;
-  Technique technique = Technique::Warped;
-  int warpMode = vtkWarpedShadowMapPass::UNIFORM;
+  std::string technique = "uniform"; // a shadowbench::TechniqueNames() name
   int resolution = 2048;
-  Filter filter = Filter::PCF2x2;
+  int filter = vtkDepthShadowMapPass::PCF_2X2;
   int kernelSize = 3; // N of pcf:N
   int width = 800;
   int height = 600;
@@ -102,9 +81,10 @@ void PrintUsage(std::ostream& out)
          "  --light sun|spot|point   light kind [sun]\n"
          "  --azimuth A              light azimuth in degrees, from +x towards +y [60]\n"
          "  --elevation E            light elevation above the ground, -90..90 [45]\n"
-         "  --technique uniform|psm|lispsm|tsm|gmnpr|vtk|none\n"
-         "                           uniform..gmnpr: vtkWarpedShadowMapPass's warp modes,\n"
-         "                           vtk: VTK's vtkShadowMapPass, none: no shadows [uniform]\n"
+         "  --technique NAME         uniform, psm, lispsm, tsm, gmnpr: vtkWarpedShadowMapPass's\n"
+         "                           warp modes; csm, csm-tight, csm-lispsm: vtkCascadedShadowMapPass\n"
+         "                           at half the resolution; vtk, vtk-equal: VTK's vtkShadowMapPass;\n"
+         "                           none: no shadows [uniform]\n"
          "  --resolution N           shadow map size in texels, 64..16384 [2048]\n"
          "  --filter hard|pcf2x2|pcf:N|poisson\n"
          "                           shadow filter, N of pcf:N in 2..7 [pcf2x2]\n"
@@ -222,23 +202,25 @@ std::string ParseElevation(const std::string& value, Options& options)
   return {};
 }
 
+// "unknown technique 'NAME' (expected a, b or c)", naming every technique.
+std::string UnknownTechnique(const std::string& name)
+{
+  const auto names = shadowbench::TechniqueNames();
+  std::string expected;
+  for (size_t i = 0; i < names.size(); ++i)
+  {
+    expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  }
+  return "unknown technique '" + name + "' (expected " + expected + ")";
+}
+
 std::string ParseTechnique(const std::string& value, Options& options)
 {
-  static const std::map<std::string, int> warps = { { "uniform", vtkWarpedShadowMapPass::UNIFORM },
-    { "psm", vtkWarpedShadowMapPass::PSM }, { "lispsm", vtkWarpedShadowMapPass::LISPSM },
-    { "tsm", vtkWarpedShadowMapPass::TSM }, { "gmnpr", vtkWarpedShadowMapPass::GMNPR } };
-  if (value == "vtk" || value == "none")
+  if (!shadowbench::IsTechnique(value))
   {
-    options.technique = value == "vtk" ? Technique::VTK : Technique::None;
-    return {};
+    return UnknownTechnique(value);
   }
-  const auto found = warps.find(value);
-  if (found == warps.end())
-  {
-    return "unknown technique '" + value + "' (expected uniform, psm, lispsm, tsm, gmnpr, vtk or none)";
-  }
-  options.technique = Technique::Warped;
-  options.warpMode = found->second;
+  options.technique = value;
   return {};
 }
 
@@ -255,8 +237,8 @@ std::string ParseResolution(const std::string& value, Options& options)
 
 std::string ParseFilter(const std::string& value, Options& options)
 {
-  static const std::map<std::string, Filter> namedFilters = { { "hard", Filter::Hard },
-    { "pcf2x2", Filter::PCF2x2 }, { "poisson", Filter::Poisson } };
+  static const std::map<std::string, int> namedFilters = { { "hard", vtkDepthShadowMapPass::HARD },
+    { "pcf2x2", vtkDepthShadowMapPass::PCF_2X2 }, { "poisson", vtkDepthShadowMapPass::POISSON } };
   const auto found = namedFilters.find(value);
   if (found != namedFilters.end())
   {
@@ -272,7 +254,7 @@ std::string ParseFilter(const std::string& value, Options& options)
     {
       return "filter '" + value + "': N of pcf:N must be an integer in 2..7";
     }
-    options.filter = Filter::PCFNxN;
+    options.filter = vtkDepthShadowMapPass::PCF_NXN;
     options.kernelSize = kernelSize;
     return {};
   }
@@ -365,14 +347,11 @@ std::string ParseFlickerSetups(const std::string& value, Options& options)
 
 std::string ParseTechniques(const std::string& value, Options& options)
 {
-  const auto names = shadowbench::TechniqueNames();
   for (const std::string& technique : SplitList(value))
   {
-    if (std::find(names.begin(), names.end(), technique) == names.end())
+    if (!shadowbench::IsTechnique(technique))
     {
-      return "unknown technique '" + technique +
-        "' (expected none, vtk, vtk-equal, uniform, psm, lispsm, tsm, gmnpr, csm, csm-tight or "
-        "csm-lispsm)";
+      return UnknownTechnique(technique);
     }
   }
   options.bench.Techniques = SplitList(value);
@@ -671,49 +650,6 @@ bool ParseCommandLine(
 
 // --- rendering -------------------------------------------------------------------
 
-int ToPassFilter(Filter filter)
-{
-  switch (filter)
-  {
-    case Filter::Hard:
-      return vtkDepthShadowMapPass::HARD;
-    case Filter::PCFNxN:
-      return vtkDepthShadowMapPass::PCF_NXN;
-    case Filter::Poisson:
-      return vtkDepthShadowMapPass::POISSON;
-    case Filter::PCF2x2:
-    default:
-      return vtkDepthShadowMapPass::PCF_2X2;
-  }
-}
-
-vtkSmartPointer<vtkRenderPass> MakeWarpedShadowMapPass(const Options& options)
-{
-  vtkNew<vtkWarpedShadowMapPass> shadows;
-  shadows->SetResolution(options.resolution);
-  shadows->SetFilter(ToPassFilter(options.filter));
-  shadows->SetKernelSize(options.kernelSize);
-  shadows->SetWarpMode(options.warpMode);
-  return shadows;
-}
-
-/** VTK's own shadow maps, set up as in VTK's TestShadowMapPass. */
-vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(const Options& options)
-{
-  vtkNew<vtkShadowMapPass> shadows; // its opaque sequence renders lights + opaque geometry
-  shadows->GetShadowMapBakerPass()->SetResolution(static_cast<unsigned int>(options.resolution));
-
-  vtkNew<vtkRenderPassCollection> passes;
-  passes->AddItem(shadows->GetShadowMapBakerPass());
-  passes->AddItem(shadows);
-  vtkNew<vtkSequencePass> sequence;
-  sequence->SetPasses(passes);
-
-  vtkNew<vtkCameraPass> cameraPass;
-  cameraPass->SetDelegatePass(sequence);
-  return cameraPass;
-}
-
 bool BuildScene(vtkRenderer* renderer, const Options& options, std::string& error)
 {
   if (options.scene == "default")
@@ -726,18 +662,20 @@ bool BuildScene(vtkRenderer* renderer, const Options& options, std::string& erro
 
 void ApplyTechnique(vtkRenderer* renderer, vtkRenderWindow* window, const Options& options)
 {
-  switch (options.technique)
+  if (options.technique == "vtk")
   {
-    case Technique::Warped:
-      renderer->SetPass(MakeWarpedShadowMapPass(options));
-      break;
-    case Technique::VTK:
-      window->SetMultiSamples(0); // as in VTK's test: the pass does not resolve MSAA
-      renderer->SetPass(MakeVTKShadowMapPass(options));
-      break;
-    case Technique::None:
-      break;
+    window->SetMultiSamples(0); // as in VTK's test: the pass does not resolve MSAA
+    renderer->SetPass(shadowbench::MakeVTKShadowMapPass(static_cast<unsigned int>(options.resolution)));
+    return;
   }
+  const shadowbench::TechniqueInstance technique =
+    shadowbench::MakeTechnique(options.technique, options.light == "point", options.resolution);
+  if (auto* depth = vtkDepthShadowMapPass::SafeDownCast(technique.Ours))
+  {
+    depth->SetFilter(options.filter);
+    depth->SetKernelSize(options.kernelSize);
+  }
+  renderer->SetPass(technique.Pass);
 }
 
 bool WritePNG(vtkRenderWindow* window, const std::string& path, std::string& error)

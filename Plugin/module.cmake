@@ -48,9 +48,11 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     ${shadowmaps_shader_sources}
-  HEADERS
-    # What a downstream views or representation class needs.
+  NOWRAP_HEADERS
+    # What a downstream views or representation class needs: plain C++ and
+    # GLM, which the wrappers need not (and are slow to) parse.
     Plugin/Math/ShadowMapFocusing.h
+    Plugin/Math/ShadowMapGlm.h
     Plugin/OpenGL/ShadowMapTextureArray.h
     Plugin/Views/ShadowMapLight.h
   PRIVATE_HEADERS

@@ -1,7 +1,7 @@
 // Cascaded shadow maps (z-partitioning, PSSM, CSM) for directional lights.
 // Plain C++17 and GLM (double precision), no VTK state; every function is pure.
 //
-// Sources (see /work/shared/literature/README.md):
+// Sources (docs/REFERENCES.md):
 //  - 003 (survey, Scherzer/Wimmer/Purgathofer) §4.3.1 z-partitioning: the view frustum
 //    is cut along its depth into m sub-frusta with one equally sized map each; the
 //    logarithmic split C_i = z_n (z_f/z_n)^(i/m), the uniform split

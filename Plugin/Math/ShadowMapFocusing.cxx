@@ -97,25 +97,6 @@ double CubeFaceHalfWidth(int resolution)
   return 1.0 + 8.0 / std::max(resolution, 1);
 }
 
-// A box that is never degenerate: zero-size axes get a small extent relative to
-// the largest one (or 1 if the box is a point), so that fits stay invertible.
-Aabb Inflated(const Aabb& box)
-{
-  Aabb result = box;
-  const glm::dvec3 size = box.Max - box.Min;
-  const double largest = std::max({ size.x, size.y, size.z });
-  const double minimum = largest > 0.0 ? largest * 1e-3 : std::max(1.0, glm::length(box.Max) * 1e-3);
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    if (size[axis] < minimum)
-    {
-      result.Min[axis] -= 0.5 * minimum;
-      result.Max[axis] += 0.5 * minimum;
-    }
-  }
-  return result;
-}
-
 // Body points if any, else the box corners.
 std::vector<glm::dvec3> BodyOrScene(const glm::dmat4& cameraViewProjection, const Aabb& scene)
 {
@@ -132,6 +113,37 @@ std::vector<glm::dvec3> BodyOrScene(const glm::dmat4& cameraViewProjection, cons
   return body;
 }
 } // namespace
+
+double SmoothStep(double low, double high, double x)
+{
+  if (x <= low)
+  {
+    return 0.0;
+  }
+  if (x >= high)
+  {
+    return 1.0;
+  }
+  const double t = (x - low) / (high - low);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+Aabb NonDegenerate(const Aabb& box)
+{
+  Aabb result = box;
+  const glm::dvec3 size = box.Max - box.Min;
+  const double largest = std::max({ size.x, size.y, size.z });
+  const double minimum = largest > 0.0 ? largest * 1e-3 : std::max(1.0, glm::length(box.Max) * 1e-3);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (size[axis] < minimum)
+    {
+      result.Min[axis] -= 0.5 * minimum;
+      result.Max[axis] += 0.5 * minimum;
+    }
+  }
+  return result;
+}
 
 glm::dvec3 ProjectPoint(const glm::dmat4& m, const glm::dvec3& p)
 {
@@ -397,7 +409,7 @@ LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& sce
   const glm::dvec3& lightDirection, int resolution)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) }
-                                           : Inflated(sceneBounds);
+                                           : NonDegenerate(sceneBounds);
   const glm::dvec3 d = SafeDirection(lightDirection);
   const double diagonal = scene.Diagonal();
   LightView fit;
@@ -438,7 +450,7 @@ LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& sceneBound
   int resolution)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 }
-                                           : Inflated(sceneBounds);
+                                           : NonDegenerate(sceneBounds);
   return FitSpotToBody(
     BodyOrScene(cameraViewProjection, scene), scene, position, direction, coneAngleDegrees, resolution);
 }
@@ -590,7 +602,7 @@ std::vector<LightView> TileView(const LightView& whole, const TileGrid& grid)
 std::array<LightView, 6> FitCubeFaces(const Aabb& sceneBounds, const glm::dvec3& position, int resolution)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 }
-                                           : Inflated(sceneBounds);
+                                           : NonDegenerate(sceneBounds);
   double farthest = 0.0;
   for (const auto& p : scene.Corners())
   {
@@ -623,7 +635,7 @@ std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjecti
   {
     return faces;
   }
-  const Aabb scene = Inflated(sceneBounds);
+  const Aabb scene = NonDegenerate(sceneBounds);
   const double halfAngle = glm::degrees(std::atan(CubeFaceHalfWidth(resolution)));
   for (int i = 0; i < 6; ++i)
   {
@@ -763,6 +775,27 @@ bool IsFinite(const glm::dmat4& m)
     }
   }
   return true;
+}
+
+SpotSpace FocusInSpotSpace(
+  const glm::dmat4& cameraViewProjection, const Aabb& scene, const LightView& cone)
+{
+  SpotSpace space;
+  space.Cone = cone;
+  space.WorldBody = SpotFocusBody(cameraViewProjection, scene, space.ToSpace());
+  space.Body = ProjectAheadOfTheLight(space.WorldBody, space.ToSpace());
+  return space;
+}
+
+LightView FromSpotSpace(LightView fit, const LightView& cone)
+{
+  fit.View = fit.View * cone.ViewProjection();
+  fit.LinearDepth = true;
+  fit.Perspective = true;
+  fit.TexelSizeFromGradient = true;
+  fit.TexelConstant = 0.0;
+  fit.TexelPerUnitDistance = cone.TexelPerUnitDistance;
+  return IsFinite(fit.ViewProjection()) ? fit : cone;
 }
 
 } // namespace shadowmaps

@@ -124,6 +124,14 @@ struct LightView
   glm::dmat4 ViewProjection() const { return this->Projection * this->View; }
 };
 
+/// 0 at x <= low, 1 at x >= high, Hermite's 3 t^2 - 2 t^3 between: the fades
+/// that take a warp continuously to the uniform map.
+double SmoothStep(double low, double high, double x);
+
+/// The box with every zero-size axis given a small extent relative to the
+/// largest one (or 1 if the box is a point), so that fits stay invertible.
+Aabb NonDegenerate(const Aabb& box);
+
 /// Focused uniform map for a directional light: an orthographic frustum fitted
 /// to B in light space, its near plane pulled back to the nearest scene point
 /// inside the light frustum's side planes. Falls back to the whole scene when B
@@ -136,6 +144,30 @@ LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& sce
 LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& scene,
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
   int resolution);
+
+/// A spot light's own post-perspective space, where its rays are parallel to +z
+/// and a directional warp can be built (003; 000 for point lights).
+struct SpotSpace
+{
+  /// FitSpot's cone map: takes the world into the space.
+  LightView Cone;
+  /// The focus body B = camera frustum ∩ scene ∩ cone, in the world.
+  std::vector<glm::dvec3> WorldBody;
+  /// B in the space; empty when B is empty or reaches behind the light.
+  std::vector<glm::dvec3> Body;
+  glm::dmat4 ToSpace() const { return this->Cone.ViewProjection(); }
+};
+
+/// The focus body of `cone` (a FitSpot map) in the world and in its space.
+SpotSpace FocusInSpotSpace(
+  const glm::dmat4& cameraViewProjection, const Aabb& scene, const LightView& cone);
+
+/// A map `fit` made inside the spot's space, as a map of the world. Its W is a
+/// plane over the map there, so the depth it stores is the spot's own
+/// post-perspective depth, linear in that space (LinearDepth); texels vary
+/// over it as a warp's do (TexelSizeFromGradient) and grow with the distance
+/// to the light as the cone's. The cone itself when the result is not finite.
+LightView FromSpotSpace(LightView fit, const LightView& cone);
 
 /// FitSpot's fit for given body points (B's vertices; the cone when the body is
 /// empty or reaches behind the light); scene as is (FitSpot inflates it).

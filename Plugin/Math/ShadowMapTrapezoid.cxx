@@ -118,8 +118,7 @@ double TrapezoidWarpWeight(double gammaRadians, double fadeAngleDegrees)
   constexpr double UniformBelowDegrees = 2.0;
   const double full = glm::radians(std::min(std::max(fadeAngleDegrees, 1e-6), 90.0));
   const double uniform = std::min(glm::radians(UniformBelowDegrees), 0.5 * full);
-  const double t = std::min(std::max((gammaRadians - uniform) / (full - uniform), 0.0), 1.0);
-  return t * t * (3.0 - 2.0 * t);
+  return SmoothStep(uniform, full, gammaRadians);
 }
 
 // Counter-clockwise quarter turns of NDC x, y (exact).
@@ -346,15 +345,15 @@ LightView FitSpotTrapezoid(const glm::dmat4& cameraView, const glm::dmat4& camer
 
   // B = camera frustum ∩ scene ∩ the spot's frustum, and its view-depth range.
   const Aabb& scene = sceneBounds;
-  const std::vector<glm::dvec3> worldBody = SpotFocusBody(cameraViewProjection, scene, toLightSpace);
+  const SpotSpace space = FocusInSpotSpace(cameraViewProjection, scene, cone);
   TrapezoidFrame frame;
-  frame.Body = ProjectAheadOfTheLight(worldBody, toLightSpace);
+  frame.Body = space.Body;
   if (frame.Body.empty())
   {
     return cone;
   }
   double zNear = Infinity, zFar = -Infinity;
-  for (const auto& p : worldBody)
+  for (const auto& p : space.WorldBody)
   {
     const double depth = -(cameraView * glm::dvec4(p, 1.0)).z;
     zNear = std::min(zNear, depth);
@@ -401,17 +400,9 @@ LightView FitSpotTrapezoid(const glm::dmat4& cameraView, const glm::dmat4& camer
     frame.Gamma = std::acos(std::min(std::abs(glm::dot(glm::normalize(toAxis), view)), 1.0));
   }
 
-  LightView fit = TrapezoidLightView(FitTrapezoidFrame(frame, focusFraction), resolution);
   // Clip W = the spot's w times the trapezoid's W, and the trapezoid's W is a
-  // plane over the map as for a directional light: the stored depth, z / w times
-  // that W, is the spot's own depth, linear in its post-perspective space.
-  fit.View = fit.View * toLightSpace;
-  fit.LinearDepth = true;
-  fit.Perspective = true;
-  fit.TexelSizeFromGradient = true;
-  fit.TexelConstant = 0.0;
-  fit.TexelPerUnitDistance = cone.TexelPerUnitDistance;
-  return IsFinite(fit.ViewProjection()) ? fit : cone;
+  // plane over the map as for a directional light.
+  return FromSpotSpace(TrapezoidLightView(FitTrapezoidFrame(frame, focusFraction), resolution), cone);
 }
 
 glm::dvec3 NdcToInverseW(const LightView& view)

@@ -22,25 +22,6 @@ LightView Uniform(const glm::dmat4& cameraView, const glm::dmat4& cameraProjecti
   return FitDirectional(cameraProjection * cameraView, scene, lightDirection, resolution);
 }
 
-// Zero-size axes get a small extent so that every fit stays invertible.
-Aabb NonDegenerate(const Aabb& box)
-{
-  Aabb result = box;
-  const glm::dvec3 size = box.Max - box.Min;
-  const double largest = std::max({ size.x, size.y, size.z });
-  const double minimum =
-    largest > 0.0 ? largest * 1e-3 : std::max(1.0, glm::length(box.Max) * 1e-3);
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    if (size[axis] < minimum)
-    {
-      result.Min[axis] -= 0.5 * minimum;
-      result.Max[axis] += 0.5 * minimum;
-    }
-  }
-  return result;
-}
-
 // Maps the box [lo, hi] onto [-1, 1]^3 (scale and translate, no flip).
 glm::dmat4 BoxToClip(const glm::dvec3& lo, const glm::dvec3& hi)
 {
@@ -212,17 +193,7 @@ double WarpFade(double gammaRadians, const WarpOptions& options)
   const double low = glm::radians(std::min(std::max(options.UniformBelowDegrees, 0.0), 89.0));
   const double high =
     glm::radians(std::min(std::max(options.FullWarpAboveDegrees, glm::degrees(low)), 90.0));
-  const double gamma = std::min(std::abs(gammaRadians), 0.5 * Pi);
-  if (gamma <= low)
-  {
-    return 0.0;
-  }
-  if (gamma >= high)
-  {
-    return 1.0;
-  }
-  const double t = (gamma - low) / (high - low);
-  return t * t * (3.0 - 2.0 * t);
+  return SmoothStep(low, high, std::min(std::abs(gammaRadians), 0.5 * Pi));
 }
 
 namespace
@@ -485,9 +456,10 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
 
   // B in the world, kept inside the spot's frustum so that it maps with w > 0.
   const Aabb scene = NonDegenerate(sceneBounds);
-  const std::vector<glm::dvec3> worldBody = SpotFocusBody(cameraViewProjection, scene, toLightSpace);
+  const SpotSpace space = FocusInSpotSpace(cameraViewProjection, scene, cone);
+  const std::vector<glm::dvec3>& worldBody = space.WorldBody;
   WarpFrame frame;
-  frame.Body = ProjectAheadOfTheLight(worldBody, toLightSpace);
+  frame.Body = space.Body;
   if (frame.Body.empty())
   {
     return cone;
@@ -556,15 +528,8 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
   {
     return cone;
   }
-  fit.View = fit.View * toLightSpace;
-  fit.Perspective = true;
-  fit.TexelSizeFromGradient = true;
-  // The stored depth is affine in the spot's post-perspective depth, as for the
-  // spot's TSM (the warp's W is a plane over the map there too).
-  fit.LinearDepth = true;
-  fit.TexelConstant = 0.0;
-  fit.TexelPerUnitDistance = cone.TexelPerUnitDistance;
-  return IsFinite(fit.ViewProjection()) ? fit : cone;
+  // The warp's W is a plane over the map there too, as for the spot's TSM.
+  return FromSpotSpace(fit, cone);
 }
 
 } // namespace shadowmaps

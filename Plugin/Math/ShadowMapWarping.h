@@ -1,7 +1,7 @@
 // Perspective warping of directional-light shadow maps: LiSPSM and GMNPR.
 // Plain C++17 and GLM (double precision), no VTK state; every function is pure.
 //
-// Sources (see /work/shared/literature/README.md):
+// Sources (docs/REFERENCES.md):
 //  - 003 (survey, Scherzer/Wimmer/Purgathofer): LiSPSM light space, the warp frustum P
 //    of free near distance n between z_n (PSM) and infinity (uniform), n_opt, the
 //    1/sin(gamma) falloff and Lloyd's remark on it; error dp/ds = (1/z)(dz/ds)(cos a/cos b).

@@ -1,6 +1,7 @@
 #include "vtkAbstractShadowMapPass.h"
 
 #include "ShadowMapAnalysis.h"
+#include "ShadowMapGlm.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapTextureArray.h"
@@ -44,6 +45,8 @@ vtkInformationKeyMacro(vtkAbstractShadowMapPass, CASTS_SHADOWS, Integer);
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, RECEIVES_SHADOWS, Integer);
 
 using shadowmaps::Aabb;
+using shadowmaps::ToGlm;
+using shadowmaps::ToVtk;
 using shadowmaps::LightKind;
 using shadowmaps::LightView;
 using shadowmaps::ShadowLight;
@@ -51,39 +54,10 @@ using shadowmaps::ShadowLight;
 namespace
 {
 
-glm::dmat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::dmat4 result;
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int column = 0; column < 4; ++column)
-    {
-      result[column][row] = m->GetElement(row, column);
-    }
-  }
-  return result;
-}
-
-void ToVtk(const glm::dmat4& m, vtkMatrix4x4* result)
-{
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int column = 0; column < 4; ++column)
-    {
-      result->SetElement(row, column, m[column][row]);
-    }
-  }
-}
-
 // An absent key means yes.
 bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
 {
   return !info || !info->Has(key) || info->Get(key) != 0;
-}
-
-glm::dvec3 ToGlm(const double v[3])
-{
-  return { v[0], v[1], v[2] };
 }
 
 bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb& box)
