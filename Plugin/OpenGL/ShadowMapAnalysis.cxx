@@ -3,7 +3,6 @@
 #include "ShadowMapLight.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapTextureArray.h"
-#include "vtkAbstractShadowMapPass.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -21,8 +20,7 @@ void AddAnalysisReceiverCode(
 {
   code.AnalysisFunctions.clear();
   code.AnalysisStatement.clear();
-  if (view == vtkAbstractShadowMapPass::NO_ANALYSIS ||
-    view == vtkAbstractShadowMapPass::SHADOW_MAP || light >= static_cast<int>(lights.size()))
+  if (view <= 0 || light >= static_cast<int>(lights.size()))
   {
     return;
   }

@@ -18,9 +18,10 @@ struct ReceiverCode;
 struct ShadowLight;
 class TextureArray;
 
-/// Fills code's analysis members for analysis view `view` of light `light`
-/// (vtkAbstractShadowMapPass's AnalysisViewType values); leaves them empty for
-/// none, for SHADOW_MAP and for a light index out of range.
+/// Fills code's analysis members for the receiver analysis view `view` of light
+/// `light`: VTK_SHADOW_ANALYSIS of vtkShadowMapsAnalysisFS (1 visibility, 2
+/// texel density, 4 partition; vtkAbstractShadowMapPass's AnalysisViewType
+/// values). Leaves them empty for 0 and for a light index out of range.
 void AddAnalysisReceiverCode(
   int view, int light, const std::vector<ShadowLight>& lights, ReceiverCode& code);
 

@@ -784,7 +784,9 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
 void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
 {
   Internals& r = *this->Internal;
-  shadowmaps::AddAnalysisReceiverCode(this->AnalysisView, this->AnalysisLight, r.Lights, r.Code);
+  const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
+  shadowmaps::AddAnalysisReceiverCode(
+    recolours ? this->AnalysisView : 0, this->AnalysisLight, r.Lights, r.Code);
   std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code);
   std::vector<vtkProp*> nonReceivers;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)

@@ -18,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 using namespace shadowtest;
 
 namespace
@@ -532,4 +534,44 @@ TEST(ShadowBehaviour, DegenerateScenes)
     EXPECT_GT(LuminanceAt(along.Renderer, image, { 4.0, 2.0, 1.5 }), 60.0);
   }
   EXPECT_EQ(errors.Errors(), 0) << errors.Text();
+}
+
+// Rendering is deterministic: the same frame twice, whether the maps are reused,
+// re-rendered or rendered by a new pass, is bit-identical (baselines can be strict).
+TEST(ShadowBehaviour, TheSameFrameTwiceIsBitIdentical)
+{
+  const auto bytes = [](vtkImageData* image) {
+    const auto* first = static_cast<const unsigned char*>(image->GetScalarPointer());
+    return std::vector<unsigned char>(first, first + image->GetNumberOfPoints() * 3);
+  };
+  for (const bool cascaded : { false, true })
+  {
+    TestScene scene;
+    scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
+    const auto makePass = [cascaded]() -> vtkSmartPointer<vtkDepthShadowMapPass> {
+      if (cascaded)
+      {
+        return vtkSmartPointer<vtkCascadedShadowMapPass>::New();
+      }
+      auto warped = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+      warped->SetWarpModeToLiSPSM();
+      return warped;
+    };
+    vtkSmartPointer<vtkDepthShadowMapPass> pass = makePass();
+    pass->SetFilterToPoisson();
+    scene.Renderer->SetPass(pass);
+    const std::vector<unsigned char> first = bytes(RenderAndCapture(scene.Window));
+    EXPECT_EQ(bytes(RenderAndCapture(scene.Window)), first) << "maps reused, cascaded " << cascaded;
+    const int updates = pass->GetNumberOfShadowMapUpdates();
+    pass->Modified();
+    EXPECT_EQ(bytes(RenderAndCapture(scene.Window)), first) << "maps re-rendered, cascaded " << cascaded;
+    EXPECT_GT(pass->GetNumberOfShadowMapUpdates(), updates);
+    vtkSmartPointer<vtkDepthShadowMapPass> fresh = makePass();
+    fresh->SetFilterToPoisson();
+    scene.Renderer->SetPass(fresh);
+    EXPECT_EQ(bytes(RenderAndCapture(scene.Window)), first) << "a new pass, cascaded " << cascaded;
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
+    fresh->ReleaseGraphicsResources(scene.Window);
+  }
 }
