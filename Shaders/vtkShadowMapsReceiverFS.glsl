@@ -110,7 +110,7 @@ int vtkShadowSelectCascade(
   return firstView + count - 1;
 }
 
-// The tile of one map (TileGrid::TileFromFirstTile) whose core holds the receiver, from
+// The tile of one map (shadowmaps::TileGrid) whose core holds the receiver, from
 // its place in the first tile: one map transform, whatever the tile count.
 int vtkShadowSelectTile(vec3 positionVC, vec3 normalVC, int light, int firstView, int features)
 {

@@ -413,47 +413,10 @@ LightView FitCascadeStable(const glm::dmat4& cameraView, const glm::dmat4& subPr
   return fit;
 }
 
-int SelectCascadeByDepth(const std::vector<double>& splits, double viewDepth)
-{
-  const int m = int(splits.size()) - 1;
-  if (m < 1 || !Finite(viewDepth))
-  {
-    return 0;
-  }
-  // Number of interior boundaries at or before viewDepth.
-  int index = 0;
-  for (int i = 1; i < m; ++i)
-  {
-    if (viewDepth >= splits[i])
-    {
-      index = i;
-    }
-  }
-  return index;
-}
-
 double BlendBandStart(const std::vector<double>& splits, int index, double blendFraction)
 {
   const double fraction = std::min(std::max(blendFraction, 0.0), 1.0);
   return splits[index + 1] - fraction * (splits[index + 1] - splits[index]);
-}
-
-double CascadeBlendWeight(
-  const std::vector<double>& splits, int index, double viewDepth, double blendFraction)
-{
-  const int m = int(splits.size()) - 1;
-  if (index < 0 || index >= m - 1 || !Finite(viewDepth) || !Finite(blendFraction))
-  {
-    return 0.0;
-  }
-  const double start = BlendBandStart(splits, index, blendFraction);
-  const double band = splits[index + 1] - start;
-  if (!(band > 0.0))
-  {
-    return 0.0;
-  }
-  const double w = (viewDepth - start) / band;
-  return Finite(w) ? std::min(std::max(w, 0.0), 1.0) : 0.0;
 }
 
 glm::dvec2 CascadeDepthRange(const std::vector<double>& splits, int index, double blendFraction)

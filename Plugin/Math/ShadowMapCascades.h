@@ -126,29 +126,14 @@ LightView FitCascadeTight(const glm::dmat4& cameraView, const glm::dmat4& subPro
 LightView FitCascadeStable(const glm::dmat4& cameraView, const glm::dmat4& subProjection,
   const Aabb& scene, const glm::dvec3& lightDirection, int resolution);
 
-/// Cascade for a receiver at view depth viewDepth: the i with
-/// splits[i] <= viewDepth < splits[i + 1], clamped to [0, m - 1] (depths before the
-/// first split use cascade 0, at or past the last one cascade m - 1; NaN gives 0).
-/// splits as from PracticalSplits/SanitizeSplits (m + 1 values); returns 0 for fewer
-/// than 2 values.
-int SelectCascadeByDepth(const std::vector<double>& splits, double viewDepth);
-
 /// View depth where cascade index's blend band into cascade index + 1 starts: the
 /// last blendFraction (clamped to [0, 1]) of its depth range
 /// [splits[index], splits[index + 1]]. index + 1 must be a valid split.
 double BlendBandStart(const std::vector<double>& splits, int index, double blendFraction);
 
-/// Weight of cascade index + 1 for a receiver at viewDepth in cascade index: the last
-/// blendFraction (clamped to [0, 1]) of cascade index's depth range
-/// [splits[index], splits[index + 1]] is a linear ramp from 0 (start of the band) to 1
-/// (at splits[index + 1]); 0 elsewhere, for the last cascade and for invalid input.
-/// The shader shades with (1 - w) * shadow(index) + w * shadow(index + 1).
-double CascadeBlendWeight(
-  const std::vector<double>& splits, int index, double viewDepth, double blendFraction);
-
 /// Depth range {near, far} that cascade index's map must cover so that both its own
 /// receivers and the blend band of the previous cascade (where it is sampled too, see
-/// CascadeBlendWeight) are inside: near = start of cascade index - 1's blend band
+/// vtkShadowBlendIntoNext) are inside: near = start of cascade index - 1's blend band
 /// (splits[index] for index 0 or blendFraction 0), far = splits[index + 1]. Pass it to
 /// SubFrustumProjection. {0, 0} for an invalid index.
 glm::dvec2 CascadeDepthRange(const std::vector<double>& splits, int index, double blendFraction);

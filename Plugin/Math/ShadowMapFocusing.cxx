@@ -553,20 +553,6 @@ glm::dvec2 TileGrid::Center(int column, int row) const
   return { -1.0 + (2.0 * column + 1.0) / this->Columns, -1.0 + (2.0 * row + 1.0) / this->Rows };
 }
 
-int TileGrid::TileFromFirstTile(const glm::dvec2& firstTileTexture) const
-{
-  const glm::dvec2 ndc = 2.0 * firstTileTexture - 1.0;
-  return this->TileOf(ndc * this->WindowFraction + this->Center(0, 0));
-}
-
-int TileGrid::TileOf(const glm::dvec2& wholeNdc) const
-{
-  const glm::dvec2 cells = glm::floor((wholeNdc * 0.5 + 0.5) * glm::dvec2(this->Columns, this->Rows));
-  const int column = static_cast<int>(std::min(std::max(cells.x, 0.0), this->Columns - 1.0));
-  const int row = static_cast<int>(std::min(std::max(cells.y, 0.0), this->Rows - 1.0));
-  return row * this->Columns + column;
-}
-
 std::vector<LightView> TileView(const LightView& whole, const TileGrid& grid)
 {
   const glm::dvec2 fraction = grid.WindowFraction;
@@ -651,20 +637,6 @@ std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjecti
     }
   }
   return faces;
-}
-
-int CubeFaceIndex(const glm::dvec3& d)
-{
-  const glm::dvec3 a = glm::abs(d);
-  if (a.x >= a.y && a.x >= a.z)
-  {
-    return d.x >= 0.0 ? 0 : 1;
-  }
-  if (a.y >= a.z)
-  {
-    return d.y >= 0.0 ? 2 : 3;
-  }
-  return d.z >= 0.0 ? 4 : 5;
 }
 
 glm::dmat4 ClipToTexture()

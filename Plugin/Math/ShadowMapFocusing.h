@@ -195,12 +195,6 @@ struct TileGrid
 
   /// Centre of tile (column, row) in the whole map's NDC.
   glm::dvec2 Center(int column, int row) const;
-  /// TileOf a point given by its texture coordinates in the first tile: how
-  /// receivers find their tile with one map transform (vtkShadowSelectTile).
-  int TileFromFirstTile(const glm::dvec2& firstTileTexture) const;
-  /// Index (row * Columns + column) of the tile whose core holds a point of
-  /// the whole map's NDC; points outside the map get the nearest tile.
-  int TileOf(const glm::dvec2& wholeNdc) const;
 };
 
 /// Columns x rows tiles of `resolution` texels whose cores cover a map, with
@@ -223,9 +217,6 @@ std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& posit
 /// keep it, unmarked, when the scene is empty or the camera matrix is not finite.
 std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjection,
   const Aabb& scene, const glm::dvec3& position, int resolution);
-
-/// Index of the cube face (order of FitCubeFaces) that sees direction d.
-int CubeFaceIndex(const glm::dvec3& d);
 
 /// {near, far} depths (positive along -z) of a projection's near (clip z = -1) and far
 /// (clip z = +1) planes. Works for perspective and parallel projections, off-axis
