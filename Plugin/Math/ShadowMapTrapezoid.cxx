@@ -189,128 +189,122 @@ TrapezoidMap FitTrapezoid(const glm::dmat4& cameraViewProjection, const Aabb& sc
   return FitTrapezoidFrame(frame, focusFraction, fadeAngleDegrees);
 }
 
-TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction, double fadeAngleDegrees)
+namespace
 {
-  const Aabb& scene = frame.Casters;
-  const glm::dvec3& d = frame.LightDirection;
-  const double diagonal = std::max(scene.Diagonal(), 1e-300);
-  TrapezoidMap map;
-  map.LightView = LightLookAt(scene.Center() - d * diagonal, d);
-
-  // Step 1 (thesis): B in light space.
+// Step 1 and 3 (thesis): B (or, without one, the casters' box) in light space,
+// its 2D convex hull, and how far B reaches from the light.
+std::vector<glm::dvec2> HullInLightSpace(
+  const TrapezoidFrame& frame, const glm::dmat4& lightView, double& bodyFar)
+{
   std::vector<glm::dvec3> body = frame.Body;
   if (body.empty())
   {
-    const auto corners = scene.Corners();
+    const auto corners = frame.Casters.Corners();
     body.assign(corners.begin(), corners.end());
   }
   std::vector<glm::dvec2> projected;
-  double bodyFar = 0.0;
+  bodyFar = 0.0;
   for (const auto& p : body)
   {
-    const glm::dvec3 q = ProjectPoint(map.LightView, p);
+    const glm::dvec3 q = ProjectPoint(lightView, p);
     projected.emplace_back(q);
     bodyFar = std::max(bodyFar, -q.z);
   }
-  // Step 3: the 2D convex hull.
-  map.Hull = ConvexHull2D(projected);
+  return ConvexHull2D(projected);
+}
 
-  // Step 2: the centre line, from the projected near-plane centre along the
-  // projected view axis. Its length per unit of view axis is sin(light, view).
-  const glm::dvec2 axisInLight = glm::dvec2(glm::dmat3(map.LightView) * frame.ViewAxis);
-  const double sine = glm::length(axisInLight);
-  const double gamma = frame.Gamma >= 0.0 ? frame.Gamma : std::asin(std::min(sine, 1.0));
-  map.WarpWeight = TrapezoidWarpWeight(gamma, fadeAngleDegrees);
-  const glm::dvec2 axial = CentreLineFrame(sine > 1e-12 ? axisInLight / sine : glm::dvec2(0.0, 1.0),
-    glm::dvec2(glm::dmat3(map.LightView) * frame.CameraUp), map.WarpWeight, map.QuarterTurns);
-  const glm::dvec2 lateral(axial.y, -axial.x);
-  const glm::dvec2 nearInLight = glm::dvec2(ProjectPoint(map.LightView, frame.NearCentre));
-  const double tCentre = glm::dot(nearInLight, lateral);
+// The hull's extent along the centre line (top sTop, base sBase) and across it
+// (tMin, tMax), each at least minimumExtent.
+struct HullExtent
+{
+  double Top = Infinity;
+  double Base = -Infinity;
+  double LateralMin = Infinity;
+  double LateralMax = -Infinity;
+  double Length() const { return this->Base - this->Top; }
+};
 
-  // Step 4: top and base perpendicular to the centre line, touching the hull.
-  double sTop = Infinity, sBase = -Infinity, tMin = Infinity, tMax = -Infinity;
+HullExtent ExtentAlong(const std::vector<glm::dvec2>& hull, const glm::dvec2& axial,
+  const glm::dvec2& lateral, double minimumExtent)
+{
+  HullExtent e;
+  for (const auto& p : hull)
+  {
+    e.Top = std::min(e.Top, glm::dot(p, axial));
+    e.Base = std::max(e.Base, glm::dot(p, axial));
+    e.LateralMin = std::min(e.LateralMin, glm::dot(p, lateral));
+    e.LateralMax = std::max(e.LateralMax, glm::dot(p, lateral));
+  }
+  if (e.Base - e.Top < minimumExtent)
+  {
+    e.Base = e.Top + minimumExtent;
+  }
+  if (e.LateralMax - e.LateralMin < minimumExtent)
+  {
+    e.LateralMin -= 0.5 * minimumExtent;
+    e.LateralMax += 0.5 * minimumExtent;
+  }
+  return e;
+}
+
+// delta': the focus point's distance from the top edge along the centre line
+// (delta from the near plane on the view axis, [MT04]), kept inside the
+// trapezoid. Where the near-plane centre lies before the hull's top (the
+// camera's axis passing beside B), the focus span, its distance from that
+// centre, is laid off from the top instead: the focus itself can lie before the
+// top, and delta measured to it would vanish, eta with it, warping B onto a sliver.
+double FocusOffset(const glm::dvec2& focusInLight, const glm::dvec2& nearInLight,
+  const glm::dvec2& axial, const HullExtent& e)
+{
+  const double focusSpan = glm::dot(focusInLight - nearInLight, axial);
+  const double deltaRaw = std::max(glm::dot(focusInLight, axial) - e.Top,
+    glm::dot(nearInLight, axial) < e.Top ? focusSpan : -Infinity);
+  return std::min(std::max(deltaRaw, 1e-3 * e.Length()), e.Length());
+}
+
+// The unwarped rectangle around the hull.
+void FitRectangle(const glm::dvec2& axial, const glm::dvec2& lateral, const HullExtent& e,
+  double yUnwarped, TrapezoidMap& map)
+{
+  map.VanishingDistance = Infinity;
+  map.FocusLine = 0.5 * (yUnwarped + 1.0);
+  map.TrapezoidToSquare =
+    RectangleMap(lateral, axial, e.LateralMin, e.LateralMax, e.Top, e.Base);
+  map.Corners = { lateral * e.LateralMin + axial * e.Top, lateral * e.LateralMax + axial * e.Top,
+    lateral * e.LateralMax + axial * e.Base, lateral * e.LateralMin + axial * e.Base };
+}
+
+// The trapezoid whose side edges are the two lines through q (eta before the top
+// on the centre line) that enclose the hull.
+void FitTrapezoidSides(const glm::dvec2& axial, const glm::dvec2& lateral, double tCentre,
+  const HullExtent& e, double eta, double yTarget, TrapezoidMap& map)
+{
+  const double sQ = e.Top - eta;
+  double kMin = Infinity, kMax = -Infinity;
   for (const auto& p : map.Hull)
   {
-    sTop = std::min(sTop, glm::dot(p, axial));
-    sBase = std::max(sBase, glm::dot(p, axial));
-    tMin = std::min(tMin, glm::dot(p, lateral));
-    tMax = std::max(tMax, glm::dot(p, lateral));
+    const double k = (glm::dot(p, lateral) - tCentre) / (glm::dot(p, axial) - sQ);
+    kMin = std::min(kMin, k);
+    kMax = std::max(kMax, k);
   }
-  const double minimumExtent = diagonal * 1e-9;
-  if (sBase - sTop < minimumExtent)
+  const double minimumSlope = 1e-9 * (e.LateralMax - e.LateralMin) / (eta + e.Length());
+  if (kMax - kMin < minimumSlope)
   {
-    sBase = sTop + minimumExtent;
+    kMin -= 0.5 * minimumSlope;
+    kMax += 0.5 * minimumSlope;
   }
-  if (tMax - tMin < minimumExtent)
-  {
-    tMin -= 0.5 * minimumExtent;
-    tMax += 0.5 * minimumExtent;
-  }
-  const double lambda = sBase - sTop;
+  const auto onSide = [&](double k, double s) { return lateral * (tCentre + k * (s - sQ)) + axial * s; };
+  map.Corners = { onSide(kMin, e.Top), onSide(kMax, e.Top), onSide(kMax, e.Base), onSide(kMin, e.Base) };
+  const glm::dvec2 q = lateral * tCentre + axial * sQ;
+  map.VanishingDistance = eta;
+  map.FocusLine = 0.5 * (yTarget + 1.0);
+  map.TrapezoidToSquare = TrapezoidChain(map.Corners[0], map.Corners[1], map.Corners[3], q, axial);
+}
 
-  // The focus point P_L: delta from the near plane on the view axis [MT04];
-  // delta' is its distance from the top edge along the centre line, kept
-  // inside the trapezoid.
-  const glm::dvec2 focusInLight = glm::dvec2(ProjectPoint(map.LightView, frame.Focus));
-  // Where the near-plane centre lies before the hull's top (the camera's axis
-  // passing beside B), the focus span, its distance from that centre, is laid
-  // off from the top instead: the focus itself can lie before the top, and delta
-  // measured to it would vanish, eta with it, warping B onto a sliver.
-  const double focusSpan = glm::dot(focusInLight - nearInLight, axial);
-  const double deltaRaw = std::max(glm::dot(focusInLight, axial) - sTop,
-    glm::dot(nearInLight, axial) < sTop ? focusSpan : -Infinity);
-  const double delta = std::min(std::max(deltaRaw, 1e-3 * lambda), lambda);
-  map.FocusPoint = focusInLight + axial * (sTop + delta - glm::dot(focusInLight, axial));
-
-  // Target line of the focus point, NDC Y (top -1, base +1): the paper's
-  // 2 * fraction - 1 (0.6 for the 80% line), faded toward the unwarped value
-  // 2 delta'/lambda - 1 as the light approaches the view axis.
-  const double yUnwarped = 2.0 * delta / lambda - 1.0;
-  const double yPaper = 2.0 * std::min(std::max(focusFraction, 0.0), 0.999) - 1.0;
-  const double yTarget = yUnwarped + map.WarpWeight * (yPaper - yUnwarped);
-
-  // Distance eta from the top edge to q: the 1D projective map y(s) = A + B/s
-  // (s from q) with y(eta) = -1, y(eta + lambda) = 1, y(eta + delta') = yTarget
-  // gives eta = lambda delta' (1 - y) / (lambda - 2 delta' + lambda y), the
-  // [MT04] formula with xi = -y (top and base swapped).
-  const double denominator = lambda * (yTarget - yUnwarped);
-  const double eta = denominator > 0.0 ? delta * (1.0 - yTarget) * lambda / denominator : Infinity;
-
-  if (!(eta < RectangleRatio * lambda))
-  {
-    map.VanishingDistance = Infinity;
-    map.FocusLine = 0.5 * (yUnwarped + 1.0);
-    map.TrapezoidToSquare = RectangleMap(lateral, axial, tMin, tMax, sTop, sBase);
-    map.Corners = { lateral * tMin + axial * sTop, lateral * tMax + axial * sTop,
-      lateral * tMax + axial * sBase, lateral * tMin + axial * sBase };
-  }
-  else
-  {
-    // Side edges: the two lines through q on the centre line that enclose the hull.
-    const double sQ = sTop - eta;
-    double kMin = Infinity, kMax = -Infinity;
-    for (const auto& p : map.Hull)
-    {
-      const double k = (glm::dot(p, lateral) - tCentre) / (glm::dot(p, axial) - sQ);
-      kMin = std::min(kMin, k);
-      kMax = std::max(kMax, k);
-    }
-    const double minimumSlope = 1e-9 * (tMax - tMin) / (eta + lambda);
-    if (kMax - kMin < minimumSlope)
-    {
-      kMin -= 0.5 * minimumSlope;
-      kMax += 0.5 * minimumSlope;
-    }
-    const auto onSide = [&](double k, double s) { return lateral * (tCentre + k * (s - sQ)) + axial * s; };
-    map.Corners = { onSide(kMin, sTop), onSide(kMax, sTop), onSide(kMax, sBase), onSide(kMin, sBase) };
-    const glm::dvec2 q = lateral * tCentre + axial * sQ;
-    map.VanishingDistance = eta;
-    map.FocusLine = 0.5 * (yTarget + 1.0);
-    map.TrapezoidToSquare = TrapezoidChain(map.Corners[0], map.Corners[1], map.Corners[3], q, axial);
-  }
-
-  // Linear light-space depth: casters from the scene inside the trapezoid's
-  // bounding rectangle (ComputeNearAndFar), receivers up to B's far end.
+// Linear light-space depth: casters from the scene inside the trapezoid's
+// bounding rectangle (ComputeNearAndFar), receivers up to B's far end.
+void FitDepthRange(const Aabb& scene, double bodyFar, double diagonal, TrapezoidMap& map)
+{
   glm::dvec2 lo(Infinity), hi(-Infinity);
   for (const auto& c : map.Corners)
   {
@@ -325,6 +319,59 @@ TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction
   const double range = std::max(bodyFar - depth.x, diagonal * 1e-6);
   map.DepthNear = depth.x - range * 1e-3;
   map.DepthFar = bodyFar + range * 1e-3;
+}
+} // namespace
+
+TrapezoidMap FitTrapezoidFrame(const TrapezoidFrame& frame, double focusFraction, double fadeAngleDegrees)
+{
+  const Aabb& scene = frame.Casters;
+  const glm::dvec3& d = frame.LightDirection;
+  const double diagonal = std::max(scene.Diagonal(), 1e-300);
+  TrapezoidMap map;
+  map.LightView = LightLookAt(scene.Center() - d * diagonal, d);
+  double bodyFar = 0.0;
+  map.Hull = HullInLightSpace(frame, map.LightView, bodyFar);
+
+  // Step 2: the centre line, from the projected near-plane centre along the
+  // projected view axis. Its length per unit of view axis is sin(light, view).
+  const glm::dvec2 axisInLight = glm::dvec2(glm::dmat3(map.LightView) * frame.ViewAxis);
+  const double sine = glm::length(axisInLight);
+  const double gamma = frame.Gamma >= 0.0 ? frame.Gamma : std::asin(std::min(sine, 1.0));
+  map.WarpWeight = TrapezoidWarpWeight(gamma, fadeAngleDegrees);
+  const glm::dvec2 axial = CentreLineFrame(sine > 1e-12 ? axisInLight / sine : glm::dvec2(0.0, 1.0),
+    glm::dvec2(glm::dmat3(map.LightView) * frame.CameraUp), map.WarpWeight, map.QuarterTurns);
+  const glm::dvec2 lateral(axial.y, -axial.x);
+  const glm::dvec2 nearInLight = glm::dvec2(ProjectPoint(map.LightView, frame.NearCentre));
+
+  // Step 4: top and base perpendicular to the centre line, touching the hull.
+  const HullExtent extent = ExtentAlong(map.Hull, axial, lateral, diagonal * 1e-9);
+  const double lambda = extent.Length();
+  const glm::dvec2 focusInLight = glm::dvec2(ProjectPoint(map.LightView, frame.Focus));
+  const double delta = FocusOffset(focusInLight, nearInLight, axial, extent);
+  map.FocusPoint = focusInLight + axial * (extent.Top + delta - glm::dot(focusInLight, axial));
+
+  // Target line of the focus point, NDC Y (top -1, base +1): the paper's
+  // 2 * fraction - 1 (0.6 for the 80% line), faded toward the unwarped value
+  // 2 delta'/lambda - 1 as the light approaches the view axis.
+  const double yUnwarped = 2.0 * delta / lambda - 1.0;
+  const double yPaper = 2.0 * std::min(std::max(focusFraction, 0.0), 0.999) - 1.0;
+  const double yTarget = yUnwarped + map.WarpWeight * (yPaper - yUnwarped);
+
+  // Distance eta from the top edge to q: the 1D projective map y(s) = A + B/s
+  // (s from q) with y(eta) = -1, y(eta + lambda) = 1, y(eta + delta') = yTarget
+  // gives eta = lambda delta' (1 - y) / (lambda - 2 delta' + lambda y), the
+  // [MT04] formula with xi = -y (top and base swapped).
+  const double denominator = lambda * (yTarget - yUnwarped);
+  const double eta = denominator > 0.0 ? delta * (1.0 - yTarget) * lambda / denominator : Infinity;
+  if (!(eta < RectangleRatio * lambda))
+  {
+    FitRectangle(axial, lateral, extent, yUnwarped, map);
+  }
+  else
+  {
+    FitTrapezoidSides(axial, lateral, glm::dot(nearInLight, lateral), extent, eta, yTarget, map);
+  }
+  FitDepthRange(scene, bodyFar, diagonal, map);
   return map;
 }
 

@@ -222,55 +222,74 @@ void StoreLinearDepth(LightView& fit, double nearDepth, double farDepth)
 }
 } // namespace
 
-bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp,
-  const WarpOptions& options, LightView& fit)
+namespace
 {
-  const std::vector<glm::dvec3>& body = frame.Body;
-  const Aabb& scene = frame.Casters;
+// Light space of a warp (000, 003): -z along the light, y = the view direction
+// projected perpendicular to the light (the warp axis). Where that projection
+// vanishes (gamma = 0) the warp is faded out and the axis only names a frame.
+struct WarpLightSpace
+{
+  glm::dmat4 View{ 1.0 };
+  glm::dvec3 WarpAxis{ 0.0 };
+  glm::dvec3 Right{ 0.0 };
+  /// The camera's up, perpendicular to the light.
+  glm::dvec3 UpAcross{ 0.0 };
+  double Diagonal = 0.0;
+};
+
+WarpLightSpace MakeWarpLightSpace(const WarpFrame& frame)
+{
   const glm::dvec3& d = frame.LightDirection;
-  const glm::dvec3& view = frame.ViewDirection;
-  const glm::dvec3& eye = frame.Eye;
-  const double gamma = frame.Gamma;
-  const int texels = std::max(resolution, 1);
-  if (body.empty() || scene.IsEmpty())
-  {
-    return false;
-  }
+  WarpLightSpace space;
+  space.UpAcross = frame.CameraUp - glm::dot(frame.CameraUp, d) * d;
+  const glm::dvec3 projected = frame.ViewDirection - glm::dot(frame.ViewDirection, d) * d;
+  space.WarpAxis = glm::length(projected) > 1e-12 ? glm::normalize(projected)
+    : glm::length(space.UpAcross) > 1e-12          ? glm::normalize(space.UpAcross)
+                                                   : glm::dvec3(LightLookAt(glm::dvec3(0.0), d)[0]);
+  space.Diagonal = frame.Casters.Diagonal();
+  const glm::dvec3 lightEye = frame.Casters.Center() - d * space.Diagonal;
+  space.View = glm::lookAt(lightEye, lightEye + d, space.WarpAxis);
+  space.Right = glm::cross(d, space.WarpAxis);
+  return space;
+}
 
-  // Light space (000, 003): -z along the light, y = view direction projected
-  // perpendicular to the light (the warp axis). Where that projection vanishes
-  // (gamma = 0) the warp is faded out and the axis only names a frame.
-  const glm::dvec3 upAcross = frame.CameraUp - glm::dot(frame.CameraUp, d) * d;
-  const glm::dvec3 projected = view - glm::dot(view, d) * d;
-  const glm::dvec3 warpAxis = glm::length(projected) > 1e-12 ? glm::normalize(projected)
-    : glm::length(upAcross) > 1e-12                          ? glm::normalize(upAcross)
-                                                             : glm::dvec3(LightLookAt(glm::dvec3(0.0), d)[0]);
-  const double diagonal = scene.Diagonal();
-  const glm::dvec3 lightEye = scene.Center() - d * diagonal;
-  const glm::dmat4 lightView = glm::lookAt(lightEye, lightEye + d, warpAxis);
-  const glm::dvec3 right = glm::cross(d, warpAxis);
+// B's footprint in light space and its depth range from the nearest caster over
+// that footprint to B's far end.
+struct LightSpaceBody
+{
+  glm::dvec2 Lo{ Infinity };
+  glm::dvec2 Hi{ -Infinity };
+  double CasterNear = Infinity;
+  double BodyFar = -Infinity;
+};
 
-  // B in light space.
-  glm::dvec2 lo(Infinity), hi(-Infinity);
-  double bodyNear = Infinity, bodyFar = -Infinity;
-  for (const auto& p : body)
+LightSpaceBody BodyInLightSpace(const WarpFrame& frame, const WarpLightSpace& space)
+{
+  LightSpaceBody b;
+  double bodyNear = Infinity;
+  for (const auto& p : frame.Body)
   {
-    const glm::dvec3 q = ProjectPoint(lightView, p);
-    lo = glm::min(lo, glm::dvec2(q));
-    hi = glm::max(hi, glm::dvec2(q));
+    const glm::dvec3 q = ProjectPoint(space.View, p);
+    b.Lo = glm::min(b.Lo, glm::dvec2(q));
+    b.Hi = glm::max(b.Hi, glm::dvec2(q));
     bodyNear = std::min(bodyNear, -q.z);
-    bodyFar = std::max(bodyFar, -q.z);
+    b.BodyFar = std::max(b.BodyFar, -q.z);
   }
-  const double minimumExtent = diagonal * 1e-6;
-  hi = glm::max(hi, lo + minimumExtent);
+  const double minimumExtent = space.Diagonal * 1e-6;
+  b.Hi = glm::max(b.Hi, b.Lo + minimumExtent);
   // Casters between B and the light: nearest scene point over B's footprint.
-  const glm::dvec2 depthRange = ComputeNearAndFar(lightView, lo, hi, scene);
-  const double casterNear = depthRange.y > depthRange.x ? std::min(depthRange.x, bodyNear) : bodyNear;
-  bodyFar = std::max(bodyFar, casterNear + minimumExtent);
+  const glm::dvec2 depthRange = ComputeNearAndFar(space.View, b.Lo, b.Hi, frame.Casters);
+  b.CasterNear = depthRange.y > depthRange.x ? std::min(depthRange.x, bodyNear) : bodyNear;
+  b.BodyFar = std::max(b.BodyFar, b.CasterNear + minimumExtent);
+  return b;
+}
 
-  // Warp near distance n, in world units, then in this frame's units: n keeps its
-  // ratio to B's extent along the warp axis (002's lambda = P_n / (P_f - P_n)).
-  const double warpDepth = hi.y - lo.y;
+// The warp's near distance n in this frame's units (B's extent along the warp
+// axis is warpDepth): n keeps its ratio to that extent from the world, where
+// LiSPSM and GMNPR choose it (002's lambda = P_n / (P_f - P_n)). Infinite: no warp.
+double WarpNearInFrame(
+  const WarpFrame& frame, DirectionalWarp warp, const WarpOptions& options, double warpDepth)
+{
   const double worldWarpDepth = frame.WarpDepthInWorld > 0.0 ? frame.WarpDepthInWorld : warpDepth;
   double warpNear = Infinity;
   if (options.FreeParameterN > 0.0)
@@ -282,42 +301,42 @@ bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp
     if (warp == DirectionalWarp::LiSPSM)
     {
       warpNear =
-        LiSPSMFreeParameter(frame.ZNear, frame.ZFar, gamma, frame.Phi, options.LloydFalloff);
+        LiSPSMFreeParameter(frame.ZNear, frame.ZFar, frame.Gamma, frame.Phi, options.LloydFalloff);
     }
     else if (frame.Phi > 0.0)
     {
       // 002: lambda = P_n / (P_f - P_n), P_f - P_n = B's extent along the warp axis.
-      warpNear =
-        WarpNearFromLambda(GMNPRLambda(gamma, frame.Phi, frame.ZNear, frame.ZFar), worldWarpDepth);
+      warpNear = WarpNearFromLambda(
+        GMNPRLambda(frame.Gamma, frame.Phi, frame.ZNear, frame.ZFar), worldWarpDepth);
     }
   }
-  warpNear *= worldWarpDepth > 0.0 ? warpDepth / worldWarpDepth : 1.0;
-  // Fade: the strength k = (P_f - P_n) / n times a smoothstep in gamma, so that
-  // n -> infinity continuously as the view and light lines become parallel (003, 000).
-  const double fade = WarpFade(gamma, options);
-  const double rawStrength = warpNear > 0.0 ? fade * warpDepth / warpNear : 0.0;
-  const double strength = std::isfinite(rawStrength) ? rawStrength : 0.0;
-  const bool warped = strength > 0.0;
+  return warpNear * (worldWarpDepth > 0.0 ? warpDepth / worldWarpDepth : 1.0);
+}
 
-  // The warp P with apex n behind B's near side along y, written so that it is the
-  // identity at k = 0: with y' = y - y_near,
-  //   (x, y', z) -> (x, y', z) / (1 + y' / n)  =  (n x, n y', n z) / (n + y'),
-  // i.e. the division by the distance to the apex of a perspective frustum along y;
-  // y' / (1 + y'/n) = n - n^2 / (n + y') is its hyperbolic depth. In homogeneous form
-  // only the w row changes: w = 1 + (k / (P_f - P_n)) y'.
-  const glm::dvec3 apexFoot(ProjectPoint(lightView, eye).x, lo.y, -0.5 * (casterNear + bodyFar));
+// The warp P with apex n behind B's near side along y, written so that it is the
+// identity at strength k = 0: with y' = y - y_near,
+//   (x, y', z) -> (x, y', z) / (1 + y' / n)  =  (n x, n y', n z) / (n + y'),
+// i.e. the division by the distance to the apex of a perspective frustum along y;
+// y' / (1 + y'/n) = n - n^2 / (n + y') is its hyperbolic depth. In homogeneous form
+// only the w row changes: w = 1 + (k / (P_f - P_n)) y'.
+glm::dmat4 WarpAlongY(const glm::dvec3& apexFoot, double strength, double warpDepth)
+{
   glm::dmat4 warpMatrix(1.0);
   warpMatrix[1][3] = warpDepth > 0.0 ? strength / warpDepth : 0.0;
-  warpMatrix = warpMatrix * glm::translate(glm::dmat4(1.0), -apexFoot);
+  return warpMatrix * glm::translate(glm::dmat4(1.0), -apexFoot);
+}
 
-  // The map's in-plane orientation rho (map up = (-sin rho, cos rho) in light x/y):
-  // with the warp, the multiple of 90 degrees nearest the camera's up (projected
-  // perpendicular to the light), which keeps the map axes on the warp axis (a quarter
-  // turn maps the texel grid onto itself); without it (fade 0), the camera's up itself,
-  // which is continuous where the warp axis reverses (gamma = 0 or pi). The fade blends
-  // the two. Known limit: inside the fade band a light crossing the diagonal azimuth
-  // (warp axis at 45 degrees to the camera's up) turns the map by 90 * min(fade, 1 - fade).
-  const glm::dvec2 upInLight(glm::dot(upAcross, right), glm::dot(upAcross, warpAxis));
+// The map's in-plane orientation rho (map up = (-sin rho, cos rho) in light x/y):
+// with the warp, the multiple of 90 degrees nearest the camera's up (projected
+// perpendicular to the light), which keeps the map axes on the warp axis (a quarter
+// turn maps the texel grid onto itself); without it (fade 0), the camera's up itself,
+// which is continuous where the warp axis reverses (gamma = 0 or pi). The fade blends
+// the two. Known limit: inside the fade band a light crossing the diagonal azimuth
+// (warp axis at 45 degrees to the camera's up) turns the map by 90 * min(fade, 1 - fade).
+glm::dmat4 MapTurn(const WarpLightSpace& space, double fade)
+{
+  const glm::dvec2 upInLight(
+    glm::dot(space.UpAcross, space.Right), glm::dot(space.UpAcross, space.WarpAxis));
   const double upAngle =
     glm::length(upInLight) > 1e-9 ? std::atan2(-upInLight.x, upInLight.y) : 0.0;
   const double quarter = 0.5 * Pi * std::round(upAngle / (0.5 * Pi));
@@ -327,22 +346,26 @@ bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp
   turn[1][0] = std::sin(rho);
   turn[0][1] = -std::sin(rho);
   turn[1][1] = std::cos(rho);
-  glm::dmat4 flipDepth(1.0);
-  flipDepth[2][2] = -1.0; // map depth grows away from the light
-  const glm::dmat4 toMap = flipDepth * turn * warpMatrix;
+  return turn;
+}
 
-  // Final orthographic fit: x, y over B, depth over B's footprint from the nearest
-  // caster to B's far end (light-space box; w > 0 on it, so its corners bound the image).
+// Final orthographic fit: x, y over B, depth over B's footprint from the nearest
+// caster to B's far end (light-space box; w > 0 on it, so its corners bound the
+// image). False when the result is not finite.
+bool FitMapBox(const WarpFrame& frame, const WarpLightSpace& space, const LightSpaceBody& b,
+  const glm::dmat4& toMap, bool warped, int texels, LightView& fit)
+{
   glm::dvec3 mapLo(Infinity), mapHi(-Infinity);
-  for (const auto& p : body)
+  for (const auto& p : frame.Body)
   {
-    const glm::dvec3 m = ProjectPoint(toMap * lightView, p);
+    const glm::dvec3 m = ProjectPoint(toMap * space.View, p);
     mapLo = glm::min(mapLo, m);
     mapHi = glm::max(mapHi, m);
   }
   for (int i = 0; i < 8; ++i)
   {
-    const glm::dvec3 q((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? -casterNear : -bodyFar);
+    const glm::dvec3 q((i & 1) ? b.Hi.x : b.Lo.x, (i & 2) ? b.Hi.y : b.Lo.y,
+      (i & 4) ? -b.CasterNear : -b.BodyFar);
     const glm::dvec3 m = ProjectPoint(toMap, q);
     mapLo.z = std::min(mapLo.z, m.z);
     mapHi.z = std::max(mapHi.z, m.z);
@@ -350,35 +373,72 @@ bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp
   const glm::dvec3 extent = glm::max(mapHi - mapLo, 1e-9 * (glm::abs(mapHi) + glm::abs(mapLo)) + 1e-300);
   const glm::dvec3 margin(extent.x * 4.0 / texels, extent.y * 4.0 / texels, extent.z * 1e-3);
   fit = LightView();
-  fit.View = lightView;
+  fit.View = space.View;
   fit.Projection = BoxToClip(mapLo - margin, mapLo + extent + margin) * toMap;
   fit.Perspective = warped;
   if (warped)
   {
-    StoreLinearDepth(fit, casterNear, bodyFar);
+    StoreLinearDepth(fit, b.CasterNear, b.BodyFar);
   }
-  if (!IsFinite(fit.Projection) || !IsFiniteVector(mapLo) || !IsFiniteVector(mapHi))
-  {
-    return false;
-  }
+  return IsFinite(fit.Projection) && IsFiniteVector(mapLo) && IsFiniteVector(mapHi);
+}
 
-  // Conservative texel: the largest world-space texel edge over B's vertices (the
-  // far end of the warp is the coarsest part): (2 / resolution) / sigma_min of the
-  // Jacobian of clip x/y with respect to the light-perpendicular world directions.
+// Conservative texel: the largest world-space texel edge over B's vertices (the
+// far end of the warp is the coarsest part): (2 / resolution) / sigma_min of the
+// Jacobian of clip x/y with respect to the light-perpendicular world directions.
+// Without one, B's light-space extent over the texels.
+double ConservativeTexel(const WarpFrame& frame, const WarpLightSpace& space,
+  const LightSpaceBody& b, const LightView& fit, int texels)
+{
   const glm::dmat4 clip = fit.ViewProjection();
-  const double step = diagonal * 1e-5;
+  const double step = space.Diagonal * 1e-5;
   double texel = 0.0;
-  for (const auto& p : body)
+  for (const auto& p : frame.Body)
   {
-    const glm::dvec2 dx = (glm::dvec2(ProjectPoint(clip, p + right * step)) - glm::dvec2(ProjectPoint(clip, p - right * step))) / (2.0 * step);
-    const glm::dvec2 dy = (glm::dvec2(ProjectPoint(clip, p + warpAxis * step)) - glm::dvec2(ProjectPoint(clip, p - warpAxis * step))) / (2.0 * step);
+    const glm::dvec2 dx = (glm::dvec2(ProjectPoint(clip, p + space.Right * step)) -
+                            glm::dvec2(ProjectPoint(clip, p - space.Right * step))) / (2.0 * step);
+    const glm::dvec2 dy = (glm::dvec2(ProjectPoint(clip, p + space.WarpAxis * step)) -
+                            glm::dvec2(ProjectPoint(clip, p - space.WarpAxis * step))) / (2.0 * step);
     const double sigma = SmallestSingularValue(dx, dy);
     if (sigma > 0.0 && std::isfinite(sigma))
     {
       texel = std::max(texel, 2.0 / texels / sigma);
     }
   }
-  fit.TexelConstant = texel > 0.0 ? texel : std::max(hi.x - lo.x, hi.y - lo.y) / texels;
+  return texel > 0.0 ? texel : std::max(b.Hi.x - b.Lo.x, b.Hi.y - b.Lo.y) / texels;
+}
+} // namespace
+
+bool FitWarpedFrame(const WarpFrame& frame, int resolution, DirectionalWarp warp,
+  const WarpOptions& options, LightView& fit)
+{
+  const int texels = std::max(resolution, 1);
+  if (frame.Body.empty() || frame.Casters.IsEmpty())
+  {
+    return false;
+  }
+  const WarpLightSpace space = MakeWarpLightSpace(frame);
+  const LightSpaceBody body = BodyInLightSpace(frame, space);
+
+  // Fade: the strength k = (P_f - P_n) / n times a smoothstep in gamma, so that
+  // n -> infinity continuously as the view and light lines become parallel (003, 000).
+  const double warpDepth = body.Hi.y - body.Lo.y;
+  const double warpNear = WarpNearInFrame(frame, warp, options, warpDepth);
+  const double fade = WarpFade(frame.Gamma, options);
+  const double rawStrength = warpNear > 0.0 ? fade * warpDepth / warpNear : 0.0;
+  const double strength = std::isfinite(rawStrength) ? rawStrength : 0.0;
+  const bool warped = strength > 0.0;
+
+  const glm::dvec3 apexFoot(
+    ProjectPoint(space.View, frame.Eye).x, body.Lo.y, -0.5 * (body.CasterNear + body.BodyFar));
+  glm::dmat4 flipDepth(1.0);
+  flipDepth[2][2] = -1.0; // map depth grows away from the light
+  const glm::dmat4 toMap = flipDepth * MapTurn(space, fade) * WarpAlongY(apexFoot, strength, warpDepth);
+  if (!FitMapBox(frame, space, body, toMap, warped, texels, fit))
+  {
+    return false;
+  }
+  fit.TexelConstant = ConservativeTexel(frame, space, body, fit, texels);
   fit.TexelPerUnitDistance = 0.0;
   return true;
 }
@@ -439,6 +499,71 @@ WarpOptions SpotWarpOptions(DirectionalWarp warp, WarpOptions options)
 }
 } // namespace
 
+namespace
+{
+glm::dvec3 Centroid(const std::vector<glm::dvec3>& points)
+{
+  glm::dvec3 centroid(0.0);
+  for (const auto& p : points)
+  {
+    centroid += p / double(points.size());
+  }
+  return centroid;
+}
+
+// The points' extent along the view direction projected perpendicular to a
+// light ray (the warp axis in the world); 0 when the view is along the ray.
+double ExtentAcrossRay(
+  const std::vector<glm::dvec3>& points, const glm::dvec3& view, const glm::dvec3& ray)
+{
+  const glm::dvec3 projected = view - glm::dot(view, ray) * ray;
+  if (!(glm::length(projected) > 1e-12))
+  {
+    return 0.0;
+  }
+  const glm::dvec3 axis = glm::normalize(projected);
+  double lo = Infinity, hi = -Infinity;
+  for (const auto& p : points)
+  {
+    lo = std::min(lo, glm::dot(p, axis));
+    hi = std::max(hi, glm::dot(p, axis));
+  }
+  return hi - lo;
+}
+
+// The camera's eye, axis and up in the spot's post-perspective space: the
+// camera's axis over B's depths is the image of that segment (projective maps
+// keep lines); where it reaches behind the light, the axis through B's centroid.
+// False when they degenerate.
+bool SetCameraInSpotSpace(const glm::dmat4& toLightSpace, const glm::dvec3& eye,
+  const glm::dvec3& view, const glm::dvec3& up, const glm::dvec3& centroid, double step,
+  WarpFrame& frame)
+{
+  const glm::dvec4 a = toLightSpace * glm::dvec4(eye + view * frame.ZNear, 1.0);
+  const glm::dvec4 b = toLightSpace * glm::dvec4(eye + view * frame.ZFar, 1.0);
+  const glm::dvec3 centre = ProjectPoint(toLightSpace, centroid);
+  if (a.w > 0.0 && b.w > 0.0 && frame.ZFar > frame.ZNear)
+  {
+    frame.Eye = glm::dvec3(a) / a.w;
+    frame.ViewDirection = glm::dvec3(b) / b.w - frame.Eye;
+  }
+  else
+  {
+    frame.Eye = centre;
+    frame.ViewDirection = ProjectPoint(toLightSpace, centroid + view * step) - centre;
+  }
+  frame.CameraUp = ProjectPoint(toLightSpace, centroid + up * step) - centre;
+  if (!(glm::length(frame.ViewDirection) > 0.0) || !(glm::length(frame.CameraUp) > 0.0) ||
+    !IsFiniteVector(frame.ViewDirection) || !IsFiniteVector(frame.CameraUp))
+  {
+    return false;
+  }
+  frame.ViewDirection = glm::normalize(frame.ViewDirection);
+  frame.CameraUp = glm::normalize(frame.CameraUp);
+  return true;
+}
+} // namespace
+
 LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const Aabb& sceneBounds, const glm::dvec3& position, const glm::dvec3& direction,
   double coneAngleDegrees, int resolution, DirectionalWarp warp, const WarpOptions& options)
@@ -464,11 +589,7 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
   {
     return cone;
   }
-  glm::dvec3 centroid(0.0);
-  for (const auto& p : worldBody)
-  {
-    centroid += p / double(worldBody.size());
-  }
+  const glm::dvec3 centroid = Centroid(worldBody);
 
   const glm::dmat4 cameraToWorld = glm::inverse(cameraView);
   const glm::dvec3 view = glm::normalize(-glm::dvec3(cameraToWorld[2]));
@@ -482,46 +603,17 @@ LightView FitSpotWarped(const glm::dmat4& cameraView, const glm::dmat4& cameraPr
   const glm::dvec3 ray = glm::normalize(toCentroid);
   frame.Gamma = ViewLightAngle(view, ray);
   SetCameraTerms(frame, cameraView, cameraProjection, worldBody, ray);
-  const glm::dvec3 projected = view - glm::dot(view, ray) * ray;
-  if (glm::length(projected) > 1e-12)
-  {
-    const glm::dvec3 axis = glm::normalize(projected);
-    double lo = Infinity, hi = -Infinity;
-    for (const auto& p : worldBody)
-    {
-      lo = std::min(lo, glm::dot(p, axis));
-      hi = std::max(hi, glm::dot(p, axis));
-    }
-    frame.WarpDepthInWorld = hi - lo;
-  }
+  frame.WarpDepthInWorld = ExtentAcrossRay(worldBody, view, ray);
 
-  // In the spot's post-perspective space light travels along +z, every caster
-  // lies between its near and far planes, and the camera's axis over B's depths
-  // is the image of that segment (projective maps keep lines).
+  // In the spot's post-perspective space light travels along +z and every
+  // caster lies between its near and far planes.
   frame.Casters = Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) };
   frame.LightDirection = glm::dvec3(0.0, 0.0, 1.0);
-  const glm::dvec4 a = toLightSpace * glm::dvec4(eye + view * frame.ZNear, 1.0);
-  const glm::dvec4 b = toLightSpace * glm::dvec4(eye + view * frame.ZFar, 1.0);
   const double step = 1e-3 * std::max(frame.ZFar - frame.ZNear, scene.Diagonal() * 1e-6);
-  const glm::dvec3 centre = ProjectPoint(toLightSpace, centroid);
-  if (a.w > 0.0 && b.w > 0.0 && frame.ZFar > frame.ZNear)
-  {
-    frame.Eye = glm::dvec3(a) / a.w;
-    frame.ViewDirection = glm::dvec3(b) / b.w - frame.Eye;
-  }
-  else
-  {
-    frame.Eye = centre;
-    frame.ViewDirection = ProjectPoint(toLightSpace, centroid + view * step) - centre;
-  }
-  frame.CameraUp = ProjectPoint(toLightSpace, centroid + up * step) - centre;
-  if (!(glm::length(frame.ViewDirection) > 0.0) || !(glm::length(frame.CameraUp) > 0.0) ||
-    !IsFiniteVector(frame.ViewDirection) || !IsFiniteVector(frame.CameraUp))
+  if (!SetCameraInSpotSpace(toLightSpace, eye, view, up, centroid, step, frame))
   {
     return cone;
   }
-  frame.ViewDirection = glm::normalize(frame.ViewDirection);
-  frame.CameraUp = glm::normalize(frame.CameraUp);
 
   LightView fit;
   if (!FitWarpedFrame(frame, resolution, warp, SpotWarpOptions(warp, options), fit))
