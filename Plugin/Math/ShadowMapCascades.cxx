@@ -100,45 +100,37 @@ std::vector<double> PracticalSplits(double zNear, double zFar, int cascades, dou
   return splits;
 }
 
-std::vector<double> SanitizeSplits(
-  const std::vector<double>& explicitSplits, double zNear, double zFar, std::string* problem)
+namespace
 {
-  std::ostringstream report;
-  report.precision(17);
-  const double givenNear = zNear;
-  const double givenFar = zFar;
-  if (RepairRange(zNear, zFar))
-  {
-    report << "the depth range [" << givenNear << ", " << givenFar
-           << "] is not a valid range; using [" << zNear << ", " << zFar
-           << "] as a single cascade. ";
-    if (problem)
-    {
-      *problem = report.str();
-      problem->pop_back();
-    }
-    return { zNear, zFar };
-  }
+// The splits strictly inside (zNear, zFar), sorted, and those that are not.
+struct SplitSelection
+{
+  std::vector<double> Kept;
+  std::vector<double> Dropped;
+  bool WasSorted = true;
+};
 
-  std::vector<double> kept;
-  std::vector<double> dropped;
+SplitSelection SelectInside(const std::vector<double>& explicitSplits, double zNear, double zFar)
+{
+  SplitSelection selection;
   for (double s : explicitSplits)
   {
-    if (Finite(s) && s > zNear && s < zFar)
-    {
-      kept.push_back(s);
-    }
-    else
-    {
-      dropped.push_back(s);
-    }
+    (Finite(s) && s > zNear && s < zFar ? selection.Kept : selection.Dropped).push_back(s);
   }
-  const bool sorted = std::is_sorted(kept.begin(), kept.end());
-  std::sort(kept.begin(), kept.end());
+  selection.WasSorted = std::is_sorted(selection.Kept.begin(), selection.Kept.end());
+  std::sort(selection.Kept.begin(), selection.Kept.end());
+  return selection;
+}
+
+// zNear, the sorted splits without those within a tolerance of the previous one
+// (or of zFar), and zFar; `duplicates` counts the removed ones.
+std::vector<double> WithoutDuplicates(
+  const std::vector<double>& sorted, double zNear, double zFar, int& duplicates)
+{
   const double tolerance = 1e-9 * (zFar - zNear);
   std::vector<double> splits{ zNear };
-  int duplicates = 0;
-  for (double s : kept)
+  duplicates = 0;
+  for (double s : sorted)
   {
     if (s - splits.back() <= tolerance)
     {
@@ -154,18 +146,27 @@ std::vector<double> SanitizeSplits(
     ++duplicates;
   }
   splits.push_back(zFar);
+  return splits;
+}
 
-  if (!dropped.empty())
+// What was repaired, for the warning; empty when nothing was.
+std::string RepairReport(const SplitSelection& selection, int duplicates, double zNear,
+  double zFar, std::size_t cascades)
+{
+  std::ostringstream report;
+  report.precision(17);
+  if (!selection.Dropped.empty())
   {
-    report << "ignored " << dropped.size() << " split distance(s) not strictly inside the depth range ("
-           << zNear << ", " << zFar << "):";
-    for (double s : dropped)
+    report << "ignored " << selection.Dropped.size()
+           << " split distance(s) not strictly inside the depth range (" << zNear << ", " << zFar
+           << "):";
+    for (double s : selection.Dropped)
     {
       report << ' ' << s;
     }
     report << ". ";
   }
-  if (!sorted)
+  if (!selection.WasSorted)
   {
     report << "split distances were not in increasing order and have been sorted. ";
   }
@@ -173,16 +174,40 @@ std::vector<double> SanitizeSplits(
   {
     report << "removed " << duplicates << " duplicate split distance(s). ";
   }
+  std::string text = report.str();
+  if (text.empty())
+  {
+    return text;
+  }
+  text.pop_back(); // trailing space
+  return text + " Using " + std::to_string(cascades) + " cascade(s).";
+}
+} // namespace
+
+std::vector<double> SanitizeSplits(
+  const std::vector<double>& explicitSplits, double zNear, double zFar, std::string* problem)
+{
+  const double givenNear = zNear;
+  const double givenFar = zFar;
+  if (RepairRange(zNear, zFar))
+  {
+    if (problem)
+    {
+      std::ostringstream report;
+      report.precision(17);
+      report << "the depth range [" << givenNear << ", " << givenFar
+             << "] is not a valid range; using [" << zNear << ", " << zFar
+             << "] as a single cascade.";
+      *problem = report.str();
+    }
+    return { zNear, zFar };
+  }
+  const SplitSelection selection = SelectInside(explicitSplits, zNear, zFar);
+  int duplicates = 0;
+  std::vector<double> splits = WithoutDuplicates(selection.Kept, zNear, zFar, duplicates);
   if (problem)
   {
-    *problem = report.str();
-    if (!problem->empty())
-    {
-      problem->pop_back(); // trailing space
-      std::ostringstream summary;
-      summary << *problem << " Using " << splits.size() - 1 << " cascade(s).";
-      *problem = summary.str();
-    }
+    *problem = RepairReport(selection, duplicates, zNear, zFar, splits.size() - 1);
   }
   return splits;
 }
@@ -248,42 +273,45 @@ glm::dmat4 SubFrustumProjection(
   return p;
 }
 
-BoundingSphere CascadeBoundingSphere(const glm::dmat4& subProjection)
+namespace
 {
-  const BoundingSphere fallback{ glm::dvec3(0.0), 1.0 };
-  if (!IsFinite(subProjection))
+// The eight corners of a projection's frustum; false if any is not finite.
+bool FrustumCornersOf(const glm::dmat4& projection, std::array<glm::dvec3, 8>& corners)
+{
+  if (!IsFinite(projection))
   {
-    return fallback;
+    return false;
   }
-  const glm::dmat4 inverse = glm::inverse(subProjection);
+  const glm::dmat4 inverse = glm::inverse(projection);
   if (!IsFinite(inverse))
   {
-    return fallback;
+    return false;
   }
-  std::array<glm::dvec3, 8> corners;
-  glm::dvec3 nearCentre(0.0), farCentre(0.0);
   for (int i = 0; i < 8; ++i)
   {
     const glm::dvec3 ndc((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
     corners[i] = ProjectPoint(inverse, ndc);
-    ((i & 4) ? farCentre : nearCentre) += 0.25 * corners[i];
-  }
-  for (const auto& p : corners)
-  {
-    if (!Finite(p.x + p.y + p.z))
+    if (!Finite(corners[i].x + corners[i].y + corners[i].z))
     {
-      return fallback;
+      return false;
     }
   }
-  // Centre a + t e; |a + t e - p_i|^2 = E t^2 + beta_i t + gamma_i.
-  const glm::dvec3 a = nearCentre;
-  const glm::dvec3 e = farCentre - nearCentre;
+  return true;
+}
+
+// The t of the smallest sphere centred on a + t e around the points: the
+// squared distance to point i is E t^2 + beta_i t + gamma_i, so the largest of
+// them is smallest at one parabola's vertex or where two parabolas cross (or at
+// a few fixed t for a degenerate axis).
+double SmallestEnclosingT(
+  const std::array<glm::dvec3, 8>& points, const glm::dvec3& a, const glm::dvec3& e)
+{
   const double curvature = glm::dot(e, e);
   std::array<double, 8> beta, gamma;
   for (int i = 0; i < 8; ++i)
   {
-    beta[i] = 2.0 * glm::dot(e, a - corners[i]);
-    gamma[i] = glm::dot(a - corners[i], a - corners[i]);
+    beta[i] = 2.0 * glm::dot(e, a - points[i]);
+    gamma[i] = glm::dot(a - points[i], a - points[i]);
   }
   auto squaredRadius = [&](double t) {
     double worst = 0.0;
@@ -323,8 +351,27 @@ BoundingSphere CascadeBoundingSphere(const glm::dmat4& subProjection)
       bestT = t;
     }
   }
+  return bestT;
+}
+} // namespace
+
+BoundingSphere CascadeBoundingSphere(const glm::dmat4& subProjection)
+{
+  const BoundingSphere fallback{ glm::dvec3(0.0), 1.0 };
+  std::array<glm::dvec3, 8> corners;
+  if (!FrustumCornersOf(subProjection, corners))
+  {
+    return fallback;
+  }
+  // The centre lies on the frustum's axis, from the near face's centre a to the far face's.
+  glm::dvec3 nearCentre(0.0), farCentre(0.0);
+  for (int i = 0; i < 8; ++i)
+  {
+    ((i & 4) ? farCentre : nearCentre) += 0.25 * corners[i];
+  }
+  const glm::dvec3 e = farCentre - nearCentre;
   BoundingSphere sphere;
-  sphere.Center = a + bestT * e;
+  sphere.Center = nearCentre + SmallestEnclosingT(corners, nearCentre, e) * e;
   // Recompute from the chosen centre so rounding in the parabola form cannot shrink it.
   double radius = 0.0;
   for (const auto& p : corners)

@@ -525,6 +525,41 @@ double SlideBackHoldingCasters(const glm::dmat4& cameraView, const std::vector<g
 }
 
 // The PSM of either light kind for receivers `body` (see FitPerspective).
+namespace
+{
+// B's points in the space; its centre and radius there. False when a point lies
+// on or behind the space's w = 0 plane.
+bool AddBodyToSpace(const std::vector<glm::dvec3>& body, PerspectiveSpace& space)
+{
+  glm::dvec3 lo(Infinity), hi(-Infinity);
+  for (const auto& p : body)
+  {
+    const glm::dvec4 q = space.Transform * glm::dvec4(p, 1.0);
+    if (!(q.w > 0.0))
+    {
+      return false;
+    }
+    space.Points.push_back(glm::dvec3(q) / q.w);
+    lo = glm::min(lo, space.Points.back());
+    hi = glm::max(hi, space.Points.back());
+  }
+  space.Centre = 0.5 * (lo + hi);
+  space.Radius = std::max(0.5 * glm::length(hi - lo), 1e-9);
+  return true;
+}
+
+// A positional light's own axis, taken into the space at the light and turned
+// toward B (seen from the light's image `eye`).
+glm::dvec3 LightAxisInSpace(
+  const PerspectiveSpace& space, const PerspectiveLight& light, const glm::dvec3& eye)
+{
+  const glm::dvec3 axis = -glm::dvec3(glm::row(light.Uniform.View, 2));
+  glm::dvec3 forward = PushForward(space.Transform, glm::dvec3(light.TowardLight), axis);
+  forward = glm::dot(forward, space.Centre - eye) < 0.0 ? -forward : forward;
+  return glm::length(forward) > 0.0 ? glm::normalize(forward) : forward;
+}
+} // namespace
+
 PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const std::vector<glm::dvec3>& body, const Aabb& scene, const PerspectiveLight& light,
   int resolution, double slideBack, double weight)
@@ -555,20 +590,10 @@ PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dma
 
   PerspectiveSpace space;
   space.Transform = FittingScale(cameraProjection, scaleWeight) * map.PostPerspective;
-  glm::dvec3 lo(Infinity), hi(-Infinity);
-  for (const auto& p : body)
+  if (!AddBodyToSpace(body, space))
   {
-    const glm::dvec4 q = space.Transform * glm::dvec4(p, 1.0);
-    if (!(q.w > 0.0))
-    {
-      return map;
-    }
-    space.Points.push_back(glm::dvec3(q) / q.w);
-    lo = glm::min(lo, space.Points.back());
-    hi = glm::max(hi, space.Points.back());
+    return map;
   }
-  space.Centre = 0.5 * (lo + hi);
-  space.Radius = std::max(0.5 * glm::length(hi - lo), 1e-9);
   space.AxisPoint = light.Positional
     ? AxisPointOfLight(light, body)
     : glm::dvec3(glm::inverse(cameraView) * glm::dvec4(0.0, 0.0, -typicalDepth, 1.0));
@@ -593,10 +618,7 @@ PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dma
     const glm::dvec3 eye = glm::dvec3(post) / post.w;
     if (light.Positional)
     {
-      const glm::dvec3 axis = -glm::dvec3(glm::row(frame, 2));
-      glm::dvec3 forward = PushForward(space.Transform, glm::dvec3(light.TowardLight), axis);
-      forward = glm::dot(forward, space.Centre - eye) < 0.0 ? -forward : forward;
-      space.Forward = glm::length(forward) > 0.0 ? glm::normalize(forward) : forward;
+      space.Forward = LightAxisInSpace(space, light, eye);
     }
     if (!FitPointInSpace(space, eye, inverse, weight, resolution, fit, map.InverseNear))
     {

@@ -176,6 +176,67 @@ vtkMTimeType CasterMTime(vtkProp* prop)
   return time;
 }
 
+// The GL state casters render with, set for the lifetime of the object and
+// restored after: the maps' framebuffer bindings, depth test (or, for value
+// maps kept by minimum blending, GL_MIN blending instead), polygon offset, and
+// depth clamping: casters nearer the light than a view's near plane are clamped
+// onto it rather than clipped ("pancaking"), so they still occlude all that lies
+// behind them, and a fit may put its near plane where depth precision is needed.
+class CasterGLState
+{
+public:
+  CasterGLState(vtkOpenGLState* state, const shadowmaps::MapStorage& storage)
+    : State(state)
+    , Viewport(state)
+    , Scissor(state, GL_SCISSOR_TEST)
+    , Blend(state, GL_BLEND)
+    , DepthTest(state, GL_DEPTH_TEST)
+    , Offset(state, GL_POLYGON_OFFSET_FILL)
+    , DepthClampWasOn(glIsEnabled(GL_DEPTH_CLAMP))
+    , MinimumBlending(storage.Format == shadowmaps::TexelFormat::TwoFloats && storage.MinimumBlending)
+  {
+    state->PushFramebufferBindings();
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LEQUAL);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
+    glEnable(GL_DEPTH_CLAMP);
+    if (this->MinimumBlending)
+    {
+      state->vtkglDisable(GL_DEPTH_TEST);
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendEquation(GL_MIN);
+    }
+  }
+  ~CasterGLState()
+  {
+    glPolygonOffset(0.0f, 0.0f);
+    if (!this->DepthClampWasOn)
+    {
+      glDisable(GL_DEPTH_CLAMP);
+    }
+    if (this->MinimumBlending)
+    {
+      this->State->vtkglBlendEquation(GL_FUNC_ADD);
+    }
+    this->State->PopFramebufferBindings();
+  }
+  CasterGLState(const CasterGLState&) = delete;
+  CasterGLState& operator=(const CasterGLState&) = delete;
+
+private:
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglEnableDisable Scissor;
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglEnableDisable Offset;
+  GLboolean DepthClampWasOn;
+  bool MinimumBlending;
+};
+
 // A prop that renders into the maps, with its world bounds.
 struct Caster
 {
@@ -654,35 +715,33 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
-
-  state->PushFramebufferBindings();
-  vtkOpenGLState::ScopedglViewport savedViewport(state);
-  vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable savedOffset(state, GL_POLYGON_OFFSET_FILL);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LEQUAL);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
-  // Casters nearer the light than a view's near plane are clamped onto it rather
-  // than clipped ("pancaking"): they still occlude all that lies behind them, so
-  // a fit may put its near plane where depth precision is needed.
-  const GLboolean depthClampWasOn = glIsEnabled(GL_DEPTH_CLAMP);
-  glEnable(GL_DEPTH_CLAMP);
-  const bool minimumBlending =
-    r.Storage.Format == shadowmaps::TexelFormat::TwoFloats && r.Storage.MinimumBlending;
-  if (minimumBlending)
+  bool ok = true;
   {
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendEquation(GL_MIN);
+    const CasterGLState casterState(state, r.Storage);
+    vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
+    renderer->SetActiveCamera(r.LightCamera);
+    this->PrepareCasterShaders();
+    for (ShadowLight& light : r.Lights)
+    {
+      for (size_t v = 0; v < light.Views.size() && ok; ++v)
+      {
+        ok = r.Maps.BindLayer(state, light.FirstLayer + static_cast<int>(v), r.LastGLError);
+        if (ok)
+        {
+          this->ApplyDepthBias(light, light.Views[v]);
+          this->RenderCastersIntoView(renderer, light.Views[v]);
+        }
+      }
+    }
+    renderer->SetActiveCamera(userCamera);
   }
+  return ok && this->PostProcessShadowMaps(renderer);
+}
 
-  vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
-  renderer->SetActiveCamera(r.LightCamera);
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::PrepareCasterShaders()
+{
+  Internals& r = *this->Internal;
   r.CasterPass->SetCasterFaces(this->CasterFaces);
   r.CasterPass->SetStoreCode(
     r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string());
@@ -690,42 +749,19 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     return std::any_of(l.Views.begin(), l.Views.end(), [](const LightView& v) { return v.LinearDepth; });
   }));
   this->NumberOfCasterDraws = 0;
+}
 
-  bool ok = true;
-  for (ShadowLight& light : r.Lights)
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::PostProcessShadowMaps(vtkOpenGLRenderer* renderer)
+{
+  Internals& r = *this->Internal;
+  r.Maps.GenerateMipmaps();
+  if (!r.Representation->PostProcessMaps(renderer, r.Maps))
   {
-    for (size_t v = 0; v < light.Views.size() && ok; ++v)
-    {
-      ok = r.Maps.BindLayer(state, light.FirstLayer + static_cast<int>(v), r.LastGLError);
-      if (ok)
-      {
-        this->ApplyDepthBias(light, light.Views[v]);
-        this->RenderCastersIntoView(renderer, light.Views[v]);
-      }
-    }
+    r.LastGLError = "the shadow maps could not be post-processed";
+    return false;
   }
-
-  renderer->SetActiveCamera(userCamera);
-  glPolygonOffset(0.0f, 0.0f);
-  if (!depthClampWasOn)
-  {
-    glDisable(GL_DEPTH_CLAMP);
-  }
-  if (minimumBlending)
-  {
-    state->vtkglBlendEquation(GL_FUNC_ADD);
-  }
-  state->PopFramebufferBindings();
-  if (ok)
-  {
-    r.Maps.GenerateMipmaps();
-    ok = this->GetRepresentation()->PostProcessMaps(renderer, r.Maps);
-    if (!ok)
-    {
-      r.LastGLError = "the shadow maps could not be post-processed";
-    }
-  }
-  return ok;
+  return true;
 }
 
 //------------------------------------------------------------------------------

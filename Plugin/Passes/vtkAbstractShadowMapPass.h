@@ -271,6 +271,8 @@ private:
   void AssignLayers();
   void ChooseStorage();
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
+  void PrepareCasterShaders();
+  bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer);
   void RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view);
   void ApplyDepthBias(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer);
