@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace shadowmaps
@@ -126,6 +127,14 @@ double SmoothStep(double low, double high, double x)
   }
   const double t = (x - low) / (high - low);
   return t * t * (3.0 - 2.0 * t);
+}
+
+QuarterTurns NearestQuarterTurns(double angle)
+{
+  QuarterTurns result;
+  result.Turns = std::lround(angle / (0.5 * glm::pi<double>()));
+  result.Residual = angle - result.Turns * 0.5 * glm::pi<double>();
+  return result;
 }
 
 Aabb NonDegenerate(const Aabb& box)

@@ -128,6 +128,17 @@ struct LightView
 /// that take a warp continuously to the uniform map.
 double SmoothStep(double low, double high, double x);
 
+/// An angle as a whole number of quarter turns (the nearest) and what remains:
+/// angle = Turns * pi / 2 + Residual, |Residual| <= pi / 4. A map turned by
+/// quarter turns keeps its texel grid; the warps turn their maps toward the
+/// nearest one as they fade in.
+struct QuarterTurns
+{
+  long Turns = 0;
+  double Residual = 0.0;
+};
+QuarterTurns NearestQuarterTurns(double angle);
+
 /// The box with every zero-size axis given a small extent relative to the
 /// largest one (or 1 if the box is a point), so that fits stay invertible.
 Aabb NonDegenerate(const Aabb& box);

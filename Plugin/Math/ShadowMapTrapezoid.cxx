@@ -104,9 +104,9 @@ glm::dvec2 CentreLineFrame(const glm::dvec2& viewAxis, const glm::dvec2& up, dou
 {
   const double alpha = std::atan2(viewAxis.y, viewAxis.x);
   const double beta = glm::length(up) > 1e-9 * glm::length(viewAxis) ? std::atan2(up.y, up.x) : alpha;
-  const long turns = std::lround((beta - alpha) / (0.5 * Pi));
-  const double angle = alpha + (1.0 - weight) * (beta - alpha - turns * 0.5 * Pi);
-  quarterTurns = static_cast<int>(((-turns) % 4 + 4) % 4);
+  const QuarterTurns turns = NearestQuarterTurns(beta - alpha);
+  const double angle = alpha + (1.0 - weight) * turns.Residual;
+  quarterTurns = static_cast<int>(((-turns.Turns) % 4 + 4) % 4);
   return { std::cos(angle), std::sin(angle) };
 }
 

@@ -339,8 +339,7 @@ glm::dmat4 MapTurn(const WarpLightSpace& space, double fade)
     glm::dot(space.UpAcross, space.Right), glm::dot(space.UpAcross, space.WarpAxis));
   const double upAngle =
     glm::length(upInLight) > 1e-9 ? std::atan2(-upInLight.x, upInLight.y) : 0.0;
-  const double quarter = 0.5 * Pi * std::round(upAngle / (0.5 * Pi));
-  const double rho = upAngle + fade * (quarter - upAngle);
+  const double rho = upAngle - fade * NearestQuarterTurns(upAngle).Residual;
   glm::dmat4 turn(1.0);
   turn[0][0] = std::cos(rho);
   turn[1][0] = std::sin(rho);
