@@ -129,6 +129,22 @@ double SmoothStep(double low, double high, double x)
   return t * t * (3.0 - 2.0 * t);
 }
 
+double TexelAcrossLight(const glm::dmat4& viewProjection, const glm::dvec3& p, const glm::dvec3& u,
+  const glm::dvec3& v, double step, int resolution)
+{
+  const glm::dvec2 du = (glm::dvec2(ProjectPoint(viewProjection, p + u * step)) -
+                          glm::dvec2(ProjectPoint(viewProjection, p - u * step))) / (2.0 * step);
+  const glm::dvec2 dv = (glm::dvec2(ProjectPoint(viewProjection, p + v * step)) -
+                          glm::dvec2(ProjectPoint(viewProjection, p - v * step))) / (2.0 * step);
+  // Smallest singular value of the 2x2 Jacobian with columns du and dv.
+  const double trace = glm::dot(du, du) + glm::dot(dv, dv);
+  const double determinant = std::abs(du.x * dv.y - du.y * dv.x);
+  const double largest2 =
+    0.5 * (trace + std::sqrt(std::max(trace * trace - 4.0 * determinant * determinant, 0.0)));
+  const double sigma = largest2 > 0.0 ? determinant / std::sqrt(largest2) : 0.0;
+  return sigma > 0.0 && std::isfinite(sigma) ? 2.0 / std::max(resolution, 1) / sigma : 0.0;
+}
+
 QuarterTurns NearestQuarterTurns(double angle)
 {
   QuarterTurns result;

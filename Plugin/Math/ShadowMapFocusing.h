@@ -128,6 +128,15 @@ struct LightView
 /// that take a warp continuously to the uniform map.
 double SmoothStep(double low, double high, double x);
 
+/// The world-space edge of the coarsest texel of the map `viewProjection` at
+/// `p`, across the light: (2 / resolution) / sigma_min of the Jacobian of the
+/// map's NDC x, y with respect to world moves along u and v (orthonormal,
+/// perpendicular to the light's ray through p), by central differences of
+/// `step`. 0 where it is not finite. The one texel-size estimator of the warped
+/// fits (LiSPSM/GMNPR, TSM, PSM).
+double TexelAcrossLight(const glm::dmat4& viewProjection, const glm::dvec3& p, const glm::dvec3& u,
+  const glm::dvec3& v, double step, int resolution);
+
 /// An angle as a whole number of quarter turns (the nearest) and what remains:
 /// angle = Turns * pi / 2 + Residual, |Residual| <= pi / 4. A map turned by
 /// quarter turns keeps its texel grid; the warps turn their maps toward the

@@ -628,9 +628,11 @@ PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dma
     map.LightPosition = eye;
   }
   fit.Perspective = true;
+  const double step = std::max(scene.Diagonal(), 1e-300) * 1e-5;
   for (const auto& p : body)
   {
-    fit.TexelConstant = std::max(fit.TexelConstant, WorldTexelSize(fit, p, resolution));
+    fit.TexelConstant =
+      std::max(fit.TexelConstant, WorldTexelSize(fit, p, light.TowardLight, step, resolution));
   }
   map.Light = fit;
   return map;
@@ -709,17 +711,15 @@ double PerspectiveWarpWeight(const glm::dvec3& viewDirection, const glm::dvec3& 
   return WarpFade(ViewLightAngle(viewDirection, lightDirection), band);
 }
 
-double WorldTexelSize(const LightView& light, const glm::dvec3& world, int resolution)
+double WorldTexelSize(const LightView& map, const glm::dvec3& world,
+  const glm::dvec4& towardLight, double step, int resolution)
 {
-  const glm::dmat4 m = light.ViewProjection();
-  const glm::dmat4 inverse = glm::inverse(m);
-  const glm::dvec4 clip = m * glm::dvec4(world, 1.0);
-  const double step = 2.0 / std::max(resolution, 1);
-  // Shift by one texel in NDC x and y at the same NDC depth; scaling by w keeps
-  // the homogeneous point on the same side.
-  const glm::dvec4 shifted = clip + glm::dvec4(step * clip.w, step * clip.w, 0.0, 0.0);
-  const glm::dvec4 back = inverse * shifted;
-  return glm::length(glm::dvec3(back) / back.w - world);
+  const glm::dvec3 ray = towardLight.w != 0.0
+    ? world - glm::dvec3(towardLight) / towardLight.w
+    : -glm::dvec3(towardLight);
+  const glm::dmat4 frame = LightLookAt(glm::dvec3(0.0), ray);
+  return TexelAcrossLight(map.ViewProjection(), world, glm::dvec3(glm::row(frame, 0)),
+    glm::dvec3(glm::row(frame, 1)), step, resolution);
 }
 
 glm::dvec3 KozlovBiasedPoint(const glm::dvec3& world, const glm::dvec3& lightDirection, double a,

@@ -94,11 +94,12 @@ PerspectiveMap FitSpotPerspective(const glm::dmat4& cameraView, const glm::dmat4
 /// width per 0.1 degree of the light's turn).
 double PerspectiveWarpWeight(const glm::dvec3& viewDirection, const glm::dvec3& lightDirection);
 
-/// Kozlov's world-space texel size L_texel at a world point: map it to the
-/// shadow map, shift by one texel in x and y keeping its depth, map back to
-/// world space, and measure the displacement (his text takes its squared length;
-/// this returns the length, in world units).
-double WorldTexelSize(const LightView& light, const glm::dvec3& world, int resolution);
+/// Kozlov's world-space texel size L_texel at a world point: the edge of the
+/// map's coarsest texel there, across the light's ray through the point
+/// (TexelAcrossLight, central differences of `step`). `towardLight` is the
+/// direction toward a sun (w = 0) or a light's position (w = 1).
+double WorldTexelSize(const LightView& map, const glm::dvec3& world,
+  const glm::dvec4& towardLight, double step, int resolution);
 
 /// Kozlov's world-space bias: P_biased = P + L (a + b L_texel), L the unit
 /// vector toward the light (minus the direction it travels). The biased point

@@ -504,19 +504,22 @@ LightView TrapezoidLightView(const TrapezoidMap& map, int resolution)
   view.Perspective = true;
   view.LinearDepth = true;
 
-  // Largest world-space texel edge over the trapezoid: the inverse Jacobian of
-  // the homography (A p + b) / (c.p + d) is W (A - h c^T)^-1.
-  const glm::dmat2 a{ glm::dvec2(h[0].x, h[0].y), glm::dvec2(h[1].x, h[1].y) };
-  const glm::dvec2 c(h[0][2], h[1][2]);
-  const double step = 2.0 / std::max(resolution, 1);
+  // The coarsest texel over the trapezoid, at its corners: the map is coarsest
+  // at the base, and X, Y, W do not depend on light-space depth.
+  const glm::dmat4 lightToWorld = glm::inverse(map.LightView);
+  const glm::dvec3 u(lightToWorld[0]);
+  const glm::dvec3 v(lightToWorld[1]);
+  double extent = 0.0;
+  for (const auto& corner : map.Corners)
+  {
+    extent = std::max(extent, glm::length(corner - map.Corners[0]));
+  }
+  const double depth = -0.5 * (map.DepthNear + map.DepthFar);
   double texel = 0.0;
   for (const auto& corner : map.Corners)
   {
-    const glm::dvec3 clip = h * glm::dvec3(corner, 1.0);
-    const glm::dvec2 ndc = glm::dvec2(clip) / clip.z;
-    const glm::dmat2 jacobian = (a - glm::outerProduct(ndc, c)) / clip.z;
-    const glm::dmat2 inverseJacobian = glm::inverse(jacobian);
-    texel = std::max({ texel, glm::length(inverseJacobian[0]) * step, glm::length(inverseJacobian[1]) * step });
+    const glm::dvec3 p(lightToWorld * glm::dvec4(corner, depth, 1.0));
+    texel = std::max(texel, TexelAcrossLight(view.ViewProjection(), p, u, v, extent * 1e-5, resolution));
   }
   view.TexelConstant = texel;
   return view;

@@ -82,14 +82,6 @@ void SetCameraTerms(WarpFrame& frame, const glm::dmat4& cameraView,
   frame.Phi = HalfAngleAlong(cameraProjection, inPlane);
 }
 
-// Smallest singular value of the 2x2 matrix with columns a and b.
-double SmallestSingularValue(const glm::dvec2& a, const glm::dvec2& b)
-{
-  const double trace = glm::dot(a, a) + glm::dot(b, b);
-  const double determinant = std::abs(a.x * b.y - a.y * b.x);
-  const double largest2 = 0.5 * (trace + std::sqrt(std::max(trace * trace - 4.0 * determinant * determinant, 0.0)));
-  return largest2 > 0.0 ? determinant / std::sqrt(largest2) : 0.0;
-}
 } // namespace
 
 double ViewLightAngle(const glm::dvec3& viewDirection, const glm::dvec3& lightDirection)
@@ -394,15 +386,7 @@ double ConservativeTexel(const WarpFrame& frame, const WarpLightSpace& space,
   double texel = 0.0;
   for (const auto& p : frame.Body)
   {
-    const glm::dvec2 dx = (glm::dvec2(ProjectPoint(clip, p + space.Right * step)) -
-                            glm::dvec2(ProjectPoint(clip, p - space.Right * step))) / (2.0 * step);
-    const glm::dvec2 dy = (glm::dvec2(ProjectPoint(clip, p + space.WarpAxis * step)) -
-                            glm::dvec2(ProjectPoint(clip, p - space.WarpAxis * step))) / (2.0 * step);
-    const double sigma = SmallestSingularValue(dx, dy);
-    if (sigma > 0.0 && std::isfinite(sigma))
-    {
-      texel = std::max(texel, 2.0 / texels / sigma);
-    }
+    texel = std::max(texel, TexelAcrossLight(clip, p, space.Right, space.WarpAxis, step, texels));
   }
   return texel > 0.0 ? texel : std::max(b.Hi.x - b.Lo.x, b.Hi.y - b.Lo.y) / texels;
 }

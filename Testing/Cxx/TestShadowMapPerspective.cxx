@@ -177,8 +177,11 @@ TEST(PerspectivePSM, KozlovBiasScalesWithWorldTexelSize)
   const PerspectiveMap map =
     shadowmaps::FitPerspective(CameraView(), CameraProjection(), WarpTestGround(), light, 2048);
   // PSM texels grow with distance from the viewer.
-  const double nearTexel = shadowmaps::WorldTexelSize(map.Light, { 0.0, -40.0, 0.0 }, 2048);
-  const double farTexel = shadowmaps::WorldTexelSize(map.Light, { 0.0, 30.0, 0.0 }, 2048);
+  const glm::dvec4 towardLight(-glm::normalize(light), 0.0);
+  const double nearTexel =
+    shadowmaps::WorldTexelSize(map.Light, { 0.0, -40.0, 0.0 }, towardLight, 1e-4, 2048);
+  const double farTexel =
+    shadowmaps::WorldTexelSize(map.Light, { 0.0, 30.0, 0.0 }, towardLight, 1e-4, 2048);
   EXPECT_GT(nearTexel, 0.0);
   EXPECT_GT(farTexel, 2.0 * nearTexel);
   const glm::dvec3 p(1.0, 2.0, 3.0);
