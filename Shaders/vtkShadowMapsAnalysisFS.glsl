@@ -1,5 +1,5 @@
 // Analysis views (vtkAbstractShadowMapPass::AnalysisView), appended to the
-// receivers' shadow code when one is on (shadowmaps::AnalysisReceiverCode).
+// receivers' shadow code when one is on (shadowmaps::AddAnalysisReceiverCode).
 // They replace the colour of the receivers, by VTK_SHADOW_ANALYSIS: 1 the
 // analysed light's visibility as grey; 2 the texel density as a heat map; 4
 // the map (partition) each pixel was shaded from.

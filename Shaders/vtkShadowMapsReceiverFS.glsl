@@ -26,8 +26,9 @@ struct vtkShadowView
   // split), z = where the blend band into the next cascade starts. Other
   // views: (0, 1e38, 1e38).
   vec3 Cascade;
-  // Its texel size over its light's first view's: filter offsets are
-  // multiplied by it so that a kernel keeps its world size in every cascade.
+  // Its light's first view's texel size over its own (1 but for cascades):
+  // filter offsets in texels are multiplied by it so that a kernel keeps its
+  // world size in every cascade.
   float FilterScale;
 };
 uniform vtkShadowView vtkShadowViews[VTK_SHADOW_MAX_VIEWS];

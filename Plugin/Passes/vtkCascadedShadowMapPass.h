@@ -7,6 +7,10 @@
  * blending and selection. Resolution is per cascade (default 1024: four
  * cascades hold the memory of one 2048² map).
  *
+ * The forwarded parameters are those of the pass's own views object
+ * (GetCascadedViews()); after SetViews() with another views object they
+ * change that unused one.
+ *
  * @code
  * vtkNew<vtkCascadedShadowMapPass> shadows;
  * shadows->SetMaximumShadowDistance(200.0);

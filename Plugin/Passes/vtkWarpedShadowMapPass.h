@@ -5,6 +5,10 @@
  * vtkDepthShadowMapPass with vtkWarpedShadowMapViews, whose parameters are
  * forwarded here; see vtkWarpedShadowMapViews for what each warp does.
  *
+ * The forwarded parameters are those of the pass's own views object
+ * (GetWarpedViews()); after SetViews() with another views object they
+ * change that unused one.
+ *
  * @code
  * vtkNew<vtkWarpedShadowMapPass> shadows;
  * shadows->SetWarpModeToLiSPSM();

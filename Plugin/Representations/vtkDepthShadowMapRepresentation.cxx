@@ -93,6 +93,13 @@ shadowmaps::DepthOffset vtkDepthShadowMapRepresentation::GetCasterDepthOffset() 
 //------------------------------------------------------------------------------
 void vtkDepthShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow* window)
 {
+  // A representation may serve passes in several windows: the texture lives in
+  // the context it is used in.
+  if (this->Noise && this->Noise->GetContext() != window)
+  {
+    this->Noise->ReleaseGraphicsResources(this->Noise->GetContext());
+    this->Noise = nullptr;
+  }
   if (!this->Noise)
   {
     this->Noise = CreateRotationNoise(window);

@@ -7,8 +7,8 @@
  * stores (this class). A representation says
  * - what the casters write (GetMapStorage: one depth, or two float values
  *   written by a GLSL snippet, optionally with minimum blending);
- * - how the maps are post-processed once rendered (PostProcessMaps: blur,
- *   mipmaps);
+ * - how the maps are post-processed once rendered (PostProcessMaps: a blur;
+ *   the pass builds the mipmaps MapStorage asks for before);
  * - how receivers read them (GetReceiverLookupCode: the GLSL that defines
  *   vtkShadowLookup, usually one file of Shaders/), with its own parameters
  *   (GetReceiverDefinitions, SetReceiverUniforms);
@@ -81,8 +81,9 @@ public:
    * storage, a sampler2DArray for value storage) and defines `float
    * vtkShadowLookup(vec3 mapCoord, int layer)`: the visibility in [0, 1] of a
    * receiver at depth mapCoord.z seen at texture coordinates mapCoord.xy of map
-   * layer `layer`. `vtkShadowViews[layer].FilterScale` is the layer's texel
-   * size over its light's first layer's, for kernels that keep their world size.
+   * layer `layer`. `vtkShadowViews[layer].FilterScale` is its light's first
+   * layer's texel size over this layer's (1 but for cascades): offsets in texels
+   * multiplied by it keep a kernel's world size.
    */
   virtual std::string GetReceiverLookupCode() const = 0;
 
@@ -99,9 +100,11 @@ public:
   VTK_WRAPEXCLUDE virtual shadowmaps::DepthOffset GetCasterDepthOffset() const;
 
   /**
-   * Called after the casters were rendered into all layers (and mipmaps
-   * built), before receivers sample them: blur or other map filtering goes
-   * here. Returning false reports a GL failure: the frame renders unshadowed.
+   * Called after the casters were rendered into all layers and the mipmaps
+   * MapStorage asks for were built, before receivers sample them: blur or
+   * other map filtering goes here (call maps.GenerateMipmaps() again after
+   * changing level 0). Returning false reports a GL failure: the frame renders
+   * unshadowed.
    */
   VTK_WRAPEXCLUDE virtual bool PostProcessMaps(
     vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps);

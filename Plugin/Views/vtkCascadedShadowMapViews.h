@@ -26,7 +26,9 @@
  * STABLE fitting apply to directional lights; CascadeWarp, with TIGHT fitting,
  * to directional and spot lights (a spot's whole map is warped before tiling);
  * MaximumShadowDistance's fade applies to all. Point lights, and spots wider than one map holds, keep the
- * foundation's cube maps at the cascades' Resolution.
+ * uniform cube faces. Each cascade (and each tile) is a map of the pass's
+ * Resolution: vtkCascadedShadowMapPass defaults it to 1024 so that four
+ * cascades hold the memory of one 2048² map; another pass keeps its own.
  *
  * The views of vtkCascadedShadowMapPass; any pass takes them:
  *
@@ -41,6 +43,7 @@
 
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapViews.h"
+#include "vtkWarpedShadowMapViews.h" // For the warp modes
 
 #include <vector> // For SplitDistances
 
@@ -128,11 +131,12 @@ public:
   void SetFitModeToTight() { this->SetFitMode(TIGHT); }
   ///@}
 
+  /** The warped views' modes, so that vtkWarpedShadowMapViews::LightSpaceWarpOf reads them. */
   enum CascadeWarpType
   {
-    NO_WARP = 0,
-    LISPSM_WARP = 1,
-    GMNPR_WARP = 2
+    NO_WARP = vtkWarpedShadowMapViews::UNIFORM,
+    LISPSM_WARP = vtkWarpedShadowMapViews::LISPSM,
+    GMNPR_WARP = vtkWarpedShadowMapViews::GMNPR
   };
 
   ///@{

@@ -2,7 +2,8 @@
 #   STEP=install     installs BUILD_DIR into OUT/prefix;
 #   STEP=downstream  configures, builds and runs Examples/Downstream against it
 #                    (the program checks a shadow on its own image);
-# SOURCE_DIR, BUILD_DIR and OUT are set by Testing/CMakeLists.txt.
+# SOURCE_DIR, BUILD_DIR, OUT and GENERATOR (this build's) are set by
+# Testing/CMakeLists.txt.
 function (run_or_fail what)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE result)
   if (NOT result EQUAL 0)
@@ -16,7 +17,7 @@ if (STEP STREQUAL "install")
 elseif (STEP STREQUAL "downstream")
   file(REMOVE_RECURSE "${OUT}/downstream")
   run_or_fail("configure" "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/Examples/Downstream"
-    -B "${OUT}/downstream" -G Ninja -DCMAKE_BUILD_TYPE=Release
+    -B "${OUT}/downstream" -G "${GENERATOR}" -DCMAKE_BUILD_TYPE=Release
     "-DCMAKE_PREFIX_PATH=${OUT}/prefix")
   run_or_fail("build" "${CMAKE_COMMAND}" --build "${OUT}/downstream")
   run_or_fail("run" "${OUT}/downstream/ToonShadows" "${OUT}/toon.png")
