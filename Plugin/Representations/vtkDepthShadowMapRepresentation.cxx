@@ -93,17 +93,14 @@ shadowmaps::DepthOffset vtkDepthShadowMapRepresentation::GetCasterDepthOffset() 
 //------------------------------------------------------------------------------
 void vtkDepthShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow* window)
 {
-  // A representation may serve passes in several windows: the texture lives in
-  // the context it is used in.
-  if (this->Noise && this->Noise->GetContext() != window)
+  // A representation may serve passes in several windows: each GL context
+  // gets its own texture.
+  vtkSmartPointer<vtkTextureObject>& noise = this->NoisePerWindow[window];
+  if (!noise)
   {
-    this->Noise->ReleaseGraphicsResources(this->Noise->GetContext());
-    this->Noise = nullptr;
+    noise = CreateRotationNoise(window);
   }
-  if (!this->Noise)
-  {
-    this->Noise = CreateRotationNoise(window);
-  }
+  this->Noise = noise;
   this->Noise->Activate();
 }
 
@@ -120,16 +117,18 @@ void vtkDepthShadowMapRepresentation::DeactivateReceiverResources()
   if (this->Noise)
   {
     this->Noise->Deactivate();
+    this->Noise = nullptr;
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkDepthShadowMapRepresentation::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->Noise)
+  const auto found = this->NoisePerWindow.find(window);
+  if (found != this->NoisePerWindow.end())
   {
-    this->Noise->ReleaseGraphicsResources(window);
-    this->Noise = nullptr;
+    found->second->ReleaseGraphicsResources(window);
+    this->NoisePerWindow.erase(found);
   }
 }
 

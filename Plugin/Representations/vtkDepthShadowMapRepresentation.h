@@ -21,7 +21,9 @@
 
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapRepresentation.h"
-#include "vtkSmartPointer.h" // For the noise texture
+#include "vtkSmartPointer.h" // For the noise textures
+
+#include <map> // For the noise textures
 
 class vtkTextureObject;
 
@@ -121,8 +123,12 @@ protected:
   double ConstantBias = 4.0;
   double SlopeScaledBias = 2.0;
 
-  /** Per-texel rotations (cos, sin) of the Poisson disc. */
-  vtkSmartPointer<vtkTextureObject> Noise;
+  /**
+   * Per-texel rotations (cos, sin) of the Poisson disc, one texture per window
+   * (GL context) the representation serves; Noise is the active window's.
+   */
+  std::map<vtkWindow*, vtkSmartPointer<vtkTextureObject>> NoisePerWindow;
+  vtkTextureObject* Noise = nullptr;
 
 private:
   vtkDepthShadowMapRepresentation(const vtkDepthShadowMapRepresentation&) = delete;

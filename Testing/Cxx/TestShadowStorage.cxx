@@ -277,3 +277,34 @@ TEST(ShadowStorage, StrategyParametersReRenderTheMaps)
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
 }
+
+// One representation may serve passes in two windows (two GL contexts): each
+// frame's receivers read textures of their own context.
+TEST(ShadowStorage, ARepresentationServesPassesInTwoWindows)
+{
+  TestScene first;
+  TestScene second;
+  first.SetSun(SunDirection);
+  second.SetSun(SunDirection);
+  vtkNew<vtkDepthShadowMapRepresentation> poisson;
+  poisson->SetFilterToPoisson();
+  vtkNew<vtkDepthShadowMapPass> firstPass;
+  vtkNew<vtkWarpedShadowMapPass> secondPass;
+  firstPass->SetRepresentation(poisson);
+  secondPass->SetRepresentation(poisson);
+  first.Renderer->SetPass(firstPass);
+  second.Renderer->SetPass(secondPass);
+  ErrorCounter errors;
+  for (int frame = 0; frame < 2; ++frame)
+  {
+    auto firstImage = RenderAndCapture(first.Window);
+    auto secondImage = RenderAndCapture(second.Window);
+    ExpectShadowUnderSphere(first, firstImage);
+    ExpectShadowUnderSphere(second, secondImage);
+  }
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  first.Renderer->SetPass(nullptr);
+  second.Renderer->SetPass(nullptr);
+  firstPass->ReleaseGraphicsResources(first.Window);
+  secondPass->ReleaseGraphicsResources(second.Window);
+}
