@@ -899,6 +899,7 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string
   std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   const Internals& r = *this->Internal;
+  ++this->NumberOfReceiverShaderBuilds;
   const bool receives =
     r.Active && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
   shadowmaps::ReceiverShader::Inject(
@@ -981,4 +982,5 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNonFiniteViews: " << this->NumberOfNonFiniteViews << "\n";
   os << indent << "NumberOfShadowMapUpdates: " << this->NumberOfShadowMapUpdates << "\n";
   os << indent << "NumberOfCasterDraws: " << this->NumberOfCasterDraws << "\n";
+  os << indent << "NumberOfReceiverShaderBuilds: " << this->NumberOfReceiverShaderBuilds << "\n";
 }

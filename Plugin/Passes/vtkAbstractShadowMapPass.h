@@ -207,6 +207,13 @@ public:
   /** Caster draws (prop renders into maps) in the last map update. */
   vtkGetMacro(NumberOfCasterDraws, int);
 
+  /**
+   * Receiver shader sources generated so far: each time a mapper rebuilt its
+   * fragment shader with the pass's receiver code (or without it, for
+   * non-receivers) while the pass was active.
+   */
+  vtkGetMacro(NumberOfReceiverShaderBuilds, int);
+
   ///@{
   /**
    * Caster shaders built so far: depth-only (minimal fragment shader) and
@@ -254,6 +261,7 @@ protected:
   int NumberOfShadowMapUpdates = 0;
   int NumberOfCasterDraws = 0;
   int NumberOfNonFiniteViews = 0;
+  int NumberOfReceiverShaderBuilds = 0;
 
 private:
   /** This frame's lights, casters and views; the GL objects and the last map update. */

@@ -575,3 +575,25 @@ TEST(ShadowBehaviour, TheSameFrameTwiceIsBitIdentical)
     fresh->ReleaseGraphicsResources(scene.Window);
   }
 }
+
+// The shader-build counters: receivers and casters are built on the first
+// frame, and a steady frame (nothing moved) builds nothing. (A moving camera
+// still rebuilds every mapper's shaders: issue 20.)
+TEST(ShadowBehaviour, SteadyFramesBuildNoShaders)
+{
+  TestScene scene;
+  scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  scene.Window->Render();
+  const int receivers = pass->GetNumberOfReceiverShaderBuilds();
+  const int casters = pass->GetNumberOfDepthOnlyCasterShaders();
+  EXPECT_GE(receivers, 3); // ground, sphere, box
+  EXPECT_GE(casters, 3);
+  scene.Window->Render();
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfReceiverShaderBuilds(), receivers);
+  EXPECT_EQ(pass->GetNumberOfDepthOnlyCasterShaders(), casters);
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
+}
