@@ -275,28 +275,17 @@ glm::dmat4 SubFrustumProjection(
 
 namespace
 {
-// The eight corners of a projection's frustum; false if any is not finite.
-bool FrustumCornersOf(const glm::dmat4& projection, std::array<glm::dvec3, 8>& corners)
+// FrustumCorners of a projection; false if the projection, its inverse or a
+// corner is not finite.
+bool FiniteFrustumCorners(const glm::dmat4& projection, std::array<glm::dvec3, 8>& corners)
 {
-  if (!IsFinite(projection))
+  if (!IsFinite(projection) || !IsFinite(glm::inverse(projection)))
   {
     return false;
   }
-  const glm::dmat4 inverse = glm::inverse(projection);
-  if (!IsFinite(inverse))
-  {
-    return false;
-  }
-  for (int i = 0; i < 8; ++i)
-  {
-    const glm::dvec3 ndc((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
-    corners[i] = ProjectPoint(inverse, ndc);
-    if (!Finite(corners[i].x + corners[i].y + corners[i].z))
-    {
-      return false;
-    }
-  }
-  return true;
+  corners = FrustumCorners(projection);
+  return std::all_of(corners.begin(), corners.end(),
+    [](const glm::dvec3& p) { return Finite(p.x + p.y + p.z); });
 }
 
 // The t of the smallest sphere centred on a + t e around the points: the
@@ -359,7 +348,7 @@ BoundingSphere CascadeBoundingSphere(const glm::dmat4& subProjection)
 {
   const BoundingSphere fallback{ glm::dvec3(0.0), 1.0 };
   std::array<glm::dvec3, 8> corners;
-  if (!FrustumCornersOf(subProjection, corners))
+  if (!FiniteFrustumCorners(subProjection, corners))
   {
     return fallback;
   }

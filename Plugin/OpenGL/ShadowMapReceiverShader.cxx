@@ -139,13 +139,19 @@ void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shado
 }
 
 //------------------------------------------------------------------------------
+void ReceiverCode::Rehash()
+{
+  this->Hash =
+    std::hash<std::string>{}(this->Definitions + '\n' + this->Lookup + '\n' +
+      this->AnalysisFunctions + '\n' + this->AnalysisStatement);
+}
+
+//------------------------------------------------------------------------------
 std::string ReceiverShader::Key(
   const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code)
 {
-  const std::hash<std::string> hash;
   std::ostringstream key;
-  key << layers << ' ' << hash(code.Definitions) << ' ' << hash(code.Lookup) << ' '
-      << hash(code.AnalysisFunctions) << ' ' << hash(code.AnalysisStatement) << ';';
+  key << layers << ' ' << code.Hash << ';';
   for (const ShadowLight& light : lights)
   {
     key << light.ShaderIndex << ':' << light.FirstLayer << ':' << static_cast<int>(light.Layout)
@@ -210,6 +216,20 @@ void ReceiverUniforms::Pack(const std::vector<ShadowLight>& lights, const glm::d
   }
   this->ViewToWorld = glm::mat4(viewToWorld);
   this->NameMembers();
+  this->Applied.clear();
+}
+
+//------------------------------------------------------------------------------
+bool ReceiverUniforms::FirstUseThisFrame(vtkShaderProgram* program)
+{
+  const std::pair<unsigned int, unsigned long> stamp(program->GetHandle(), this->Frame);
+  auto found = this->Applied.find(program);
+  if (found != this->Applied.end() && found->second == stamp)
+  {
+    return false;
+  }
+  this->Applied[program] = stamp;
+  return true;
 }
 
 //------------------------------------------------------------------------------

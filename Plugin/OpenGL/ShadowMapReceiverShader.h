@@ -4,7 +4,10 @@
 #ifndef ShadowMapReceiverShader_h
 #define ShadowMapReceiverShader_h
 
+#include <cstddef>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -35,6 +38,9 @@ struct ReceiverCode
   std::string AnalysisFunctions;
   /// At the end of main(): the analysis view's statement (empty: none).
   std::string AnalysisStatement;
+  /// A hash of the four, for the shader key (Rehash after changing them).
+  std::size_t Hash = 0;
+  void Rehash();
 };
 
 class ReceiverShader
@@ -64,6 +70,13 @@ public:
 
   /// Whether `program` is a receiver of the shadow code.
   static bool IsReceiver(vtkShaderProgram* program);
+
+  /// Starts a frame: its texture units may differ from the last one's.
+  void NewFrame() { ++this->Frame; }
+
+  /// True on a program's first use in this frame since the last Pack: the
+  /// uniforms it keeps need setting once, not for every draw that uses it.
+  bool FirstUseThisFrame(vtkShaderProgram* program);
 
   /// Sets the packed uniforms, the maps' texture unit and resolution and the
   /// receivers' normal offset (texels).
@@ -96,6 +109,9 @@ private:
   /// "vtkShadowViews[i]." and "vtkShadowLights[i]." member names, made once.
   std::vector<std::vector<std::string>> ViewNames;
   std::vector<std::vector<std::string>> LightNames;
+  /// Per program, its GL handle and the frame it last got the uniforms in.
+  std::unordered_map<vtkShaderProgram*, std::pair<unsigned int, unsigned long>> Applied;
+  unsigned long Frame = 0;
 };
 } // namespace shadowmaps
 

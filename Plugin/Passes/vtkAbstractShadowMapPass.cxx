@@ -588,6 +588,11 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   r.Uniforms.Pack(r.Lights, r.Frame.CameraView);
+  // Analysis settings are pass parameters: a change re-renders the maps.
+  const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
+  shadowmaps::AddAnalysisReceiverCode(
+    recolours ? this->AnalysisView : 0, this->AnalysisLight, r.Lights, r.Code);
+  r.Code.Rehash();
   r.RenderedLights = r.Lights;
   r.Signature = std::move(signature);
   r.MapsValid = true;
@@ -820,9 +825,6 @@ void vtkAbstractShadowMapPass::RenderCastersIntoView(
 void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
 {
   Internals& r = *this->Internal;
-  const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
-  shadowmaps::AddAnalysisReceiverCode(
-    recolours ? this->AnalysisView : 0, this->AnalysisLight, r.Lights, r.Code);
   std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code);
   std::vector<vtkProp*> nonReceivers;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -853,6 +855,7 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
   r.Representation->ActivateReceiverResources(window);
   r.Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
   r.Maps.BindToUnit(r.MapUnit);
+  r.Uniforms.NewFrame();
 }
 
 //------------------------------------------------------------------------------
@@ -912,7 +915,8 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
   Internals& r = *this->Internal;
-  if (r.Active && shadowmaps::ReceiverUniforms::IsReceiver(program))
+  if (r.Active && r.Uniforms.FirstUseThisFrame(program) &&
+    shadowmaps::ReceiverUniforms::IsReceiver(program))
   {
     r.Uniforms.Apply(program, r.MapUnit, r.Frame.Resolution, this->NormalOffset);
     r.Representation->SetReceiverUniforms(program);
