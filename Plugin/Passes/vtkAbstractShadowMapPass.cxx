@@ -625,7 +625,7 @@ bool vtkAbstractShadowMapPass::FitViews()
   {
     r.Views->FitLight(r.Frame, light);
   }
-  this->DropLightsWithNonFiniteViews();
+  this->DropLightsWithoutUsableViews();
   this->AssignLayers();
   return !r.Lights.empty();
 }
@@ -688,16 +688,18 @@ void vtkAbstractShadowMapPass::ApplyDepthBias(const ShadowLight& light, const Li
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::DropLightsWithNonFiniteViews()
+void vtkAbstractShadowMapPass::DropLightsWithoutUsableViews()
 {
   std::vector<ShadowLight>& lights = this->Internal->Lights;
   const std::size_t before = lights.size();
   this->NumberOfNonFiniteViews = 0;
+  int withoutViews = 0;
   lights.erase(std::remove_if(lights.begin(), lights.end(),
-                 [this](const ShadowLight& light) {
+                 [this, &withoutViews](const ShadowLight& light) {
                    const auto nonFinite = std::count_if(light.Views.begin(), light.Views.end(), IsNonFinite);
                    this->NumberOfNonFiniteViews += static_cast<int>(nonFinite);
-                   return nonFinite > 0;
+                   withoutViews += light.Views.empty() ? 1 : 0;
+                   return nonFinite > 0 || light.Views.empty();
                  }),
     lights.end());
   if (lights.size() == before)
@@ -707,9 +709,11 @@ void vtkAbstractShadowMapPass::DropLightsWithNonFiniteViews()
   }
   if (!this->Internal->WarnedNonFiniteViews)
   {
+    // A views strategy of the user's may leave a light without views.
     vtkWarningMacro(<< this->NumberOfNonFiniteViews
-                    << " light view(s) came out with non-finite matrices; their lights cast no "
-                       "shadows until the views are finite again.");
+                    << " light view(s) came out with non-finite matrices and " << withoutViews
+                    << " light(s) got no view from " << this->Internal->Views->GetClassName()
+                    << "; these lights cast no shadows until their views are usable again.");
     this->Internal->WarnedNonFiniteViews = true;
   }
 }

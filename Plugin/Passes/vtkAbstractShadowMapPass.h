@@ -275,7 +275,7 @@ private:
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   int UsableResolution();
   bool FitViews();
-  void DropLightsWithNonFiniteViews();
+  void DropLightsWithoutUsableViews();
   void AssignLayers();
   void ChooseStorage();
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);

@@ -3,6 +3,7 @@
 #include "ShadowTestUtilities.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "ShadowMapLight.h"
+#include "vtkDepthShadowMapPass.h"
 #include "vtkWarpedShadowMapViews.h"
 #include "vtkWarpedShadowMapPass.h"
 
@@ -477,6 +478,48 @@ TEST(ShadowDefects, NonFiniteLightViewsRenderWithoutShadows)
   EXPECT_EQ(pass->GetNumberOfNonFiniteViews(), 1);
   EXPECT_EQ(pass->GetNumberOfShadowedLights(), 0);
   EXPECT_GT(LuminanceAt(scene.Renderer, frame, shadowed), LitAbove);
+  EXPECT_NEAR(LuminanceAt(scene.Renderer, frame, shadowed),
+    LuminanceAt(scene.Renderer, unshadowed, shadowed), 2.0);
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
+}
+
+namespace
+{
+/// A views strategy of a user's that gives lights no view at all.
+class vtkTestNoViews : public vtkWarpedShadowMapViews
+{
+public:
+  static vtkTestNoViews* New();
+  vtkTypeMacro(vtkTestNoViews, vtkWarpedShadowMapViews);
+
+  void FitLight(const shadowmaps::ShadowFrame&, shadowmaps::ShadowLight& light) override
+  {
+    light.Views.clear();
+  }
+};
+vtkStandardNewMacro(vtkTestNoViews);
+} // namespace
+
+// A light left without views casts no shadow, with one warning naming the views
+// strategy and no GL or shader error; the frame is the unshadowed one.
+TEST(ShadowDefects, LightsWithoutViewsRenderWithoutShadows)
+{
+  TestScene scene;
+  scene.SetSun(glm::dvec3(-0.4, 0.3, -1.0));
+  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(glm::dvec3(-0.4, 0.3, -1.0));
+  vtkSmartPointer<vtkImageData> unshadowed = RenderAndCapture(scene.Window);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  vtkNew<vtkTestNoViews> views;
+  pass->SetViews(views);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter counter;
+  vtkSmartPointer<vtkImageData> frame = RenderAndCapture(scene.Window);
+  RenderAndCapture(scene.Window);
+  EXPECT_EQ(counter.Errors(), 0) << counter.Text();
+  EXPECT_EQ(counter.Warnings(), 1) << counter.Text();
+  EXPECT_NE(counter.Text().find("vtkTestNoViews"), std::string::npos) << counter.Text();
+  EXPECT_EQ(pass->GetNumberOfShadowedLights(), 0);
   EXPECT_NEAR(LuminanceAt(scene.Renderer, frame, shadowed),
     LuminanceAt(scene.Renderer, unshadowed, shadowed), 2.0);
   scene.Renderer->SetPass(nullptr);
