@@ -2,7 +2,7 @@
 lights, 480 x 270, in one process: no shadows, VTK's vtkShadowMapPass and this
 module's warped and cascaded passes, moving (orbit 0.3 degrees a frame) and
 steady; medians over 3 interleaved rounds of 8 frames. For this module's passes
-it also prints the receiver and caster shader sources built per moving frame.
+it also prints the shader sources built and the map layers rendered per moving frame.
 
   PYTHONPATH=build/lib/python3/dist-packages \
     xvfb-run -a /usr/bin/python3 Measurement/frame_times.py
@@ -44,16 +44,16 @@ for round_ in range(3):
 builds = {}
 for k in ("warped", "cascaded"):
     pss = passes[k]
-    if hasattr(pss, "GetNumberOfReceiverShaderBuilds"):
+    if hasattr(pss, "GetNumberOfShaderBuilds"):
         r.SetPass(pss); w.Render()
-        before = (pss.GetNumberOfReceiverShaderBuilds(), pss.GetNumberOfDepthOnlyCasterShaders())
+        before = pss.GetNumberOfShaderBuilds()
         cam.Azimuth(0.3); r.ResetCameraClippingRange(); w.Render()
-        builds[k] = (pss.GetNumberOfReceiverShaderBuilds() - before[0],
-                     pss.GetNumberOfDepthOnlyCasterShaders() - before[1])
+        builds[k] = (pss.GetNumberOfShaderBuilds() - before, pss.GetNumberOfRenderedLayers(),
+                     pss.GetNumberOfShadowMapLayers())
 for k, (moving, steady) in times.items():
     line = f"{k:9s} moving {1000*statistics.median(moving):7.1f} ms  steady {1000*statistics.median(steady):7.1f} ms"
     if k in builds:
-        line += f"  shader sources per moving frame: receivers {builds[k][0]}, casters {builds[k][1]}"
+        line += f"  per moving frame: shader sources {builds[k][0]}, layers rendered {builds[k][1]} of {builds[k][2]}"
     print(line)
 for pss in passes.values():
     if pss is not None:

@@ -1,7 +1,7 @@
 # Declares ShadowMaps::RenderingShadowMaps (included from the root CMakeLists.txt
 # when vtk_module_build() visits the module directory). The folders of Plugin/
 # are its layers: Math (pure functions of the fits), Views and Representations
-# (the two strategies of a pass), OpenGL (GL objects and receiver shader code)
+# (the two strategies of a pass), OpenGL (GL objects and the shader code injected into mappers)
 # and Passes (the vtkRenderPass subclasses that coordinate them).
 set(shadowmaps_shaders
   vtkShadowMapsAnalysisFS
@@ -36,8 +36,6 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Views/vtkShadowMapViews
     Plugin/Views/vtkUniformShadowMapViews
     Plugin/Views/vtkWarpedShadowMapViews
-  PRIVATE_CLASSES
-    Plugin/Passes/vtkShadowMapCasterPass
   SOURCES
     Plugin/Math/ShadowMapCascades.cxx
     Plugin/Math/ShadowMapFocusing.cxx
@@ -45,6 +43,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapTrapezoid.cxx
     Plugin/Math/ShadowMapWarping.cxx
     Plugin/OpenGL/ShadowMapAnalysis.cxx
+    Plugin/OpenGL/ShadowMapCasterShader.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     ${shadowmaps_shader_sources}
@@ -61,6 +60,8 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapTrapezoid.h
     Plugin/Math/ShadowMapWarping.h
     Plugin/OpenGL/ShadowMapAnalysis.h
+    Plugin/OpenGL/ShadowMapCasterShader.h
+    Plugin/OpenGL/ShadowMapProgramStamps.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)

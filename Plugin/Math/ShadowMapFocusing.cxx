@@ -480,8 +480,22 @@ LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& sceneBound
     BodyOrScene(cameraViewProjection, scene), scene, position, direction, coneAngleDegrees, resolution);
 }
 
+void SnapCropOutward(glm::dvec2& lo, glm::dvec2& hi, double t)
+{
+  const double width = std::max(hi.x - lo.x, hi.y - lo.y);
+  if (!(width > 0.0) || !(t > 0.0))
+  {
+    return;
+  }
+  const double level = std::max(4.0, std::floor(std::log2(2.0 * t / width)) + 4.0);
+  const double cell = 2.0 * t / std::exp2(std::min(level, 40.0));
+  lo = glm::max(glm::floor(lo / cell) * cell, glm::dvec2(-t));
+  hi = glm::min(glm::ceil(hi / cell) * cell, glm::dvec2(t));
+}
+
 LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& sceneBounds,
-  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees, int resolution)
+  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees, int resolution,
+  bool stable)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 } : sceneBounds;
   LightView fit;
@@ -517,8 +531,13 @@ LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& sceneBo
   const glm::dvec2 margin = (hi - lo) * (4.0 / std::max(resolution, 1));
   lo = glm::max(lo - margin, glm::dvec2(-t));
   hi = glm::min(hi + margin, glm::dvec2(t));
+  double zFar = std::max(bodyFar, diagonal * 1e-3) * 1.001;
+  if (stable)
+  {
+    SnapCropOutward(lo, hi, t);
+    zFar = std::exp2(std::ceil(std::log2(zFar) * 8.0) / 8.0);
+  }
 
-  const double zFar = std::max(bodyFar, diagonal * 1e-3) * 1.001;
   // The near plane at the nearest scene point inside the (cropped) cone: depth
   // precision goes as the ratio of far to near, and the scene's bounding box
   // often reaches behind the light or beside its cone.
@@ -658,7 +677,8 @@ std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjecti
     }
     else
     {
-      faces[i] = FitSpotToBody(body, scene, position, CubeFaceDirections[i], halfAngle, resolution);
+      faces[i] =
+        FitSpotToBody(body, scene, position, CubeFaceDirections[i], halfAngle, resolution, true);
     }
   }
   return faces;

@@ -191,8 +191,18 @@ LightView FromSpotSpace(LightView fit, const LightView& cone);
 
 /// FitSpot's fit for given body points (B's vertices; the cone when the body is
 /// empty or reaches behind the light); scene as is (FitSpot inflates it).
+/// `stable`: the crop grows outward to a grid (SnapCropOutward) and the far
+/// plane to the next eighth of an octave, so that a small change of the body
+/// (a camera move) leaves the fit, and the map rendered with it, unchanged.
 LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& scene,
-  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees, int resolution);
+  const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees, int resolution,
+  bool stable = false);
+
+/// The crop [lo, hi] of a cone of half-width t grown outward to the grid of
+/// 2t / 2^k with the largest k that keeps a cell at most a sixteenth of the
+/// crop's width (k >= 4): a crop moves only when its body crosses a grid line,
+/// and loses at most two cells, an eighth of its width, of texel density.
+void SnapCropOutward(glm::dvec2& lo, glm::dvec2& hi, double t);
 
 /// FitSpot's cone map cropped to the lit part of B = camera frustum ∩ scene ∩ the
 /// cone (FitSpotToBody); the cone map itself when that part is empty. litBody,
@@ -231,7 +241,7 @@ std::vector<LightView> TileView(const LightView& whole, const TileGrid& grid);
 /// with near/far covering the scene.
 std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& position, int resolution);
 
-/// FitCubeFaces with each face cropped, like FitSpotToBody, to the part of it a
+/// FitCubeFaces with each face cropped, like a stable FitSpotToBody, to the part of it a
 /// receiver in view can need: camera frustum ∩ scene ∩ the face's frustum. Faces
 /// that part misses keep FitCubeFaces' fit and are marked OutOfView; all faces
 /// keep it, unmarked, when the scene is empty or the camera matrix is not finite.

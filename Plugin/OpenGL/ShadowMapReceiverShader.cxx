@@ -216,20 +216,7 @@ void ReceiverUniforms::Pack(const std::vector<ShadowLight>& lights, const glm::d
   }
   this->ViewToWorld = glm::mat4(viewToWorld);
   this->NameMembers();
-  this->Applied.clear();
-}
-
-//------------------------------------------------------------------------------
-bool ReceiverUniforms::FirstUseThisFrame(vtkShaderProgram* program)
-{
-  const std::pair<unsigned int, unsigned long> stamp(program->GetHandle(), this->Frame);
-  auto found = this->Applied.find(program);
-  if (found != this->Applied.end() && found->second == stamp)
-  {
-    return false;
-  }
-  this->Applied[program] = stamp;
-  return true;
+  this->Programs.Clear();
 }
 
 //------------------------------------------------------------------------------

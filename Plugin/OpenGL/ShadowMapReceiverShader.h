@@ -4,10 +4,10 @@
 #ifndef ShadowMapReceiverShader_h
 #define ShadowMapReceiverShader_h
 
+#include "ShadowMapProgramStamps.h"
+
 #include <cstddef>
 #include <string>
-#include <unordered_map>
-#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -72,11 +72,10 @@ public:
   static bool IsReceiver(vtkShaderProgram* program);
 
   /// Starts a frame: its texture units may differ from the last one's.
-  void NewFrame() { ++this->Frame; }
+  void NewFrame() { this->Programs.Invalidate(); }
 
-  /// True on a program's first use in this frame since the last Pack: the
-  /// uniforms it keeps need setting once, not for every draw that uses it.
-  bool FirstUseThisFrame(vtkShaderProgram* program);
+  /// True on a program's first use in this frame since the last Pack.
+  bool FirstUseThisFrame(vtkShaderProgram* program) { return this->Programs.FirstUse(program); }
 
   /// Sets the packed uniforms, the maps' texture unit and resolution and the
   /// receivers' normal offset (texels).
@@ -109,9 +108,7 @@ private:
   /// "vtkShadowViews[i]." and "vtkShadowLights[i]." member names, made once.
   std::vector<std::vector<std::string>> ViewNames;
   std::vector<std::vector<std::string>> LightNames;
-  /// Per program, its GL handle and the frame it last got the uniforms in.
-  std::unordered_map<vtkShaderProgram*, std::pair<unsigned int, unsigned long>> Applied;
-  unsigned long Frame = 0;
+  ProgramStamps Programs;
 };
 } // namespace shadowmaps
 

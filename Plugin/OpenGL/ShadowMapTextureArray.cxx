@@ -59,6 +59,7 @@ bool TextureArray::Reserve(
     return true;
   }
   this->Release();
+  ++this->Allocations;
   ClearGLErrors();
   ScopedArrayBinding keep;
   this->Format = format;

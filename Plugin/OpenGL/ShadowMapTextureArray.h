@@ -64,6 +64,9 @@ public:
   unsigned int GetTextureName() const { return this->Texture; }
   int GetResolution() const { return this->Resolution; }
 
+  /// Counts the allocations so far: layers keep their content while it stays the same.
+  unsigned long GetAllocations() const { return this->Allocations; }
+
   /// Binds the texture to texture unit `unit`.
   void BindToUnit(int unit) const;
 
@@ -84,6 +87,7 @@ private:
   int Resolution = 0;
   int Layers = 0;
   int LinearFiltering = -1;
+  unsigned long Allocations = 0;
 };
 
 } // namespace shadowmaps

@@ -1,6 +1,7 @@
 #include "vtkAbstractShadowMapPass.h"
 
 #include "ShadowMapAnalysis.h"
+#include "ShadowMapCasterShader.h"
 #include "ShadowMapGlm.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapReceiverShader.h"
@@ -12,6 +13,7 @@
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
+#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
@@ -25,11 +27,11 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
-#include "vtkShadowMapCasterPass.h"
 #include "vtkShadowMapRepresentation.h"
 #include "vtkShadowMapViews.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureUnitManager.h"
+#include "vtkShaderProgram.h"
 #include "vtkVolume.h"
 #include "vtk_glew.h"
 
@@ -37,6 +39,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -58,6 +61,19 @@ namespace
 bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
 {
   return !info || !info->Has(key) || info->Get(key) != 0;
+}
+
+bool HasRenderPass(vtkInformation* info, vtkObjectBase* pass)
+{
+  vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
+  for (int i = 0; info->Has(key) && i < info->Length(key); ++i)
+  {
+    if (info->Get(key, i) == pass)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb& box)
@@ -108,10 +124,12 @@ bool IsNonFinite(const LightView& view)
 
 // Points the VTK camera at a light view. A rigid view becomes the camera's frame
 // and the projection is explicit, so VTK's tiled aspect ratio cannot distort the
-// map. A non-rigid view (PSM: the light camera times the viewer's post-
+// map. The camera stays parallel or perspective as the scene's camera is (see
+// CasterShader::RouteCameraParallel). A non-rigid view (PSM: the light camera times the viewer's post-
 // perspective transform) cannot be a camera frame; the camera then sits at the
 // origin looking down -z and the whole transform is its projection.
-void SetCameraToView(vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view)
+void SetCameraToView(
+  vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view, bool sceneParallel)
 {
   const bool rigid = IsRigid(view.View);
   const glm::dmat4 frame = rigid ? glm::inverse(view.View) : glm::dmat4(1.0);
@@ -121,7 +139,7 @@ void SetCameraToView(vtkCamera* camera, vtkMatrix4x4* projection, const LightVie
   camera->SetPosition(eye.x, eye.y, eye.z);
   camera->SetFocalPoint(eye.x + forward.x, eye.y + forward.y, eye.z + forward.z);
   camera->SetViewUp(up.x, up.y, up.z);
-  camera->SetParallelProjection(!view.Perspective);
+  camera->SetParallelProjection(sceneParallel);
   ToVtk(rigid ? view.Projection : view.ViewProjection(), projection);
   camera->SetExplicitProjectionTransformMatrix(projection);
   camera->UseExplicitProjectionTransformMatrixOn();
@@ -237,11 +255,13 @@ private:
   bool MinimumBlending;
 };
 
-// A prop that renders into the maps, with its world bounds.
+// A prop that renders into the maps, with its world bounds and the
+// modification time of everything its depth depends on.
 struct Caster
 {
   vtkProp* Prop = nullptr;
   Aabb Bounds;
+  vtkMTimeType MTime = 0;
 };
 
 // Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
@@ -250,6 +270,41 @@ struct Caster
 bool DrawsIntoDepthMaps(vtkProp* prop)
 {
   return prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop);
+}
+
+std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const LightView& view)
+{
+  std::vector<const Caster*> casters;
+  if (view.OutOfView)
+  {
+    return casters;
+  }
+  const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
+  for (const auto& caster : all)
+  {
+    if (FrustumMeetsBox(planes, caster.Bounds))
+    {
+      casters.push_back(&caster);
+    }
+  }
+  return casters;
+}
+
+// What a layer's content depends on besides what ForgetLayersIfStale watches:
+// its view and the casters in it, with their data.
+std::vector<vtkMTimeType> LayerSignature(const LightView& view, const std::vector<const Caster*>& casters)
+{
+  std::vector<vtkMTimeType> signature;
+  AppendMatrixBits(view.View, signature);
+  AppendMatrixBits(view.Projection, signature);
+  signature.push_back(view.OutOfView ? 1 : 0);
+  signature.push_back(view.LinearDepth ? 1 : 0);
+  for (const Caster* caster : casters)
+  {
+    signature.push_back(reinterpret_cast<vtkMTimeType>(caster->Prop));
+    signature.push_back(caster->MTime);
+  }
+  return signature;
 }
 } // namespace
 
@@ -269,7 +324,6 @@ struct vtkAbstractShadowMapPass::Internals
   // The maps and what renders them.
   shadowmaps::TextureArray Maps;
   shadowmaps::MapStorage Storage;
-  vtkNew<vtkShadowMapCasterPass> CasterPass;
   vtkNew<vtkOpaquePass> OpaquePass;
   vtkNew<vtkCamera> LightCamera;
   vtkNew<vtkMatrix4x4> LightProjection;
@@ -279,19 +333,32 @@ struct vtkAbstractShadowMapPass::Internals
   // What the maps were last rendered for; empty when they must be re-rendered.
   std::vector<vtkMTimeType> Signature;
   bool MapsValid = false;
+  // Per layer, what it was last rendered for (see LayerSignature); all of them
+  // are forgotten when what every layer depends on changes (LayersKey).
+  std::vector<std::vector<vtkMTimeType>> LayerSignatures;
+  std::vector<vtkMTimeType> LayersKey;
   /// The lights and views the maps were rendered for (reused with the maps).
   std::vector<shadowmaps::ShadowLight> RenderedLights;
 
   // The receivers' shader code and uniforms of the current maps.
   shadowmaps::ReceiverCode Code;
   shadowmaps::ReceiverUniforms Uniforms;
-  // Receiver shaders depend on these; GetShaderStageMTime() follows them.
+  // The casters' branch of the same shaders and its uniforms.
+  shadowmaps::CasterCode CasterCode;
+  shadowmaps::CasterUniforms CasterUniforms;
+  shadowmaps::ProgramStamps CasterPrograms;
+  // The shaders depend on these; GetShaderStageMTime() follows them.
   std::string ShaderKey;
   std::vector<vtkProp*> NonReceivers;
   vtkTimeStamp ShaderKeyTime;
   int MapUnit = -1;
+  bool TextureUnitsReserved = false;
+  // The props whose render passes this pass joined in this frame.
+  std::vector<vtkProp*> Joined;
 
   bool Active = false;
+  bool Casting = false;
+  bool SceneCameraParallel = false;
   bool WarnedTooManyLights = false;
   bool WarnedNonFiniteViews = false;
   bool WarnedResolution = false;
@@ -385,18 +452,6 @@ size_t vtkAbstractShadowMapPass::GetShadowMapMemory() const
 }
 
 //------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::GetNumberOfDepthOnlyCasterShaders() const
-{
-  return this->Internal->CasterPass->GetNumberOfDepthOnlyShaders();
-}
-
-//------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::GetNumberOfOwnFragmentCasterShaders() const
-{
-  return this->Internal->CasterPass->GetNumberOfOwnFragmentShaders();
-}
-
-//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
@@ -405,29 +460,64 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
     this->DelegatePass ? this->DelegatePass : this->Internal->DefaultDelegate.Get();
 
   Internals& r = *this->Internal;
-  r.Active = renderer && this->PrepareShadows(renderer);
+  this->NumberOfRenderedLayers = 0;
+  r.Active = false;
+  r.Active = renderer && this->PrepareShadows(renderer, s);
   if (r.Active)
   {
-    this->UpdateReceiverShaderKey(s);
-    this->PreRender(s);
+    this->JoinRenderPasses(s->GetPropArray(), s->GetPropArrayCount());
     this->BindShadowTextures(renderer);
   }
   delegate->Render(s);
   this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
-  if (r.Active)
+  if (r.Active && this->AnalysisView == SHADOW_MAP)
   {
-    if (this->AnalysisView == SHADOW_MAP)
-    {
-      this->RenderShadowMapView(renderer);
-    }
-    this->UnbindShadowTextures(renderer);
-    this->PostRender(s);
+    this->RenderShadowMapView(renderer);
   }
+  if (renderer)
+  {
+    this->ReleaseTextureUnits(renderer);
+  }
+  this->LeaveRenderPasses();
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer)
+void vtkAbstractShadowMapPass::JoinRenderPasses(vtkProp* const* props, int count)
+{
+  // As vtkOpenGLRenderPass::PreRender, but once per prop: casters join before
+  // the scene's props, and a prop's set of passes must be the same in both
+  // draws for its mapper to keep its shaders.
+  Internals& r = *this->Internal;
+  for (int i = 0; i < count; ++i)
+  {
+    vtkProp* prop = props[i];
+    if (!prop->GetPropertyKeys())
+    {
+      vtkNew<vtkInformation> keys;
+      prop->SetPropertyKeys(keys);
+    }
+    if (!HasRenderPass(prop->GetPropertyKeys(), this))
+    {
+      prop->GetPropertyKeys()->Append(vtkOpenGLRenderPass::RenderPasses(), this);
+      r.Joined.push_back(prop);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::LeaveRenderPasses()
+{
+  Internals& r = *this->Internal;
+  for (vtkProp* prop : r.Joined)
+  {
+    prop->GetPropertyKeys()->Remove(vtkOpenGLRenderPass::RenderPasses(), this);
+  }
+  r.Joined.clear();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const vtkRenderState* s)
 {
   renderer->UpdateLightsGeometryToFollowCamera();
   this->CollectLights(renderer);
@@ -438,6 +528,7 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer)
     return false;
   }
   this->CollectCastersAndCamera(renderer);
+  this->CollectNonReceivers(s);
   const bool ready = this->UpdateShadowMaps(renderer);
   // Lights whose views were not finite are gone by now.
   this->NumberOfShadowedLights = static_cast<int>(this->Internal->Lights.size());
@@ -523,7 +614,7 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
     }
     if (IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()) && DrawsIntoDepthMaps(prop))
     {
-      r.Casters.push_back({ prop, bounds });
+      r.Casters.push_back({ prop, bounds, CasterMTime(prop) });
     }
   }
 
@@ -554,7 +645,7 @@ std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRender
   for (const auto& caster : r.Casters)
   {
     signature.push_back(reinterpret_cast<vtkMTimeType>(caster.Prop));
-    signature.push_back(CasterMTime(caster.Prop));
+    signature.push_back(caster.MTime);
   }
   return signature;
 }
@@ -579,6 +670,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   this->ChooseStorage();
+  this->UpdateShaderKey();
   std::string error;
   if (!r.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Storage.Format,
         r.Storage.Mipmaps, error) ||
@@ -588,11 +680,6 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   r.Uniforms.Pack(r.Lights, r.Frame.CameraView);
-  // Analysis settings are pass parameters: a change re-renders the maps.
-  const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
-  shadowmaps::AddAnalysisReceiverCode(
-    recolours ? this->AnalysisView : 0, this->AnalysisLight, r.Lights, r.Code);
-  r.Code.Rehash();
   r.RenderedLights = r.Lights;
   r.Signature = std::move(signature);
   r.MapsValid = true;
@@ -659,11 +746,38 @@ void vtkAbstractShadowMapPass::ChooseStorage()
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ApplyDepthBias(const ShadowLight& light, const LightView& view)
+void vtkAbstractShadowMapPass::UpdateShaderKey()
+{
+  // Before the casters draw: they build the shaders the scene then uses.
+  Internals& r = *this->Internal;
+  // Analysis settings are pass parameters: a change re-renders the maps.
+  const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
+  shadowmaps::AddAnalysisReceiverCode(
+    recolours ? this->AnalysisView : 0, this->AnalysisLight, r.Lights, r.Code);
+  r.Code.Rehash();
+  r.CasterCode.Faces = this->CasterFaces;
+  r.CasterCode.StoreCode =
+    r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string();
+  r.CasterCode.LinearDepth = std::any_of(r.Lights.begin(), r.Lights.end(), [](const ShadowLight& l) {
+    return std::any_of(l.Views.begin(), l.Views.end(), [](const LightView& v) { return v.LinearDepth; });
+  });
+  std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code) +
+    '|' + r.CasterCode.Key();
+  if (key != r.ShaderKey)
+  {
+    r.ShaderKey = std::move(key);
+    r.ShaderKeyTime.Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, const LightView& view)
 {
   // 32-bit depth (linear-depth views are never 16-bit): one polygon-offset unit
   // is 2^-24 for depths in [0.5, 1).
   constexpr float DepthUnit = 1.0f / 16777216.0f;
+  Internals& r = *this->Internal;
+  const std::array<float, 3> windowToInverseW = WindowToInverseW(view, r.Frame.Resolution);
   const shadowmaps::DepthOffset offset = this->GetRepresentation()->GetCasterDepthOffset();
   const auto slope = static_cast<float>(offset.SlopeScaled);
   const auto constant = static_cast<float>(offset.Constant);
@@ -675,16 +789,18 @@ void vtkAbstractShadowMapPass::ApplyDepthBias(const ShadowLight& light, const Li
     // resolution at the default). A spot's stored depth is its post-perspective
     // depth, crowded toward 1: no such cap.
     const float cap = light.Kind == LightKind::Directional
-      ? slope / static_cast<float>(std::max(this->Internal->Frame.Resolution, 1))
+      ? slope / static_cast<float>(std::max(r.Frame.Resolution, 1))
       : std::numeric_limits<float>::max();
     glPolygonOffset(0.0f, 0.0f);
-    this->Internal->CasterPass->SetLinearDepthBias({ { slope, constant * DepthUnit, cap } });
+    r.CasterUniforms.SetView(windowToInverseW, { { slope, constant * DepthUnit, cap } }, !view.Perspective);
   }
   else
   {
     glPolygonOffset(slope, constant);
-    this->Internal->CasterPass->SetLinearDepthBias({ { 0.0f, 0.0f, 0.0f } });
+    r.CasterUniforms.SetView(windowToInverseW, { { 0.0f, 0.0f, 0.0f } }, !view.Perspective);
   }
+  // Every program takes the view's uniforms on its first draw into it.
+  r.CasterPrograms.Invalidate();
 }
 
 //------------------------------------------------------------------------------
@@ -724,48 +840,80 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
+  this->ForgetLayersIfStale();
+  int draws = 0;
+  std::vector<int> rendered;
   bool ok = true;
   {
     const CasterGLState casterState(state, r.Storage);
     vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
+    r.SceneCameraParallel = userCamera->GetParallelProjection() != 0;
     renderer->SetActiveCamera(r.LightCamera);
-    this->PrepareCasterShaders();
-    for (ShadowLight& light : r.Lights)
+    this->ReserveTextureUnits(renderer);
+    r.Casting = true;
+    for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
       {
-        ok = r.Maps.BindLayer(state, light.FirstLayer + static_cast<int>(v), r.LastGLError);
+        const int layer = light.FirstLayer + static_cast<int>(v);
+        const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v]);
+        std::vector<vtkMTimeType> signature = LayerSignature(light.Views[v], casters);
+        if (r.LayerSignatures[layer] == signature)
+        {
+          continue;
+        }
+        ok = r.Maps.BindLayer(state, layer, r.LastGLError);
         if (ok)
         {
-          this->ApplyDepthBias(light, light.Views[v]);
-          this->RenderCastersIntoView(renderer, light.Views[v]);
+          this->ApplyCasterUniforms(light, light.Views[v]);
+          std::vector<vtkProp*> props;
+          std::transform(casters.begin(), casters.end(), std::back_inserter(props),
+            [](const Caster* caster) { return caster->Prop; });
+          draws += this->RenderCastersIntoView(renderer, light.Views[v], props);
+          r.LayerSignatures[layer] = std::move(signature);
+          rendered.push_back(layer);
         }
       }
     }
+    r.Casting = false;
     renderer->SetActiveCamera(userCamera);
   }
-  return ok && this->PostProcessShadowMaps(renderer);
+  this->NumberOfRenderedLayers = static_cast<int>(rendered.size());
+  if (!rendered.empty())
+  {
+    this->NumberOfCasterDraws = draws;
+  }
+  if (!ok)
+  {
+    r.LayerSignatures.clear();
+    return false;
+  }
+  return rendered.empty() || this->PostProcessShadowMaps(renderer, rendered);
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::PrepareCasterShaders()
+void vtkAbstractShadowMapPass::ForgetLayersIfStale()
 {
   Internals& r = *this->Internal;
-  r.CasterPass->SetCasterFaces(this->CasterFaces);
-  r.CasterPass->SetStoreCode(
-    r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string());
-  r.CasterPass->SetLinearDepth(std::any_of(r.Lights.begin(), r.Lights.end(), [](const ShadowLight& l) {
-    return std::any_of(l.Views.begin(), l.Views.end(), [](const LightView& v) { return v.LinearDepth; });
-  }));
-  this->NumberOfCasterDraws = 0;
+  // What every layer depends on besides its view and casters: the parameters
+  // (the bias among them), the storage, and the shaders' caster code.
+  const std::vector<vtkMTimeType> key = { this->GetMTime(), r.Maps.GetAllocations(),
+    static_cast<vtkMTimeType>(r.Frame.Resolution), r.ShaderKeyTime.GetMTime() };
+  if (key != r.LayersKey)
+  {
+    r.LayersKey = key;
+    r.LayerSignatures.clear();
+  }
+  r.LayerSignatures.resize(static_cast<size_t>(this->NumberOfShadowMapLayers));
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::PostProcessShadowMaps(vtkOpenGLRenderer* renderer)
+bool vtkAbstractShadowMapPass::PostProcessShadowMaps(
+  vtkOpenGLRenderer* renderer, const std::vector<int>& layers)
 {
   Internals& r = *this->Internal;
   r.Maps.GenerateMipmaps();
-  if (!r.Representation->PostProcessMaps(renderer, r.Maps))
+  if (!r.Representation->PostProcessMaps(renderer, r.Maps, layers))
   {
     r.LastGLError = "the shadow maps could not be post-processed";
     return false;
@@ -790,46 +938,28 @@ void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::RenderCastersIntoView(
-  vtkOpenGLRenderer* renderer, const LightView& view)
+int vtkAbstractShadowMapPass::RenderCastersIntoView(
+  vtkOpenGLRenderer* renderer, const LightView& view, std::vector<vtkProp*>& casters)
 {
   Internals& r = *this->Internal;
   this->ClearLayer(renderer);
-  if (view.OutOfView)
+  if (casters.empty())
   {
-    return;
+    return 0;
   }
-
-  SetCameraToView(r.LightCamera, r.LightProjection, view);
-  r.CasterPass->SetWindowToInverseW(WindowToInverseW(view, r.Frame.Resolution));
-
-  const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
-  std::vector<vtkProp*> visible;
-  for (const auto& caster : r.Casters)
-  {
-    if (FrustumMeetsBox(planes, caster.Bounds))
-    {
-      visible.push_back(caster.Prop);
-    }
-  }
-  if (visible.empty())
-  {
-    return;
-  }
+  SetCameraToView(r.LightCamera, r.LightProjection, view, r.SceneCameraParallel);
+  this->JoinRenderPasses(casters.data(), static_cast<int>(casters.size()));
   vtkRenderState casterState(renderer);
-  casterState.SetPropArrayAndCount(visible.data(), static_cast<int>(visible.size()));
+  casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
   casterState.SetFrameBuffer(nullptr);
-  r.CasterPass->AttachToProps(&casterState);
   r.OpaquePass->Render(&casterState);
-  r.CasterPass->DetachFromProps(&casterState);
-  this->NumberOfCasterDraws += r.OpaquePass->GetNumberOfRenderedProps();
+  return r.OpaquePass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
+void vtkAbstractShadowMapPass::CollectNonReceivers(const vtkRenderState* s)
 {
   Internals& r = *this->Internal;
-  std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code);
   std::vector<vtkProp*> nonReceivers;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -839,42 +969,61 @@ void vtkAbstractShadowMapPass::UpdateReceiverShaderKey(const vtkRenderState* s)
       nonReceivers.push_back(prop);
     }
   }
-  if (key != r.ShaderKey || nonReceivers != r.NonReceivers)
+  if (nonReceivers != r.NonReceivers)
   {
-    r.ShaderKey = std::move(key);
     r.NonReceivers = std::move(nonReceivers);
     r.ShaderKeyTime.Modified();
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
+void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
 {
+  // Casters and receivers share programs, so the receivers' samplers must point
+  // at units of their own while the casters draw too (a sampler sharing a unit
+  // with one of another type fails the draw), with no map bound: the maps are
+  // being rendered.
   Internals& r = *this->Internal;
+  if (r.TextureUnitsReserved)
+  {
+    return;
+  }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   // Work on our own unit: creating a texture binds it to the active unit, which
   // may hold another pass's texture (e.g. the tone-mapping pass's colour).
   r.MapUnit = window->GetTextureUnitManager()->Allocate();
   glActiveTexture(GL_TEXTURE0 + r.MapUnit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   r.Representation->ActivateReceiverResources(window);
+  r.TextureUnitsReserved = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
+{
+  Internals& r = *this->Internal;
+  this->ReserveTextureUnits(renderer);
+  glActiveTexture(GL_TEXTURE0 + r.MapUnit);
   r.Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
   r.Maps.BindToUnit(r.MapUnit);
   r.Uniforms.NewFrame();
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::UnbindShadowTextures(vtkOpenGLRenderer* renderer)
+void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (r.MapUnit >= 0)
+  if (!r.TextureUnitsReserved)
   {
-    glActiveTexture(GL_TEXTURE0 + r.MapUnit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    window->GetTextureUnitManager()->Free(r.MapUnit);
-    r.MapUnit = -1;
+    return;
   }
-  this->GetRepresentation()->DeactivateReceiverResources();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  glActiveTexture(GL_TEXTURE0 + r.MapUnit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  window->GetTextureUnitManager()->Free(r.MapUnit);
+  r.MapUnit = -1;
+  r.Representation->DeactivateReceiverResources();
+  r.TextureUnitsReserved = false;
 }
 
 //------------------------------------------------------------------------------
@@ -896,19 +1045,28 @@ bool vtkAbstractShadowMapPass::PreReplaceShaderValues(std::string&, std::string&
   std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   // Markers for PostReplaceShaderValues, which knows whether the mapper
-  // generated per-light code to patch.
+  // generated per-light code to patch and how it shapes its fragments.
+  shadowmaps::CasterShader::MarkInjectionPoints(fragmentShader);
   shadowmaps::ReceiverShader::MarkInjectionPoints(fragmentShader);
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   const Internals& r = *this->Internal;
-  ++this->NumberOfReceiverShaderBuilds;
+  ++this->NumberOfShaderBuilds;
+  // Shaders first built by a caster draw are the ones the scene then uses.
   const bool receives =
-    r.Active && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
+    (r.Active || r.Casting) && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
+  const shadowmaps::CasterBranch branch = shadowmaps::CasterShader::Inject(fragmentShader, r.CasterCode);
+  ++(branch == shadowmaps::CasterBranch::DepthOnly ? this->NumberOfDepthOnlyCasterShaders
+                                                   : this->NumberOfOwnFragmentCasterShaders);
+  for (std::string* stage : { &vertexShader, &geometryShader, &fragmentShader })
+  {
+    shadowmaps::CasterShader::RouteCameraParallel(*stage);
+  }
   shadowmaps::ReceiverShader::Inject(
     fragmentShader, r.Lights, this->NumberOfShadowMapLayers, r.Code, receives);
   return true;
@@ -919,11 +1077,36 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
   Internals& r = *this->Internal;
-  if (r.Active && r.Uniforms.FirstUseThisFrame(program) &&
-    shadowmaps::ReceiverUniforms::IsReceiver(program))
+  if (r.Casting)
   {
-    r.Uniforms.Apply(program, r.MapUnit, r.Frame.Resolution, this->NormalOffset);
-    r.Representation->SetReceiverUniforms(program);
+    if (r.CasterPrograms.FirstUse(program))
+    {
+      r.CasterUniforms.ApplyCasting(program);
+      if (shadowmaps::ReceiverUniforms::IsReceiver(program))
+      {
+        // Not sampled while casting, but a sampler must not share a unit with
+        // one of another type.
+        program->SetUniformi("vtkShadowMaps", r.MapUnit);
+        r.Representation->SetReceiverUniforms(program);
+      }
+    }
+  }
+  else if (r.Active && r.Uniforms.FirstUseThisFrame(program))
+  {
+    shadowmaps::CasterUniforms::ApplyReceiving(program);
+    if (this->NumberOfRenderedLayers > 0)
+    {
+      // The renderer sets a program's lighting uniforms again only when the
+      // lights or the camera changed after it last did; the light cameras
+      // changed after the scene's camera, and the casters' draws of this
+      // program left the lights in their frames.
+      program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
+    }
+    if (shadowmaps::ReceiverUniforms::IsReceiver(program))
+    {
+      r.Uniforms.Apply(program, r.MapUnit, r.Frame.Resolution, this->NormalOffset);
+      r.Representation->SetReceiverUniforms(program);
+    }
   }
   return true;
 }
@@ -962,7 +1145,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   {
     r.DefaultRepresentation->ReleaseGraphicsResources(window);
   }
-  r.CasterPass->ReleaseGraphicsResources(window);
+  r.CasterPrograms.Clear();
   r.OpaquePass->ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   if (this->DelegatePass)
@@ -990,5 +1173,6 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNonFiniteViews: " << this->NumberOfNonFiniteViews << "\n";
   os << indent << "NumberOfShadowMapUpdates: " << this->NumberOfShadowMapUpdates << "\n";
   os << indent << "NumberOfCasterDraws: " << this->NumberOfCasterDraws << "\n";
-  os << indent << "NumberOfReceiverShaderBuilds: " << this->NumberOfReceiverShaderBuilds << "\n";
+  os << indent << "NumberOfRenderedLayers: " << this->NumberOfRenderedLayers << "\n";
+  os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";
 }

@@ -62,6 +62,7 @@
 
 class vtkInformationIntegerKey;
 class vtkOpenGLRenderer;
+class vtkProp;
 class vtkRenderPass;
 class vtkShadowMapRepresentation;
 class vtkShadowMapViews;
@@ -204,23 +205,32 @@ public:
   /** How many times the shadow maps were (re-)rendered since creation. */
   vtkGetMacro(NumberOfShadowMapUpdates, int);
 
-  /** Caster draws (prop renders into maps) in the last map update. */
+  /** Caster draws (prop renders into maps) in the last frame that rendered map layers. */
   vtkGetMacro(NumberOfCasterDraws, int);
 
   /**
-   * Receiver shader sources generated so far: each time a mapper rebuilt its
-   * fragment shader with the pass's receiver code (or without it, for
-   * non-receivers) while the pass was active.
+   * Map layers rendered in the last frame: 0 when nothing the maps depend on
+   * changed; after a camera move, only the views whose matrices or casters
+   * changed (a stable cascade that did not move keeps its layer).
    */
-  vtkGetMacro(NumberOfReceiverShaderBuilds, int);
+  vtkGetMacro(NumberOfRenderedLayers, int);
+
+  /**
+   * Shader sources the mappers generated with this pass so far. Casters and
+   * receivers share one program per mapper primitive (see
+   * Shaders/vtkShadowMapsCasterFS.glsl), so an orbiting camera, with the scene,
+   * the lights and the parameters unchanged, adds none after its first frame.
+   */
+  vtkGetMacro(NumberOfShaderBuilds, int);
 
   ///@{
   /**
-   * Caster shaders built so far: depth-only (minimal fragment shader) and
-   * keeping the mapper's fragment shader (impostors, splats).
+   * Of those, the ones whose casters' branch draws depth only (most), and the
+   * ones whose branch runs after the mapper's own fragment code (impostors,
+   * point splats, which cut their own silhouettes).
    */
-  int GetNumberOfDepthOnlyCasterShaders() const;
-  int GetNumberOfOwnFragmentCasterShaders() const;
+  vtkGetMacro(NumberOfDepthOnlyCasterShaders, int);
+  vtkGetMacro(NumberOfOwnFragmentCasterShaders, int);
   ///@}
 
   /** Memory held by the shadow maps, in bytes (depth maps: 2 or 4 per texel). */
@@ -261,16 +271,20 @@ protected:
   int NumberOfShadowMapUpdates = 0;
   int NumberOfCasterDraws = 0;
   int NumberOfNonFiniteViews = 0;
-  int NumberOfReceiverShaderBuilds = 0;
+  int NumberOfRenderedLayers = 0;
+  int NumberOfShaderBuilds = 0;
+  int NumberOfDepthOnlyCasterShaders = 0;
+  int NumberOfOwnFragmentCasterShaders = 0;
 
 private:
   /** This frame's lights, casters and views; the GL objects and the last map update. */
   struct Internals;
   std::unique_ptr<Internals> Internal;
 
-  bool PrepareShadows(vtkOpenGLRenderer* renderer);
+  bool PrepareShadows(vtkOpenGLRenderer* renderer, const vtkRenderState* s);
   void CollectLights(vtkOpenGLRenderer* renderer);
   void CollectCastersAndCamera(vtkOpenGLRenderer* renderer);
+  void CollectNonReceivers(const vtkRenderState* s);
   std::vector<vtkMTimeType> MapSignature(vtkOpenGLRenderer* renderer);
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   int UsableResolution();
@@ -278,15 +292,19 @@ private:
   void DropLightsWithoutUsableViews();
   void AssignLayers();
   void ChooseStorage();
+  void UpdateShaderKey();
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
-  void PrepareCasterShaders();
-  bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer);
-  void RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view);
-  void ApplyDepthBias(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
+  void ForgetLayersIfStale();
+  bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, const std::vector<int>& layers);
+  int RenderCastersIntoView(
+    vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view, std::vector<vtkProp*>& casters);
+  void ApplyCasterUniforms(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer);
-  void UpdateReceiverShaderKey(const vtkRenderState* s);
+  void JoinRenderPasses(vtkProp* const* props, int count);
+  void LeaveRenderPasses();
+  void ReserveTextureUnits(vtkOpenGLRenderer* renderer);
   void BindShadowTextures(vtkOpenGLRenderer* renderer);
-  void UnbindShadowTextures(vtkOpenGLRenderer* renderer);
+  void ReleaseTextureUnits(vtkOpenGLRenderer* renderer);
   void RenderShadowMapView(vtkOpenGLRenderer* renderer);
   void ReportGLFailure(const std::string& error);
 

@@ -31,7 +31,8 @@ shadowmaps::DepthOffset vtkShadowMapRepresentation::GetCasterDepthOffset() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowMapRepresentation::PostProcessMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray&)
+bool vtkShadowMapRepresentation::PostProcessMaps(
+  vtkOpenGLRenderer*, shadowmaps::TextureArray&, const std::vector<int>&)
 {
   return true;
 }

@@ -28,6 +28,7 @@
 #include "vtkWrappingHints.h"             // For VTK_WRAPEXCLUDE
 
 #include <string> // For the GLSL code
+#include <vector> // For PostProcessMaps
 
 class vtkOpenGLRenderer;
 class vtkOpenGLRenderWindow;
@@ -100,14 +101,15 @@ public:
   VTK_WRAPEXCLUDE virtual shadowmaps::DepthOffset GetCasterDepthOffset() const;
 
   /**
-   * Called after the casters were rendered into all layers and the mipmaps
+   * Called after the casters were rendered into `layers` and the mipmaps
    * MapStorage asks for were built, before receivers sample them: blur or
-   * other map filtering goes here (call maps.GenerateMipmaps() again after
-   * changing level 0). Returning false reports a GL failure: the frame renders
-   * unshadowed.
+   * other map filtering of those layers goes here (call maps.GenerateMipmaps()
+   * again after changing level 0). The other layers were not re-rendered and
+   * keep what the last call left in them. Returning false reports a GL
+   * failure: the frame renders unshadowed.
    */
   VTK_WRAPEXCLUDE virtual bool PostProcessMaps(
-    vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps);
+    vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps, const std::vector<int>& layers);
 
   ///@{
   /**

@@ -1,0 +1,205 @@
+#include "ShadowMapCasterShader.h"
+
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapsCasterFS.h"
+#include "vtkShadowMapsLinearDepthFS.h"
+
+#include <functional>
+#include <sstream>
+
+namespace shadowmaps
+{
+namespace
+{
+const char* const EarlyMarker = "//VTK::ShadowMaps::CastEarly";
+const char* const LateMarker = "//VTK::ShadowMaps::CastLate";
+
+size_t CountOccurrences(const std::string& text, const std::string& word)
+{
+  size_t count = 0;
+  for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+  {
+    ++count;
+  }
+  return count;
+}
+
+std::string WithoutLineComments(const std::string& source)
+{
+  std::string code;
+  std::istringstream lines(source);
+  for (std::string line; std::getline(lines, line);)
+  {
+    code += line.substr(0, line.find("//"));
+    code += '\n';
+  }
+  return code;
+}
+
+// Every VTK polydata fragment shader discards fully transparent fragments once;
+// more discards, or a written depth, mean the shader cuts its own silhouette.
+bool ShapesItsOwnFragments(const std::string& code)
+{
+  return code.find("gl_FragDepth") != std::string::npos || CountOccurrences(code, "discard") > 1;
+}
+
+std::string Declarations(const CasterCode& code)
+{
+  std::string dec = code.Faces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
+    : code.Faces == 1               ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
+                                    : "";
+  dec += vtkShadowMapsCasterFS;
+  if (code.LinearDepth)
+  {
+    dec += vtkShadowMapsLinearDepthFS;
+  }
+  return dec + "\n";
+}
+
+// The branch: depth (the rasterizer's, or the one the shader wrote) made linear
+// when asked, written back when the shader writes depth on its other path, then
+// the store code.
+std::string Branch(
+  const CasterCode& code, const std::string& rawDepth, bool writeDepth, bool selectFaces)
+{
+  std::ostringstream branch;
+  branch << "  if (vtkShadowCasting != 0)\n  {\n";
+  if (selectFaces)
+  {
+    branch << "    if (!vtkShadowCastsThisFace())\n    {\n      discard;\n    }\n";
+  }
+  branch << "    float vtkShadowCasterDepth = "
+         << (code.LinearDepth ? "vtkShadowLinearDepth(" + rawDepth + ")" : rawDepth) << ";\n";
+  if (writeDepth)
+  {
+    branch << "    gl_FragDepth = vtkShadowCasterDepth;\n";
+  }
+  branch << (code.StoreCode.empty() ? "    gl_FragData[0] = vec4(1.0);" : code.StoreCode)
+         << "\n    return;\n  }\n";
+  return branch.str();
+}
+
+// Inserts `text` at the start of main()'s body.
+void PutAtMainStart(std::string& shader, const std::string& text)
+{
+  const size_t main = shader.find("void main");
+  const size_t body = main == std::string::npos ? main : shader.find('{', main);
+  if (body != std::string::npos)
+  {
+    shader.insert(body + 1, "\n" + text);
+  }
+}
+
+// Puts `text` at `marker`, or before the end of main() (the last function of
+// VTK's fragment shaders) if a mapper's template had no such marker.
+void PutAtMarker(std::string& fragmentShader, const char* marker, const std::string& text)
+{
+  if (fragmentShader.find(marker) != std::string::npos)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, marker, text);
+    return;
+  }
+  const size_t end = fragmentShader.rfind('}');
+  if (end != std::string::npos)
+  {
+    fragmentShader.insert(end, text);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+std::string CasterCode::Key() const
+{
+  std::ostringstream key;
+  key << this->Faces << ':' << this->LinearDepth << ':' << std::hash<std::string>{}(this->StoreCode);
+  return key.str();
+}
+
+//------------------------------------------------------------------------------
+void CasterShader::MarkInjectionPoints(std::string& fragmentShader)
+{
+  PutAtMainStart(fragmentShader, std::string(EarlyMarker) + "\n");
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::Light::Impl", std::string(LateMarker) + "\n//VTK::Light::Impl", false);
+}
+
+//------------------------------------------------------------------------------
+CasterBranch CasterShader::Inject(std::string& fragmentShader, const CasterCode& code)
+{
+  const std::string mapperCode = WithoutLineComments(fragmentShader);
+  const bool writesDepth = mapperCode.find("gl_FragDepth") != std::string::npos;
+  const bool ownFragments = ShapesItsOwnFragments(mapperCode);
+
+  // A shader that writes gl_FragDepth on one path must on every path.
+  const std::string receiverDepth =
+    code.LinearDepth && !writesDepth ? "  gl_FragDepth = gl_FragCoord.z;\n" : "";
+  if (ownFragments)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, EarlyMarker, receiverDepth);
+    PutAtMarker(fragmentShader, LateMarker,
+      Branch(code, writesDepth ? "gl_FragDepth" : "gl_FragCoord.z", code.LinearDepth, false));
+  }
+  else
+  {
+    vtkShaderProgram::Substitute(fragmentShader, LateMarker, "");
+    PutAtMarker(fragmentShader, EarlyMarker,
+      Branch(code, "gl_FragCoord.z", code.LinearDepth || writesDepth, true) + receiverDepth);
+  }
+  const size_t main = fragmentShader.find("void main");
+  if (main != std::string::npos)
+  {
+    fragmentShader.insert(main, Declarations(code));
+  }
+  return ownFragments ? CasterBranch::AfterOwnFragments : CasterBranch::DepthOnly;
+}
+
+//------------------------------------------------------------------------------
+void CasterShader::RouteCameraParallel(std::string& shader)
+{
+  const std::string declaration = "uniform int cameraParallel;";
+  if (shader.find(declaration) == std::string::npos)
+  {
+    return;
+  }
+  const bool declaresCasting = shader.find("uniform int vtkShadowCasting;") != std::string::npos;
+  vtkShaderProgram::Substitute(shader, "cameraParallel", "vtkShadowParallel");
+  vtkShaderProgram::Substitute(shader, "uniform int vtkShadowParallel;",
+    declaration + (declaresCasting ? "" : "\nuniform int vtkShadowCasting;") +
+      "\nuniform int vtkShadowCasterParallel;\nint vtkShadowParallel;");
+  PutAtMainStart(shader,
+    "  vtkShadowParallel = vtkShadowCasting != 0 ? vtkShadowCasterParallel : cameraParallel;\n");
+}
+
+//------------------------------------------------------------------------------
+void CasterUniforms::SetView(const std::array<float, 3>& windowToInverseW,
+  const std::array<float, 3>& linearDepthBias, bool parallel)
+{
+  this->WindowToInverseW = windowToInverseW;
+  this->LinearDepthBias = linearDepthBias;
+  this->Parallel = parallel;
+}
+
+//------------------------------------------------------------------------------
+void CasterUniforms::ApplyCasting(vtkShaderProgram* program) const
+{
+  program->SetUniformi("vtkShadowCasting", 1);
+  if (program->IsUniformUsed("vtkShadowCasterParallel"))
+  {
+    program->SetUniformi("vtkShadowCasterParallel", this->Parallel ? 1 : 0);
+  }
+  if (program->IsUniformUsed("vtkShadowWindowToInverseW"))
+  {
+    program->SetUniform3f("vtkShadowWindowToInverseW", this->WindowToInverseW.data());
+    program->SetUniform3f("vtkShadowLinearDepthBias", this->LinearDepthBias.data());
+  }
+}
+
+//------------------------------------------------------------------------------
+void CasterUniforms::ApplyReceiving(vtkShaderProgram* program)
+{
+  if (program->IsUniformUsed("vtkShadowCasting"))
+  {
+    program->SetUniformi("vtkShadowCasting", 0);
+  }
+}
+} // namespace shadowmaps

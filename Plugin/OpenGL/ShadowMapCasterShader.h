@@ -1,0 +1,86 @@
+// The casters' side of a shadow-map pass: the branch put into every mapper
+// shader the pass builds, which draws the prop into a shadow map when the
+// uniform vtkShadowCasting is set (Shaders/vtkShadowMapsCasterFS.glsl says why
+// casters and receivers share one program), and the uniforms of that branch.
+//
+// Most shaders get the branch at the top of main(): depth only, none of the
+// mapper's colouring. Shaders that shape their own fragments (sphere and stick
+// impostors write gl_FragDepth, point Gaussians discard) get it where the
+// lighting would start, so their silhouettes stay right.
+//
+// With storage code (value maps) the branch writes what it says; with linear
+// depth it writes gl_FragDepth = Z (linear light-space depth) instead of Z / W,
+// W taken from the window position (SetView's windowToInverseW).
+#ifndef ShadowMapCasterShader_h
+#define ShadowMapCasterShader_h
+
+#include <array>
+#include <string>
+
+class vtkShaderProgram;
+
+namespace shadowmaps
+{
+
+/// What the casters' branch does; a change rebuilds the shaders.
+struct CasterCode
+{
+  /// vtkAbstractShadowMapPass::CasterFacesType: 0 front, 1 back, 2 both.
+  int Faces = 2;
+  /// GLSL storing the texel's values (reads `float vtkShadowCasterDepth`,
+  /// writes gl_FragData[0]); empty: depth only.
+  std::string StoreCode;
+  bool LinearDepth = false;
+
+  std::string Key() const;
+};
+
+/// Where a shader's casters' branch went.
+enum class CasterBranch
+{
+  DepthOnly,
+  AfterOwnFragments
+};
+
+class CasterShader
+{
+public:
+  /// Before the mapper's own replacements: the markers where the branch may go.
+  /// Call before the receivers' markers (both precede //VTK::Light::Impl).
+  static void MarkInjectionPoints(std::string& fragmentShader);
+
+  /// Puts the branch at one of the markers and removes the other.
+  static CasterBranch Inject(std::string& fragmentShader, const CasterCode& code);
+
+  /// Whether the camera is parallel is part of the state VTK's mappers rebuild
+  /// their shaders on, so the light camera keeps the scene camera's flag; a
+  /// shader stage that reads the uniform cameraParallel (impostors cast their
+  /// rays by it) reads the light view's own while casting instead.
+  static void RouteCameraParallel(std::string& shader);
+};
+
+/// The uniforms of the casters' branch for the view being rendered.
+class CasterUniforms
+{
+public:
+  /// `windowToInverseW`: the row r with 1 / W = dot(r, (gl_FragCoord.xy, 1));
+  /// `linearDepthBias`: slope-scaled factor, constant, cap of the slope-scaled
+  /// term (depth units) for linear-depth views; (0, 0, 1) and zeros otherwise;
+  /// `parallel`: whether the view's projection is parallel.
+  void SetView(const std::array<float, 3>& windowToInverseW,
+    const std::array<float, 3>& linearDepthBias, bool parallel);
+
+  /// Selects the branch and sets the view's uniforms.
+  void ApplyCasting(vtkShaderProgram* program) const;
+
+  /// Selects the scene's path.
+  static void ApplyReceiving(vtkShaderProgram* program);
+
+private:
+  std::array<float, 3> WindowToInverseW{ { 0.0f, 0.0f, 1.0f } };
+  std::array<float, 3> LinearDepthBias{ { 0.0f, 0.0f, 0.0f } };
+  bool Parallel = false;
+};
+} // namespace shadowmaps
+
+#endif
