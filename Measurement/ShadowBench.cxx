@@ -1,5 +1,6 @@
 #include "ShadowBench.h"
 
+#include "ShadowFrameTimes.h"
 #include "ShadowMetrics.h"
 #include "ShadowOracle.h"
 #include "ShadowScenes.h"
@@ -44,7 +45,6 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -71,20 +71,6 @@ struct View
   int Width = 0;
   int Height = 0;
 };
-
-double Seconds(std::chrono::steady_clock::duration duration)
-{
-  return std::chrono::duration<double>(duration).count();
-}
-
-/// Renders and waits for the GL to finish; returns the wall time.
-double TimedRender(vtkRenderWindow* window)
-{
-  const auto start = std::chrono::steady_clock::now();
-  window->Render();
-  static_cast<vtkOpenGLRenderWindow*>(window)->WaitForCompletion();
-  return Seconds(std::chrono::steady_clock::now() - start);
-}
 
 /// The truth of the current view: primary rays, masked where the rasteriser
 /// disagrees, then one shadow ray per pixel.
@@ -146,13 +132,6 @@ double OurUndersampled(View& view, const TechniqueInstance& technique,
 
 // --- one case ---------------------------------------------------------------------
 
-struct Timing
-{
-  double First = 0.0;
-  double Steady = 0.0;
-  double Moving = 0.0;
-};
-
 struct Row
 {
   std::string Scene;
@@ -173,62 +152,19 @@ void SetPathFrame(View& view, int frame, int frames)
   shadowscenes::SetCameraPathFrame(view.InitialCamera, view.Renderer->GetActiveCamera(), frame, frames);
 }
 
-double Median(std::vector<double> values)
-{
-  if (values.empty())
-  {
-    return NotMeasured;
-  }
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
-
-/// Frame times of every technique, measured in interleaved rounds so that a
-/// slow patch of the machine affects all techniques alike. First: the first
-/// frame of a fresh pass (maps and shaders built). Steady: the same camera
-/// frame after frame. Moving: the camera moves a little every frame, so maps
-/// are re-rendered every frame. Steady and moving are medians of frames.
+/// Frame times of every technique (ShadowFrameTimes.h) along the start of the
+/// benchmark's camera path, which moves the maps every frame.
 std::vector<Timing> MeasureFrameTimes(
   View& view, const std::vector<TechniqueInstance>& techniques, int frames)
 {
-  constexpr int Rounds = 3;
-  constexpr int WarmUpFrames = 2; // switching passes rebuilds the mappers' shaders
-  std::vector<Timing> timing(techniques.size());
-  std::vector<std::vector<double>> steady(techniques.size());
-  std::vector<std::vector<double>> moving(techniques.size());
-  for (int round = 0; round < Rounds; ++round)
+  std::vector<vtkRenderPass*> passes;
+  for (const TechniqueInstance& technique : techniques)
   {
-    for (size_t t = 0; t < techniques.size(); ++t)
-    {
-      view.Renderer->SetPass(techniques[t].Pass);
-      SetPathFrame(view, 0, 2);
-      const double first = TimedRender(view.Window);
-      if (round == 0)
-      {
-        timing[t].First = first;
-      }
-      for (int i = 0; i < WarmUpFrames; ++i)
-      {
-        TimedRender(view.Window);
-      }
-      for (int i = 0; i < frames; ++i)
-      {
-        steady[t].push_back(TimedRender(view.Window));
-      }
-      for (int i = 0; i < frames; ++i)
-      {
-        SetPathFrame(view, round * frames + i + 1, 4 * Rounds * frames);
-        moving[t].push_back(TimedRender(view.Window));
-      }
-    }
+    passes.push_back(technique.Pass);
   }
-  for (size_t t = 0; t < techniques.size(); ++t)
-  {
-    timing[t].Steady = Median(steady[t]);
-    timing[t].Moving = Median(moving[t]);
-  }
-  SetPathFrame(view, 0, 2);
-  return timing;
+  // The path's first frames: a quarter of it over all rounds.
+  return shadowbench::MeasureFrameTimes(view.Window, view.Renderer, passes, frames,
+    [&view](int frame, int count) { SetPathFrame(view, frame, 4 * count); });
 }
 
 /// Flicker along the camera path: the mean over frame pairs of the pixels

@@ -1406,6 +1406,41 @@ std::vector<std::string> SweepSceneNames()
   return { "default", "outdoor", "paraview", "model", "city", "field", "room" };
 }
 
+void BuildStreetScene(vtkRenderer* renderer)
+{
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  AddGround(renderer, -80.0, 80.0, -40.0, 40.0, 0.0);
+  vtkNew<vtkCubeSource> cube; // unit cube: each building scales it
+  vtkNew<vtkCylinderSource> pole; // axis along y
+  pole->SetRadius(0.08);
+  pole->SetHeight(1.0);
+  pole->SetResolution(12);
+  for (int i = 0; i < StreetBuildingsPerSide; ++i)
+  {
+    for (const double side : { -1.0, 1.0 })
+    {
+      const double x = -75.0 + i * 2.5 + 0.6 * CellNoise(i, side > 0 ? 1 : 0, 3);
+      const double height = 4.0 + 14.0 * CellNoise(i, side > 0 ? 1 : 0, 4);
+      vtkSmartPointer<vtkActor> building = AddActor(renderer, cube->GetOutputPort(), ModelColor, 0.1);
+      building->SetScale(2.0, 6.0, height);
+      building->SetPosition(x, side * 12.0, 0.5 * height);
+    }
+  }
+  for (int i = 0; i < StreetPolesPerSide; ++i)
+  {
+    for (const double side : { -1.0, 1.0 })
+    {
+      vtkSmartPointer<vtkActor> actor = AddActor(renderer, pole->GetOutputPort(), PoleColor, 0.3);
+      actor->SetOrientation(90.0, 0.0, 0.0); // y axis -> z axis
+      actor->SetScale(1.0, 5.0, 1.0);
+      actor->SetPosition(-77.0 + i * 3.0, side * 6.0, 2.5);
+    }
+  }
+  const double position[3] = { -70.0, -2.0, 1.7 };
+  const double focalPoint[3] = { 0.0, 2.0, 4.0 };
+  SetCamera(renderer, position, focalPoint, 50.0);
+}
+
 bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::string& error)
 {
   if (name == "default")
@@ -1442,8 +1477,13 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
     BuildRoomScene(renderer);
     return true;
   }
+  if (name == "street")
+  {
+    BuildStreetScene(renderer);
+    return true;
+  }
   error = "unknown scene '" + name +
-    "' (expected default, outdoor, paraview, model, city, field or room)";
+    "' (expected default, outdoor, paraview, model, city, field, room or street)";
   return false;
 }
 

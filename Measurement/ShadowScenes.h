@@ -135,11 +135,23 @@ RoomLayout GetRoomLayout();
  */
 void BuildRoomScene(vtkRenderer* renderer);
 
+/// Actors of the street scene: a ground, buildings and poles on both sides.
+constexpr int StreetBuildingsPerSide = 60;
+constexpr int StreetPolesPerSide = 52;
+
+/**
+ * Many actors, for frame times where per-actor work counts: a street of
+ * 2 x StreetBuildingsPerSide box buildings (one actor each) and
+ * 2 x StreetPolesPerSide thin poles on a 160 x 80 ground (225 actors), camera
+ * at street level looking along it.
+ */
+void BuildStreetScene(vtkRenderer* renderer);
+
 /** The sweep's scenes: "default", the benchmark's, then "city", "field", "room". */
 std::vector<std::string> SweepSceneNames();
 
 /**
- * Builds a benchmark scene, a sweep scene or "default" (BuildDefaultScene) into an empty
+ * Builds a benchmark scene, a sweep scene, "street" or "default" (BuildDefaultScene) into an empty
  * renderer. Returns false with a one-line `error` for an unknown name or a
  * scene that cannot be built.
  */

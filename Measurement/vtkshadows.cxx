@@ -9,6 +9,7 @@
 // Every error prints one line "vtkshadows: error: ..." on stderr and exits
 // with status 2.
 #include "ShadowBench.h"
+#include "ShadowSpeed.h"
 #include "ShadowScenes.h"
 #include "ShadowSweep.h"
 #include "ShadowTechniques.h"
@@ -43,7 +44,7 @@ constexpr int ExitUsageError = 2;
 
 struct Options
 {
-  std::string command; // "render", "bench", "analyze" or "sweep"
+  std::string command; // "render", "bench", "analyze", "sweep" or "speed"
   bool help = false;
   shadowbench::Options bench = shadowbench::DefaultOptions();
   shadowsweep::Options sweep;
@@ -66,6 +67,7 @@ void PrintUsage(std::ostream& out)
          "       vtkshadows bench [options]\n"
          "       vtkshadows analyze FILE [options]\n"
          "       vtkshadows sweep [options]\n"
+         "       vtkshadows speed [options]\n"
          "       vtkshadows --help\n"
          "\n"
          "render: renders a scene with shadows and writes a PNG; prints the PNG's absolute path.\n"
@@ -74,6 +76,9 @@ void PrintUsage(std::ostream& out)
          "analyze: the same for a model file (.obj .ply .stl .vtp .gltf .glb) on a ground.\n"
          "sweep: measures techniques against ray-traced truth on random scenes, cameras and\n"
          "lights; prints each technique's distribution, worst cases and flagged cases.\n"
+         "speed: first, steady and moving (orbiting) frame times of none, vtk and techniques,\n"
+         "interleaved in one process, at --resolution and at 64; prints a markdown table,\n"
+         "writes speed.md and speed.csv.\n"
          "\n"
          "options of render:\n"
          "  --scene default|FILE     built-in scene or a model (.obj .ply .stl .vtp .gltf .glb)\n"
@@ -107,6 +112,14 @@ void PrintUsage(std::ostream& out)
          "  --flicker-setups LIST    set-ups measured along the path [perpendicular]\n"
          "  --timed-frames N         frames per frame-time figure, 1..100 [8]\n"
          "  --out DIR                output directory [./bench]\n"
+         "\n"
+         "options of speed: those of bench but the flicker options, with\n"
+         "  --scenes LIST            outdoor,paraview,model,street (225 actors)\n"
+         "                           [outdoor,paraview,model,street]\n"
+         "  --setups LIST            [perpendicular,spot]\n"
+         "  --techniques LIST        [uniform,lispsm,csm] (none and vtk always measured)\n"
+         "  --size WxH               [960x540]\n"
+         "  --out DIR                [./speed]\n"
          "\n"
          "options of sweep:\n"
          "  --cases N                random cases, 1..1000000 [200]\n"
@@ -314,6 +327,21 @@ std::string ParseScenes(const std::string& value, Options& options)
     if (std::find(names.begin(), names.end(), scene) == names.end())
     {
       return "unknown scene '" + scene + "' (expected outdoor, paraview or model)";
+    }
+  }
+  options.bench.Scenes = SplitList(value);
+  return options.bench.Scenes.empty() ? "no scene given" : std::string();
+}
+
+std::string ParseSpeedScenes(const std::string& value, Options& options)
+{
+  auto names = shadowscenes::BenchmarkSceneNames();
+  names.push_back("street");
+  for (const std::string& scene : SplitList(value))
+  {
+    if (std::find(names.begin(), names.end(), scene) == names.end())
+    {
+      return "unknown scene '" + scene + "' (expected outdoor, paraview, model or street)";
     }
   }
   options.bench.Scenes = SplitList(value);
@@ -532,6 +560,48 @@ const std::map<std::string, OptionParser>& BenchOptionParsers(bool withScenes)
   return withScenes ? bench : common;
 }
 
+const std::map<std::string, OptionParser>& SpeedOptionParsers()
+{
+  static const std::map<std::string, OptionParser> parsers = {
+    { "--scenes", ParseSpeedScenes },
+    { "--setups", ParseSetups },
+    { "--techniques", ParseTechniques },
+    { "--technique", ParseTechniques },
+    { "--resolution", ParseBenchResolution },
+    { "--size", ParseBenchSize },
+    { "--timed-frames", ParseTimedFrames },
+    { "--out", ParseOutputDirectory },
+  };
+  return parsers;
+}
+
+/** The speed benchmark's defaults, in the bench options its parsers fill. */
+void SetSpeedDefaults(Options& options)
+{
+  const shadowbench::SpeedOptions speed;
+  options.bench.Scenes = speed.Scenes;
+  options.bench.Setups = speed.Setups;
+  options.bench.Techniques = speed.Techniques;
+  options.bench.Width = speed.Width;
+  options.bench.Height = speed.Height;
+  options.bench.TimedFrames = speed.TimedFrames;
+  options.bench.OutputDirectory = speed.OutputDirectory;
+}
+
+shadowbench::SpeedOptions SpeedOptionsOf(const Options& options)
+{
+  shadowbench::SpeedOptions speed;
+  speed.Scenes = options.bench.Scenes;
+  speed.Setups = options.bench.Setups;
+  speed.Techniques = options.bench.Techniques;
+  speed.Resolutions = { options.bench.Resolution, 64 };
+  speed.Width = options.bench.Width;
+  speed.Height = options.bench.Height;
+  speed.TimedFrames = options.bench.TimedFrames;
+  speed.OutputDirectory = options.bench.OutputDirectory;
+  return speed;
+}
+
 const std::map<std::string, OptionParser>& SweepOptionParsers()
 {
   static const std::map<std::string, OptionParser> parsers = {
@@ -608,7 +678,7 @@ bool ParseCommandLine(
 {
   if (arguments.empty())
   {
-    error = "missing subcommand (expected render, bench, analyze or sweep)";
+    error = "missing subcommand (expected render, bench, analyze, sweep or speed)";
     return false;
   }
   if (IsHelpFlag(arguments[0]) || arguments[0] == "help")
@@ -629,6 +699,11 @@ bool ParseCommandLine(
   {
     return ParseSubcommandOptions(arguments, 1, SweepOptionParsers(), options, error);
   }
+  if (options.command == "speed")
+  {
+    SetSpeedDefaults(options);
+    return ParseSubcommandOptions(arguments, 1, SpeedOptionParsers(), options, error);
+  }
   if (options.command == "analyze")
   {
     if (arguments.size() < 2 || arguments[1].empty() || arguments[1][0] == '-')
@@ -644,7 +719,7 @@ bool ParseCommandLine(
     options.bench.ModelFile = arguments[1];
     return ParseSubcommandOptions(arguments, 2, BenchOptionParsers(false), options, error);
   }
-  error = "unknown subcommand '" + arguments[0] + "' (expected render, bench, analyze or sweep)";
+  error = "unknown subcommand '" + arguments[0] + "' (expected render, bench, analyze, sweep or speed)";
   return false;
 }
 
@@ -782,6 +857,10 @@ int Run(const std::vector<std::string>& arguments)
   else if (options.command == "sweep")
   {
     ok = shadowsweep::Run(options.sweep, std::cout, std::cerr, error);
+  }
+  else if (options.command == "speed")
+  {
+    ok = shadowbench::RunSpeed(SpeedOptionsOf(options), std::cout, std::cerr, error);
   }
   else
   {

@@ -1,5 +1,6 @@
-"""vtkshadows: renders the default scene to a PNG, and rejects bad input with
-one line on stderr and exit status 2."""
+"""vtkshadows: renders the default scene to a PNG, runs a small speed benchmark
+(a table row per technique, no shader built in a moving frame), and rejects bad
+input with one line on stderr and exit status 2."""
 import os
 import subprocess
 import sys
@@ -25,6 +26,17 @@ def main(program, output_dir):
         if png.read(8) != b"\x89PNG\r\n\x1a\n":
             failures.append("render: output is not a PNG")
 
+    speed_dir = os.path.join(output_dir, "speed")
+    result = run(program, "speed", "--scenes", "street", "--setups", "spot", "--techniques",
+                 "uniform,csm", "--timed-frames", "1", "--size", "160x90", "--out", speed_dir)
+    rows = [line.split("|") for line in result.stdout.splitlines() if line.startswith("| street")]
+    if result.returncode != 0 or not os.path.isfile(os.path.join(speed_dir, "speed.csv")):
+        failures.append(f"speed: rc={result.returncode} stderr={result.stderr!r}")
+    elif sorted(r[4].strip() for r in rows) != sorted(["none", "vtk", "uniform", "csm"] * 2):
+        failures.append(f"speed: rows {[r[1:5] for r in rows]}")
+    elif any(r[4].strip() in ("uniform", "csm") and r[12].strip() != "0" for r in rows):
+        failures.append(f"speed: shaders built in a moving frame: {result.stdout}")
+
     bad_inputs = [
         [],
         ["explode"],
@@ -38,6 +50,8 @@ def main(program, output_dir):
         ["render", "--light", "moon"],
         ["render", "--scene", "/nonexistent/model.obj"],
         ["render", "--scene", __file__],
+        ["speed", "--scenes", "city"],
+        ["speed", "--techniques", "magic"],
     ]
     for args in bad_inputs:
         result = run(program, *args)
@@ -49,7 +63,7 @@ def main(program, output_dir):
 
     for failure in failures:
         print("FAIL:", failure)
-    checks = 2 + len(bad_inputs)
+    checks = 3 + len(bad_inputs)
     print(f"{checks - len(failures)} passed, {len(failures)} failed")
     return 1 if failures else 0
 

@@ -1,0 +1,47 @@
+// Frame times of several passes on one renderer, measured in one process with
+// interleaved rounds: shared by the benchmark (ShadowBench) and the speed
+// benchmark (ShadowSpeed).
+#ifndef ShadowFrameTimes_h
+#define ShadowFrameTimes_h
+
+#include <functional>
+#include <vector>
+
+class vtkRenderPass;
+class vtkRenderWindow;
+class vtkRenderer;
+
+namespace shadowbench
+{
+
+/// Seconds per frame.
+struct Timing
+{
+  /// The first frame of a pass on the scene (its maps and shaders built).
+  double First = 0.0;
+  /// Median of frames with nothing changed.
+  double Steady = 0.0;
+  /// Median of frames with the camera moved a little before each.
+  double Moving = 0.0;
+};
+
+/// Sets the camera for moving frame `frame` of `frames` (frame 0: the start).
+using CameraMotion = std::function<void(int frame, int frames)>;
+
+/// Renders and waits for the GL to finish; returns the wall time in seconds.
+double TimedRender(vtkRenderWindow* window);
+
+/// The median (NaN for none).
+double Median(std::vector<double> values);
+
+/// Frame times of each pass (nullptr: no shadows), in three interleaved rounds
+/// so that a slow patch of the machine affects all passes alike: per round and
+/// pass a first frame at the start of the motion, two warm-up frames (switching
+/// passes rebuilds the mappers' shaders), `frames` steady frames, then
+/// `frames` moving frames. Leaves the camera at the start of the motion.
+std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* renderer,
+  const std::vector<vtkRenderPass*>& passes, int frames, const CameraMotion& motion);
+
+} // namespace shadowbench
+
+#endif

@@ -1,0 +1,249 @@
+#include "ShadowSpeed.h"
+
+#include "ShadowFrameTimes.h"
+#include "ShadowScenes.h"
+#include "ShadowTechniques.h"
+
+#include "vtkAbstractShadowMapPass.h"
+
+#include <vtkCamera.h>
+#include <vtkNew.h>
+#include <vtkPropCollection.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace shadowbench
+{
+namespace
+{
+
+struct SpeedRow
+{
+  std::string Scene;
+  std::string Setup;
+  int Resolution = 0;
+  std::string Technique;
+  Timing Time;
+  int ShaderBuilds = -1; // per moving frame, ours only
+};
+
+struct SpeedView
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkCamera> Initial;
+};
+
+bool ValidateSpeedOptions(const SpeedOptions& options, std::string& error)
+{
+  for (const std::string& name : options.Techniques)
+  {
+    if (!IsTechnique(name))
+    {
+      error = "unknown technique '" + name + "'";
+      return false;
+    }
+  }
+  for (const std::string& setup : options.Setups)
+  {
+    if (!shadowscenes::IsLightSetup(setup))
+    {
+      error = "unknown light set-up '" + setup + "'";
+      return false;
+    }
+  }
+  if (options.Scenes.empty() || options.Setups.empty() || options.Resolutions.empty())
+  {
+    error = "nothing to measure";
+    return false;
+  }
+  return MakeOutputDirectory(options.OutputDirectory, error);
+}
+
+std::vector<std::string> WithReferences(std::vector<std::string> techniques)
+{
+  for (const char* reference : { "vtk", "none" })
+  {
+    if (std::find(techniques.begin(), techniques.end(), reference) == techniques.end())
+    {
+      techniques.insert(techniques.begin(), reference);
+    }
+  }
+  return techniques;
+}
+
+bool BuildSpeedView(SpeedView& view, const std::string& scene, const SpeedOptions& options,
+  std::string& error)
+{
+  if (!shadowscenes::BuildSceneByName(view.Renderer, scene, error))
+  {
+    return false;
+  }
+  view.Initial->DeepCopy(view.Renderer->GetActiveCamera());
+  view.Window->SetOffScreenRendering(1);
+  view.Window->SetMultiSamples(0);
+  view.Window->SetSize(options.Width, options.Height);
+  view.Window->AddRenderer(view.Renderer);
+  return true;
+}
+
+/// Moving frames orbit the focal point as an interactor would, resetting the
+/// clipping range.
+CameraMotion Orbit(SpeedView& view, double degreesPerFrame)
+{
+  return [&view, degreesPerFrame](int frame, int) {
+    vtkCamera* camera = view.Renderer->GetActiveCamera();
+    camera->DeepCopy(view.Initial);
+    camera->Azimuth(degreesPerFrame * frame);
+    view.Renderer->ResetCameraClippingRange();
+  };
+}
+
+/// Shader sources one of our passes builds in a moving frame after its first.
+int ShaderBuildsPerMovingFrame(SpeedView& view, const TechniqueInstance& technique, double degrees)
+{
+  if (!technique.Ours)
+  {
+    return -1;
+  }
+  view.Renderer->SetPass(technique.Pass);
+  const CameraMotion orbit = Orbit(view, degrees);
+  orbit(0, 2);
+  view.Window->Render();
+  const int before = technique.Ours->GetNumberOfShaderBuilds();
+  orbit(1, 2);
+  view.Window->Render();
+  orbit(0, 2);
+  return technique.Ours->GetNumberOfShaderBuilds() - before;
+}
+
+void MeasureCase(SpeedView& view, const std::string& scene, const std::string& setup,
+  int resolution, const SpeedOptions& options, std::vector<SpeedRow>& rows)
+{
+  const std::vector<std::string> names = WithReferences(options.Techniques);
+  std::vector<TechniqueInstance> techniques;
+  std::vector<vtkRenderPass*> passes;
+  for (const std::string& name : names)
+  {
+    techniques.push_back(MakeTechnique(name, setup == "point", resolution));
+    passes.push_back(techniques.back().Pass);
+  }
+  const std::vector<Timing> timing = MeasureFrameTimes(
+    view.Window, view.Renderer, passes, options.TimedFrames, Orbit(view, options.OrbitDegrees));
+  for (size_t t = 0; t < techniques.size(); ++t)
+  {
+    SpeedRow row{ scene, setup, resolution, names[t], timing[t],
+      ShaderBuildsPerMovingFrame(view, techniques[t], options.OrbitDegrees) };
+    rows.push_back(row);
+  }
+  view.Renderer->SetPass(nullptr);
+  for (const TechniqueInstance& technique : techniques)
+  {
+    if (technique.Pass)
+    {
+      technique.Pass->ReleaseGraphicsResources(view.Window);
+    }
+  }
+}
+
+const SpeedRow* Reference(const std::vector<SpeedRow>& rows, const SpeedRow& row, const char* name)
+{
+  for (const SpeedRow& other : rows)
+  {
+    if (other.Scene == row.Scene && other.Setup == row.Setup &&
+      other.Resolution == row.Resolution && other.Technique == name)
+    {
+      return &other;
+    }
+  }
+  return nullptr;
+}
+
+std::string Ratio(double value, const SpeedRow* reference, double Timing::*which)
+{
+  return reference && reference->Time.*which > 0.0
+    ? FormatNumber(value / (reference->Time.*which))
+    : std::string("n/a");
+}
+
+void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
+{
+  out << "| scene | light | map | technique | first ms | steady ms | moving ms | moving / steady "
+         "| steady / none | moving / none | moving / vtk | shaders per moving frame |\n"
+         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const SpeedRow& row : rows)
+  {
+    const SpeedRow* none = Reference(rows, row, "none");
+    const SpeedRow* vtk = Reference(rows, row, "vtk");
+    out << "| " << row.Scene << " | " << row.Setup << " | " << row.Resolution << " | "
+        << row.Technique << " | " << FormatNumber(1000.0 * row.Time.First, 1) << " | "
+        << FormatNumber(1000.0 * row.Time.Steady, 1) << " | "
+        << FormatNumber(1000.0 * row.Time.Moving, 1) << " | "
+        << FormatNumber(row.Time.Moving / row.Time.Steady) << " | "
+        << Ratio(row.Time.Steady, none, &Timing::Steady) << " | "
+        << Ratio(row.Time.Moving, none, &Timing::Moving) << " | "
+        << Ratio(row.Time.Moving, vtk, &Timing::Moving) << " | "
+        << (row.ShaderBuilds < 0 ? std::string("") : std::to_string(row.ShaderBuilds)) << " |\n";
+  }
+}
+
+void WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& path)
+{
+  std::ofstream csv(path);
+  csv << "scene,setup,resolution,technique,first_s,steady_s,moving_s,shader_builds_per_moving_frame\n";
+  csv << std::setprecision(6);
+  for (const SpeedRow& row : rows)
+  {
+    csv << row.Scene << ',' << row.Setup << ',' << row.Resolution << ',' << row.Technique << ','
+        << row.Time.First << ',' << row.Time.Steady << ',' << row.Time.Moving << ','
+        << row.ShaderBuilds << '\n';
+  }
+}
+
+int CountProps(vtkRenderer* renderer)
+{
+  return renderer->GetViewProps()->GetNumberOfItems();
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+bool RunSpeed(const SpeedOptions& options, std::ostream& out, std::ostream& log, std::string& error)
+{
+  if (!ValidateSpeedOptions(options, error))
+  {
+    return false;
+  }
+  std::vector<SpeedRow> rows;
+  for (const std::string& scene : options.Scenes)
+  {
+    SpeedView view;
+    if (!BuildSpeedView(view, scene, options, error))
+    {
+      return false;
+    }
+    log << scene << ": " << CountProps(view.Renderer) << " actors" << std::endl;
+    for (const std::string& setup : options.Setups)
+    {
+      for (const int resolution : options.Resolutions)
+      {
+        log << "  " << scene << " / " << setup << " / " << resolution << std::endl;
+        view.Renderer->GetActiveCamera()->DeepCopy(view.Initial);
+        shadowscenes::AddLightSetup(view.Renderer, setup);
+        MeasureCase(view, scene, setup, resolution, options, rows);
+      }
+    }
+  }
+  std::ostringstream table;
+  PrintSpeedTable(rows, table);
+  out << table.str();
+  std::ofstream(options.OutputDirectory + "/speed.md") << table.str();
+  WriteSpeedCSV(rows, options.OutputDirectory + "/speed.csv");
+  return true;
+}
+
+} // namespace shadowbench
