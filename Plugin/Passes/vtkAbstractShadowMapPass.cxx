@@ -23,6 +23,7 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
@@ -290,6 +291,40 @@ std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const L
   return casters;
 }
 
+// A fragment shader shaped like a lit mapper's, for checking that the code the
+// pass injects compiles before any mapper gets it: VTK 9.1's mapper crashes on a
+// program that fails to build.
+const char* const ProbeVertexShader = R"(//VTK::System::Dec
+in vec4 vertexMC;
+out vec4 vertexVCVSOutput;
+out vec3 normalVCVSOutput;
+void main()
+{
+  vertexVCVSOutput = vertexMC;
+  normalVCVSOutput = vec3(0.0, 0.0, 1.0);
+  gl_Position = vertexMC;
+}
+)";
+
+std::string ProbeFragmentShader(const std::vector<ShadowLight>& lights)
+{
+  std::string declarations = "uniform int cameraParallel;\n";
+  std::string lighting;
+  for (const ShadowLight& light : lights)
+  {
+    const std::string color = "lightColor" + std::to_string(light.ShaderIndex);
+    declarations += "uniform vec3 " + color + ";\n";
+    lighting += "  diffuse += (df * " + color + ");\n";
+  }
+  return "//VTK::System::Dec\n//VTK::Output::Dec\nin vec4 vertexVCVSOutput;\n"
+         "in vec3 normalVCVSOutput;\n" +
+    declarations +
+    "//VTK::Light::Dec\nvoid main()\n{\n  vec4 vertexVC = vertexVCVSOutput;\n"
+    "  vec3 diffuse = vec3(0.0);\n  float df = float(cameraParallel);\n"
+    "  //VTK::Light::Impl\n" +
+    lighting + "  gl_FragData[0] = vec4(diffuse, 1.0);\n}\n";
+}
+
 // What a layer's content depends on besides what ForgetLayersIfStale watches:
 // its view and the casters in it, with their data.
 std::vector<vtkMTimeType> LayerSignature(const LightView& view, const std::vector<const Caster*>& casters)
@@ -353,6 +388,7 @@ struct vtkAbstractShadowMapPass::Internals
   vtkTimeStamp ShaderKeyTime;
   int MapUnit = -1;
   bool TextureUnitsReserved = false;
+  bool ShaderCodeCompiles = true;
   // The props whose render passes this pass joined in this frame.
   std::vector<vtkProp*> Joined;
 
@@ -670,7 +706,13 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   this->ChooseStorage();
-  this->UpdateShaderKey();
+  this->UpdateShaderKey(renderer);
+  if (!r.ShaderCodeCompiles)
+  {
+    this->ReportGLFailure("the shadow shader code does not compile (see the shader error above; a "
+                          "representation's GLSL?)");
+    return false;
+  }
   std::string error;
   if (!r.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Storage.Format,
         r.Storage.Mipmaps, error) ||
@@ -746,7 +788,7 @@ void vtkAbstractShadowMapPass::ChooseStorage()
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::UpdateShaderKey()
+void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
 {
   // Before the casters draw: they build the shaders the scene then uses.
   Internals& r = *this->Internal;
@@ -767,7 +809,29 @@ void vtkAbstractShadowMapPass::UpdateShaderKey()
   {
     r.ShaderKey = std::move(key);
     r.ShaderKeyTime.Modified();
+    r.ShaderCodeCompiles = this->ShaderCodeCompiles(renderer);
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::ShaderCodeCompiles(vtkOpenGLRenderer* renderer)
+{
+  Internals& r = *this->Internal;
+  std::string vertexShader = ProbeVertexShader;
+  std::string geometryShader;
+  std::string fragmentShader = ProbeFragmentShader(r.Lights);
+  this->PreReplaceShaderValues(vertexShader, geometryShader, fragmentShader, nullptr, nullptr);
+  const int builds = this->NumberOfShaderBuilds;
+  const int depthOnly = this->NumberOfDepthOnlyCasterShaders;
+  const bool casting = r.Casting;
+  r.Casting = true; // as for a caster's build: receivers' code included
+  this->PostReplaceShaderValues(vertexShader, geometryShader, fragmentShader, nullptr, nullptr);
+  r.Casting = casting;
+  this->NumberOfShaderBuilds = builds;
+  this->NumberOfDepthOnlyCasterShaders = depthOnly;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  return window->GetShaderCache()->ReadyShaderProgram(
+           vertexShader.c_str(), fragmentShader.c_str(), "") != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -1059,7 +1123,7 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
   ++this->NumberOfShaderBuilds;
   // Shaders first built by a caster draw are the ones the scene then uses.
   const bool receives =
-    (r.Active || r.Casting) && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
+    (r.Active || r.Casting) && IsEnabled(prop ? prop->GetPropertyKeys() : nullptr, RECEIVES_SHADOWS());
   const shadowmaps::CasterBranch branch = shadowmaps::CasterShader::Inject(fragmentShader, r.CasterCode);
   ++(branch == shadowmaps::CasterBranch::DepthOnly ? this->NumberOfDepthOnlyCasterShaders
                                                    : this->NumberOfOwnFragmentCasterShaders);

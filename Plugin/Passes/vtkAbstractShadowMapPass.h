@@ -292,7 +292,8 @@ private:
   void DropLightsWithoutUsableViews();
   void AssignLayers();
   void ChooseStorage();
-  void UpdateShaderKey();
+  void UpdateShaderKey(vtkOpenGLRenderer* renderer);
+  bool ShaderCodeCompiles(vtkOpenGLRenderer* renderer);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void ForgetLayersIfStale();
   bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, const std::vector<int>& layers);

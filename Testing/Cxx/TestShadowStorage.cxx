@@ -12,6 +12,7 @@
 #include "vtkWarpedShadowMapViews.h"
 #include "vtkWarpedShadowMapPass.h"
 
+#include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
 
@@ -118,8 +119,17 @@ public:
     this->Inverted = inverted;
     this->Modified();
   }
+  void SetBroken(bool broken)
+  {
+    this->Broken = broken;
+    this->Modified();
+  }
   std::string GetReceiverLookupCode() const override
   {
+    if (this->Broken)
+    {
+      return "this is not GLSL;\n";
+    }
     if (!this->Inverted)
     {
       return this->Superclass::GetReceiverLookupCode();
@@ -137,6 +147,7 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
 
 private:
   bool Inverted = false;
+  bool Broken = false;
 };
 vtkStandardNewMacro(vtkTestSwappedLookupRepresentation);
 
@@ -254,6 +265,30 @@ TEST(ShadowStorage, ChangedLookupCodeRebuildsReceivers)
   image = RenderAndCapture(scene.Window);
   EXPECT_GT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)), LitAbove);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, { -5, -4, 0 }), ShadowedBelow);
+}
+
+// A representation whose lookup does not compile: the mappers' shaders fail,
+// VTK reports it, and the frame still renders, without a crash.
+TEST(ShadowStorage, LookupThatDoesNotCompileDoesNotCrash)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  vtkNew<vtkTestSwappedLookupRepresentation> broken;
+  broken->SetBroken(true);
+  pass->SetRepresentation(broken);
+  pass->SetResolution(256);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  RenderAndCapture(scene.Window);
+  scene.Renderer->GetActiveCamera()->Azimuth(5.0);
+  RenderAndCapture(scene.Window);
+  EXPECT_GT(errors.Errors(), 0) << "VTK reports the shader";
+  broken->SetBroken(false);
+  auto image = RenderAndCapture(scene.Window);
+  ExpectShadowUnderSphere(scene, image);
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
 }
 
 // SetRepresentation(nullptr) and SetViews(nullptr) restore the preset's own.
