@@ -431,7 +431,7 @@ glm::dvec2 VisibleDepthRange(
 }
 
 LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& sceneBounds,
-  const glm::dvec3& lightDirection, int resolution)
+  const glm::dvec3& lightDirection, int resolution, bool stable)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ glm::dvec3(-1.0), glm::dvec3(1.0) }
                                            : NonDegenerate(sceneBounds);
@@ -455,6 +455,11 @@ LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& sce
   const glm::dvec2 margin = extent * (4.0 / std::max(resolution, 1));
   lo -= margin;
   hi = lo + extent + 2.0 * margin;
+  if (stable)
+  {
+    SnapWindowOutward(lo, hi, 2.0 * diagonal);
+    bodyFar = SnapUp(bodyFar, diagonal / 64.0);
+  }
 
   glm::dvec2 depth = ComputeNearAndFar(fit.View, lo, hi, scene);
   if (!(depth.y > depth.x))
@@ -472,25 +477,37 @@ LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& sce
 
 LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& sceneBounds,
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
-  int resolution)
+  int resolution, bool stable)
 {
   const Aabb scene = sceneBounds.IsEmpty() ? Aabb{ position - 1.0, position + 1.0 }
                                            : NonDegenerate(sceneBounds);
-  return FitSpotToBody(
-    BodyOrScene(cameraViewProjection, scene), scene, position, direction, coneAngleDegrees, resolution);
+  return FitSpotToBody(BodyOrScene(cameraViewProjection, scene), scene, position, direction,
+    coneAngleDegrees, resolution, stable);
+}
+
+void SnapWindowOutward(glm::dvec2& lo, glm::dvec2& hi, double span)
+{
+  const double width = std::max(hi.x - lo.x, hi.y - lo.y);
+  if (!(width > 0.0) || !(span > 0.0) || !std::isfinite(width))
+  {
+    return;
+  }
+  const double level = std::max(4.0, std::floor(std::log2(span / width)) + 4.0);
+  const double cell = span / std::exp2(std::min(level, 40.0));
+  lo = glm::floor(lo / cell) * cell;
+  hi = glm::ceil(hi / cell) * cell;
+}
+
+double SnapUp(double value, double cell)
+{
+  return cell > 0.0 && std::isfinite(value) ? std::ceil(value / cell) * cell : value;
 }
 
 void SnapCropOutward(glm::dvec2& lo, glm::dvec2& hi, double t)
 {
-  const double width = std::max(hi.x - lo.x, hi.y - lo.y);
-  if (!(width > 0.0) || !(t > 0.0))
-  {
-    return;
-  }
-  const double level = std::max(4.0, std::floor(std::log2(2.0 * t / width)) + 4.0);
-  const double cell = 2.0 * t / std::exp2(std::min(level, 40.0));
-  lo = glm::max(glm::floor(lo / cell) * cell, glm::dvec2(-t));
-  hi = glm::min(glm::ceil(hi / cell) * cell, glm::dvec2(t));
+  SnapWindowOutward(lo, hi, 2.0 * t);
+  lo = glm::max(lo, glm::dvec2(-t));
+  hi = glm::min(hi, glm::dvec2(t));
 }
 
 LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& sceneBounds,

@@ -155,15 +155,28 @@ Aabb NonDegenerate(const Aabb& box);
 /// Focused uniform map for a directional light: an orthographic frustum fitted
 /// to B in light space, its near plane pulled back to the nearest scene point
 /// inside the light frustum's side planes. Falls back to the whole scene when B
-/// is empty (camera looking away from the scene).
+/// is empty (camera looking away from the scene). `stable`: the window grows
+/// outward to a grid (SnapWindowOutward over twice the scene's diagonal) and
+/// B's far depth to a 64th of the diagonal, so that a small camera move leaves
+/// the fit, and the map rendered with it, unchanged.
 LightView FitDirectional(const glm::dmat4& cameraViewProjection, const Aabb& scene,
-  const glm::dvec3& lightDirection, int resolution);
+  const glm::dvec3& lightDirection, int resolution, bool stable = false);
+
+/// The window [lo, hi] grown outward to the grid of span / 2^k with the largest
+/// k that keeps a cell at most a sixteenth of the window's width (k >= 4): the
+/// window moves only when what it covers crosses a grid line, and loses at most
+/// two cells, an eighth of its width, of texel density.
+void SnapWindowOutward(glm::dvec2& lo, glm::dvec2& hi, double span);
+
+/// `value` rounded up to a multiple of `cell` (unchanged for cell <= 0).
+double SnapUp(double value, double cell);
 
 /// Spot light: the cone's square frustum (full angle 2 * coneAngleDegrees),
 /// cropped to B's projection; near/far from the scene inside the cone.
+/// `stable` as for FitSpotToBody.
 LightView FitSpot(const glm::dmat4& cameraViewProjection, const Aabb& scene,
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
-  int resolution);
+  int resolution, bool stable = false);
 
 /// A spot light's own post-perspective space, where its rays are parallel to +z
 /// and a directional warp can be built (003; 000 for point lights).
@@ -198,10 +211,8 @@ LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& scene,
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees, int resolution,
   bool stable = false);
 
-/// The crop [lo, hi] of a cone of half-width t grown outward to the grid of
-/// 2t / 2^k with the largest k that keeps a cell at most a sixteenth of the
-/// crop's width (k >= 4): a crop moves only when its body crosses a grid line,
-/// and loses at most two cells, an eighth of its width, of texel density.
+/// The crop [lo, hi] of a cone of half-width t snapped as SnapWindowOutward over
+/// the cone's width 2t, and kept inside the cone.
 void SnapCropOutward(glm::dvec2& lo, glm::dvec2& hi, double t);
 
 /// FitSpot's cone map cropped to the lit part of B = camera frustum ∩ scene ∩ the

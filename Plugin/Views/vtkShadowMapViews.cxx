@@ -19,11 +19,11 @@ void vtkShadowMapViews::FitUniformViews(
   if (light.Kind == shadowmaps::LightKind::Spot)
   {
     light.Views.push_back(shadowmaps::FitSpot(frame.CameraViewProjection(), frame.SceneBounds,
-      light.Position, light.Direction, light.ConeAngle, frame.Resolution));
+      light.Position, light.Direction, light.ConeAngle, frame.Resolution, true));
     return;
   }
   light.Views.push_back(shadowmaps::FitDirectional(
-    frame.CameraViewProjection(), frame.SceneBounds, light.Direction, frame.Resolution));
+    frame.CameraViewProjection(), frame.SceneBounds, light.Direction, frame.Resolution, true));
 }
 
 //------------------------------------------------------------------------------

@@ -256,9 +256,10 @@ inline ::testing::AssertionResult IsFiniteFit(const LightView& fit)
 // range that is nearer to the light than B's far end is cut by the near plane.
 inline void CheckDirectionalFit(const glm::dmat4& camera,
   const Aabb& scene,
-  const glm::dvec3& lightDirection)
+  const glm::dvec3& lightDirection,
+  bool stable = false)
 {
-  const LightView fit = shadowmaps::FitDirectional(camera, scene, lightDirection, Resolution);
+  const LightView fit = shadowmaps::FitDirectional(camera, scene, lightDirection, Resolution, stable);
   ASSERT_TRUE(IsFiniteFit(fit));
   EXPECT_FALSE(fit.Perspective);
   const glm::dmat4 viewProjection = fit.ViewProjection();

@@ -629,9 +629,10 @@ TEST(ShadowBehaviour, OrbitingCameraBuildsNoShaders)
   }
 }
 
-// A camera move re-renders only the map layers whose view or casters changed,
-// and the layers kept are what a full re-render would draw: the frame matches,
-// byte for byte, that of a fresh pass rendering every layer.
+// A camera move re-renders only the map layers whose view or casters changed
+// (stable fits change in steps: a small move changes none), and the layers kept
+// are what a full re-render would draw: the frame matches, byte for byte, that
+// of a fresh pass rendering every layer.
 TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
 {
   const auto bytes = [](vtkImageData* image) {
@@ -671,6 +672,29 @@ TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
     scene.Window->Render();
     EXPECT_GE(pass->GetNumberOfRenderedLayers(), 1) << "the faces that see the box";
     EXPECT_LT(pass->GetNumberOfRenderedLayers(), 6) << "the faces that do not see it stay";
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
+  }
+
+  // The focused map of a sun and of a spot snaps outward to a grid: a small orbit keeps it.
+  for (const bool spot : { false, true })
+  {
+    TestScene scene;
+    if (spot)
+    {
+      scene.SetSpot(glm::dvec3(2.0, -3.0, 6.0), 40.0);
+    }
+    else
+    {
+      scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
+    }
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    scene.Renderer->SetPass(pass);
+    scene.Window->Render();
+    orbit(scene, 0.1);
+    EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 0) << "spot " << spot;
+    const std::vector<unsigned char> kept = bytes(CaptureAsRendered(scene.Window));
+    EXPECT_EQ(kept, freshFrame(scene, vtkSmartPointer<vtkWarpedShadowMapPass>::New())) << spot;
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
   }

@@ -130,6 +130,37 @@ TEST(FitDirectional, FocusesOnTheBody)
   }
 }
 
+// A stable fit holds what the loose one holds (CheckDirectionalFit), is at most
+// an eighth wider per axis, and stays the same matrix while the camera turns a
+// little, so that the pass keeps its map.
+TEST(FitDirectional, StableFitsStayPutForSmallCameraMoves)
+{
+  const GroundScene ground;
+  const glm::dvec3 aside = glm::normalize(glm::dvec3(1.0, 0.4, -0.6));
+  for (const auto& direction : TestLightDirections(ground.ViewDirection()))
+  {
+    SCOPED_TRACE("light direction " + ToString(direction));
+    const LightView loose =
+      shadowmaps::FitDirectional(ground.Camera(), ground.Scene, direction, Resolution);
+    const LightView stable =
+      shadowmaps::FitDirectional(ground.Camera(), ground.Scene, direction, Resolution, true);
+    EXPECT_LE(2.0 / stable.Projection[0][0], 1.125 * 2.0 / loose.Projection[0][0] + 1e-9);
+    EXPECT_GE(2.0 / stable.Projection[0][0], 2.0 / loose.Projection[0][0] - 1e-9);
+    int unchanged = 0;
+    for (int step = 1; step <= 10; ++step)
+    {
+      const glm::dvec3 target = ground.Target + aside * (0.002 * step);
+      const glm::dmat4 camera =
+        PerspectiveCamera(ground.Eye, target, ground.Near, ground.Far);
+      const LightView moved =
+        shadowmaps::FitDirectional(camera, ground.Scene, direction, Resolution, true);
+      unchanged += moved.Projection == stable.Projection && moved.View == stable.View ? 1 : 0;
+    }
+    EXPECT_GE(unchanged, 5) << "most small moves keep the map";
+    CheckDirectionalFit(ground.Camera(), ground.Scene, direction, true);
+  }
+}
+
 TEST(FitDirectional, CameraLookingAwayFallsBackToTheScene)
 {
   const GroundScene ground;
