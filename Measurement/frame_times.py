@@ -45,7 +45,8 @@ builds = {}
 for k in ("warped", "cascaded"):
     pss = passes[k]
     if hasattr(pss, "GetNumberOfShaderBuilds"):
-        r.SetPass(pss); w.Render()
+        # Props the camera culled since the pass switch build theirs when first cast.
+        r.SetPass(pss); w.Render(); cam.Azimuth(0.3); r.ResetCameraClippingRange(); w.Render()
         before = pss.GetNumberOfShaderBuilds()
         cam.Azimuth(0.3); r.ResetCameraClippingRange(); w.Render()
         builds[k] = (pss.GetNumberOfShaderBuilds() - before, pss.GetNumberOfRenderedLayers(),
