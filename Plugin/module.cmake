@@ -8,6 +8,7 @@ set(shadowmaps_shaders
   vtkShadowMapsCasterFS
   vtkShadowMapsDepthLookupFS
   vtkShadowMapsLinearDepthFS
+  vtkShadowMapsLinearDepthResolveFS
   vtkShadowMapsReceiverFS
   vtkShadowMapsViewFS)
 set(shadowmaps_shader_sources)
@@ -44,6 +45,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapWarping.cxx
     Plugin/OpenGL/ShadowMapAnalysis.cxx
     Plugin/OpenGL/ShadowMapCasterShader.cxx
+    Plugin/OpenGL/ShadowMapLinearDepthResolve.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     ${shadowmaps_shader_sources}
@@ -61,6 +63,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapWarping.h
     Plugin/OpenGL/ShadowMapAnalysis.h
     Plugin/OpenGL/ShadowMapCasterShader.h
+    Plugin/OpenGL/ShadowMapLinearDepthResolve.h
     Plugin/OpenGL/ShadowMapProgramStamps.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
     ${shadowmaps_shader_headers})

@@ -58,7 +58,10 @@ std::string Declarations(const CasterCode& code)
 
 // The branch: depth (the rasterizer's, or the one the shader wrote) made linear
 // when asked, written back when the shader writes depth on its other path, then
-// the store code.
+// the store code, or for linear depth in depth maps the depth as colour
+// (ShadowMapLinearDepthResolve.h says why not gl_FragDepth) in a second output:
+// the first, the mapper's colour, has no buffer while casting, so a software
+// rasteriser drops the work that makes it.
 std::string Branch(
   const CasterCode& code, const std::string& rawDepth, bool writeDepth, bool selectFaces)
 {
@@ -74,7 +77,9 @@ std::string Branch(
   {
     branch << "    gl_FragDepth = vtkShadowCasterDepth;\n";
   }
-  branch << (code.StoreCode.empty() ? "    gl_FragData[0] = vec4(1.0);" : code.StoreCode)
+  branch << (!code.StoreCode.empty() ? code.StoreCode
+                : code.LinearDepth       ? "    gl_FragData[1] = vec4(vtkShadowCasterDepth);"
+                                         : "    gl_FragData[0] = vec4(1.0);")
          << "\n    return;\n  }\n";
   return branch.str();
 }
@@ -130,20 +135,17 @@ CasterBranch CasterShader::Inject(std::string& fragmentShader, const CasterCode&
   const bool writesDepth = mapperCode.find("gl_FragDepth") != std::string::npos;
   const bool ownFragments = ShapesItsOwnFragments(mapperCode);
 
-  // A shader that writes gl_FragDepth on one path must on every path.
-  const std::string receiverDepth =
-    code.LinearDepth && !writesDepth ? "  gl_FragDepth = gl_FragCoord.z;\n" : "";
   if (ownFragments)
   {
-    vtkShaderProgram::Substitute(fragmentShader, EarlyMarker, receiverDepth);
+    vtkShaderProgram::Substitute(fragmentShader, EarlyMarker, "");
     PutAtMarker(fragmentShader, LateMarker,
-      Branch(code, writesDepth ? "gl_FragDepth" : "gl_FragCoord.z", code.LinearDepth, false));
+      Branch(code, writesDepth ? "gl_FragDepth" : "gl_FragCoord.z", false, false));
   }
   else
   {
+    // A shader that writes gl_FragDepth on one path must on every path.
     vtkShaderProgram::Substitute(fragmentShader, LateMarker, "");
-    PutAtMarker(fragmentShader, EarlyMarker,
-      Branch(code, "gl_FragCoord.z", code.LinearDepth || writesDepth, true) + receiverDepth);
+    PutAtMarker(fragmentShader, EarlyMarker, Branch(code, "gl_FragCoord.z", writesDepth, true));
   }
   const size_t main = fragmentShader.find("void main");
   if (main != std::string::npos)

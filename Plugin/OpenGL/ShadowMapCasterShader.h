@@ -9,8 +9,9 @@
 // lighting would start, so their silhouettes stay right.
 //
 // With storage code (value maps) the branch writes what it says; with linear
-// depth it writes gl_FragDepth = Z (linear light-space depth) instead of Z / W,
-// W taken from the window position (SetView's windowToInverseW).
+// depth it makes the depth Z (linear light-space depth) instead of Z / W, W
+// taken from the window position (SetView's windowToInverseW), and writes it as
+// colour for ShadowMapLinearDepthResolve to copy into the depth map.
 #ifndef ShadowMapCasterShader_h
 #define ShadowMapCasterShader_h
 

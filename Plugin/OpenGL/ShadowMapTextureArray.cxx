@@ -17,18 +17,21 @@ std::string GLErrorText(GLenum code)
   return text.str();
 }
 
-// Restores the array binding of the active unit, which may belong to someone else.
-class ScopedArrayBinding
+// Restores a binding of the active unit, which may belong to someone else.
+template <GLenum Target, GLenum Binding>
+class ScopedBinding
 {
 public:
-  ScopedArrayBinding() { glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &this->Previous); }
-  ~ScopedArrayBinding() { glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(this->Previous)); }
-  ScopedArrayBinding(const ScopedArrayBinding&) = delete;
-  ScopedArrayBinding& operator=(const ScopedArrayBinding&) = delete;
+  ScopedBinding() { glGetIntegerv(Binding, &this->Previous); }
+  ~ScopedBinding() { glBindTexture(Target, static_cast<GLuint>(this->Previous)); }
+  ScopedBinding(const ScopedBinding&) = delete;
+  ScopedBinding& operator=(const ScopedBinding&) = delete;
 
 private:
   GLint Previous = 0;
 };
+using ScopedArrayBinding = ScopedBinding<GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BINDING_2D_ARRAY>;
+using ScopedTextureBinding = ScopedBinding<GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D>;
 
 void ClearGLErrors()
 {
@@ -125,13 +128,34 @@ void TextureArray::AllocateValueLayers(int resolution, int layers)
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
 }
 
-bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& error)
+bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool linearDepths)
 {
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer);
   if (IsDepth(this->Format))
   {
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
-    glDrawBuffer(GL_NONE);
+    if (linearDepths && this->LinearDepths == 0)
+    {
+      ScopedTextureBinding keep;
+      glGenTextures(1, &this->LinearDepths);
+      glBindTexture(GL_TEXTURE_2D, this->LinearDepths);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, this->Resolution, this->Resolution, 0, GL_RED,
+        GL_FLOAT, nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glFramebufferTexture2D(
+      GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, linearDepths ? this->LinearDepths : 0, 0);
+    // Casters write linear depth to their second output (ShadowMapCasterShader).
+    const GLenum outputs[2] = { GL_NONE, GL_COLOR_ATTACHMENT0 };
+    if (linearDepths)
+    {
+      glDrawBuffers(2, outputs);
+    }
+    else
+    {
+      glDrawBuffer(GL_NONE);
+    }
     glReadBuffer(GL_NONE);
   }
   else
@@ -211,6 +235,11 @@ void TextureArray::Release()
   {
     glDeleteFramebuffers(1, &this->Framebuffer);
   }
+  if (this->LinearDepths != 0)
+  {
+    glDeleteTextures(1, &this->LinearDepths);
+    this->LinearDepths = 0;
+  }
   if (this->DepthBuffer != 0)
   {
     glDeleteRenderbuffers(1, &this->DepthBuffer);
@@ -232,7 +261,8 @@ std::size_t TextureArray::GetMemoryBytes() const
   const std::size_t texels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
   if (IsDepth(this->Format))
   {
-    return texels * this->Layers * (this->Format == TexelFormat::Depth16 ? 2 : 4);
+    const std::size_t linearDepths = this->LinearDepths != 0 ? texels * 4 : 0;
+    return texels * this->Layers * (this->Format == TexelFormat::Depth16 ? 2 : 4) + linearDepths;
   }
   // A full mipmap chain adds a third; the depth buffer is shared by all layers.
   const std::size_t values = texels * this->Layers * 8;

@@ -47,8 +47,15 @@ public:
   bool Reserve(int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error);
 
   /// Binds the framebuffer (through the state cache) with `layer` attached.
-  /// The caller pushes and pops the framebuffer bindings.
-  bool BindLayer(vtkOpenGLState* state, int layer, std::string& error);
+  /// The caller pushes and pops the framebuffer bindings. `linearDepths` (depth
+  /// formats): also a float colour buffer, into which casters of a linear-depth
+  /// view write that depth for LinearDepthResolve to copy into the layer; the
+  /// casters' shaders then write no gl_FragDepth, which would cost the scene's
+  /// draws of the same programs their early depth test.
+  bool BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool linearDepths = false);
+
+  /// The colour buffer of BindLayer's linearDepths (0 before its first use).
+  unsigned int GetLinearDepths() const { return this->LinearDepths; }
 
   /// Depth: nearest (hard) or linear (hardware 2x2 PCF) comparison filtering.
   /// TwoFloats: nearest or (mipmapped) linear value filtering.
@@ -82,6 +89,7 @@ private:
   unsigned int Texture = 0;
   unsigned int Framebuffer = 0;
   unsigned int DepthBuffer = 0; // TwoFloats only
+  unsigned int LinearDepths = 0; // depth formats, when a view stores linear depth
   TexelFormat Format = TexelFormat::Depth;
   bool Mipmaps = false;
   int Resolution = 0;

@@ -4,6 +4,7 @@
 #include "ShadowMapCasterShader.h"
 #include "ShadowMapGlm.h"
 #include "ShadowMapLight.h"
+#include "ShadowMapLinearDepthResolve.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapTextureArray.h"
 #include "ShadowMapTrapezoid.h"
@@ -364,6 +365,7 @@ struct vtkAbstractShadowMapPass::Internals
   vtkNew<vtkMatrix4x4> LightProjection;
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
   shadowmaps::MapView MapView;
+  shadowmaps::LinearDepthResolve LinearDepths;
 
   // What the maps were last rendered for; empty when they must be re-rendered.
   std::vector<vtkMTimeType> Signature;
@@ -926,14 +928,17 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         {
           continue;
         }
-        ok = r.Maps.BindLayer(state, layer, r.LastGLError);
+        const bool linearDepths =
+          light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Storage.Format);
+        ok = r.Maps.BindLayer(state, layer, r.LastGLError, linearDepths);
         if (ok)
         {
           this->ApplyCasterUniforms(light, light.Views[v]);
           std::vector<vtkProp*> props;
           std::transform(casters.begin(), casters.end(), std::back_inserter(props),
             [](const Caster* caster) { return caster->Prop; });
-          draws += this->RenderCastersIntoView(renderer, light.Views[v], props);
+          draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
+          ok = !linearDepths || r.LinearDepths.Render(window, r.Maps, layer, r.LastGLError);
           r.LayerSignatures[layer] = std::move(signature);
           rendered.push_back(layer);
         }
@@ -986,7 +991,7 @@ bool vtkAbstractShadowMapPass::PostProcessShadowMaps(
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer)
+void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer, bool linearDepths)
 {
   Internals& r = *this->Internal;
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
@@ -998,15 +1003,20 @@ void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer)
     state->vtkglClearColor(r.Storage.ClearValues[0], r.Storage.ClearValues[1], 0.0, 0.0);
     buffers |= GL_COLOR_BUFFER_BIT;
   }
+  else if (linearDepths)
+  {
+    state->vtkglClearColor(1.0, 1.0, 1.0, 1.0);
+    buffers |= GL_COLOR_BUFFER_BIT;
+  }
   state->vtkglClear(buffers);
 }
 
 //------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::RenderCastersIntoView(
-  vtkOpenGLRenderer* renderer, const LightView& view, std::vector<vtkProp*>& casters)
+int vtkAbstractShadowMapPass::RenderCastersIntoView(vtkOpenGLRenderer* renderer,
+  const LightView& view, std::vector<vtkProp*>& casters, bool linearDepths)
 {
   Internals& r = *this->Internal;
-  this->ClearLayer(renderer);
+  this->ClearLayer(renderer, linearDepths);
   if (casters.empty())
   {
     return 0;
@@ -1204,6 +1214,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   r.MapsValid = false;
   r.Signature.clear();
   r.MapView.ReleaseGraphicsResources(window);
+  r.LinearDepths.ReleaseGraphicsResources(window);
   r.Representation->ReleaseGraphicsResources(window);
   if (r.DefaultRepresentation != r.Representation)
   {

@@ -297,10 +297,10 @@ private:
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void ForgetLayersIfStale();
   bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, const std::vector<int>& layers);
-  int RenderCastersIntoView(
-    vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view, std::vector<vtkProp*>& casters);
+  int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,
+    std::vector<vtkProp*>& casters, bool linearDepths);
   void ApplyCasterUniforms(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
-  void ClearLayer(vtkOpenGLRenderer* renderer);
+  void ClearLayer(vtkOpenGLRenderer* renderer, bool linearDepths);
   void JoinRenderPasses(vtkProp* const* props, int count);
   void LeaveRenderPasses();
   void ReserveTextureUnits(vtkOpenGLRenderer* renderer);

@@ -10,6 +10,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
+#include "vtkObjectFactory.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -19,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <vector>
 
 using namespace shadowtest;
@@ -715,4 +717,59 @@ TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
   }
+}
+
+namespace
+{
+/// Keeps the fragment shaders the mappers build with it.
+class vtkShaderRecordingWarpedPass : public vtkWarpedShadowMapPass
+{
+public:
+  static vtkShaderRecordingWarpedPass* New();
+  vtkTypeMacro(vtkShaderRecordingWarpedPass, vtkWarpedShadowMapPass);
+  std::vector<std::string> FragmentShaders;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override
+  {
+    const bool ok = this->Superclass::PostReplaceShaderValues(
+      vertexShader, geometryShader, fragmentShader, mapper, prop);
+    if (prop)
+    {
+      this->FragmentShaders.push_back(fragmentShader);
+    }
+    return ok;
+  }
+};
+vtkStandardNewMacro(vtkShaderRecordingWarpedPass);
+} // namespace
+
+// Views that store linear depth (TSM, warped spots) must not make the scene's
+// shaders write gl_FragDepth, which costs every receiver its early depth test
+// (a steady TSM frame of the 225-actor street took 5 times one without shadows
+// when it did): their casters write the depth to a second output instead.
+TEST(ShadowBehaviour, LinearDepthCastersLeaveTheSceneItsEarlyDepthTest)
+{
+  TestScene scene;
+  scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
+  vtkNew<vtkShaderRecordingWarpedPass> pass;
+  pass->SetWarpModeToTSM();
+  scene.Renderer->SetPass(pass);
+  const auto image = RenderAndCapture(scene.Window);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image,
+              GroundShadowOfSphereCenter(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)))),
+    ShadowedBelow);
+  ASSERT_GE(pass->FragmentShaders.size(), 3u);
+  for (const std::string& shader : pass->FragmentShaders)
+  {
+    std::string code; // without line comments
+    std::istringstream lines(shader);
+    for (std::string line; std::getline(lines, line);)
+    {
+      code += line.substr(0, line.find("//")) + "\n";
+    }
+    EXPECT_EQ(code.find("gl_FragDepth"), std::string::npos);
+    EXPECT_NE(shader.find("gl_FragData[1] = vec4(vtkShadowCasterDepth)"), std::string::npos);
+  }
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
 }
