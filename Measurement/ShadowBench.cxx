@@ -434,22 +434,9 @@ void WriteChart(const std::vector<Row>& rows, const std::string& path, const std
 
 bool ValidateOptions(const Options& options, std::string& error)
 {
-  const auto techniques = TechniqueNames();
-  for (const std::string& name : options.Techniques)
+  if (!CheckTechniquesAndSetups(options.Techniques, options.Setups, error))
   {
-    if (std::find(techniques.begin(), techniques.end(), name) == techniques.end())
-    {
-      error = "unknown technique '" + name + "'";
-      return false;
-    }
-  }
-  for (const std::string& setup : options.Setups)
-  {
-    if (!shadowscenes::IsLightSetup(setup))
-    {
-      error = "unknown light set-up '" + setup + "'";
-      return false;
-    }
+    return false;
   }
   if (options.Scenes.empty() && options.ModelFile.empty())
   {
@@ -462,14 +449,7 @@ bool ValidateOptions(const Options& options, std::string& error)
 /// Frame times are ratios to "none" and "vtk": measure them even if not asked.
 Options WithReferences(Options options)
 {
-  for (const char* reference : { "vtk", "none" })
-  {
-    if (std::find(options.Techniques.begin(), options.Techniques.end(), reference) ==
-      options.Techniques.end())
-    {
-      options.Techniques.insert(options.Techniques.begin(), reference);
-    }
-  }
+  options.Techniques = WithReferenceTechniques(options.Techniques);
   return options;
 }
 } // namespace

@@ -41,21 +41,9 @@ struct SpeedView
 
 bool ValidateSpeedOptions(const SpeedOptions& options, std::string& error)
 {
-  for (const std::string& name : options.Techniques)
+  if (!CheckTechniquesAndSetups(options.Techniques, options.Setups, error))
   {
-    if (!IsTechnique(name))
-    {
-      error = "unknown technique '" + name + "'";
-      return false;
-    }
-  }
-  for (const std::string& setup : options.Setups)
-  {
-    if (!shadowscenes::IsLightSetup(setup))
-    {
-      error = "unknown light set-up '" + setup + "'";
-      return false;
-    }
+    return false;
   }
   if (options.Scenes.empty() || options.Setups.empty() || options.Resolutions.empty())
   {
@@ -63,18 +51,6 @@ bool ValidateSpeedOptions(const SpeedOptions& options, std::string& error)
     return false;
   }
   return MakeOutputDirectory(options.OutputDirectory, error);
-}
-
-std::vector<std::string> WithReferences(std::vector<std::string> techniques)
-{
-  for (const char* reference : { "vtk", "none" })
-  {
-    if (std::find(techniques.begin(), techniques.end(), reference) == techniques.end())
-    {
-      techniques.insert(techniques.begin(), reference);
-    }
-  }
-  return techniques;
 }
 
 bool BuildSpeedView(SpeedView& view, const std::string& scene, const SpeedOptions& options,
@@ -129,7 +105,7 @@ int ShaderBuildsPerMovingFrame(SpeedView& view, const TechniqueInstance& techniq
 void MeasureCase(SpeedView& view, const std::string& scene, const std::string& setup,
   int resolution, const SpeedOptions& options, std::vector<SpeedRow>& rows)
 {
-  const std::vector<std::string> names = WithReferences(options.Techniques);
+  const std::vector<std::string> names = WithReferenceTechniques(options.Techniques);
   std::vector<TechniqueInstance> techniques;
   std::vector<vtkRenderPass*> passes;
   for (const std::string& name : names)

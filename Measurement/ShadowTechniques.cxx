@@ -1,5 +1,7 @@
 #include "ShadowTechniques.h"
 
+#include "ShadowScenes.h"
+
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
@@ -125,6 +127,42 @@ bool IsTechnique(const std::string& name)
 {
   const auto names = TechniqueNames();
   return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+//------------------------------------------------------------------------------
+bool CheckTechniquesAndSetups(const std::vector<std::string>& techniques,
+  const std::vector<std::string>& setups, std::string& error)
+{
+  for (const std::string& name : techniques)
+  {
+    if (!IsTechnique(name))
+    {
+      error = "unknown technique '" + name + "'";
+      return false;
+    }
+  }
+  for (const std::string& setup : setups)
+  {
+    if (!shadowscenes::IsLightSetup(setup))
+    {
+      error = "unknown light set-up '" + setup + "'";
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::string> WithReferenceTechniques(std::vector<std::string> techniques)
+{
+  for (const char* reference : { "vtk", "none" })
+  {
+    if (std::find(techniques.begin(), techniques.end(), reference) == techniques.end())
+    {
+      techniques.insert(techniques.begin(), reference);
+    }
+  }
+  return techniques;
 }
 
 //------------------------------------------------------------------------------

@@ -46,6 +46,15 @@ std::vector<std::string> TechniqueNames();
 /// True for a name in TechniqueNames().
 bool IsTechnique(const std::string& name);
 
+/// False, with a one-line `error`, if a name is not a technique
+/// (TechniqueNames()) or not a light set-up (shadowscenes::LightSetupNames()).
+bool CheckTechniquesAndSetups(const std::vector<std::string>& techniques,
+  const std::vector<std::string>& setups, std::string& error);
+
+/// `techniques` with "none" and "vtk" first where missing: frame times are
+/// ratios to them.
+std::vector<std::string> WithReferenceTechniques(std::vector<std::string> techniques);
+
 /// The technique `name` at `resolution` for a light set-up (VTK's pass at
 /// equal memory needs to know whether the light is a point light).
 TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int resolution);

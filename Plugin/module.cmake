@@ -65,6 +65,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapCasterShader.h
     Plugin/OpenGL/ShadowMapLinearDepthResolve.h
     Plugin/OpenGL/ShadowMapProgramStamps.h
+    Plugin/OpenGL/ShadowMapQuad.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)

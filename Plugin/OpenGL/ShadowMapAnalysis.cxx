@@ -3,6 +3,7 @@
 #include "ShadowMapLight.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapTextureArray.h"
+#include "ShadowMapQuad.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -40,16 +41,8 @@ MapView::~MapView() = default;
 bool MapView::Render(
   vtkOpenGLRenderWindow* window, TextureArray& maps, int mapUnit, const ShadowLight& light)
 {
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, vtkShadowMapsViewFS, ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  vtkShaderProgram* program = this->Quad->Program;
-  if (!program || !program->GetCompiled())
+  vtkShaderProgram* program = ReadyQuadProgram(this->Quad, window, vtkShadowMapsViewFS);
+  if (!program)
   {
     return false;
   }

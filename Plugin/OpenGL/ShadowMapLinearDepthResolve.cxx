@@ -1,5 +1,6 @@
 #include "ShadowMapLinearDepthResolve.h"
 
+#include "ShadowMapQuad.h"
 #include "ShadowMapTextureArray.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -23,17 +24,9 @@ LinearDepthResolve::~LinearDepthResolve() = default;
 bool LinearDepthResolve::Render(
   vtkOpenGLRenderWindow* window, TextureArray& maps, int layer, std::string& error)
 {
-  if (!this->Quad)
-  {
-    this->Quad.reset(
-      new vtkOpenGLQuadHelper(window, nullptr, vtkShadowMapsLinearDepthResolveFS, ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  vtkShaderProgram* program = this->Quad->Program;
-  if (!program || !program->GetCompiled())
+  vtkShaderProgram* program =
+    ReadyQuadProgram(this->Quad, window, vtkShadowMapsLinearDepthResolveFS);
+  if (!program)
   {
     error = "the linear-depth resolve shader did not compile";
     return false;
