@@ -45,6 +45,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapWarping.cxx
     Plugin/OpenGL/ShadowMapAnalysis.cxx
     Plugin/OpenGL/ShadowMapCasterShader.cxx
+    Plugin/OpenGL/ShadowMapCasting.cxx
     Plugin/OpenGL/ShadowMapLinearDepthResolve.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
@@ -63,6 +64,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapWarping.h
     Plugin/OpenGL/ShadowMapAnalysis.h
     Plugin/OpenGL/ShadowMapCasterShader.h
+    Plugin/OpenGL/ShadowMapCasting.h
     Plugin/OpenGL/ShadowMapLinearDepthResolve.h
     Plugin/OpenGL/ShadowMapProgramStamps.h
     Plugin/OpenGL/ShadowMapQuad.h

@@ -139,6 +139,39 @@ void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shado
 }
 
 //------------------------------------------------------------------------------
+ProbeShaders MakeProbeShaders(const std::vector<ShadowLight>& lights)
+{
+  ProbeShaders probe;
+  probe.Vertex = R"(//VTK::System::Dec
+in vec4 vertexMC;
+out vec4 vertexVCVSOutput;
+out vec3 normalVCVSOutput;
+void main()
+{
+  vertexVCVSOutput = vertexMC;
+  normalVCVSOutput = vec3(0.0, 0.0, 1.0);
+  gl_Position = vertexMC;
+}
+)";;
+  std::string declarations = "uniform int cameraParallel;\n";
+  std::string lighting;
+  for (const ShadowLight& light : lights)
+  {
+    const std::string color = "lightColor" + std::to_string(light.ShaderIndex);
+    declarations += "uniform vec3 " + color + ";\n";
+    lighting += "  diffuse += (df * " + color + ");\n";
+  }
+  probe.Fragment = "//VTK::System::Dec\n//VTK::Output::Dec\nin vec4 vertexVCVSOutput;\n"
+                   "in vec3 normalVCVSOutput;\n" +
+    declarations +
+    "//VTK::Light::Dec\nvoid main()\n{\n  vec4 vertexVC = vertexVCVSOutput;\n"
+    "  vec3 diffuse = vec3(0.0);\n  float df = float(cameraParallel);\n"
+    "  //VTK::Light::Impl\n" +
+    lighting + "  gl_FragData[0] = vec4(diffuse, 1.0);\n}\n";
+  return probe;
+}
+
+//------------------------------------------------------------------------------
 void ReceiverCode::Rehash()
 {
   this->Hash =

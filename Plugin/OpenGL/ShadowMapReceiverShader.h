@@ -60,6 +60,17 @@ public:
   static std::string Key(const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code);
 };
 
+/// A vertex and a fragment shader shaped like a lit mapper's, with the lines
+/// the injections look for (markers, per-light colour sums) for `lights`: the
+/// pass builds them with its injections and compiles them before any mapper
+/// gets the code, since VTK 9.1's mapper crashes on a program that fails to build.
+struct ProbeShaders
+{
+  std::string Vertex;
+  std::string Fragment;
+};
+ProbeShaders MakeProbeShaders(const std::vector<ShadowLight>& lights);
+
 /// The uniforms of the receiver functions for one map update: one struct per
 /// view (vtkShadowViews) and per light (vtkShadowLights).
 class ReceiverUniforms

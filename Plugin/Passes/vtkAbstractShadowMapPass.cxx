@@ -2,12 +2,12 @@
 
 #include "ShadowMapAnalysis.h"
 #include "ShadowMapCasterShader.h"
+#include "ShadowMapCasting.h"
 #include "ShadowMapGlm.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapLinearDepthResolve.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapTextureArray.h"
-#include "ShadowMapTrapezoid.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -44,7 +44,6 @@
 #include <iterator>
 #include <limits>
 
-#include <glm/gtc/type_ptr.hpp>
 
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, CASTS_SHADOWS, Integer);
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, RECEIVES_SHADOWS, Integer);
@@ -107,59 +106,9 @@ bool SixteenBitDepthSuffices(const std::vector<ShadowLight>& lights, bool thirty
   });
 }
 
-bool IsRigid(const glm::dmat4& m)
-{
-  const glm::dmat3 rotation(m);
-  const glm::dmat3 error = glm::transpose(rotation) * rotation - glm::dmat3(1.0);
-  double largest = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    largest = std::max({ largest, std::abs(error[c].x), std::abs(error[c].y), std::abs(error[c].z) });
-  }
-  return largest < 1e-9 && m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0;
-}
-
 bool IsNonFinite(const LightView& view)
 {
   return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
-}
-
-// Points the VTK camera at a light view. A rigid view becomes the camera's frame
-// and the projection is explicit, so VTK's tiled aspect ratio cannot distort the
-// map. The camera stays parallel or perspective as the scene's camera is (see
-// CasterShader::RouteCameraParallel). A non-rigid view (PSM: the light camera times the viewer's post-
-// perspective transform) cannot be a camera frame; the camera then sits at the
-// origin looking down -z and the whole transform is its projection.
-void SetCameraToView(
-  vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view, bool sceneParallel)
-{
-  const bool rigid = IsRigid(view.View);
-  const glm::dmat4 frame = rigid ? glm::inverse(view.View) : glm::dmat4(1.0);
-  const glm::dvec3 eye(frame[3]);
-  const glm::dvec3 forward(-frame[2]);
-  const glm::dvec3 up(frame[1]);
-  camera->SetPosition(eye.x, eye.y, eye.z);
-  camera->SetFocalPoint(eye.x + forward.x, eye.y + forward.y, eye.z + forward.z);
-  camera->SetViewUp(up.x, up.y, up.z);
-  camera->SetParallelProjection(sceneParallel);
-  ToVtk(rigid ? view.Projection : view.ViewProjection(), projection);
-  camera->SetExplicitProjectionTransformMatrix(projection);
-  camera->UseExplicitProjectionTransformMatrixOn();
-  camera->Modified();
-}
-
-// 1 / W as a plane over window coordinates (gl_FragCoord.xy) of a map of
-// `resolution` texels, for casters of linear-depth views; (0, 0, 1) for the others.
-std::array<float, 3> WindowToInverseW(const LightView& view, int resolution)
-{
-  if (!view.LinearDepth)
-  {
-    return { { 0.0f, 0.0f, 1.0f } };
-  }
-  // u = x_window / resolution.
-  const glm::vec3 t(shadowmaps::TextureToInverseW(view));
-  const float scale = 1.0f / static_cast<float>(std::max(resolution, 1));
-  return { { t.x * scale, t.y * scale, t.z } };
 }
 
 // The bits of a matrix, so that the signature follows the camera's values
@@ -196,67 +145,6 @@ vtkMTimeType CasterMTime(vtkProp* prop)
   return time;
 }
 
-// The GL state casters render with, set for the lifetime of the object and
-// restored after: the maps' framebuffer bindings, depth test (or, for value
-// maps kept by minimum blending, GL_MIN blending instead), polygon offset, and
-// depth clamping: casters nearer the light than a view's near plane are clamped
-// onto it rather than clipped ("pancaking"), so they still occlude all that lies
-// behind them, and a fit may put its near plane where depth precision is needed.
-class CasterGLState
-{
-public:
-  CasterGLState(vtkOpenGLState* state, const shadowmaps::MapStorage& storage)
-    : State(state)
-    , Viewport(state)
-    , Scissor(state, GL_SCISSOR_TEST)
-    , Blend(state, GL_BLEND)
-    , DepthTest(state, GL_DEPTH_TEST)
-    , Offset(state, GL_POLYGON_OFFSET_FILL)
-    , DepthClampWasOn(glIsEnabled(GL_DEPTH_CLAMP))
-    , MinimumBlending(storage.Format == shadowmaps::TexelFormat::TwoFloats && storage.MinimumBlending)
-  {
-    state->PushFramebufferBindings();
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_LEQUAL);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
-    glEnable(GL_DEPTH_CLAMP);
-    if (this->MinimumBlending)
-    {
-      state->vtkglDisable(GL_DEPTH_TEST);
-      state->vtkglEnable(GL_BLEND);
-      state->vtkglBlendEquation(GL_MIN);
-    }
-  }
-  ~CasterGLState()
-  {
-    glPolygonOffset(0.0f, 0.0f);
-    if (!this->DepthClampWasOn)
-    {
-      glDisable(GL_DEPTH_CLAMP);
-    }
-    if (this->MinimumBlending)
-    {
-      this->State->vtkglBlendEquation(GL_FUNC_ADD);
-    }
-    this->State->PopFramebufferBindings();
-  }
-  CasterGLState(const CasterGLState&) = delete;
-  CasterGLState& operator=(const CasterGLState&) = delete;
-
-private:
-  vtkOpenGLState* State;
-  vtkOpenGLState::ScopedglViewport Viewport;
-  vtkOpenGLState::ScopedglEnableDisable Scissor;
-  vtkOpenGLState::ScopedglEnableDisable Blend;
-  vtkOpenGLState::ScopedglEnableDisable DepthTest;
-  vtkOpenGLState::ScopedglEnableDisable Offset;
-  GLboolean DepthClampWasOn;
-  bool MinimumBlending;
-};
-
 // A prop that renders into the maps, with its world bounds and the
 // modification time of everything its depth depends on.
 struct Caster
@@ -290,40 +178,6 @@ std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const L
     }
   }
   return casters;
-}
-
-// A fragment shader shaped like a lit mapper's, for checking that the code the
-// pass injects compiles before any mapper gets it: VTK 9.1's mapper crashes on a
-// program that fails to build.
-const char* const ProbeVertexShader = R"(//VTK::System::Dec
-in vec4 vertexMC;
-out vec4 vertexVCVSOutput;
-out vec3 normalVCVSOutput;
-void main()
-{
-  vertexVCVSOutput = vertexMC;
-  normalVCVSOutput = vec3(0.0, 0.0, 1.0);
-  gl_Position = vertexMC;
-}
-)";
-
-std::string ProbeFragmentShader(const std::vector<ShadowLight>& lights)
-{
-  std::string declarations = "uniform int cameraParallel;\n";
-  std::string lighting;
-  for (const ShadowLight& light : lights)
-  {
-    const std::string color = "lightColor" + std::to_string(light.ShaderIndex);
-    declarations += "uniform vec3 " + color + ";\n";
-    lighting += "  diffuse += (df * " + color + ");\n";
-  }
-  return "//VTK::System::Dec\n//VTK::Output::Dec\nin vec4 vertexVCVSOutput;\n"
-         "in vec3 normalVCVSOutput;\n" +
-    declarations +
-    "//VTK::Light::Dec\nvoid main()\n{\n  vec4 vertexVC = vertexVCVSOutput;\n"
-    "  vec3 diffuse = vec3(0.0);\n  float df = float(cameraParallel);\n"
-    "  //VTK::Light::Impl\n" +
-    lighting + "  gl_FragData[0] = vec4(diffuse, 1.0);\n}\n";
 }
 
 // What a layer's content depends on besides what ForgetLayersIfStale watches:
@@ -819,9 +673,10 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
 bool vtkAbstractShadowMapPass::ShaderCodeCompiles(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  std::string vertexShader = ProbeVertexShader;
+  shadowmaps::ProbeShaders probe = shadowmaps::MakeProbeShaders(r.Lights);
+  std::string& vertexShader = probe.Vertex;
   std::string geometryShader;
-  std::string fragmentShader = ProbeFragmentShader(r.Lights);
+  std::string& fragmentShader = probe.Fragment;
   this->PreReplaceShaderValues(vertexShader, geometryShader, fragmentShader, nullptr, nullptr);
   const int builds = this->NumberOfShaderBuilds;
   const int depthOnly = this->NumberOfDepthOnlyCasterShaders;
@@ -843,7 +698,7 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
   // is 2^-24 for depths in [0.5, 1).
   constexpr float DepthUnit = 1.0f / 16777216.0f;
   Internals& r = *this->Internal;
-  const std::array<float, 3> windowToInverseW = WindowToInverseW(view, r.Frame.Resolution);
+  const std::array<float, 3> windowToInverseW = shadowmaps::WindowToInverseW(view, r.Frame.Resolution);
   const shadowmaps::DepthOffset offset = this->GetRepresentation()->GetCasterDepthOffset();
   const auto slope = static_cast<float>(offset.SlopeScaled);
   const auto constant = static_cast<float>(offset.Constant);
@@ -911,7 +766,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   std::vector<int> rendered;
   bool ok = true;
   {
-    const CasterGLState casterState(state, r.Storage);
+    const shadowmaps::CasterGLState casterState(state,
+      r.Storage.Format == shadowmaps::TexelFormat::TwoFloats && r.Storage.MinimumBlending);
     vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
     r.SceneCameraParallel = userCamera->GetParallelProjection() != 0;
     renderer->SetActiveCamera(r.LightCamera);
@@ -1021,7 +877,7 @@ int vtkAbstractShadowMapPass::RenderCastersIntoView(vtkOpenGLRenderer* renderer,
   {
     return 0;
   }
-  SetCameraToView(r.LightCamera, r.LightProjection, view, r.SceneCameraParallel);
+  shadowmaps::SetCameraToView(r.LightCamera, r.LightProjection, view, r.SceneCameraParallel);
   this->JoinRenderPasses(casters.data(), static_cast<int>(casters.size()));
   vtkRenderState casterState(renderer);
   casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));

@@ -1,0 +1,104 @@
+#include "ShadowMapCasting.h"
+
+#include "ShadowMapFocusing.h"
+#include "ShadowMapLight.h"
+#include "ShadowMapGlm.h"
+#include "ShadowMapTrapezoid.h"
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowmaps
+{
+namespace
+{
+bool IsRigid(const glm::dmat4& m)
+{
+  const glm::dmat3 rotation(m);
+  const glm::dmat3 error = glm::transpose(rotation) * rotation - glm::dmat3(1.0);
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    largest = std::max({ largest, std::abs(error[c].x), std::abs(error[c].y), std::abs(error[c].z) });
+  }
+  return largest < 1e-9 && m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+void SetCameraToView(
+  vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view, bool sceneParallel)
+{
+  const bool rigid = IsRigid(view.View);
+  const glm::dmat4 frame = rigid ? glm::inverse(view.View) : glm::dmat4(1.0);
+  const glm::dvec3 eye(frame[3]);
+  const glm::dvec3 forward(-frame[2]);
+  const glm::dvec3 up(frame[1]);
+  camera->SetPosition(eye.x, eye.y, eye.z);
+  camera->SetFocalPoint(eye.x + forward.x, eye.y + forward.y, eye.z + forward.z);
+  camera->SetViewUp(up.x, up.y, up.z);
+  camera->SetParallelProjection(sceneParallel);
+  ToVtk(rigid ? view.Projection : view.ViewProjection(), projection);
+  camera->SetExplicitProjectionTransformMatrix(projection);
+  camera->UseExplicitProjectionTransformMatrixOn();
+  camera->Modified();
+}
+
+//------------------------------------------------------------------------------
+std::array<float, 3> WindowToInverseW(const LightView& view, int resolution)
+{
+  if (!view.LinearDepth)
+  {
+    return { { 0.0f, 0.0f, 1.0f } };
+  }
+  // u = x_window / resolution.
+  const glm::vec3 t(TextureToInverseW(view));
+  const float scale = 1.0f / static_cast<float>(std::max(resolution, 1));
+  return { { t.x * scale, t.y * scale, t.z } };
+}
+
+//------------------------------------------------------------------------------
+CasterGLState::CasterGLState(vtkOpenGLState* state, bool minimumBlending)
+  : State(state)
+  , Viewport(state)
+  , Scissor(state, GL_SCISSOR_TEST)
+  , Blend(state, GL_BLEND)
+  , DepthTest(state, GL_DEPTH_TEST)
+  , Offset(state, GL_POLYGON_OFFSET_FILL)
+  , DepthClampWasOn(glIsEnabled(GL_DEPTH_CLAMP))
+  , MinimumBlending(minimumBlending)
+{
+  state->PushFramebufferBindings();
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LEQUAL);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
+  glEnable(GL_DEPTH_CLAMP);
+  if (this->MinimumBlending)
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendEquation(GL_MIN);
+  }
+}
+
+//------------------------------------------------------------------------------
+CasterGLState::~CasterGLState()
+{
+  glPolygonOffset(0.0f, 0.0f);
+  if (!this->DepthClampWasOn)
+  {
+    glDisable(GL_DEPTH_CLAMP);
+  }
+  if (this->MinimumBlending)
+  {
+    this->State->vtkglBlendEquation(GL_FUNC_ADD);
+  }
+  this->State->PopFramebufferBindings();
+}
+} // namespace shadowmaps

@@ -1,0 +1,60 @@
+// How a light view's casters are drawn: the VTK camera that looks through the
+// view and the GL state they render with. Used by the pass for every layer it
+// re-renders.
+#ifndef ShadowMapCasting_h
+#define ShadowMapCasting_h
+
+#include "vtkOpenGLState.h"
+
+#include <array>
+
+class vtkCamera;
+class vtkMatrix4x4;
+
+namespace shadowmaps
+{
+struct LightView;
+
+/// Points `camera` at a light view. A rigid view becomes the camera's frame and
+/// the projection (stored in `projection`) is explicit, so VTK's tiled aspect
+/// ratio cannot distort the map. The camera stays parallel or perspective as
+/// the scene's camera is (CasterShader::RouteCameraParallel says why). A
+/// non-rigid view (PSM: the light camera times the viewer's post-perspective
+/// transform) cannot be a camera frame; the camera then sits at the origin
+/// looking down -z and the whole transform is its projection.
+void SetCameraToView(
+  vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view, bool sceneParallel);
+
+/// 1 / W as a plane over window coordinates (gl_FragCoord.xy) of a map of
+/// `resolution` texels, for casters of linear-depth views; (0, 0, 1) for the others.
+std::array<float, 3> WindowToInverseW(const LightView& view, int resolution);
+
+/// The GL state casters render with, set for the lifetime of the object and
+/// restored after: the maps' framebuffer bindings, depth test (or, for value
+/// maps kept by minimum blending (MapStorage::MinimumBlending), GL_MIN blending
+/// instead), polygon offset, and
+/// depth clamping: casters nearer the light than a view's near plane are
+/// clamped onto it rather than clipped ("pancaking"), so they still occlude all
+/// that lies behind them, and a fit may put its near plane where depth
+/// precision is needed.
+class CasterGLState
+{
+public:
+  CasterGLState(vtkOpenGLState* state, bool minimumBlending);
+  ~CasterGLState();
+  CasterGLState(const CasterGLState&) = delete;
+  CasterGLState& operator=(const CasterGLState&) = delete;
+
+private:
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglEnableDisable Scissor;
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglEnableDisable Offset;
+  unsigned char DepthClampWasOn;
+  bool MinimumBlending;
+};
+} // namespace shadowmaps
+
+#endif
