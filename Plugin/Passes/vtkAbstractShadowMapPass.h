@@ -23,10 +23,12 @@
  * Every frame: collect the shadowed lights and the casters; if anything the
  * maps depend on changed (camera, a light, a caster, a caster's input data, the
  * window size, a parameter of the pass or of its strategies), fit each light's
- * views, render the casters into one texture array (one layer per view) and
- * let the representation post-process it; then bind the maps and render the
- * scene through the delegate, with the shadow test injected into the
- * receivers' shaders (shadowmaps::ReceiverShader).
+ * views and re-render the layers of one texture array (one per view) whose view
+ * or casters changed, and let the representation post-process those; then bind
+ * the maps and render the scene through the delegate, with the shadow test
+ * injected into the receivers' shaders (shadowmaps::ReceiverShader). The fits
+ * that follow the camera change in steps (stable cascades, focused maps snapped
+ * to a grid), so a small camera move often re-renders no layer at all.
  *
  * Lights: every switched-on light that is not a headlight casts shadows:
  * directional lights (scene or camera lights), spot lights (cone angle below 90
@@ -37,9 +39,11 @@
  * light->GetInformation()->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
  * its ShadowAttenuation scales how dark its shadows are.
  *
- * Casters are rendered with a minimal caster fragment shader. Casters nearer
- * the light than a view's near plane are clamped onto it (depth clamping)
- * rather than clipped, so they still occlude what lies behind them.
+ * Casters are drawn with the same programs as the scene, through a casters'
+ * branch that writes depth only (shadowmaps::CasterShader): a moving camera
+ * rebuilds no mapper's shader. Casters nearer the light than a view's near
+ * plane are clamped onto it (depth clamping) rather than clipped, so they
+ * still occlude what lies behind them.
  *
  * Receivers: the shadow test is injected into the fragment shaders of
  * vtkOpenGLPolyDataMapper and its subclasses, per light, scaling that light's
