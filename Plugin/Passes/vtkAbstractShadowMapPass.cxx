@@ -359,6 +359,12 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
     this->JoinRenderPasses(s->GetPropArray(), s->GetPropArrayCount());
     this->BindShadowTextures(renderer);
   }
+  else
+  {
+    // Casters that joined before a failure would draw the scene through their
+    // casters' branch.
+    this->LeaveRenderPasses();
+  }
   delegate->Render(s);
   this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
   if (r.Active && this->AnalysisView == SHADOW_MAP)

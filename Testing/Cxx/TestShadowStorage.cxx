@@ -291,6 +291,45 @@ TEST(ShadowStorage, LookupThatDoesNotCompileDoesNotCrash)
   pass->ReleaseGraphicsResources(scene.Window);
 }
 
+namespace
+{
+/// Depth maps whose post-processing fails (a GL failure after the casters drew).
+class vtkTestFailingPostProcess : public vtkDepthShadowMapRepresentation
+{
+public:
+  static vtkTestFailingPostProcess* New();
+  vtkTypeMacro(vtkTestFailingPostProcess, vtkDepthShadowMapRepresentation);
+  bool PostProcessMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray&, const std::vector<int>&) override
+  {
+    return false;
+  }
+};
+vtkStandardNewMacro(vtkTestFailingPostProcess);
+} // namespace
+
+// A failure after the casters drew leaves the frame as it is without shadows:
+// the scene's draws do not go through the casters' branch of the programs the
+// casters just used.
+TEST(ShadowStorage, AFailureAfterCastingRendersTheFrameWithoutShadows)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  const auto plain = RenderAndCapture(scene.Window);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  vtkNew<vtkTestFailingPostProcess> failing;
+  pass->SetRepresentation(failing);
+  scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  const auto image = RenderAndCapture(scene.Window);
+  EXPECT_NE(errors.Text().find("could not be post-processed"), std::string::npos);
+  for (const glm::dvec3& point : { GroundShadowOfSphereCenter(SunDirection), glm::dvec3(-5, -4, 0) })
+  {
+    EXPECT_NEAR(LuminanceAt(scene.Renderer, image, point), LuminanceAt(scene.Renderer, plain, point), 1.0);
+  }
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
+}
+
 // SetRepresentation(nullptr) and SetViews(nullptr) restore the preset's own.
 TEST(ShadowStorage, NullRestoresThePresetStrategies)
 {
