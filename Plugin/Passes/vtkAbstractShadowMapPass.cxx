@@ -43,6 +43,7 @@
 #include <cstring>
 #include <iterator>
 #include <limits>
+#include <unordered_set>
 
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, CASTS_SHADOWS, Integer);
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, RECEIVES_SHADOWS, Integer);
@@ -237,6 +238,8 @@ struct vtkAbstractShadowMapPass::Internals
   shadowmaps::CasterCode CasterCode;
   shadowmaps::CasterUniforms CasterUniforms;
   shadowmaps::ProgramStamps CasterPrograms;
+  // Programs the casters drew with since the scene last did.
+  std::unordered_set<vtkShaderProgram*> CastSinceSceneDraw;
   // The shaders depend on these; GetShaderStageMTime() follows them.
   std::string ShaderKey;
   std::vector<vtkProp*> NonReceivers;
@@ -1016,6 +1019,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   {
     if (r.CasterPrograms.FirstUse(program))
     {
+      r.CastSinceSceneDraw.insert(program);
       r.CasterUniforms.ApplyCasting(program);
       if (shadowmaps::ReceiverUniforms::IsReceiver(program))
       {
@@ -1029,7 +1033,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   else if (r.Active && r.Uniforms.FirstUseThisFrame(program))
   {
     shadowmaps::CasterUniforms::ApplyReceiving(program);
-    if (this->NumberOfRenderedLayers > 0)
+    if (r.CastSinceSceneDraw.erase(program) > 0)
     {
       // The renderer sets a program's lighting uniforms again only when the
       // lights or the camera changed after it last did; the light cameras
@@ -1082,6 +1086,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
     r.DefaultRepresentation->ReleaseGraphicsResources(window);
   }
   r.CasterPrograms.Clear();
+  r.CastSinceSceneDraw.clear();
   r.OpaquePass->ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   if (this->DelegatePass)
