@@ -5,19 +5,12 @@ selection varied) against no shadows and the uniform map: a ground and 50 boxes,
   PYTHONPATH=build/lib/python3/dist-packages \
     xvfb-run -a /usr/bin/python3 Measurement/cascade_cost.py
 """
-import statistics, time
-import vtkmodules.vtkRenderingOpenGL2  # noqa
-from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkCubeSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+import statistics
 import vtkshadowmaps
-r = vtkRenderer(); w = vtkRenderWindow(); w.SetOffScreenRendering(1); w.SetSize(960, 540); w.AddRenderer(r)
-def add(src):
-    m = vtkPolyDataMapper(); m.SetInputConnection(src.GetOutputPort()); a = vtkActor(); a.SetMapper(m); r.AddActor(a)
-p = vtkPlaneSource(); p.SetOrigin(-60,-60,0); p.SetPoint1(60,-60,0); p.SetPoint2(-60,60,0); add(p)
-for i in range(50):
-    c = vtkCubeSource(); c.SetCenter(-18 + (i % 10) * 4, -18 + (i // 10) * 4, 1); c.SetZLength(2); add(c)
-r.AutomaticLightCreationOff()
-sun = vtkLight(); sun.SetPositional(False); sun.SetPosition(0.3, 0.4, 1); sun.SetFocalPoint(0, 0, 0); r.AddLight(sun)
+from timing_scene import add_ground_and_boxes, add_sun, timed_render, window
+r, w = window(960, 540)
+add_ground_and_boxes(r, 60, 50)
+add_sun(r)
 cam = r.GetActiveCamera(); cam.SetPosition(0, -50, 8); cam.SetFocalPoint(0, 0, 0); cam.SetViewUp(0, 0, 1)
 def csm(n=4, blend=None, fade=None, sel=None):
     q = vtkshadowmaps.vtkCascadedShadowMapPass(); q.SetResolution(1024); q.SetNumberOfCascades(n)
@@ -37,6 +30,6 @@ for rnd in range(3):
     for k, q in passes.items():
         r.SetPass(q); r.ResetCameraClippingRange(); w.Render(); w.Render()
         for f in range(6):
-            t = time.perf_counter(); w.Render(); w.WaitForCompletion(); st[k].append(time.perf_counter() - t)
+            st[k].append(timed_render(w))
 for k in passes:
     print(f"{k:22s} steady {1000*statistics.median(st[k]):6.1f} ms  x none {statistics.median(st[k])/statistics.median(st['none']):.2f}")

@@ -7,21 +7,15 @@ it also prints the shader sources built and the map layers rendered per moving f
   PYTHONPATH=build/lib/python3/dist-packages \
     xvfb-run -a /usr/bin/python3 Measurement/frame_times.py
 """
-import statistics, sys, time
-import vtkmodules.vtkRenderingOpenGL2  # noqa
-from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkCubeSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+import statistics, time
+from vtkmodules.vtkRenderingCore import vtkLight
 from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkRenderPassCollection, vtkSequencePass,
     vtkShadowMapPass)
 import vtkshadowmaps
-r = vtkRenderer(); w = vtkRenderWindow(); w.SetOffScreenRendering(1); w.SetSize(480, 270); w.AddRenderer(r)
-def add(src):
-    m = vtkPolyDataMapper(); m.SetInputConnection(src.GetOutputPort()); a = vtkActor(); a.SetMapper(m); r.AddActor(a)
-p = vtkPlaneSource(); p.SetOrigin(-20,-20,0); p.SetPoint1(20,-20,0); p.SetPoint2(-20,20,0); add(p)
-for i in range(50):
-    c = vtkCubeSource(); c.SetCenter(-18 + (i % 10) * 4, -18 + (i // 10) * 4, 1); c.SetZLength(2); add(c)
-r.AutomaticLightCreationOff()
-sun = vtkLight(); sun.SetPositional(False); sun.SetPosition(0.3, 0.4, 1); sun.SetFocalPoint(0, 0, 0); r.AddLight(sun)
+from timing_scene import add_ground_and_boxes, add_sun, window
+r, w = window(480, 270)
+add_ground_and_boxes(r, 20, 50)
+add_sun(r)
 for x, y in [(-10, -10), (10, -10), (-10, 10), (10, 10)]:
     l = vtkLight(); l.SetPositional(True); l.SetConeAngle(90); l.SetPosition(x, y, 6); l.SetFocalPoint(x, y, 0)
     l.SetIntensity(0.3); r.AddLight(l)

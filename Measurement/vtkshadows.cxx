@@ -560,18 +560,16 @@ const std::map<std::string, OptionParser>& BenchOptionParsers(bool withScenes)
   return withScenes ? bench : common;
 }
 
+/** Bench's options without the flicker path, and the street among the scenes. */
 const std::map<std::string, OptionParser>& SpeedOptionParsers()
 {
-  static const std::map<std::string, OptionParser> parsers = {
-    { "--scenes", ParseSpeedScenes },
-    { "--setups", ParseSetups },
-    { "--techniques", ParseTechniques },
-    { "--technique", ParseTechniques },
-    { "--resolution", ParseBenchResolution },
-    { "--size", ParseBenchSize },
-    { "--timed-frames", ParseTimedFrames },
-    { "--out", ParseOutputDirectory },
-  };
+  static const std::map<std::string, OptionParser> parsers = [] {
+    auto speed = BenchOptionParsers(false);
+    speed.erase("--flicker-frames");
+    speed.erase("--flicker-setups");
+    speed["--scenes"] = ParseSpeedScenes;
+    return speed;
+  }();
   return parsers;
 }
 

@@ -680,23 +680,13 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::ShaderCodeCompiles(vtkOpenGLRenderer* renderer)
 {
-  Internals& r = *this->Internal;
-  shadowmaps::ProbeShaders probe = shadowmaps::MakeProbeShaders(r.Lights);
-  std::string& vertexShader = probe.Vertex;
+  shadowmaps::ProbeShaders probe = shadowmaps::MakeProbeShaders(this->Internal->Lights);
   std::string geometryShader;
-  std::string& fragmentShader = probe.Fragment;
-  this->PreReplaceShaderValues(vertexShader, geometryShader, fragmentShader, nullptr, nullptr);
-  const int builds = this->NumberOfShaderBuilds;
-  const int depthOnly = this->NumberOfDepthOnlyCasterShaders;
-  const bool casting = r.Casting;
-  r.Casting = true; // as for a caster's build: receivers' code included
-  this->PostReplaceShaderValues(vertexShader, geometryShader, fragmentShader, nullptr, nullptr);
-  r.Casting = casting;
-  this->NumberOfShaderBuilds = builds;
-  this->NumberOfDepthOnlyCasterShaders = depthOnly;
+  this->PreReplaceShaderValues(probe.Vertex, geometryShader, probe.Fragment, nullptr, nullptr);
+  this->InjectShadowCode(probe.Vertex, geometryShader, probe.Fragment, true);
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   return window->GetShaderCache()->ReadyShaderProgram(
-           vertexShader.c_str(), fragmentShader.c_str(), "") != nullptr;
+           probe.Vertex.c_str(), probe.Fragment.c_str(), "") != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -828,10 +818,11 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::ForgetLayersIfStale()
 {
   Internals& r = *this->Internal;
-  // What every layer depends on besides its view and casters: the parameters
-  // (the bias among them), the storage, and the shaders' caster code.
+  // What every layer depends on besides its view and casters: the parameters of
+  // the pass and its strategies (the bias, the caster faces and store code among
+  // them) and the storage.
   const std::vector<vtkMTimeType> key = { this->GetMTime(), r.Maps.GetAllocations(),
-    static_cast<vtkMTimeType>(r.Frame.Resolution), r.ShaderKeyTime.GetMTime() };
+    static_cast<vtkMTimeType>(r.Frame.Resolution) };
   if (key != r.LayersKey)
   {
     r.LayersKey = key;
@@ -997,17 +988,28 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
   ++this->NumberOfShaderBuilds;
   // Shaders first built by a caster draw are the ones the scene then uses.
   const bool receives =
-    (r.Active || r.Casting) && IsEnabled(prop ? prop->GetPropertyKeys() : nullptr, RECEIVES_SHADOWS());
-  const shadowmaps::CasterBranch branch = shadowmaps::CasterShader::Inject(fragmentShader, r.CasterCode);
+    (r.Active || r.Casting) && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
+  const shadowmaps::CasterBranch branch =
+    this->InjectShadowCode(vertexShader, geometryShader, fragmentShader, receives);
   ++(branch == shadowmaps::CasterBranch::DepthOnly ? this->NumberOfDepthOnlyCasterShaders
                                                    : this->NumberOfOwnFragmentCasterShaders);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+shadowmaps::CasterBranch vtkAbstractShadowMapPass::InjectShadowCode(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, bool receives)
+{
+  const Internals& r = *this->Internal;
+  const shadowmaps::CasterBranch branch =
+    shadowmaps::CasterShader::Inject(fragmentShader, r.CasterCode);
   for (std::string* stage : { &vertexShader, &geometryShader, &fragmentShader })
   {
     shadowmaps::CasterShader::RouteCameraParallel(*stage);
   }
   shadowmaps::ReceiverShader::Inject(
     fragmentShader, r.Lights, this->NumberOfShadowMapLayers, r.Code, receives);
-  return true;
+  return branch;
 }
 
 //------------------------------------------------------------------------------

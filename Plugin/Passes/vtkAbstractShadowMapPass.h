@@ -72,6 +72,7 @@ class vtkShadowMapRepresentation;
 class vtkShadowMapViews;
 namespace shadowmaps
 {
+enum class CasterBranch;
 struct LightView;
 struct ShadowLight;
 }
@@ -298,6 +299,8 @@ private:
   void ChooseStorage();
   void UpdateShaderKey(vtkOpenGLRenderer* renderer);
   bool ShaderCodeCompiles(vtkOpenGLRenderer* renderer);
+  shadowmaps::CasterBranch InjectShadowCode(std::string& vertexShader,
+    std::string& geometryShader, std::string& fragmentShader, bool receives);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void ForgetLayersIfStale();
   bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, const std::vector<int>& layers);
