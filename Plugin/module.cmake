@@ -1,12 +1,15 @@
 # Declares ShadowMaps::RenderingShadowMaps (included from the root CMakeLists.txt
 # when vtk_module_build() visits the module directory). The folders of Plugin/
-# are its layers: Math (pure functions of the fits), Views and Representations
-# (the two strategies of a pass), OpenGL (GL objects and the shader code injected into mappers)
-# and Passes (the vtkRenderPass subclasses that coordinate them).
+# are its layers: Math (pure functions of the fits), Scene (what the passes read
+# of the casters' data), Views and Representations (the two strategies of a
+# pass), OpenGL (GL objects and the shader code injected into mappers) and
+# Passes (the vtkRenderPass subclasses that coordinate them).
 set(shadowmaps_shaders
   vtkShadowMapsAnalysisFS
   vtkShadowMapsCasterFS
   vtkShadowMapsDepthLookupFS
+  vtkShadowMapsDualDepthLookupFS
+  vtkShadowMapsFilterFS
   vtkShadowMapsLinearDepthFS
   vtkShadowMapsLinearDepthResolveFS
   vtkShadowMapsReceiverFS
@@ -23,15 +26,17 @@ foreach (shader IN LISTS shadowmaps_shaders)
   list(APPEND shadowmaps_shader_headers "${header}")
 endforeach ()
 
-set(shadowmaps_folders Math OpenGL Passes Representations Views)
+set(shadowmaps_folders Math OpenGL Passes Representations Scene Views)
 
 vtk_module_add_module(ShadowMaps::RenderingShadowMaps
   CLASSES
     Plugin/Passes/vtkAbstractShadowMapPass
     Plugin/Passes/vtkCascadedShadowMapPass
     Plugin/Passes/vtkDepthShadowMapPass
+    Plugin/Passes/vtkDualDepthShadowMapPass
     Plugin/Passes/vtkWarpedShadowMapPass
     Plugin/Representations/vtkDepthShadowMapRepresentation
+    Plugin/Representations/vtkDualDepthShadowMapRepresentation
     Plugin/Representations/vtkShadowMapRepresentation
     Plugin/Views/vtkCascadedShadowMapViews
     Plugin/Views/vtkShadowMapViews
@@ -49,6 +54,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapLinearDepthResolve.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
+    Plugin/Scene/ShadowMapClosedSurfaces.cxx
     ${shadowmaps_shader_sources}
   NOWRAP_HEADERS
     # What a downstream views or representation class needs: plain C++ and
@@ -69,6 +75,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapProgramStamps.h
     Plugin/OpenGL/ShadowMapQuad.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
+    Plugin/Scene/ShadowMapClosedSurfaces.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)
   vtk_module_include(ShadowMaps::RenderingShadowMaps

@@ -18,3 +18,18 @@ bool vtkShadowCastsThisFace()
   return true;
 #endif
 }
+
+#ifdef VTK_SHADOW_PEEL
+// Depth peeling (two-surface maps): the second pass keeps the nearest surface
+// behind the first pass's, whose depths it reads per texel. The same fragment
+// of the same draw gets the same depth in both passes, so the nearest surface
+// itself is peeled away exactly.
+uniform int vtkShadowPeelSecondPass;
+uniform sampler2D vtkShadowPeelDepths;
+
+bool vtkShadowPeeledAway(float depth)
+{
+  return vtkShadowPeelSecondPass != 0 &&
+    depth <= texelFetch(vtkShadowPeelDepths, ivec2(gl_FragCoord.xy), 0).x;
+}
+#endif

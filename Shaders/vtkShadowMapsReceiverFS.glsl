@@ -151,23 +151,30 @@ int vtkShadowSelectView(
   return firstView + vtkShadowCubeFace(fromLight);
 }
 
-// Clip coordinates of the receiver in map `view`, moved along its normal by the
-// world-space size of a texel there (normal offset, Kozlov, GPU Gems 14).
-// World (= VC) length of one texel along the map's coarser axis at positionVC:
-// 1 / (resolution * |grad t|), with grad t = (row_t - t row_w) / w the gradient of
-// the projective map coordinate t in {u, v}.
-float vtkShadowGradientTexel(vec3 positionVC, int view)
+// Gradients at positionVC of the projective map coordinates t in {u, v}:
+// grad t = (row_t - t row_w) / w.
+void vtkShadowMapGradients(vec3 positionVC, int view, out vec3 gradU, out vec3 gradV)
 {
   mat4 m = vtkShadowViews[view].ViewToMap;
   vec4 q = m * vec4(positionVC, 1.0);
   vec3 rowW = vec3(m[0][3], m[1][3], m[2][3]);
-  vec3 gradU = (vec3(m[0][0], m[1][0], m[2][0]) - (q.x / q.w) * rowW) / q.w;
-  vec3 gradV = (vec3(m[0][1], m[1][1], m[2][1]) - (q.y / q.w) * rowW) / q.w;
+  gradU = (vec3(m[0][0], m[1][0], m[2][0]) - (q.x / q.w) * rowW) / q.w;
+  gradV = (vec3(m[0][1], m[1][1], m[2][1]) - (q.y / q.w) * rowW) / q.w;
+}
+
+// World (= VC) length of one texel along the map's coarser axis at positionVC:
+// 1 / (resolution * |grad t|).
+float vtkShadowGradientTexel(vec3 positionVC, int view)
+{
+  vec3 gradU;
+  vec3 gradV;
+  vtkShadowMapGradients(positionVC, view, gradU, gradV);
   float slowest = min(length(gradU), length(gradV));
   return 1.0 / (vtkShadowMapResolution * max(slowest, 1e-20));
 }
 
-vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features)
+// World size of one texel of map `view` at the receiver.
+float vtkShadowTexelWorldSize(vec3 positionVC, int light, int view, int features)
 {
   vec2 texelSize = vtkShadowViews[view].TexelSize;
   float texel = texelSize.x;
@@ -179,7 +186,20 @@ vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int f
   {
     texel = vtkShadowGradientTexel(positionVC, view);
   }
-  vec3 biased = positionVC + normalVC * (vtkShadowNormalOffset * texel);
+  return texel;
+}
+
+// The receiver moved along its normal by the world-space size of a texel there
+// (normal offset, Kozlov, GPU Gems 14), and its clip coordinates in map `view`.
+vec3 vtkShadowOffsetAlongNormal(vec3 positionVC, vec3 normalVC, int light, int view, int features)
+{
+  float texel = vtkShadowTexelWorldSize(positionVC, light, view, features);
+  return positionVC + normalVC * (vtkShadowNormalOffset * texel);
+}
+
+vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features)
+{
+  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, view, features);
   return vtkShadowViews[view].ViewToMap * vec4(biased, 1.0);
 }
 
@@ -202,6 +222,62 @@ bool vtkShadowInsideMap(vec4 clip, int view, int features)
     all(lessThanEqual(mapCoord, vec3(1.0)));
 }
 
+#ifdef VTK_SHADOW_RECEIVER_PLANE
+// For lookups that compare with a surface of their own behind the casters'
+// (dual-depth maps), set before each vtkShadowLookup:
+// - vtkShadowDepthPerTexel: how much the map's depth grows over one texel's
+//   world size along the light ray at the receiver. The ray is where both map
+//   coordinates stay put, so it comes from the map's matrix alone, for every
+//   kind of view (warped, linear-depth and perspective ones included).
+// - vtkShadowReceiverSlope: the map depth of the receiver's tangent plane per
+//   unit of map coordinates, so that a texel is compared with the receiver's
+//   plane where the texel's own depth was taken (its centre), not where the
+//   receiver is: a sloped surface then matches its own texels however thin it
+//   is. Limited to VTK_SHADOW_MAX_PLANE_TEXELS ray texels of depth per texel,
+//   as a surface seen edge-on from the light has no slope to speak of.
+float vtkShadowDepthPerTexel = 0.0;
+vec2 vtkShadowReceiverSlope = vec2(0.0);
+const float VTK_SHADOW_MAX_PLANE_TEXELS = 4.0;
+
+vec3 vtkShadowMapPoint(vec3 positionVC, int view, int features)
+{
+  return vtkShadowMapCoord(vtkShadowViews[view].ViewToMap * vec4(positionVC, 1.0), view, features);
+}
+
+void vtkShadowMeasureReceiver(
+  vec3 positionVC, vec3 normalVC, vec3 mapCoord, int light, int view, int features)
+{
+  vtkShadowDepthPerTexel = 0.0;
+  vtkShadowReceiverSlope = vec2(0.0);
+  vec3 gradU;
+  vec3 gradV;
+  vtkShadowMapGradients(positionVC, view, gradU, gradV);
+  vec3 ray = cross(gradU, gradV);
+  float rayLength = length(ray);
+  if (!(rayLength > 0.0))
+  {
+    return;
+  }
+  float texel = vtkShadowTexelWorldSize(positionVC, light, view, features);
+  vtkShadowDepthPerTexel =
+    abs(vtkShadowMapPoint(positionVC + ray * (texel / rayLength), view, features).z - mapCoord.z);
+  // Two tangents of the receiver, a texel long, in map coordinates.
+  vec3 side = abs(normalVC.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  vec3 t1 = normalize(cross(normalVC, side)) * texel;
+  vec3 t2 = normalize(cross(normalVC, t1)) * texel;
+  vec3 m1 = vtkShadowMapPoint(positionVC + t1, view, features) - mapCoord;
+  vec3 m2 = vtkShadowMapPoint(positionVC + t2, view, features) - mapCoord;
+  float det = m1.x * m2.y - m1.y * m2.x;
+  if (abs(det) > 1e-30)
+  {
+    vec2 slope = vec2(m1.z * m2.y - m2.z * m1.y, m1.x * m2.z - m2.x * m1.z) / det;
+    float mostPerTexel = VTK_SHADOW_MAX_PLANE_TEXELS * vtkShadowDepthPerTexel;
+    float perTexel = max(abs(slope.x), abs(slope.y)) / vtkShadowMapResolution;
+    vtkShadowReceiverSlope = perTexel > mostPerTexel ? slope * (mostPerTexel / perTexel) : slope;
+  }
+}
+#endif
+
 float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view, int features)
 {
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
@@ -209,7 +285,12 @@ float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int vie
   {
     return 1.0;
   }
-  return vtkShadowLookup(vtkShadowMapCoord(clip, view, features), view);
+  vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
+#ifdef VTK_SHADOW_RECEIVER_PLANE
+  vtkShadowMeasureReceiver(vtkShadowOffsetAlongNormal(positionVC, normalVC, light, view, features),
+    normalVC, mapCoord, light, view, features);
+#endif
+  return vtkShadowLookup(mapCoord, view);
 }
 
 // Weight of the next cascade in the blend band of cascade `view`: by depth over

@@ -1,10 +1,12 @@
 //VTK::System::Dec
 // The SHADOW_MAP analysis view: the analysed light's maps tiled over the
-// viewport, depth (or the first stored value) as grey.
+// viewport, depth (or the first stored value) as grey; maps of two surfaces
+// (dual depth) show the nearest on the left of their tile, the next on the right.
 in vec2 texCoord;
 uniform sampler2DArray vtkShadowMaps;
 uniform int vtkShadowFirstView;
 uniform int vtkShadowViewCount;
+uniform int vtkShadowSurfaces;
 //VTK::Output::Dec
 
 void main()
@@ -19,6 +21,14 @@ void main()
     gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
-  float value = texture(vtkShadowMaps, vec3(fract(cell), float(vtkShadowFirstView + view))).x;
+  vec2 inTile = fract(cell);
+  int surface = 0;
+  if (vtkShadowSurfaces == 2)
+  {
+    surface = inTile.x < 0.5 ? 0 : 1;
+    inTile.x = fract(2.0 * inTile.x);
+  }
+  vec4 stored = texture(vtkShadowMaps, vec3(inTile, float(vtkShadowFirstView + view)));
+  float value = surface == 0 ? stored.x : stored.y;
   gl_FragData[0] = vec4(vec3(value), 1.0);
 }

@@ -38,8 +38,8 @@ MapView::MapView() = default;
 MapView::~MapView() = default;
 
 //------------------------------------------------------------------------------
-bool MapView::Render(
-  vtkOpenGLRenderWindow* window, TextureArray& maps, int mapUnit, const ShadowLight& light)
+bool MapView::Render(vtkOpenGLRenderWindow* window, TextureArray& maps, int mapUnit,
+  const ShadowLight& light, bool twoSurfaces)
 {
   vtkShaderProgram* program = ReadyQuadProgram(this->Quad, window, vtkShadowMapsViewFS);
   if (!program)
@@ -49,6 +49,7 @@ bool MapView::Render(
   program->SetUniformi("vtkShadowMaps", mapUnit);
   program->SetUniformi("vtkShadowFirstView", light.FirstLayer);
   program->SetUniformi("vtkShadowViewCount", static_cast<int>(light.Views.size()));
+  program->SetUniformi("vtkShadowSurfaces", twoSurfaces ? 2 : 1);
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);

@@ -25,7 +25,7 @@ class TextureArray;
 void AddAnalysisReceiverCode(
   int view, int light, const std::vector<ShadowLight>& lights, ReceiverCode& code);
 
-/// The SHADOW_MAP view: one light's maps tiled over the viewport, depth as grey.
+/// The SHADOW_MAP view: one light's maps tiled over the viewport, depths as grey.
 class MapView
 {
 public:
@@ -34,9 +34,11 @@ public:
   MapView(const MapView&) = delete;
   MapView& operator=(const MapView&) = delete;
 
-  /// Draws the maps of `light`, bound to texture unit `mapUnit`. False when the
-  /// view's shader does not compile.
-  bool Render(vtkOpenGLRenderWindow* window, TextureArray& maps, int mapUnit, const ShadowLight& light);
+  /// Draws the maps of `light`, bound to texture unit `mapUnit`; `twoSurfaces`:
+  /// maps of two surfaces' depths (SecondDepthMethod), both side by side.
+  /// False when the view's shader does not compile.
+  bool Render(vtkOpenGLRenderWindow* window, TextureArray& maps, int mapUnit,
+    const ShadowLight& light, bool twoSurfaces);
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

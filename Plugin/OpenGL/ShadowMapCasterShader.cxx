@@ -48,12 +48,36 @@ std::string Declarations(const CasterCode& code)
   std::string dec = code.Faces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
     : code.Faces == 1               ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
                                     : "";
+  if (code.SecondDepth == SecondDepthMethod::Peeling)
+  {
+    dec += "#define VTK_SHADOW_PEEL\n";
+  }
   dec += vtkShadowMapsCasterFS;
   if (code.LinearDepth)
   {
     dec += vtkShadowMapsLinearDepthFS;
   }
   return dec + "\n";
+}
+
+// What the branch writes once it has vtkShadowCasterDepth.
+std::string StoreCode(const CasterCode& code)
+{
+  switch (code.SecondDepth)
+  {
+    case SecondDepthMethod::FrontAndBackFaces:
+      return "    gl_FragData[0] = gl_FrontFacing ? vec4(vtkShadowCasterDepth, 1.0, 0.0, 1.0)\n"
+             "                                    : vec4(1.0, vtkShadowCasterDepth, 0.0, 1.0);";
+    case SecondDepthMethod::Peeling:
+      return "    if (vtkShadowPeeledAway(vtkShadowCasterDepth))\n    {\n      discard;\n    }\n"
+             "    gl_FragData[0] = vec4(vtkShadowCasterDepth);\n"
+             "    gl_FragData[1] = vec4(vtkShadowCasterDepth);";
+    default:
+      break;
+  }
+  return !code.StoreCode.empty() ? code.StoreCode
+    : code.LinearDepth           ? "    gl_FragData[1] = vec4(vtkShadowCasterDepth);"
+                                 : "    gl_FragData[0] = vec4(1.0);";
 }
 
 // The branch: depth (the rasterizer's, or the one the shader wrote) made linear
@@ -77,10 +101,7 @@ std::string Branch(
   {
     branch << "    gl_FragDepth = vtkShadowCasterDepth;\n";
   }
-  branch << (!code.StoreCode.empty() ? code.StoreCode
-                : code.LinearDepth       ? "    gl_FragData[1] = vec4(vtkShadowCasterDepth);"
-                                         : "    gl_FragData[0] = vec4(1.0);")
-         << "\n    return;\n  }\n";
+  branch << StoreCode(code) << "\n    return;\n  }\n";
   return branch.str();
 }
 
@@ -116,7 +137,8 @@ void PutAtMarker(std::string& fragmentShader, const char* marker, const std::str
 std::string CasterCode::Key() const
 {
   std::ostringstream key;
-  key << this->Faces << ':' << this->LinearDepth << ':' << std::hash<std::string>{}(this->StoreCode);
+  key << this->Faces << ':' << this->LinearDepth << ':' << static_cast<int>(this->SecondDepth)
+      << ':' << std::hash<std::string>{}(this->StoreCode);
   return key.str();
 }
 
@@ -182,9 +204,30 @@ void CasterUniforms::SetView(const std::array<float, 3>& windowToInverseW,
 }
 
 //------------------------------------------------------------------------------
+void CasterUniforms::SetPeeling(bool secondPass, int peelUnit)
+{
+  this->SecondPass = secondPass;
+  this->PeelUnit = peelUnit;
+}
+
+//------------------------------------------------------------------------------
+void CasterUniforms::ApplyPeelUnit(vtkShaderProgram* program) const
+{
+  if (program->IsUniformUsed("vtkShadowPeelDepths"))
+  {
+    program->SetUniformi("vtkShadowPeelDepths", this->PeelUnit);
+  }
+}
+
+//------------------------------------------------------------------------------
 void CasterUniforms::ApplyCasting(vtkShaderProgram* program) const
 {
   program->SetUniformi("vtkShadowCasting", 1);
+  this->ApplyPeelUnit(program);
+  if (program->IsUniformUsed("vtkShadowPeelSecondPass"))
+  {
+    program->SetUniformi("vtkShadowPeelSecondPass", this->SecondPass ? 1 : 0);
+  }
   if (program->IsUniformUsed("vtkShadowCasterParallel"))
   {
     program->SetUniformi("vtkShadowCasterParallel", this->Parallel ? 1 : 0);
@@ -197,11 +240,12 @@ void CasterUniforms::ApplyCasting(vtkShaderProgram* program) const
 }
 
 //------------------------------------------------------------------------------
-void CasterUniforms::ApplyReceiving(vtkShaderProgram* program)
+void CasterUniforms::ApplyReceiving(vtkShaderProgram* program) const
 {
   if (program->IsUniformUsed("vtkShadowCasting"))
   {
     program->SetUniformi("vtkShadowCasting", 0);
   }
+  this->ApplyPeelUnit(program);
 }
 } // namespace shadowmaps

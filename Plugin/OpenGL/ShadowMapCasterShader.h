@@ -15,6 +15,8 @@
 #ifndef ShadowMapCasterShader_h
 #define ShadowMapCasterShader_h
 
+#include "ShadowMapTextureArray.h" // For SecondDepthMethod
+
 #include <array>
 #include <string>
 
@@ -32,6 +34,13 @@ struct CasterCode
   /// writes gl_FragData[0]); empty: depth only.
   std::string StoreCode;
   bool LinearDepth = false;
+  /// Not None (nor Auto): the branch stores the two nearest surfaces' depths
+  /// this way instead of StoreCode, and draws both faces. FrontAndBackFaces
+  /// writes x for front faces, y for back faces, for minimum blending.
+  /// Peeling writes its depth to both values and to the second output; with
+  /// CasterUniforms::SetPeeling it discards what is not behind that output's
+  /// first pass (the nearest surface), for the second pass to keep y.
+  SecondDepthMethod SecondDepth = SecondDepthMethod::None;
 
   std::string Key() const;
 };
@@ -71,13 +80,22 @@ public:
   void SetView(const std::array<float, 3>& windowToInverseW,
     const std::array<float, 3>& linearDepthBias, bool parallel);
 
+  /// Peeling (CasterCode::SecondDepth): whether this is the second pass, and
+  /// the texture unit of the first pass's depths (kept by every program, in
+  /// both paths: samplers of two types must not share a unit).
+  void SetPeeling(bool secondPass, int peelUnit);
+
   /// Selects the branch and sets the view's uniforms.
   void ApplyCasting(vtkShaderProgram* program) const;
 
   /// Selects the scene's path.
-  static void ApplyReceiving(vtkShaderProgram* program);
+  void ApplyReceiving(vtkShaderProgram* program) const;
 
 private:
+  void ApplyPeelUnit(vtkShaderProgram* program) const;
+
+  bool SecondPass = false;
+  int PeelUnit = 0;
   std::array<float, 3> WindowToInverseW{ { 0.0f, 0.0f, 1.0f } };
   std::array<float, 3> LinearDepthBias{ { 0.0f, 0.0f, 0.0f } };
   bool Parallel = false;

@@ -38,7 +38,7 @@ bool LinearDepthResolve::Render(
   }
   const int unit = window->GetTextureUnitManager()->Allocate();
   glActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D, maps.GetLinearDepths());
+  glBindTexture(GL_TEXTURE_2D, maps.GetSecondOutput());
   program->SetUniformi("vtkShadowLinearDepths", unit);
   // The copy writes every texel: no offset, no test against what is there.
   state->vtkglDepthFunc(GL_ALWAYS);

@@ -1,5 +1,5 @@
 // The last step of rendering a linear-depth view into a depth map: its casters
-// wrote their linear depth as colour (TextureArray::BindLayer's linearDepths),
+// wrote their linear depth as colour (TextureArray::BindLayer's secondOutput),
 // since a cast that wrote gl_FragDepth would make the scene's draws of the same
 // programs (ShadowMapCasterShader.h) lose their early depth test; this copies
 // that colour into the layer's depth with one full-screen draw.

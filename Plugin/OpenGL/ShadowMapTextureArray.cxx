@@ -128,27 +128,26 @@ void TextureArray::AllocateValueLayers(int resolution, int layers)
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
 }
 
-bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool linearDepths)
+bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool secondOutput)
 {
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer);
+  if (secondOutput && this->SecondOutput == 0)
+  {
+    ScopedTextureBinding keep;
+    glGenTextures(1, &this->SecondOutput);
+    glBindTexture(GL_TEXTURE_2D, this->SecondOutput);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, this->Resolution, this->Resolution, 0, GL_RED,
+      GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  const GLuint second = secondOutput ? this->SecondOutput : 0;
   if (IsDepth(this->Format))
   {
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
-    if (linearDepths && this->LinearDepths == 0)
-    {
-      ScopedTextureBinding keep;
-      glGenTextures(1, &this->LinearDepths);
-      glBindTexture(GL_TEXTURE_2D, this->LinearDepths);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, this->Resolution, this->Resolution, 0, GL_RED,
-        GL_FLOAT, nullptr);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    glFramebufferTexture2D(
-      GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, linearDepths ? this->LinearDepths : 0, 0);
-    // Casters write linear depth to their second output (ShadowMapCasterShader).
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, second, 0);
     const GLenum outputs[2] = { GL_NONE, GL_COLOR_ATTACHMENT0 };
-    if (linearDepths)
+    if (secondOutput)
     {
       glDrawBuffers(2, outputs);
     }
@@ -162,7 +161,11 @@ bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& erro
   {
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->Texture, 0, layer);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->DepthBuffer);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    // Detached when not asked for: a texture sampled while attached would
+    // make a feedback loop.
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, second, 0);
+    const GLenum outputs[2] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1 };
+    glDrawBuffers(secondOutput ? 2 : 1, outputs);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
   }
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
@@ -235,10 +238,10 @@ void TextureArray::Release()
   {
     glDeleteFramebuffers(1, &this->Framebuffer);
   }
-  if (this->LinearDepths != 0)
+  if (this->SecondOutput != 0)
   {
-    glDeleteTextures(1, &this->LinearDepths);
-    this->LinearDepths = 0;
+    glDeleteTextures(1, &this->SecondOutput);
+    this->SecondOutput = 0;
   }
   if (this->DepthBuffer != 0)
   {
@@ -259,14 +262,14 @@ void TextureArray::Release()
 std::size_t TextureArray::GetMemoryBytes() const
 {
   const std::size_t texels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
+  const std::size_t secondOutput = this->SecondOutput != 0 ? texels * 4 : 0;
   if (IsDepth(this->Format))
   {
-    const std::size_t linearDepths = this->LinearDepths != 0 ? texels * 4 : 0;
-    return texels * this->Layers * (this->Format == TexelFormat::Depth16 ? 2 : 4) + linearDepths;
+    return texels * this->Layers * (this->Format == TexelFormat::Depth16 ? 2 : 4) + secondOutput;
   }
   // A full mipmap chain adds a third; the depth buffer is shared by all layers.
   const std::size_t values = texels * this->Layers * 8;
-  return (this->Mipmaps ? values + values / 3 : values) + texels * 4;
+  return (this->Mipmaps ? values + values / 3 : values) + texels * 4 + secondOutput;
 }
 
 } // namespace shadowmaps

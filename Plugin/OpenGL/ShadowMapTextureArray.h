@@ -27,6 +27,23 @@ enum class TexelFormat
   TwoFloats
 };
 
+/// How the pass makes a map of the two nearest caster surfaces along each
+/// light ray (MapStorage::SecondDepth).
+enum class SecondDepthMethod
+{
+  /// One map of what StoreCode writes.
+  None,
+  /// One caster pass with minimum blending: x the nearest front face, y the
+  /// nearest back face. Right for closed casters only.
+  FrontAndBackFaces,
+  /// Two caster passes (depth peeling): x the nearest surface, y the nearest
+  /// behind it. Right for any casters.
+  Peeling,
+  /// FrontAndBackFaces when every caster is closed (ShadowMapClosedSurfaces),
+  /// else Peeling.
+  Auto
+};
+
 inline bool IsDepth(TexelFormat format)
 {
   return format != TexelFormat::TwoFloats;
@@ -47,15 +64,17 @@ public:
   bool Reserve(int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error);
 
   /// Binds the framebuffer (through the state cache) with `layer` attached.
-  /// The caller pushes and pops the framebuffer bindings. `linearDepths` (depth
-  /// formats): also a float colour buffer, into which casters of a linear-depth
-  /// view write that depth for LinearDepthResolve to copy into the layer; the
+  /// The caller pushes and pops the framebuffer bindings. `secondOutput`: also
+  /// a one-float colour buffer of the layer's size for the casters' second
+  /// output (gl_FragData[1]). Depth formats: casters of a linear-depth view
+  /// write that depth there for LinearDepthResolve to copy into the layer (the
   /// casters' shaders then write no gl_FragDepth, which would cost the scene's
-  /// draws of the same programs their early depth test.
-  bool BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool linearDepths = false);
+  /// draws of the same programs their early depth test). TwoFloats: peeling
+  /// casters keep there the nearest depth, which the next pass peels away.
+  bool BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool secondOutput = false);
 
-  /// The colour buffer of BindLayer's linearDepths (0 before its first use).
-  unsigned int GetLinearDepths() const { return this->LinearDepths; }
+  /// The colour buffer of BindLayer's secondOutput (0 before its first use).
+  unsigned int GetSecondOutput() const { return this->SecondOutput; }
 
   /// Depth: nearest (hard) or linear (hardware 2x2 PCF) comparison filtering.
   /// TwoFloats: nearest or (mipmapped) linear value filtering.
@@ -89,7 +108,7 @@ private:
   unsigned int Texture = 0;
   unsigned int Framebuffer = 0;
   unsigned int DepthBuffer = 0; // TwoFloats only
-  unsigned int LinearDepths = 0; // depth formats, when a view stores linear depth
+  unsigned int SecondOutput = 0; // BindLayer's secondOutput, made on first use
   TexelFormat Format = TexelFormat::Depth;
   bool Mipmaps = false;
   int Resolution = 0;

@@ -3,6 +3,7 @@
 #include "ShadowMapAnalysis.h"
 #include "ShadowMapCasterShader.h"
 #include "ShadowMapCasting.h"
+#include "ShadowMapClosedSurfaces.h"
 #include "ShadowMapGlm.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapLinearDepthResolve.h"
@@ -220,6 +221,7 @@ struct vtkAbstractShadowMapPass::Internals
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
   shadowmaps::MapView MapView;
   shadowmaps::LinearDepthResolve LinearDepths;
+  shadowmaps::ClosedCasters ClosedCasters;
 
   // What the maps were last rendered for; empty when they must be re-rendered.
   std::vector<vtkMTimeType> Signature;
@@ -245,6 +247,8 @@ struct vtkAbstractShadowMapPass::Internals
   std::vector<vtkProp*> NonReceivers;
   vtkTimeStamp ShaderKeyTime;
   int MapUnit = -1;
+  // Depth peeling's first-pass depths, while casting.
+  int PeelUnit = -1;
   bool TextureUnitsReserved = false;
   bool ShaderCodeCompiles = true;
   // The props whose render passes this pass joined in this frame.
@@ -640,6 +644,7 @@ void vtkAbstractShadowMapPass::ChooseStorage()
 {
   Internals& r = *this->Internal;
   r.Representation->GetMapStorage(r.Storage);
+  this->ChooseSecondDepthMethod();
   const bool thirtyTwoBitNow =
     r.Maps.GetResolution() != 0 && r.Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
   if (r.Storage.Format == shadowmaps::TexelFormat::Depth &&
@@ -652,6 +657,34 @@ void vtkAbstractShadowMapPass::ChooseStorage()
 }
 
 //------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ChooseSecondDepthMethod()
+{
+  using shadowmaps::SecondDepthMethod;
+  Internals& r = *this->Internal;
+  shadowmaps::MapStorage& storage = r.Storage;
+  if (storage.Format != shadowmaps::TexelFormat::TwoFloats)
+  {
+    storage.SecondDepth = SecondDepthMethod::None;
+  }
+  if (storage.SecondDepth == SecondDepthMethod::Auto)
+  {
+    std::vector<std::pair<vtkProp*, vtkMTimeType>> casters;
+    for (const Caster& caster : r.Casters)
+    {
+      casters.emplace_back(caster.Prop, caster.MTime);
+    }
+    storage.SecondDepth = r.ClosedCasters.AllClosed(casters) ? SecondDepthMethod::FrontAndBackFaces
+                                                             : SecondDepthMethod::Peeling;
+  }
+  if (storage.SecondDepth != SecondDepthMethod::None)
+  {
+    storage.MinimumBlending = storage.SecondDepth == SecondDepthMethod::FrontAndBackFaces;
+    storage.ClearValues[0] = storage.ClearValues[1] = 1.0f;
+  }
+  this->NumberOfCasterPassesPerLayer = storage.SecondDepth == SecondDepthMethod::Peeling ? 2 : 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
 {
   // Before the casters draw: they build the shaders the scene then uses.
@@ -661,7 +694,10 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
   shadowmaps::AddAnalysisReceiverCode(
     recolours ? this->AnalysisView : 0, this->AnalysisLight, r.Lights, r.Code);
   r.Code.Rehash();
-  r.CasterCode.Faces = this->CasterFaces;
+  r.CasterCode.SecondDepth = r.Storage.SecondDepth;
+  // Two surfaces' depths need both faces of the casters.
+  r.CasterCode.Faces =
+    r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
   r.CasterCode.StoreCode =
     r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string();
   r.CasterCode.LinearDepth = std::any_of(r.Lights.begin(), r.Lights.end(), [](const ShadowLight& l) {
@@ -784,7 +820,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         }
         const bool linearDepths =
           light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Storage.Format);
-        ok = r.Maps.BindLayer(state, layer, r.LastGLError, linearDepths);
+        const bool peeling = r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
+        ok = r.Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling);
         if (ok)
         {
           this->ApplyCasterUniforms(light, light.Views[v]);
@@ -793,6 +830,10 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
             [](const Caster* caster) { return caster->Prop; });
           draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
           ok = !linearDepths || r.LinearDepths.Render(window, r.Maps, layer, r.LastGLError);
+          if (ok && peeling && !props.empty())
+          {
+            ok = this->PeelSecondSurface(renderer, layer, props);
+          }
           r.LayerSignatures[layer] = std::move(signature);
           rendered.push_back(layer);
         }
@@ -878,6 +919,42 @@ int vtkAbstractShadowMapPass::RenderCastersIntoView(vtkOpenGLRenderer* renderer,
   }
   shadowmaps::SetCameraToView(r.LightCamera, r.LightProjection, view, r.SceneCameraParallel);
   this->JoinRenderPasses(casters.data(), static_cast<int>(casters.size()));
+  return this->DrawCasters(renderer, casters);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::PeelSecondSurface(
+  vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters)
+{
+  // The first pass left the nearest surface in both values and in the second
+  // output; this one keeps, in y only, the nearest surface behind it.
+  Internals& r = *this->Internal;
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  if (!r.Maps.BindLayer(state, layer, r.LastGLError, false))
+  {
+    return false;
+  }
+  vtkOpenGLState::ScopedglColorMask keepMask(state);
+  state->vtkglColorMask(GL_FALSE, GL_TRUE, GL_FALSE, GL_FALSE);
+  state->vtkglClearColor(1.0, 1.0, 1.0, 1.0);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glActiveTexture(GL_TEXTURE0 + r.PeelUnit);
+  glBindTexture(GL_TEXTURE_2D, r.Maps.GetSecondOutput());
+  r.CasterUniforms.SetPeeling(true, r.PeelUnit);
+  r.CasterPrograms.Invalidate();
+  this->DrawCasters(renderer, casters);
+  r.CasterUniforms.SetPeeling(false, r.PeelUnit);
+  r.CasterPrograms.Invalidate();
+  glActiveTexture(GL_TEXTURE0 + r.PeelUnit);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::DrawCasters(vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters)
+{
+  Internals& r = *this->Internal;
   vtkRenderState casterState(renderer);
   casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
   casterState.SetFrameBuffer(nullptr);
@@ -923,6 +1000,11 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
   r.MapUnit = window->GetTextureUnitManager()->Allocate();
   glActiveTexture(GL_TEXTURE0 + r.MapUnit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  if (r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
+  {
+    r.PeelUnit = window->GetTextureUnitManager()->Allocate();
+    r.CasterUniforms.SetPeeling(false, r.PeelUnit);
+  }
   r.Representation->ActivateReceiverResources(window);
   r.TextureUnitsReserved = true;
 }
@@ -951,6 +1033,11 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   window->GetTextureUnitManager()->Free(r.MapUnit);
   r.MapUnit = -1;
+  if (r.PeelUnit >= 0)
+  {
+    window->GetTextureUnitManager()->Free(r.PeelUnit);
+    r.PeelUnit = -1;
+  }
   r.Representation->DeactivateReceiverResources();
   r.TextureUnitsReserved = false;
 }
@@ -1034,7 +1121,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   }
   else if (r.Active && r.Uniforms.FirstUseThisFrame(program))
   {
-    shadowmaps::CasterUniforms::ApplyReceiving(program);
+    r.CasterUniforms.ApplyReceiving(program);
     if (r.CastSinceSceneDraw.erase(program) > 0)
     {
       // The renderer sets a program's lighting uniforms again only when the
@@ -1067,7 +1154,8 @@ void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
     return;
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (!r.MapView.Render(window, r.Maps, r.MapUnit, r.Lights[this->AnalysisLight]))
+  const bool twoSurfaces = r.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
+  if (!r.MapView.Render(window, r.Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces))
   {
     this->ReportGLFailure("the shadow-map view shader did not compile");
   }
@@ -1118,4 +1206,5 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCasterDraws: " << this->NumberOfCasterDraws << "\n";
   os << indent << "NumberOfRenderedLayers: " << this->NumberOfRenderedLayers << "\n";
   os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";
+  os << indent << "NumberOfCasterPassesPerLayer: " << this->NumberOfCasterPassesPerLayer << "\n";
 }

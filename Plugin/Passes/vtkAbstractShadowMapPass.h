@@ -238,6 +238,13 @@ public:
   vtkGetMacro(NumberOfOwnFragmentCasterShaders, int);
   ///@}
 
+  /**
+   * Caster passes per map layer in the last map update: 2 when the
+   * representation stores two surfaces' depths made by depth peeling (chosen,
+   * or picked by SecondDepthMethod::Auto because a caster is open), else 1.
+   */
+  vtkGetMacro(NumberOfCasterPassesPerLayer, int);
+
   /** Memory held by the shadow maps, in bytes (depth maps: 2 or 4 per texel). */
   size_t GetShadowMapMemory() const;
 
@@ -280,6 +287,7 @@ protected:
   int NumberOfShaderBuilds = 0;
   int NumberOfDepthOnlyCasterShaders = 0;
   int NumberOfOwnFragmentCasterShaders = 0;
+  int NumberOfCasterPassesPerLayer = 1;
 
 private:
   /** This frame's lights, casters and views; the GL objects and the last map update. */
@@ -297,6 +305,7 @@ private:
   void DropLightsWithoutUsableViews();
   void AssignLayers();
   void ChooseStorage();
+  void ChooseSecondDepthMethod();
   void UpdateShaderKey(vtkOpenGLRenderer* renderer);
   bool ShaderCodeCompiles(vtkOpenGLRenderer* renderer);
   shadowmaps::CasterBranch InjectShadowCode(std::string& vertexShader,
@@ -306,6 +315,8 @@ private:
   bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, const std::vector<int>& layers);
   int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,
     std::vector<vtkProp*>& casters, bool linearDepths);
+  bool PeelSecondSurface(vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters);
+  int DrawCasters(vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters);
   void ApplyCasterUniforms(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer, bool linearDepths);
   void JoinRenderPasses(vtkProp* const* props, int count);

@@ -14,9 +14,16 @@ vtkDepthShadowMapPass::vtkDepthShadowMapPass()
 
 //------------------------------------------------------------------------------
 vtkDepthShadowMapPass::vtkDepthShadowMapPass(vtkShadowMapViews* views)
-  : vtkAbstractShadowMapPass(views, vtkSmartPointer<vtkDepthShadowMapRepresentation>::New())
+  : vtkDepthShadowMapPass(views, vtkSmartPointer<vtkDepthShadowMapRepresentation>::New())
+{
+}
+
+//------------------------------------------------------------------------------
+vtkDepthShadowMapPass::vtkDepthShadowMapPass(
+  vtkShadowMapViews* views, vtkDepthShadowMapRepresentation* depth)
+  : vtkAbstractShadowMapPass(views, depth)
   // The preset representation, which the pass holds until it is destroyed.
-  , Depth(vtkDepthShadowMapRepresentation::SafeDownCast(this->GetRepresentation()))
+  , Depth(depth)
 {
 }
 

@@ -91,6 +91,8 @@ protected:
   vtkDepthShadowMapPass();
   /** A depth pass whose preset views are `views`. */
   explicit vtkDepthShadowMapPass(vtkShadowMapViews* views);
+  /** A pass whose preset views are `views` and representation `depth` (a kind of depth map). */
+  vtkDepthShadowMapPass(vtkShadowMapViews* views, vtkDepthShadowMapRepresentation* depth);
   ~vtkDepthShadowMapPass() override;
 
   vtkDepthShadowMapRepresentation* Depth;

@@ -4,6 +4,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsDepthLookupFS.h"
+#include "vtkShadowMapsFilterFS.h"
 #include "vtkTextureObject.h"
 
 #include <cmath>
@@ -48,7 +49,7 @@ vtkDepthShadowMapRepresentation::~vtkDepthShadowMapRepresentation() = default;
 //------------------------------------------------------------------------------
 std::string vtkDepthShadowMapRepresentation::GetReceiverLookupCode() const
 {
-  return vtkShadowMapsDepthLookupFS;
+  return std::string(vtkShadowMapsDepthLookupFS) + vtkShadowMapsFilterFS;
 }
 
 //------------------------------------------------------------------------------

@@ -4,7 +4,8 @@
  *
  * Each texel stores the depth of the nearest caster (32 bits, or 16 where every
  * view's depth steps stay well below its texels). Receivers compare their
- * depth with it (vtkShadowMapsDepthLookupFS.glsl): hard (1 tap), hardware 2x2
+ * depth with it (vtkShadowMapsDepthLookupFS.glsl, filtered by
+ * vtkShadowMapsFilterFS.glsl): hard (1 tap), hardware 2x2
  * bilinear PCF, N x N PCF of bilinear taps, or Poisson-disc PCF rotated per
  * texel by a noise texture addressed in light space, so the pattern stays put
  * while the camera moves (thesis 000, jittered PCF; docs/REFERENCES.md).

@@ -6,7 +6,8 @@
  * where each light's views go (vtkShadowMapViews) and what a texel of their maps
  * stores (this class). A representation says
  * - what the casters write (GetMapStorage: one depth, or two float values
- *   written by a GLSL snippet, optionally with minimum blending);
+ *   written by a GLSL snippet, optionally with minimum blending, or the depths
+ *   of the two nearest caster surfaces);
  * - how the maps are post-processed once rendered (PostProcessMaps: a blur;
  *   the pass builds the mipmaps MapStorage asks for before);
  * - how receivers read them (GetReceiverLookupCode: the GLSL that defines
@@ -53,6 +54,10 @@ struct MapStorage
   float ClearValues[2] = { 1.0f, 1.0f };
   /// TwoFloats: build a mipmap chain after rendering (filterable storage).
   bool Mipmaps = false;
+  /// TwoFloats: store the depths of the two nearest caster surfaces (the far
+  /// value 1 where there are fewer), made by this method; the pass then writes
+  /// StoreCode and MinimumBlending itself (shadowmaps::ResolveSecondDepth).
+  SecondDepthMethod SecondDepth = SecondDepthMethod::None;
 };
 
 /// Depth offset applied to the casters (glPolygonOffset's factor and units).

@@ -143,6 +143,17 @@ vtkSmartPointer<vtkImageData> Capture(vtkRenderWindow* window, bool rerender)
 }
 } // namespace
 
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  return actor;
+}
+
 vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window)
 {
   window->Render();

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 class vtkActor;
+class vtkAlgorithm;
 class vtkImageData;
 class vtkLight;
 class vtkSphereSource;
@@ -44,6 +45,9 @@ struct TestScene
 /// travelling along `direction`, or from `position` (positional lights).
 glm::dvec3 GroundShadowOfSphereCenter(const glm::dvec3& direction);
 glm::dvec3 GroundShadowOfSphereCenterFrom(const glm::dvec3& lightPosition);
+
+/// An actor drawing `source`'s output with a vtkPolyDataMapper, added to `renderer`.
+vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source);
 
 /// Renders and returns the frame as RGB.
 vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window);

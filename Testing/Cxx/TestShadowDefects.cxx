@@ -47,15 +47,6 @@ namespace
 {
 const glm::dvec3 SunDirection = glm::normalize(glm::dvec3(-0.4, 0.3, -1.0));
 
-vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  renderer->AddActor(actor);
-  return actor;
-}
 } // namespace
 
 // Defect 1: the light camera must not take the window's aspect ratio.

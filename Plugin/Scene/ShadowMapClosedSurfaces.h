@@ -1,0 +1,50 @@
+// Whether a caster is closed, i.e. bounds a volume: every light ray then meets
+// its surface an even number of times, so the nearest front face and the
+// nearest back face along the ray are the first two surfaces. Dual-depth maps
+// rely on that to make both depths in one caster pass (minimum blending); for
+// open casters (planes, isosurface pieces cut by the volume's boundary, clipped
+// data) they need depth peeling instead (shadowmaps::SecondDepthMethod::Auto).
+#ifndef ShadowMapClosedSurfaces_h
+#define ShadowMapClosedSurfaces_h
+
+#include "vtkType.h" // For vtkMTimeType
+
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+class vtkDataObject;
+class vtkPolyData;
+class vtkProp;
+
+namespace shadowmaps
+{
+/// True if every edge of the polygons and strips is shared by exactly two of
+/// them, points being the same where their coordinates are (sources such as
+/// vtkCubeSource repeat corners per face), and there are no lines or vertices.
+/// False for data without polygons.
+bool IsClosedSurface(vtkPolyData* surface);
+
+/// IsClosedSurface of every leaf of composite data; false for data that is not
+/// polygonal (its drawn surface is not known here).
+bool IsClosedData(vtkDataObject* data);
+
+/// Whether a prop draws a closed surface: an actor drawn as a surface whose
+/// mapper input IsClosedData. Other props (impostors, glyphs, volumes) count as
+/// open, the answer that is right for any geometry.
+bool DrawsClosedSurface(vtkProp* prop);
+
+/// DrawsClosedSurface of the casters, each computed once per modification time
+/// of what it draws.
+class ClosedCasters
+{
+public:
+  /// `casters`: each prop with the modification time of its data.
+  bool AllClosed(const std::vector<std::pair<vtkProp*, vtkMTimeType>>& casters);
+
+private:
+  std::unordered_map<vtkProp*, std::pair<vtkMTimeType, bool>> Known;
+};
+} // namespace shadowmaps
+
+#endif
