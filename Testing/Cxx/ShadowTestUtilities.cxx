@@ -18,9 +18,11 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <vector>
 
 namespace shadowtest
 {
@@ -204,27 +206,43 @@ int CountUndersampled(vtkImageData* image)
   return count;
 }
 
-double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
+namespace
 {
+// Luminances of the (2 radius + 1)^2 pixels around where `world` is seen; empty
+// when it is off the image.
+std::vector<double> LuminancesAround(
+  vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world, int radius)
+{
+  std::vector<double> luminances;
   const glm::ivec2 center = PixelAt(renderer, image, world);
   if (center.x < 0)
   {
-    return -1.0;
+    return luminances;
   }
   int dims[3];
   image->GetDimensions(dims);
-  double sum = 0.0;
-  int count = 0;
-  for (int y = std::max(center.y - 1, 0); y <= std::min(center.y + 1, dims[1] - 1); ++y)
+  for (int y = std::max(center.y - radius, 0); y <= std::min(center.y + radius, dims[1] - 1); ++y)
   {
-    for (int x = std::max(center.x - 1, 0); x <= std::min(center.x + 1, dims[0] - 1); ++x)
+    for (int x = std::max(center.x - radius, 0); x <= std::min(center.x + radius, dims[0] - 1); ++x)
     {
       const unsigned char* rgb = RgbAt(image, x, y);
-      sum += 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
-      ++count;
+      luminances.push_back(0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]);
     }
   }
-  return sum / count;
+  return luminances;
+}
+} // namespace
+
+double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
+{
+  const std::vector<double> block = LuminancesAround(renderer, image, world, 1);
+  return block.empty() ? -1.0 : std::accumulate(block.begin(), block.end(), 0.0) / block.size();
+}
+
+double DarkestAround(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
+{
+  const std::vector<double> block = LuminancesAround(renderer, image, world, 3);
+  return block.empty() ? -1.0 : *std::min_element(block.begin(), block.end());
 }
 
 glm::ivec3 ColorAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)

@@ -58,6 +58,10 @@ vtkSmartPointer<vtkImageData> CaptureAsRendered(vtkRenderWindow* window);
 /// Mean luminance (0-255) of a 3 x 3 block around the pixel where `world` is seen.
 double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
 
+/// Least luminance (0-255) of a 7 x 7 block around the pixel where `world` is
+/// seen: a lit surface with acne shows its dark texels there.
+double DarkestAround(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
+
 /// RGB of the pixel where `world` is seen; -1 components when off the image.
 glm::ivec3 ColorAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
 
