@@ -11,6 +11,7 @@
 #include "vtkCubeSource.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkCellArray.h"
 #include "vtkLineSource.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -19,7 +20,9 @@
 #include "vtk_glew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkSphereSource.h"
 #include "vtkStripper.h"
@@ -30,6 +33,8 @@
 #include <algorithm>
 #include <fstream>
 #include <functional>
+#include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -453,3 +458,123 @@ INSTANTIATE_TEST_SUITE_P(Views, DualDepthViewsAndModes,
   [](const ::testing::TestParamInfo<std::tuple<std::string, int>>& info) {
     return std::get<0>(info.param) + ModeName(std::get<1>(info.param));
   });
+
+namespace
+{
+/// A closed L-shaped prism: a tall part (x in [0, 2], z in [0, 4]) and a step
+/// (x in [2, 5], z in [0, 3]), y in [-1.5, 1.5]: a concave step in one thick
+/// caster, Woo's failure case for midpoint maps.
+vtkSmartPointer<vtkPolyData> StepPrism()
+{
+  const double profile[8][2] = { { 0, 0 }, { 2, 0 }, { 5, 0 }, { 5, 3 }, { 2, 3 }, { 2, 4 }, { 0, 4 },
+    { 0, 3 } };
+  vtkNew<vtkPoints> points;
+  for (double y : { -1.5, 1.5 })
+  {
+    for (const auto& p : profile)
+    {
+      points->InsertNextPoint(p[0], y, p[1]);
+    }
+  }
+  vtkNew<vtkCellArray> faces;
+  for (vtkIdType i = 0; i < 8; ++i)
+  {
+    const vtkIdType j = (i + 1) % 8;
+    const vtkIdType side[4] = { i, j, j + 8, i + 8 };
+    faces->InsertNextCell(4, side);
+  }
+  // Each cap in three rectangles meeting at profile points.
+  const vtkIdType rectangles[3][4] = { { 0, 1, 4, 7 }, { 7, 4, 5, 6 }, { 1, 2, 3, 4 } };
+  for (const auto& r : rectangles)
+  {
+    const vtkIdType front[4] = { r[3], r[2], r[1], r[0] };
+    const vtkIdType back[4] = { r[0] + 8, r[1] + 8, r[2] + 8, r[3] + 8 };
+    faces->InsertNextCell(4, front);
+    faces->InsertNextCell(4, back);
+  }
+  auto prism = vtkSmartPointer<vtkPolyData>::New();
+  prism->SetPoints(points);
+  prism->SetPolys(faces);
+  return prism;
+}
+} // namespace
+
+TEST(DualDepth, StepPrismIsClosed)
+{
+  EXPECT_TRUE(shadowmaps::IsClosedSurface(StepPrism()));
+}
+
+// Woo's failure case: next to the step's wall, the wall's shadow on the step
+// is thinner than a texel, whose rays beside it run through the whole tall
+// part: their midpoint lies below the step, which midpoint maps then light.
+// Dual maps keep the virtual surface within DualOffset texels of the top.
+TEST(DualDepth, ConcaveStepKeepsItsShadowInDualMode)
+{
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.4, 0.0, -1.0));
+  std::map<int, double> band;
+  for (int mode : { vtkDualDepthShadowMapPass::MIDPOINT, vtkDualDepthShadowMapPass::DUAL })
+  {
+    TestScene scene;
+    scene.SetSun(sun);
+    scene.Sphere->SetVisibility(false);
+    scene.Box->SetVisibility(false);
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(StepPrism());
+    normals->AutoOrientNormalsOn();
+    normals->SplittingOn();
+    auto step = AddSourceActor(scene.Renderer, normals);
+    step->SetPosition(-2.5, 0.0, 0.0);
+    // Only closed casters: one caster pass.
+    vtkNew<vtkInformation> keys;
+    keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+    scene.Ground->SetPropertyKeys(keys);
+    auto pass = MakeUnbiasedPass(mode, vtkDualDepthShadowMapPass::AUTO);
+    pass->SetResolution(64);
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(pass->GetNumberOfCasterPassesPerLayer(), 1) << "the step is closed";
+    // On the step, at the foot of the wall, in its shadow.
+    band[mode] = LuminanceAt(scene.Renderer, image, { -0.45, -1.0, 3.0 });
+    const std::string difference = CompareWithBaseline(image, std::string("DualDepthStep") + ModeName(mode));
+    EXPECT_TRUE(difference.empty()) << difference;
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
+  }
+  EXPECT_LT(band[vtkDualDepthShadowMapPass::DUAL], ShadowedBelow);
+  // The scene is the failure case: midpoint maps light the wall's foot.
+  EXPECT_GT(band[vtkDualDepthShadowMapPass::MIDPOINT], band[vtkDualDepthShadowMapPass::DUAL] + 40.0);
+}
+
+// The SHADOW_MAP view shows both surfaces of the map side by side: the nearest
+// on the left, the next on the right, everywhere at least as far.
+TEST(DualDepth, ShadowMapViewShowsBothSurfaces)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  auto pass = MakeUnbiasedPass(vtkDualDepthShadowMapPass::DUAL, vtkDualDepthShadowMapPass::AUTO);
+  pass->SetAnalysisView(vtkAbstractShadowMapPass::SHADOW_MAP);
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  int dims[3];
+  image->GetDimensions(dims);
+  const int half = dims[0] / 2;
+  int nearer = 0;
+  int farther = 0;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < half; ++x)
+    {
+      // The same map texel in both halves (the halves have the same width).
+      const auto* first = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      const auto* second = static_cast<unsigned char*>(image->GetScalarPointer(x + half, y, 0));
+      nearer += second[0] + 1 < first[0] ? 1 : 0;
+      farther += second[0] > first[0] + 1 ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(nearer, 0) << "a second surface nearer than the first";
+  EXPECT_GT(farther, dims[1] * half / 100) << "the casters' second surfaces (and the far value) show";
+  const std::string difference = CompareWithBaseline(image, "DualDepthShadowMapView");
+  EXPECT_TRUE(difference.empty()) << difference;
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
+}
