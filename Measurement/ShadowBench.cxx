@@ -460,7 +460,7 @@ Options DefaultOptions()
   Options options;
   options.Scenes = shadowscenes::BenchmarkSceneNames();
   options.Setups = shadowscenes::LightSetupNames();
-  options.Techniques = TechniqueNames();
+  options.Techniques = DefaultTechniqueNames();
   options.FlickerSetups = { "perpendicular" };
   return options;
 }

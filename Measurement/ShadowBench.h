@@ -20,7 +20,7 @@ struct Options
   std::string ModelFile;
   /// shadowscenes::LightSetupNames.
   std::vector<std::string> Setups;
-  /// TechniqueNames() (ShadowTechniques.h).
+  /// TechniqueNames() (ShadowTechniques.h); by default DefaultTechniqueNames().
   std::vector<std::string> Techniques;
   /// Map resolution of this project's techniques; VTK's pass runs at its
   /// default (1024) and at the resolution of equal memory ("vtk-equal").

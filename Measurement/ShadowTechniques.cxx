@@ -4,6 +4,8 @@
 
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkDualDepthShadowMapPass.h"
+#include "vtkWarpedShadowMapViews.h"
 #include "vtkWarpedShadowMapPass.h"
 
 #include <vtkActor.h>
@@ -72,6 +74,52 @@ int WarpModeOf(const std::string& name)
   return found == modes.end() ? -1 : found->second;
 }
 
+// The vtkDualDepthShadowMapPass mode and layer method a technique name stands
+// for; mode -1 if none.
+std::pair<int, int> DualDepthOf(const std::string& name)
+{
+  static const std::map<std::string, std::pair<int, int>> techniques = {
+    { "second-depth", { vtkDualDepthShadowMapPass::SECOND_DEPTH, vtkDualDepthShadowMapPass::AUTO } },
+    { "midpoint", { vtkDualDepthShadowMapPass::MIDPOINT, vtkDualDepthShadowMapPass::AUTO } },
+    { "dual", { vtkDualDepthShadowMapPass::DUAL, vtkDualDepthShadowMapPass::AUTO } },
+    { "dual-minblend",
+      { vtkDualDepthShadowMapPass::DUAL, vtkDualDepthShadowMapPass::MINIMUM_BLENDING } },
+    { "dual-peel", { vtkDualDepthShadowMapPass::DUAL, vtkDualDepthShadowMapPass::DEPTH_PEELING } },
+  };
+  const auto found = techniques.find(name);
+  if (found != techniques.end())
+  {
+    return found->second;
+  }
+  return name.rfind("dual-offset", 0) == 0
+    ? std::make_pair(static_cast<int>(vtkDualDepthShadowMapPass::DUAL),
+        static_cast<int>(vtkDualDepthShadowMapPass::AUTO))
+    : std::make_pair(-1, 0);
+}
+
+// The dual mode's offset sweep: "dual-offset<K>", K texels ("dual" is K = 2).
+std::vector<std::string> DualOffsetSweepNames()
+{
+  return { "dual-offset0.5", "dual-offset1", "dual-offset4", "dual-offset8" };
+}
+
+// The uniform map's constant bias sweep: "uniform-bias<B>" (default normal
+// offset) and "uniform-bias<B>-offset0".
+const std::vector<int> SweptBiases = { 0, 1, 4, 16, 64 };
+
+std::vector<std::string> BiasSweepNames()
+{
+  std::vector<std::string> names;
+  for (const char* suffix : { "", "-offset0" })
+  {
+    for (int bias : SweptBiases)
+    {
+      names.push_back("uniform-bias" + std::to_string(bias) + suffix);
+    }
+  }
+  return names;
+}
+
 class CountingOutputWindow : public vtkOutputWindow
 {
 public:
@@ -116,10 +164,22 @@ vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(unsigned int resolution, vtk
 }
 
 //------------------------------------------------------------------------------
-std::vector<std::string> TechniqueNames()
+std::vector<std::string> DefaultTechniqueNames()
 {
   return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
-    "csm-tight", "csm-lispsm" };
+    "csm-tight", "csm-lispsm", "second-depth", "midpoint", "dual" };
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::string> TechniqueNames()
+{
+  std::vector<std::string> names = DefaultTechniqueNames();
+  names.insert(names.end(), { "dual-minblend", "dual-peel" });
+  const std::vector<std::string> offsets = DualOffsetSweepNames();
+  names.insert(names.end(), offsets.begin(), offsets.end());
+  const std::vector<std::string> biases = BiasSweepNames();
+  names.insert(names.end(), biases.begin(), biases.end());
+  return names;
 }
 
 //------------------------------------------------------------------------------
@@ -181,6 +241,43 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
     pass->SetResolution(resolution);
     pass->SetFilter(vtkDepthShadowMapPass::PCF_2X2);
     pass->SetWarpMode(WarpModeOf(name));
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = resolution;
+  }
+  else if (name.rfind("uniform-bias", 0) == 0)
+  {
+    auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    pass->SetResolution(resolution);
+    pass->SetFilter(vtkDepthShadowMapPass::PCF_2X2);
+    pass->SetWarpModeToUniform();
+    pass->SetConstantBias(std::stod(name.substr(std::string("uniform-bias").size())));
+    if (name.find("-offset0") != std::string::npos)
+    {
+      pass->SetNormalOffset(0.0);
+    }
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = resolution;
+  }
+  else if (DualDepthOf(name).first >= 0)
+  {
+    // The uniform technique's views and filter, every bias at zero.
+    auto pass = vtkSmartPointer<vtkDualDepthShadowMapPass>::New();
+    auto views = vtkSmartPointer<vtkWarpedShadowMapViews>::New();
+    views->SetWarpModeToUniform();
+    pass->SetViews(views);
+    pass->SetResolution(resolution);
+    pass->SetFilter(vtkDepthShadowMapPass::PCF_2X2);
+    pass->SetMode(DualDepthOf(name).first);
+    pass->SetLayerMethod(DualDepthOf(name).second);
+    pass->SetConstantBias(0.0);
+    pass->SetSlopeScaledBias(0.0);
+    pass->SetNormalOffset(0.0);
+    if (name.rfind("dual-offset", 0) == 0)
+    {
+      pass->SetDualOffset(std::stod(name.substr(std::string("dual-offset").size())));
+    }
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;

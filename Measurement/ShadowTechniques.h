@@ -40,8 +40,18 @@ vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(
 /// (the same at the memory of "uniform"), "uniform" (vtkWarpedShadowMapPass,
 /// focused uniform map, 2x2 PCF), "psm", "lispsm", "tsm" and "gmnpr" (the same
 /// pass warped), "csm", "csm-tight" and "csm-lispsm" (vtkCascadedShadowMapPass,
-/// four cascades of half the resolution: stable, tight, tight with LiSPSM).
+/// four cascades of half the resolution: stable, tight, tight with LiSPSM),
+/// "second-depth", "midpoint" and "dual" (vtkDualDepthShadowMapPass on the
+/// uniform technique's views, every bias 0, AUTO layer method), "dual-minblend"
+/// and "dual-peel" (dual with a forced layer method), "dual-offset<K>" for K
+/// in 0.5, 1, 4, 8 (dual with DualOffset K texels), and the uniform map's
+/// bias sweep "uniform-bias<B>" for B in 0, 1, 4, 16, 64 (default normal
+/// offset) and "uniform-bias<B>-offset0" (normal offset 0).
 std::vector<std::string> TechniqueNames();
+
+/// The techniques a benchmark measures unless told: TechniqueNames() without
+/// the dual pass's forced layer methods and the bias sweep.
+std::vector<std::string> DefaultTechniqueNames();
 
 /// True for a name in TechniqueNames().
 bool IsTechnique(const std::string& name);

@@ -229,7 +229,7 @@ bool vtkShadowInsideMap(vec4 clip, int view, int features)
 //   world size along the light ray at the receiver. The ray is where both map
 //   coordinates stay put, so it comes from the map's matrix alone, for every
 //   kind of view (warped, linear-depth and perspective ones included).
-// - vtkShadowReceiverSlope: the map depth of the receiver's tangent plane per
+// - vtkShadowReceiverSlope: the map depth of the receiver's plane per
 //   unit of map coordinates, so that a texel is compared with the receiver's
 //   plane where the texel's own depth was taken (its centre), not where the
 //   receiver is: a sloped surface then matches its own texels however thin it
@@ -237,7 +237,23 @@ bool vtkShadowInsideMap(vec4 clip, int view, int features)
 //   as a surface seen edge-on from the light has no slope to speak of.
 float vtkShadowDepthPerTexel = 0.0;
 vec2 vtkShadowReceiverSlope = vec2(0.0);
-const float VTK_SHADOW_MAX_PLANE_TEXELS = 4.0;
+const float VTK_SHADOW_MAX_PLANE_TEXELS = 8.0;
+
+// The receiver's plane is that of the drawn facet, from the position's screen
+// derivatives, not the interpolated shading normal: a tessellated sphere's
+// facets tilt away from its shading normals, and over a filter's taps the
+// difference shows as acne. Set at the top of main (derivatives need uniform
+// control flow).
+vec3 vtkShadowPlaneNormalVC = vec3(0.0, 0.0, 1.0);
+
+void vtkShadowSetReceiverPlane(vec3 positionVC, vec3 shadingNormalVC)
+{
+  vec3 facet = cross(dFdx(positionVC), dFdy(positionVC));
+  float facetLength = length(facet);
+  vtkShadowPlaneNormalVC = !(facetLength > 0.0) ? shadingNormalVC
+    : dot(facet, shadingNormalVC) < 0.0        ? -facet / facetLength
+                                               : facet / facetLength;
+}
 
 vec3 vtkShadowMapPoint(vec3 positionVC, int view, int features)
 {
@@ -288,7 +304,7 @@ float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int vie
   vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
 #ifdef VTK_SHADOW_RECEIVER_PLANE
   vtkShadowMeasureReceiver(vtkShadowOffsetAlongNormal(positionVC, normalVC, light, view, features),
-    normalVC, mapCoord, light, view, features);
+    vtkShadowPlaneNormalVC, mapCoord, light, view, features);
 #endif
   return vtkShadowLookup(mapCoord, view);
 }

@@ -135,7 +135,11 @@ void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shado
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::ShadowMaps::Dec", Declarations(lights, layers, code));
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
-    "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n" + impl.str());
+    "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n"
+    "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
+    "  vtkShadowSetReceiverPlane(vertexVC.xyz, vtkShadowNormalVC);\n"
+    "#endif\n" +
+      impl.str());
 }
 
 //------------------------------------------------------------------------------

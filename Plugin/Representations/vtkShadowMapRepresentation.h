@@ -55,8 +55,9 @@ struct MapStorage
   /// TwoFloats: build a mipmap chain after rendering (filterable storage).
   bool Mipmaps = false;
   /// TwoFloats: store the depths of the two nearest caster surfaces (the far
-  /// value 1 where there are fewer), made by this method; the pass then writes
-  /// StoreCode and MinimumBlending itself (shadowmaps::ResolveSecondDepth).
+  /// value 1 where there are fewer), made by this method; StoreCode,
+  /// MinimumBlending and ClearValues are then the pass's
+  /// (vtkAbstractShadowMapPass::ChooseSecondDepthMethod).
   SecondDepthMethod SecondDepth = SecondDepthMethod::None;
 };
 

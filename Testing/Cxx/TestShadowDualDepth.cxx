@@ -137,9 +137,51 @@ TEST(DualDepth, AutoPeelsOnlyForOpenCasters)
   EXPECT_EQ(pass->GetNumberOfCasterPassesPerLayer(), 1);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
     ShadowedBelow);
+  // The decision follows the casters' data: a wedge cut out of the sphere opens it.
+  scene.SphereSource->SetEndTheta(300.0);
+  RenderAndCapture(scene.Window);
+  EXPECT_EQ(pass->GetNumberOfCasterPassesPerLayer(), 2);
+  scene.SphereSource->SetEndTheta(360.0);
+  RenderAndCapture(scene.Window);
+  EXPECT_EQ(pass->GetNumberOfCasterPassesPerLayer(), 1);
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
 }
+
+class DualDepthFilters : public ::testing::TestWithParam<int>
+{
+};
+
+// Every filter of the depth maps compares each of its taps with the virtual
+// surface: shadows with soft edges, lit caps without acne, no bias.
+TEST_P(DualDepthFilters, EachTapUsesTheVirtualSurface)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  auto pass = MakeUnbiasedPass(vtkDualDepthShadowMapPass::DUAL, vtkDualDepthShadowMapPass::AUTO);
+  pass->SetFilter(GetParam());
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
+    ShadowedBelow);
+  EXPECT_GT(DarkestAround(scene.Renderer, image, glm::dvec3(0, 0, 1.5) - SunDirection), LitAbove);
+  EXPECT_GT(DarkestAround(scene.Renderer, image, { 4, 2, 1.5 }), LitAbove);
+  EXPECT_GT(DarkestAround(scene.Renderer, image, { -5, -4, 0 }), LitAbove);
+  const std::string difference =
+    CompareWithBaseline(image, "DualDepthFilter" + std::to_string(GetParam()));
+  EXPECT_TRUE(difference.empty()) << difference;
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
+}
+
+INSTANTIATE_TEST_SUITE_P(Filters, DualDepthFilters,
+  ::testing::Values(vtkDualDepthShadowMapPass::HARD, vtkDualDepthShadowMapPass::PCF_NXN,
+    vtkDualDepthShadowMapPass::POISSON),
+  [](const ::testing::TestParamInfo<int>& info) {
+    return info.param == vtkDualDepthShadowMapPass::HARD ? std::string("Hard")
+      : info.param == vtkDualDepthShadowMapPass::PCF_NXN ? std::string("PCFNxN")
+                                                          : std::string("Poisson");
+  });
 
 namespace
 {

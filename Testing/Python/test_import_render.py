@@ -100,8 +100,25 @@ def main(output_dir):
     assert depth.GetViews() is cascades
     assert depth.GetNumberOfShadowMapLayers() == 2
     assert under < 80 and open_ground > 120
+
+    # Dual-depth maps, no bias at all: the sphere's shadow and its lit top.
+    dual = vtkshadowmaps.vtkDualDepthShadowMapPass()
+    dual.SetModeToDual()
+    assert dual.GetNormalOffset() == 0.0 and dual.GetConstantBias() == 0.0
+    renderer.SetPass(dual)
+    window.Render()
+    grab.Modified()
+    grab.Update()
+    image = grab.GetOutput()
+    under = luminance(renderer, image, (0.0, 0.0, 0.0))
+    open_ground = luminance(renderer, image, (3.0, -3.0, 0.0))
+    sphere_top = luminance(renderer, image, (0.0, 0.0, 2.5))
+    print(f"dual depth: under the sphere {under:.1f}, open ground {open_ground:.1f}, "
+          f"sphere top {sphere_top:.1f}")
+    assert under < 80 and open_ground > 120 and sphere_top > 120
+    assert dual.GetNumberOfCasterPassesPerLayer() == 2, "the ground is open: peeled"
     print(f"imported {vtkshadowmaps.__file__}")
-    print("2 passed, 0 failed")
+    print("3 passed, 0 failed")
 
 
 if __name__ == "__main__":
