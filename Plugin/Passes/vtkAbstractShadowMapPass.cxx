@@ -832,7 +832,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           ok = !linearDepths || r.LinearDepths.Render(window, r.Maps, layer, r.LastGLError);
           if (ok && peeling && !props.empty())
           {
-            ok = this->PeelSecondSurface(renderer, layer, props);
+            ok = this->PeelSecondSurface(renderer, layer, props, draws);
           }
           r.LayerSignatures[layer] = std::move(signature);
           rendered.push_back(layer);
@@ -924,7 +924,7 @@ int vtkAbstractShadowMapPass::RenderCastersIntoView(vtkOpenGLRenderer* renderer,
 
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::PeelSecondSurface(
-  vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters)
+  vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws)
 {
   // The first pass left the nearest surface in both values and in the second
   // output; this one keeps, in y only, the nearest surface behind it.
@@ -943,7 +943,7 @@ bool vtkAbstractShadowMapPass::PeelSecondSurface(
   glBindTexture(GL_TEXTURE_2D, r.Maps.GetSecondOutput());
   r.CasterUniforms.SetPeeling(true, r.PeelUnit);
   r.CasterPrograms.Invalidate();
-  this->DrawCasters(renderer, casters);
+  draws += this->DrawCasters(renderer, casters);
   r.CasterUniforms.SetPeeling(false, r.PeelUnit);
   r.CasterPrograms.Invalidate();
   glActiveTexture(GL_TEXTURE0 + r.PeelUnit);

@@ -315,7 +315,8 @@ private:
   bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, const std::vector<int>& layers);
   int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,
     std::vector<vtkProp*>& casters, bool linearDepths);
-  bool PeelSecondSurface(vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters);
+  bool PeelSecondSurface(
+    vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws);
   int DrawCasters(vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters);
   void ApplyCasterUniforms(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer, bool linearDepths);

@@ -131,10 +131,12 @@ TEST(DualDepth, AutoPeelsOnlyForOpenCasters)
   scene.Renderer->SetPass(pass);
   RenderAndCapture(scene.Window);
   EXPECT_EQ(pass->GetNumberOfCasterPassesPerLayer(), 2);
+  EXPECT_EQ(pass->GetNumberOfCasterDraws(), 2 * 3) << "the ground, the sphere and the box, twice";
   scene.Ground->GetPropertyKeys()->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
   scene.Ground->Modified();
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(pass->GetNumberOfCasterPassesPerLayer(), 1);
+  EXPECT_EQ(pass->GetNumberOfCasterDraws(), 2);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
     ShadowedBelow);
   // The decision follows the casters' data: a wedge cut out of the sphere opens it.
@@ -441,7 +443,7 @@ class DualDepthViewsAndModes : public ::testing::TestWithParam<std::tuple<std::s
 {
 };
 
-// Each mode with cascades, a LiSPSM warp, a spot light and a point light's
+// Each mode with cascades, a LiSPSM and a TSM warp, a spot light and a point light's
 // cube faces: the sphere's shadow, and the lit caps with no bias.
 TEST_P(DualDepthViewsAndModes, ShadowsWithoutBias)
 {
@@ -466,10 +468,12 @@ TEST_P(DualDepthViewsAndModes, ShadowsWithoutBias)
   {
     pass->SetViews(vtkSmartPointer<vtkCascadedShadowMapViews>::New());
   }
-  else if (views == "LiSPSM")
+  else if (views == "LiSPSM" || views == "TSM")
   {
+    // TSM maps store depth linear in light space: the casters write it, and
+    // the receivers' plane and offset are taken in it.
     auto warped = vtkSmartPointer<vtkWarpedShadowMapViews>::New();
-    warped->SetWarpModeToLiSPSM();
+    warped->SetWarpMode(views == "TSM" ? vtkWarpedShadowMapViews::TSM : vtkWarpedShadowMapViews::LISPSM);
     pass->SetViews(warped);
   }
   ErrorCounter errors;
@@ -494,7 +498,7 @@ TEST_P(DualDepthViewsAndModes, ShadowsWithoutBias)
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, DualDepthViewsAndModes,
-  ::testing::Combine(::testing::Values("Cascaded", "LiSPSM", "Spot", "Point"),
+  ::testing::Combine(::testing::Values("Cascaded", "LiSPSM", "TSM", "Spot", "Point"),
     ::testing::Values(vtkDualDepthShadowMapPass::SECOND_DEPTH, vtkDualDepthShadowMapPass::MIDPOINT,
       vtkDualDepthShadowMapPass::DUAL)),
   [](const ::testing::TestParamInfo<std::tuple<std::string, int>>& info) {

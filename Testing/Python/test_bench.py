@@ -29,18 +29,20 @@ def test_bench(program, output):
                  "--flicker-frames", "3", "--out", directory, *SMALL)
     check(result.returncode == 0, "bench failed: " + result.stderr[-2000:])
     table = [line for line in result.stdout.splitlines() if line.startswith("| model")]
-    check(len(table) == 22, "expected 22 table rows (2 set-ups x 11 techniques), got %d" % len(table))
+    check(len(table) == 28, "expected 28 table rows (2 set-ups x 14 techniques), got %d" % len(table))
     rows = rows_by_case(os.path.join(directory, "results.csv"))
     for setup in ("perpendicular", "point"):
         none = rows[("model", setup, "none")]
         check(float(none["false_shadow"]) == 0.0, setup + ": no shadows cannot shadow falsely")
         check(float(none["misclassified"]) > 0.5, setup + ": the scene has shadows to find")
         check(float(none["misclassified"]) == float(none["leak"]), setup + ": all leaks")
-        for technique in ("uniform", "psm", "lispsm", "tsm", "gmnpr", "csm", "csm-tight", "csm-lispsm"):
+        for technique in ("uniform", "psm", "lispsm", "tsm", "gmnpr", "csm", "csm-tight", "csm-lispsm",
+                          "second-depth", "midpoint", "dual"):
             focused = rows[("model", setup, technique)]
             check(float(focused["misclassified"]) < 0.5 * float(none["misclassified"]),
                   setup + ": " + technique + " finds the shadows")
-        for technique in ("none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm", "csm-tight", "csm-lispsm"):
+        for technique in ("none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
+                          "csm-tight", "csm-lispsm", "second-depth", "midpoint", "dual"):
             name = "model-%s-%s-errors.png" % (setup, technique)
             check(os.path.getsize(os.path.join(directory, name)) > 0, name + " written")
         check(os.path.getsize(os.path.join(directory, "model-%s-chart.png" % setup)) > 0, "chart")
@@ -57,6 +59,10 @@ def test_bench(program, output):
     check(rows[("model", "point", "uniform")]["flicker"] == "nan", "flicker only where asked")
     check(float(rows[("model", "perpendicular", "uniform")]["memory_mib"]) == 8.0,
           "one 2048^2 map of 16-bit depth is 8 MiB")
+    check(float(rows[("model", "perpendicular", "second-depth")]["memory_mib"]) == 48.0,
+          "two floats per texel and a shared 32-bit depth: 48 MiB at 2048^2")
+    check(float(rows[("model", "perpendicular", "dual")]["memory_mib"]) == 64.0,
+          "the ground is open, so the dual map is peeled: one float per texel more")
     check(int(rows[("model", "perpendicular", "vtk-equal")]["resolution"]) == 1448,
           "VTK at the memory of a 32-bit 2048^2 map: 1448^2 colour + depth = 16 MiB")
 
