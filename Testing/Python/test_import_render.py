@@ -32,6 +32,21 @@ def luminance(renderer, image, world):
     return 0.2126 * r + 0.7152 * g + 0.0722 * b
 
 
+def render_with(renderer, window, grab, shadow_pass, *points):
+    """Renders with `shadow_pass`; the frame and the luminance at each point."""
+    renderer.SetPass(shadow_pass)
+    window.Render()
+    grab.Modified()
+    grab.Update()
+    image = grab.GetOutput()
+    return image, [luminance(renderer, image, point) for point in points]
+
+
+UNDER_THE_SPHERE = (0.0, 0.0, 0.0)
+OPEN_GROUND = (3.0, -3.0, 0.0)
+SPHERE_TOP = (0.0, 0.0, 2.5)
+
+
 def main(output_dir):
     renderer = vtkRenderer()
     window = vtkRenderWindow()
@@ -61,23 +76,17 @@ def main(output_dir):
     camera.SetViewUp(0, 0, 1)
     renderer.ResetCameraClippingRange()
 
-    renderer.SetPass(vtkshadowmaps.vtkWarpedShadowMapPass())
-    window.Render()
-
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.SetInputBufferTypeToRGB()
     grab.ReadFrontBufferOff()
-    grab.Update()
-    image = grab.GetOutput()
+    image, (under, open_ground) = render_with(
+        renderer, window, grab, vtkshadowmaps.vtkWarpedShadowMapPass(), UNDER_THE_SPHERE, OPEN_GROUND)
     os.makedirs(output_dir, exist_ok=True)
     writer = vtkPNGWriter()
     writer.SetInputData(image)
     writer.SetFileName(os.path.join(output_dir, "python_shadow.png"))
     writer.Write()
-
-    under = luminance(renderer, image, (0.0, 0.0, 0.0))
-    open_ground = luminance(renderer, image, (3.0, -3.0, 0.0))
     print(f"under the sphere {under:.1f}, open ground {open_ground:.1f}")
     assert under < 80, "the sun straight above puts the ground under the sphere in shadow"
     assert open_ground > 120, "open ground is lit"
@@ -89,13 +98,7 @@ def main(output_dir):
     depth = vtkshadowmaps.vtkDepthShadowMapPass()
     depth.SetViews(cascades)
     depth.SetFilterToPoisson()
-    renderer.SetPass(depth)
-    window.Render()
-    grab.Modified()
-    grab.Update()
-    image = grab.GetOutput()
-    under = luminance(renderer, image, (0.0, 0.0, 0.0))
-    open_ground = luminance(renderer, image, (3.0, -3.0, 0.0))
+    _, (under, open_ground) = render_with(renderer, window, grab, depth, UNDER_THE_SPHERE, OPEN_GROUND)
     print(f"cascaded views: under the sphere {under:.1f}, open ground {open_ground:.1f}")
     assert depth.GetViews() is cascades
     assert depth.GetNumberOfShadowMapLayers() == 2
@@ -105,14 +108,8 @@ def main(output_dir):
     dual = vtkshadowmaps.vtkDualDepthShadowMapPass()
     dual.SetModeToDual()
     assert dual.GetNormalOffset() == 0.0 and dual.GetConstantBias() == 0.0
-    renderer.SetPass(dual)
-    window.Render()
-    grab.Modified()
-    grab.Update()
-    image = grab.GetOutput()
-    under = luminance(renderer, image, (0.0, 0.0, 0.0))
-    open_ground = luminance(renderer, image, (3.0, -3.0, 0.0))
-    sphere_top = luminance(renderer, image, (0.0, 0.0, 2.5))
+    _, (under, open_ground, sphere_top) = render_with(
+        renderer, window, grab, dual, UNDER_THE_SPHERE, OPEN_GROUND, SPHERE_TOP)
     print(f"dual depth: under the sphere {under:.1f}, open ground {open_ground:.1f}, "
           f"sphere top {sphere_top:.1f}")
     assert under < 80 and open_ground > 120 and sphere_top > 120
