@@ -443,7 +443,8 @@ class DualDepthViewsAndModes : public ::testing::TestWithParam<std::tuple<std::s
 {
 };
 
-// Each mode with cascades, a LiSPSM and a TSM warp, a spot light and a point light's
+// Each mode with cascades (stable, and tight with a LiSPSM warp per cascade), a
+// LiSPSM and a TSM warp, a spot light and a point light's
 // cube faces: the sphere's shadow, and the lit caps with no bias.
 TEST_P(DualDepthViewsAndModes, ShadowsWithoutBias)
 {
@@ -464,9 +465,15 @@ TEST_P(DualDepthViewsAndModes, ShadowsWithoutBias)
   {
     scene.SetSun(SunDirection);
   }
-  if (views == "Cascaded")
+  if (views == "Cascaded" || views == "CascadedLiSPSM")
   {
-    pass->SetViews(vtkSmartPointer<vtkCascadedShadowMapViews>::New());
+    auto cascades = vtkSmartPointer<vtkCascadedShadowMapViews>::New();
+    if (views == "CascadedLiSPSM")
+    {
+      cascades->SetFitModeToTight();
+      cascades->SetCascadeWarpToLiSPSM();
+    }
+    pass->SetViews(cascades);
   }
   else if (views == "LiSPSM" || views == "TSM")
   {
@@ -498,7 +505,7 @@ TEST_P(DualDepthViewsAndModes, ShadowsWithoutBias)
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, DualDepthViewsAndModes,
-  ::testing::Combine(::testing::Values("Cascaded", "LiSPSM", "TSM", "Spot", "Point"),
+  ::testing::Combine(::testing::Values("Cascaded", "CascadedLiSPSM", "LiSPSM", "TSM", "Spot", "Point"),
     ::testing::Values(vtkDualDepthShadowMapPass::SECOND_DEPTH, vtkDualDepthShadowMapPass::MIDPOINT,
       vtkDualDepthShadowMapPass::DUAL)),
   [](const ::testing::TestParamInfo<std::tuple<std::string, int>>& info) {
