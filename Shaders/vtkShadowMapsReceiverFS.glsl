@@ -242,13 +242,16 @@ const float VTK_SHADOW_MAX_PLANE_TEXELS = 8.0;
 // The receiver's plane is that of the drawn facet, from the position's screen
 // derivatives, not the interpolated shading normal: a tessellated sphere's
 // facets tilt away from its shading normals, and over a filter's taps the
-// difference shows as acne. Set at the top of main (derivatives need uniform
-// control flow).
+// difference shows as acne. The derivatives are taken where VTK's shaders keep
+// control flow uniform (ReceiverShader::Inject); shaders that shape their own
+// surface (impostors) leave them zero, and the shading normal stands in.
+vec3 vtkShadowPositionDx = vec3(0.0);
+vec3 vtkShadowPositionDy = vec3(0.0);
 vec3 vtkShadowPlaneNormalVC = vec3(0.0, 0.0, 1.0);
 
-void vtkShadowSetReceiverPlane(vec3 positionVC, vec3 shadingNormalVC)
+void vtkShadowSetReceiverPlane(vec3 shadingNormalVC)
 {
-  vec3 facet = cross(dFdx(positionVC), dFdy(positionVC));
+  vec3 facet = cross(vtkShadowPositionDx, vtkShadowPositionDy);
   float facetLength = length(facet);
   vtkShadowPlaneNormalVC = !(facetLength > 0.0) ? shadingNormalVC
     : dot(facet, shadingNormalVC) < 0.0        ? -facet / facetLength

@@ -37,7 +37,8 @@ bool LinearDepthResolve::Render(
     return false;
   }
   const int unit = window->GetTextureUnitManager()->Allocate();
-  glActiveTexture(GL_TEXTURE0 + unit);
+  vtkOpenGLState::ScopedglActiveTexture keepUnit(state);
+  state->vtkglActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D, maps.GetSecondOutput());
   program->SetUniformi("vtkShadowLinearDepths", unit);
   // The copy writes every texel: no offset, no test against what is there.

@@ -41,10 +41,13 @@ int InjectShadowFactor(std::string& fragmentShader, int shaderIndex, int lightIn
   return replaced;
 }
 
+const char* const UniformFlowMarker = "//VTK::ShadowMaps::UniformFlow";
+
 void ClearMarkers(std::string& fragmentShader)
 {
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", "");
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl", "");
+  vtkShaderProgram::Substitute(fragmentShader, UniformFlowMarker, "");
 }
 
 // The receiver functions and what they need around them.
@@ -101,11 +104,14 @@ void ReceiverShader::MarkInjectionPoints(std::string& fragmentShader)
     fragmentShader, "//VTK::Light::Dec", "//VTK::Light::Dec\n//VTK::ShadowMaps::Dec", false);
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Light::Impl", "//VTK::ShadowMaps::Impl\n//VTK::Light::Impl", false);
+  // After the mapper's own uniform-flow code, which may replace VTK's marker.
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::UniformFlow::Impl",
+    std::string("//VTK::UniformFlow::Impl\n") + UniformFlowMarker, false);
 }
 
 //------------------------------------------------------------------------------
 void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
-  int layers, const ReceiverCode& code, bool receives)
+  int layers, const ReceiverCode& code, bool receives, bool facetDerivatives)
 {
   // The receiver's position is taken in the fragment shader, not the vertex
   // shader, because impostor mappers compute their true surface per fragment.
@@ -134,10 +140,16 @@ void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shado
   }
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::ShadowMaps::Dec", Declarations(lights, layers, code));
+  vtkShaderProgram::Substitute(fragmentShader, UniformFlowMarker,
+    facetDerivatives ? "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
+                       "  vtkShadowPositionDx = dFdx(vertexVC.xyz);\n"
+                       "  vtkShadowPositionDy = dFdy(vertexVC.xyz);\n"
+                       "#endif\n"
+                     : "");
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
     "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n"
     "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
-    "  vtkShadowSetReceiverPlane(vertexVC.xyz, vtkShadowNormalVC);\n"
+    "  vtkShadowSetReceiverPlane(vtkShadowNormalVC);\n"
     "#endif\n" +
       impl.str());
 }
@@ -169,6 +181,7 @@ void main()
                    "in vec3 normalVCVSOutput;\n" +
     declarations +
     "//VTK::Light::Dec\nvoid main()\n{\n  vec4 vertexVC = vertexVCVSOutput;\n"
+    "  //VTK::UniformFlow::Impl\n"
     "  vec3 diffuse = vec3(0.0);\n  float df = float(cameraParallel);\n"
     "  //VTK::Light::Impl\n" +
     lighting + "  gl_FragData[0] = vec4(diffuse, 1.0);\n}\n";

@@ -52,9 +52,12 @@ public:
   /// Scales each light's diffuse and specular (Phong) or radiance (PBR) terms
   /// by its shadow factor where the mapper generated them, and puts the shadow
   /// code at the markers. `receives` false, or a shader without per-light code
-  /// (unlit), only loses the markers.
+  /// (unlit), only loses the markers. `facetDerivatives`: the drawn position is
+  /// the surface's until the lighting (not an impostor's), so its screen
+  /// derivatives, taken where VTK keeps control flow uniform, give the facet
+  /// (vtkShadowSetReceiverPlane); otherwise the shading normal stands in.
   static void Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
-    int layers, const ReceiverCode& code, bool receives);
+    int layers, const ReceiverCode& code, bool receives, bool facetDerivatives);
 
   /// A key of everything Inject's result depends on but the shader it patches.
   static std::string Key(const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code);

@@ -226,10 +226,19 @@ void TextureArray::GenerateMipmaps()
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
 }
 
-void TextureArray::BindToUnit(int unit) const
+void TextureArray::BindToUnit(vtkOpenGLState* state, int unit) const
 {
-  glActiveTexture(GL_TEXTURE0 + unit);
+  state->vtkglActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+}
+
+void TextureArray::ReleaseSecondOutput()
+{
+  if (this->SecondOutput != 0)
+  {
+    glDeleteTextures(1, &this->SecondOutput);
+    this->SecondOutput = 0;
+  }
 }
 
 void TextureArray::Release()
@@ -238,11 +247,7 @@ void TextureArray::Release()
   {
     glDeleteFramebuffers(1, &this->Framebuffer);
   }
-  if (this->SecondOutput != 0)
-  {
-    glDeleteTextures(1, &this->SecondOutput);
-    this->SecondOutput = 0;
-  }
+  this->ReleaseSecondOutput();
   if (this->DepthBuffer != 0)
   {
     glDeleteRenderbuffers(1, &this->DepthBuffer);

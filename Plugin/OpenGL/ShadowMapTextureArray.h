@@ -76,6 +76,9 @@ public:
   /// The colour buffer of BindLayer's secondOutput (0 before its first use).
   unsigned int GetSecondOutput() const { return this->SecondOutput; }
 
+  /// Frees that buffer while no view needs it (it is made again on demand).
+  void ReleaseSecondOutput();
+
   /// Depth: nearest (hard) or linear (hardware 2x2 PCF) comparison filtering.
   /// TwoFloats: nearest or (mipmapped) linear value filtering.
   void SetLinearFiltering(bool linear);
@@ -93,8 +96,9 @@ public:
   /// Counts the allocations so far: layers keep their content while it stays the same.
   unsigned long GetAllocations() const { return this->Allocations; }
 
-  /// Binds the texture to texture unit `unit`.
-  void BindToUnit(int unit) const;
+  /// Binds the texture to texture unit `unit`, which it leaves active (through
+  /// the state cache, which VTK's textures rely on to find their units).
+  void BindToUnit(vtkOpenGLState* state, int unit) const;
 
   void Release();
 

@@ -107,6 +107,14 @@ bool SixteenBitDepthSuffices(const std::vector<ShadowLight>& lights, bool thirty
   });
 }
 
+bool AnyLinearDepthView(const std::vector<ShadowLight>& lights)
+{
+  return std::any_of(lights.begin(), lights.end(), [](const ShadowLight& light) {
+    return std::any_of(light.Views.begin(), light.Views.end(),
+      [](const LightView& view) { return view.LinearDepth; });
+  });
+}
+
 bool IsNonFinite(const LightView& view)
 {
   return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
@@ -589,6 +597,10 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     this->ReportGLFailure(error.empty() ? r.LastGLError : error);
     return false;
   }
+  if (!this->NeedsSecondOutput())
+  {
+    r.Maps.ReleaseSecondOutput();
+  }
   r.Uniforms.Pack(r.Lights, r.Frame.CameraView);
   r.RenderedLights = r.Lights;
   r.Signature = std::move(signature);
@@ -596,6 +608,18 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   r.WarnedGLError.clear();
   ++this->NumberOfShadowMapUpdates;
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::NeedsSecondOutput() const
+{
+  // Peeled two-surface maps, and linear-depth views of depth maps.
+  const Internals& r = *this->Internal;
+  if (r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
+  {
+    return true;
+  }
+  return shadowmaps::IsDepth(r.Storage.Format) && AnyLinearDepthView(r.Lights);
 }
 
 //------------------------------------------------------------------------------
@@ -700,9 +724,7 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
     r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
   r.CasterCode.StoreCode =
     r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string();
-  r.CasterCode.LinearDepth = std::any_of(r.Lights.begin(), r.Lights.end(), [](const ShadowLight& l) {
-    return std::any_of(l.Views.begin(), l.Views.end(), [](const LightView& v) { return v.LinearDepth; });
-  });
+  r.CasterCode.LinearDepth = AnyLinearDepthView(r.Lights);
   std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code) +
     '|' + r.CasterCode.Key();
   if (key != r.ShaderKey)
@@ -861,9 +883,11 @@ void vtkAbstractShadowMapPass::ForgetLayersIfStale()
   Internals& r = *this->Internal;
   // What every layer depends on besides its view and casters: the parameters of
   // the pass and its strategies (the bias, the caster faces and store code among
-  // them) and the storage.
+  // them), the storage, and how a second depth is made (AUTO may change it when
+  // some other layer's casters change).
   const std::vector<vtkMTimeType> key = { this->GetMTime(), r.Maps.GetAllocations(),
-    static_cast<vtkMTimeType>(r.Frame.Resolution) };
+    static_cast<vtkMTimeType>(r.Frame.Resolution),
+    static_cast<vtkMTimeType>(r.Storage.SecondDepth) };
   if (key != r.LayersKey)
   {
     r.LayersKey = key;
@@ -935,18 +959,21 @@ bool vtkAbstractShadowMapPass::PeelSecondSurface(
     return false;
   }
   vtkOpenGLState::ScopedglColorMask keepMask(state);
+  vtkOpenGLState::ScopedglClearColor keepClearColor(state);
+  vtkOpenGLState::ScopedglActiveTexture keepUnit(state);
   state->vtkglColorMask(GL_FALSE, GL_TRUE, GL_FALSE, GL_FALSE);
   state->vtkglClearColor(1.0, 1.0, 1.0, 1.0);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glActiveTexture(GL_TEXTURE0 + r.PeelUnit);
+  // Through the state cache: the casters' own textures find their units by it.
+  state->vtkglActiveTexture(GL_TEXTURE0 + r.PeelUnit);
   glBindTexture(GL_TEXTURE_2D, r.Maps.GetSecondOutput());
   r.CasterUniforms.SetPeeling(true, r.PeelUnit);
   r.CasterPrograms.Invalidate();
   draws += this->DrawCasters(renderer, casters);
   r.CasterUniforms.SetPeeling(false, r.PeelUnit);
   r.CasterPrograms.Invalidate();
-  glActiveTexture(GL_TEXTURE0 + r.PeelUnit);
+  state->vtkglActiveTexture(GL_TEXTURE0 + r.PeelUnit);
   glBindTexture(GL_TEXTURE_2D, 0);
   return true;
 }
@@ -998,7 +1025,7 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
   // Work on our own unit: creating a texture binds it to the active unit, which
   // may hold another pass's texture (e.g. the tone-mapping pass's colour).
   r.MapUnit = window->GetTextureUnitManager()->Allocate();
-  glActiveTexture(GL_TEXTURE0 + r.MapUnit);
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.MapUnit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   if (r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
   {
@@ -1014,9 +1041,9 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   this->ReserveTextureUnits(renderer);
-  glActiveTexture(GL_TEXTURE0 + r.MapUnit);
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   r.Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
-  r.Maps.BindToUnit(r.MapUnit);
+  r.Maps.BindToUnit(window->GetState(), r.MapUnit);
   r.Uniforms.NewFrame();
 }
 
@@ -1029,7 +1056,7 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
     return;
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  glActiveTexture(GL_TEXTURE0 + r.MapUnit);
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.MapUnit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   window->GetTextureUnitManager()->Free(r.MapUnit);
   r.MapUnit = -1;
@@ -1094,8 +1121,8 @@ shadowmaps::CasterBranch vtkAbstractShadowMapPass::InjectShadowCode(std::string&
   {
     shadowmaps::CasterShader::RouteCameraParallel(*stage);
   }
-  shadowmaps::ReceiverShader::Inject(
-    fragmentShader, r.Lights, this->NumberOfShadowMapLayers, r.Code, receives);
+  shadowmaps::ReceiverShader::Inject(fragmentShader, r.Lights, this->NumberOfShadowMapLayers,
+    r.Code, receives, branch == shadowmaps::CasterBranch::DepthOnly);
   return branch;
 }
 

@@ -301,6 +301,7 @@ private:
   std::vector<vtkMTimeType> MapSignature(vtkOpenGLRenderer* renderer);
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   int UsableResolution();
+  bool NeedsSecondOutput() const;
   bool FitViews();
   void DropLightsWithoutUsableViews();
   void AssignLayers();

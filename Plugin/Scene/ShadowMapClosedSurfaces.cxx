@@ -7,6 +7,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkIdList.h"
 #include "vtkMapper.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -35,6 +36,8 @@ std::vector<vtkIdType> MergedPointIds(vtkPoints* points)
   return merged;
 }
 
+// Directed edges of oriented faces, points merged: a closed, consistently
+// wound surface has each edge once in each direction.
 class EdgeCounter
 {
 public:
@@ -43,16 +46,18 @@ public:
   {
   }
 
-  void Add(vtkIdType a, vtkIdType b)
+  void Add(vtkIdType from, vtkIdType to)
   {
-    a = this->Ids[static_cast<size_t>(a)];
-    b = this->Ids[static_cast<size_t>(b)];
+    const vtkIdType a = this->Ids[static_cast<size_t>(from)];
+    const vtkIdType b = this->Ids[static_cast<size_t>(to)];
     if (a == b)
     {
       return; // a degenerate edge bounds nothing
     }
-    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-    ++this->Counts[(static_cast<std::uint64_t>(key.first) << 32) ^ static_cast<std::uint64_t>(key.second)];
+    const auto key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) ^
+      static_cast<std::uint64_t>(std::max(a, b));
+    auto& directions = this->Counts[key];
+    ++(a < b ? directions.first : directions.second);
   }
 
   // Strips join with degenerate triangles, which bound nothing.
@@ -69,11 +74,11 @@ public:
     }
   }
 
-  bool EveryEdgeTwice() const
+  bool EachEdgeOnceEachWay() const
   {
     for (const auto& edge : this->Counts)
     {
-      if (edge.second != 2)
+      if (edge.second.first != 1 || edge.second.second != 1)
       {
         return false;
       }
@@ -83,7 +88,7 @@ public:
 
 private:
   std::vector<vtkIdType> Ids;
-  std::unordered_map<std::uint64_t, int> Counts;
+  std::unordered_map<std::uint64_t, std::pair<int, int>> Counts;
 };
 } // namespace
 
@@ -110,13 +115,15 @@ bool IsClosedSurface(vtkPolyData* surface)
        !strips->IsDoneWithTraversal(); strips->GoToNextCell())
   {
     strips->GetCurrentCell(cell);
-    // Triangle k of a strip is (k, k+1, k+2).
+    // Triangle k of a strip is (k, k+1, k+2), wound the other way for odd k.
     for (vtkIdType k = 0; k + 2 < cell->GetNumberOfIds(); ++k)
     {
-      edges.AddTriangle(cell->GetId(k), cell->GetId(k + 1), cell->GetId(k + 2));
+      const vtkIdType first = cell->GetId(k + (k % 2));
+      const vtkIdType second = cell->GetId(k + 1 - (k % 2));
+      edges.AddTriangle(first, second, cell->GetId(k + 2));
     }
   }
-  return edges.EveryEdgeTwice();
+  return edges.EachEdgeOnceEachWay();
 }
 
 //------------------------------------------------------------------------------
@@ -144,8 +151,10 @@ bool DrawsClosedSurface(vtkProp* prop)
 {
   auto* actor = vtkActor::SafeDownCast(prop);
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  // Clipping planes cut the drawn surface open.
   if (!mapper || actor->GetProperty()->GetRepresentation() != VTK_SURFACE ||
-    mapper->GetNumberOfInputConnections(0) < 1)
+    mapper->GetNumberOfInputConnections(0) < 1 ||
+    (mapper->GetClippingPlanes() && mapper->GetClippingPlanes()->GetNumberOfItems() > 0))
   {
     return false;
   }

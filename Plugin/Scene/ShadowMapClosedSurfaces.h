@@ -20,18 +20,20 @@ class vtkProp;
 namespace shadowmaps
 {
 /// True if every edge of the polygons and strips is shared by exactly two of
-/// them, points being the same where their coordinates are (sources such as
-/// vtkCubeSource repeat corners per face), and there are no lines or vertices.
-/// False for data without polygons.
+/// them, wound opposite ways (a consistently oriented surface: minimum
+/// blending tells its entries from its exits by facing), points being the same
+/// where their coordinates are (sources such as vtkCubeSource repeat corners
+/// per face), and there are no lines or vertices. False for data without
+/// polygons.
 bool IsClosedSurface(vtkPolyData* surface);
 
 /// IsClosedSurface of every leaf of composite data; false for data that is not
 /// polygonal (its drawn surface is not known here).
 bool IsClosedData(vtkDataObject* data);
 
-/// Whether a prop draws a closed surface: an actor drawn as a surface whose
-/// mapper input IsClosedData. Other props (impostors, glyphs, volumes) count as
-/// open, the answer that is right for any geometry.
+/// Whether a prop draws a closed surface: an actor drawn as a surface, without
+/// clipping planes, whose mapper input IsClosedData. Other props (impostors,
+/// glyphs, volumes) count as open, the answer that is right for any geometry.
 bool DrawsClosedSurface(vtkProp* prop);
 
 /// DrawsClosedSurface of the casters, each computed once per modification time

@@ -9,6 +9,7 @@
 #include "vtkActor.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
+#include "vtkElevationFilter.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkCellArray.h"
@@ -31,6 +32,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -57,6 +59,18 @@ const char* MethodName(int method)
   return method == vtkDualDepthShadowMapPass::MINIMUM_BLENDING ? "MinimumBlending"
     : method == vtkDualDepthShadowMapPass::DEPTH_PEELING       ? "DepthPeeling"
                                                                : "Auto";
+}
+
+/// In shadow at `world`, which must be on the image (LuminanceAt is -1 off it).
+::testing::AssertionResult ShadowedAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world)
+{
+  const double luminance = LuminanceAt(renderer, image, world);
+  if (luminance >= 0.0 && luminance < ShadowedBelow)
+  {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure() << "luminance " << luminance << " at " << world.x << ", "
+                                       << world.y << ", " << world.z;
 }
 
 vtkSmartPointer<vtkActor> AddBox(vtkRenderer* renderer, const glm::dvec3& center, const glm::dvec3& size)
@@ -100,8 +114,7 @@ TEST_P(DualDepthModes, ShadowsWithoutBias)
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
-    ShadowedBelow);
+  EXPECT_TRUE(ShadowedAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)));
   EXPECT_GT(LuminanceAt(scene.Renderer, image, { -5, -4, 0 }), LitAbove);
   EXPECT_GT(LuminanceAt(scene.Renderer, image, glm::dvec3(0, 0, 1.5) - SunDirection), LitAbove);
   EXPECT_GT(LuminanceAt(scene.Renderer, image, { 4, 2, 1.5 }), LitAbove);
@@ -137,8 +150,7 @@ TEST(DualDepth, AutoPeelsOnlyForOpenCasters)
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(pass->GetNumberOfCasterPassesPerLayer(), 1);
   EXPECT_EQ(pass->GetNumberOfCasterDraws(), 2);
-  EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
-    ShadowedBelow);
+  EXPECT_TRUE(ShadowedAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)));
   // The decision follows the casters' data: a wedge cut out of the sphere opens it.
   scene.SphereSource->SetEndTheta(300.0);
   RenderAndCapture(scene.Window);
@@ -164,8 +176,7 @@ TEST_P(DualDepthFilters, EachTapUsesTheVirtualSurface)
   pass->SetFilter(GetParam());
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
-  EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
-    ShadowedBelow);
+  EXPECT_TRUE(ShadowedAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)));
   EXPECT_GT(DarkestAround(scene.Renderer, image, glm::dvec3(0, 0, 1.5) - SunDirection), LitAbove);
   EXPECT_GT(DarkestAround(scene.Renderer, image, { 4, 2, 1.5 }), LitAbove);
   EXPECT_GT(DarkestAround(scene.Renderer, image, { -5, -4, 0 }), LitAbove);
@@ -282,8 +293,7 @@ TEST_P(DualDepthScenesAndModes, LitFacesAndContactShadowsWithoutBias)
   }
   for (const auto& point : spec.Shadowed)
   {
-    EXPECT_LT(LuminanceAt(scene.Renderer, image, point), ShadowedBelow)
-      << "shadowed at " << point.x << ", " << point.y << ", " << point.z;
+    EXPECT_TRUE(ShadowedAt(scene.Renderer, image, point));
   }
   const std::string difference =
     CompareWithBaseline(image, "DualDepth" + name + ModeName(mode));
@@ -376,7 +386,7 @@ TEST(DualDepth, VirtualSurfacesMatchTheirFormulas)
     { 0.3f, 1.0f, offset },         // no second surface
     { 1.0f, 0.3f, offset },         // an open surface seen from behind
     { 0.6f, 0.6f, offset },         // both surfaces at one depth
-    { 0.6f, 0.6f + 1e-8f, offset }, // closer than the precision
+    { 0.6f, std::nextafter(0.6f, 1.0f), offset }, // closer than the precision
     { 0.6f, 1.0f, 0.0f },           // one surface, no offset
   };
   for (int mode : { vtkDualDepthShadowMapPass::SECOND_DEPTH, vtkDualDepthShadowMapPass::MIDPOINT,
@@ -396,7 +406,7 @@ TEST(DualDepth, VirtualSurfacesMatchTheirFormulas)
     EXPECT_FLOAT_EQ(surfaces[4], 0.3f + offset);
     // A receiver at Z1 stays in front of its own surface however thin it is.
     EXPECT_FLOAT_EQ(surfaces[5], 0.6f + precision);
-    EXPECT_GT(surfaces[6], 0.6f);
+    EXPECT_FLOAT_EQ(surfaces[6], 0.6f + precision);
     EXPECT_FLOAT_EQ(surfaces[7], 0.6f + precision);
   }
 }
@@ -436,6 +446,12 @@ TEST(DualDepth, ClosedSurfacesAreToldFromOpenOnes)
   EXPECT_TRUE(shadowmaps::IsClosedSurface(output(contour)));
   vtkNew<vtkLineSource> line;
   EXPECT_FALSE(shadowmaps::IsClosedSurface(output(line)));
+  // A closed surface with one face wound the wrong way: minimum blending would
+  // take that face's entry for an exit.
+  vtkNew<vtkPolyData> flipped;
+  flipped->DeepCopy(output(cube));
+  flipped->GetPolys()->ReverseCellAtId(0);
+  EXPECT_FALSE(shadowmaps::IsClosedSurface(flipped));
   EXPECT_FALSE(shadowmaps::IsClosedData(nullptr));
 }
 
@@ -487,7 +503,7 @@ TEST_P(DualDepthViewsAndModes, ShadowsWithoutBias)
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow), ShadowedBelow);
+  EXPECT_TRUE(ShadowedAt(scene.Renderer, image, shadow));
   EXPECT_GT(LuminanceAt(scene.Renderer, image, sphereCap), LitAbove);
   // The open ground (under the positional lights, where they shine most) and,
   // for the sun, the box's top.
@@ -593,6 +609,7 @@ TEST(DualDepth, ConcaveStepKeepsItsShadowInDualMode)
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
   }
+  EXPECT_GE(band[vtkDualDepthShadowMapPass::DUAL], 0.0) << "the probe is on the image";
   EXPECT_LT(band[vtkDualDepthShadowMapPass::DUAL], ShadowedBelow);
   // The scene is the failure case: midpoint maps light the wall's foot.
   EXPECT_GT(band[vtkDualDepthShadowMapPass::MIDPOINT], band[vtkDualDepthShadowMapPass::DUAL] + 40.0);
@@ -628,6 +645,54 @@ TEST(DualDepth, ShadowMapViewShowsBothSurfaces)
   EXPECT_GT(farther, dims[1] * half / 100) << "the casters' second surfaces (and the far value) show";
   const std::string difference = CompareWithBaseline(image, "DualDepthShadowMapView");
   EXPECT_TRUE(difference.empty()) << difference;
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
+}
+
+// Depth peeling with a caster that draws with a texture of its own (scalars
+// interpolated before mapping): the second pass reads the first pass's depths,
+// not the caster's colours, so the sphere's texels keep its back as Z2.
+TEST(DualDepth, PeelingKeepsTheSecondSurfaceOfATexturedCaster)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(scene.SphereSource->GetOutputPort());
+  elevation->SetLowPoint(0.0, 0.0, 0.5);
+  elevation->SetHighPoint(0.0, 0.0, 2.5);
+  scene.Sphere->GetMapper()->SetInputConnection(elevation->GetOutputPort());
+  scene.Sphere->GetMapper()->ScalarVisibilityOn();
+  scene.Sphere->GetMapper()->InterpolateScalarsBeforeMappingOn();
+  auto pass =
+    MakeUnbiasedPass(vtkDualDepthShadowMapPass::DUAL, vtkDualDepthShadowMapPass::DEPTH_PEELING);
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_TRUE(ShadowedAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)));
+  std::string difference = CompareWithBaseline(image, "DualDepthPeeledTexturedCaster");
+  EXPECT_TRUE(difference.empty()) << difference;
+  pass->SetAnalysisView(vtkAbstractShadowMapPass::SHADOW_MAP);
+  image = RenderAndCapture(scene.Window);
+  difference = CompareWithBaseline(image, "DualDepthPeeledTexturedCasterMaps");
+  EXPECT_TRUE(difference.empty()) << difference;
+  // The casters' backs show as second surfaces behind the first, and no
+  // second surface is nearer than the first.
+  int dims[3];
+  image->GetDimensions(dims);
+  const int half = dims[0] / 2;
+  int behind = 0;
+  int nearer = 0;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < half; ++x)
+    {
+      const int first = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0))[0];
+      const int second = static_cast<unsigned char*>(image->GetScalarPointer(x + half, y, 0))[0];
+      behind += second < 255 && second > first ? 1 : 0;
+      nearer += second < first ? 1 : 0;
+    }
+  }
+  EXPECT_GT(behind, 300) << "the casters' backs";
+  EXPECT_EQ(nearer, 0);
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
 }
