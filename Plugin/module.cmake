@@ -44,6 +44,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Views/vtkWarpedShadowMapViews
   SOURCES
     Plugin/Math/ShadowMapCascades.cxx
+    Plugin/Math/ShadowMapCasterReach.cxx
     Plugin/Math/ShadowMapFocusing.cxx
     Plugin/Math/ShadowMapPerspective.cxx
     Plugin/Math/ShadowMapTrapezoid.cxx
@@ -65,6 +66,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Views/ShadowMapLight.h
   PRIVATE_HEADERS
     Plugin/Math/ShadowMapCascades.h
+    Plugin/Math/ShadowMapCasterReach.h
     Plugin/Math/ShadowMapPerspective.h
     Plugin/Math/ShadowMapTrapezoid.h
     Plugin/Math/ShadowMapWarping.h

@@ -9,6 +9,7 @@
 #define ShadowMapFocusing_h
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -121,6 +122,10 @@ struct LightView
   /// No receiver in view can be shaded from this map (a cube face the camera
   /// does not see into): it is cleared, and no caster is drawn into it.
   bool OutOfView = false;
+  /// The camera view depths (along -z) of the receivers this map shades: a
+  /// cascade's slice; every depth for other maps. Casters whose shadows cannot
+  /// reach that part of the view are not drawn (ShadowMapCasterReach.h).
+  glm::dvec2 ShadedDepths{ 0.0, std::numeric_limits<double>::infinity() };
   glm::dmat4 ViewProjection() const { return this->Projection * this->View; }
 };
 

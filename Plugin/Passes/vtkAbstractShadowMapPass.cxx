@@ -2,6 +2,8 @@
 
 #include "ShadowMapAnalysis.h"
 #include "ShadowMapCasterShader.h"
+#include "ShadowMapCascades.h"
+#include "ShadowMapCasterReach.h"
 #include "ShadowMapCasting.h"
 #include "ShadowMapClosedSurfaces.h"
 #include "ShadowMapGlm.h"
@@ -171,17 +173,38 @@ bool DrawsIntoDepthMaps(vtkProp* prop)
   return prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop);
 }
 
-std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const LightView& view)
+// The part of `visible` (the focus body; empty when culling is off) whose
+// receivers `view` shades: a cascade's slice of it.
+std::vector<glm::dvec3> ShadedBody(const shadowmaps::ShadowFrame& frame, const LightView& view,
+  const std::vector<glm::dvec3>& visible)
+{
+  const glm::dvec2 depths = view.ShadedDepths;
+  if (visible.empty() || !std::isfinite(depths.y))
+  {
+    return visible;
+  }
+  const glm::dmat4 slice = shadowmaps::SubFrustumProjection(frame.CameraProjection, depths.x, depths.y);
+  return shadowmaps::IntersectFrustumWithBox(slice * frame.CameraView, frame.SceneBounds);
+}
+
+// The casters inside the view whose shadows may reach `visible`, the focus
+// body (empty: no culling by it).
+std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const LightView& view,
+  const std::vector<glm::dvec3>& visible, double marginTexels, int resolution)
 {
   std::vector<const Caster*> casters;
   if (view.OutOfView)
   {
     return casters;
   }
-  const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
+  const glm::dmat4 viewProjection = view.ViewProjection();
+  const auto planes = shadowmaps::FrustumPlanes(viewProjection);
+  const shadowmaps::ShadowReach reach = shadowmaps::ReachOfBody(
+    viewProjection, visible, 2.0 * marginTexels / std::max(resolution, 1));
   for (const auto& caster : all)
   {
-    if (FrustumMeetsBox(planes, caster.Bounds))
+    if (FrustumMeetsBox(planes, caster.Bounds) &&
+      shadowmaps::MayShadowInto(reach, viewProjection, caster.Bounds))
     {
       casters.push_back(&caster);
     }
@@ -829,12 +852,21 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     renderer->SetActiveCamera(r.LightCamera);
     this->ReserveTextureUnits(renderer);
     r.Casting = true;
+    const std::vector<glm::dvec3> visible = this->ShadowReachCulling
+      ? shadowmaps::IntersectFrustumWithBox(
+          r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
+      : std::vector<glm::dvec3>();
+    // Receivers sample the map up to the filter's reach and their normal offset
+    // beyond where they are, and a texel further for rounding.
+    const double reachMargin = r.Frame.FilterReachTexels + this->NormalOffset + 1.0;
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
       {
         const int layer = light.FirstLayer + static_cast<int>(v);
-        const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v]);
+        const std::vector<const Caster*> casters =
+          CastersInView(r.Casters, light.Views[v], ShadedBody(r.Frame, light.Views[v], visible),
+            reachMargin, r.Frame.Resolution);
         std::vector<vtkMTimeType> signature = LayerSignature(light.Views[v], casters);
         if (r.LayerSignatures[layer] == signature)
         {
@@ -1224,6 +1256,7 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "CasterFaces: " << this->CasterFaces << "\n";
   os << indent << "NormalOffset: " << this->NormalOffset << "\n";
+  os << indent << "ShadowReachCulling: " << this->ShadowReachCulling << "\n";
   os << indent << "AnalysisView: " << this->AnalysisView << "\n";
   os << indent << "AnalysisLight: " << this->AnalysisLight << "\n";
   os << indent << "NumberOfShadowedLights: " << this->NumberOfShadowedLights << "\n";

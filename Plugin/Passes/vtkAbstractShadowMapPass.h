@@ -154,6 +154,18 @@ public:
 
   ///@{
   /**
+   * Whether a view's casters are culled to those whose shadows can reach what
+   * the camera sees (the casters' footprints in the view against the focus
+   * body's: Plugin/Math/ShadowMapCasterReach.h); the view's frustum culls
+   * either way. Default on.
+   */
+  vtkSetMacro(ShadowReachCulling, bool);
+  vtkGetMacro(ShadowReachCulling, bool);
+  vtkBooleanMacro(ShadowReachCulling, bool);
+  ///@}
+
+  ///@{
+  /**
    * Receiver offset along its normal, in shadow-map texels (scaled by the
    * world-space size of a texel at the receiver). Clamped to [0, 10]; default 1.
    */
@@ -275,6 +287,7 @@ protected:
   int Resolution = 2048;
   int CasterFaces = BOTH_FACES;
   double NormalOffset = 1.0;
+  bool ShadowReachCulling = true;
   int AnalysisView = NO_ANALYSIS;
   int AnalysisLight = 0;
 

@@ -237,6 +237,14 @@ void vtkCascadedShadowMapViews::FitCascades(const shadowmaps::ShadowFrame& frame
     const bool blends = this->BlendFraction > 0.0 && c + 1 < cascades;
     light.CascadeDepths.emplace_back(splits[c], splits[c + 1],
       blends ? shadowmaps::BlendBandStart(splits, c, this->BlendFraction) : shadowmaps::NoBlendBand);
+    if (this->Selection == BY_DEPTH)
+    {
+      // From where the previous cascade starts blending into this one.
+      const double first = c > 0 && light.CascadeDepths[c - 1].z < shadowmaps::NoBlendBand
+        ? light.CascadeDepths[c - 1].z
+        : splits[c];
+      light.Views.back().ShadedDepths = glm::dvec2(first, splits[c + 1]);
+    }
   }
   light.CoverageBlendFraction = this->Selection == BY_COVERAGE ? this->BlendFraction : -1.0;
 }

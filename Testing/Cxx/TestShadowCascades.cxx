@@ -210,11 +210,42 @@ TEST(ShadowCascades, EachCascadeDrawsOnlyTheCastersItSees)
   const int casters = single->GetNumberOfCasterDraws();
   EXPECT_EQ(casters, 3 + 5) << "ground, sphere, box and five cubes";
 
+  // Without the culling by shadow reach, every caster is in some cascade.
   auto four = MakeProbedPass();
+  four->ShadowReachCullingOff();
   scene.Renderer->SetPass(four);
   RenderAndCapture(scene.Window);
   EXPECT_GE(four->GetNumberOfCasterDraws(), casters);
   EXPECT_LT(four->GetNumberOfCasterDraws(), 4 * casters);
+}
+
+namespace
+{
+bool SamePixels(vtkImageData* a, vtkImageData* b)
+{
+  const auto* pa = static_cast<unsigned char*>(a->GetScalarPointer());
+  const auto* pb = static_cast<unsigned char*>(b->GetScalarPointer());
+  const auto count = static_cast<size_t>(a->GetNumberOfPoints()) * 3;
+  return a->GetNumberOfPoints() == b->GetNumberOfPoints() && std::equal(pa, pa + count, pb);
+}
+} // namespace
+
+// A cascade draws only the casters whose shadows can reach its slice of the
+// view: fewer draws, and not one pixel changes.
+TEST(ShadowCascades, ReachCullingDrawsFewerCastersAndChangesNoPixel)
+{
+  TestScene scene;
+  BuildProbedScene(scene);
+  auto culled = MakeProbedPass();
+  scene.Renderer->SetPass(culled);
+  auto withCulling = RenderAndCapture(scene.Window);
+  const int culledDraws = culled->GetNumberOfCasterDraws();
+  auto all = MakeProbedPass();
+  all->ShadowReachCullingOff();
+  scene.Renderer->SetPass(all);
+  auto withoutCulling = RenderAndCapture(scene.Window);
+  EXPECT_LT(culledDraws, all->GetNumberOfCasterDraws());
+  EXPECT_TRUE(SamePixels(withCulling, withoutCulling));
 }
 
 TEST(ShadowCascades, BadInputClampsWithWarningsAndRenders)

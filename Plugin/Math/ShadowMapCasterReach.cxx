@@ -1,0 +1,147 @@
+#include "ShadowMapCasterReach.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace shadowmaps
+{
+namespace
+{
+double Cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
+{
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+// Points through a projection, divided by w; false if any lies behind it.
+bool ProjectAll(const glm::dmat4& m, const glm::dvec3* points, size_t count, std::vector<glm::dvec3>& out)
+{
+  out.clear();
+  for (size_t i = 0; i < count; ++i)
+  {
+    const glm::dvec4 clip = m * glm::dvec4(points[i], 1.0);
+    if (!(clip.w > 0.0))
+    {
+      return false;
+    }
+    out.emplace_back(glm::dvec3(clip) / clip.w);
+  }
+  return true;
+}
+
+// Separating axis test of an axis-aligned rectangle against a convex polygon.
+bool RectangleMeetsPolygon(
+  const glm::dvec2& lo, const glm::dvec2& hi, const std::vector<glm::dvec2>& polygon)
+{
+  glm::dvec2 polygonLo(std::numeric_limits<double>::max());
+  glm::dvec2 polygonHi(std::numeric_limits<double>::lowest());
+  for (const auto& p : polygon)
+  {
+    polygonLo = glm::min(polygonLo, p);
+    polygonHi = glm::max(polygonHi, p);
+  }
+  if (hi.x < polygonLo.x || lo.x > polygonHi.x || hi.y < polygonLo.y || lo.y > polygonHi.y)
+  {
+    return false;
+  }
+  const glm::dvec2 corners[4] = { lo, { hi.x, lo.y }, hi, { lo.x, hi.y } };
+  for (size_t i = 0; i < polygon.size(); ++i)
+  {
+    const glm::dvec2& a = polygon[i];
+    const glm::dvec2& b = polygon[(i + 1) % polygon.size()];
+    // The polygon lies left of each of its edges: the rectangle is outside if
+    // all of its corners lie right of one.
+    const bool allRight = std::all_of(
+      std::begin(corners), std::end(corners), [&](const glm::dvec2& c) { return Cross(a, b, c) < 0.0; });
+    if (allRight)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+std::vector<glm::dvec2> ConvexHull(std::vector<glm::dvec2> points)
+{
+  std::sort(points.begin(), points.end(),
+    [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3)
+  {
+    return points;
+  }
+  std::vector<glm::dvec2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i > 0; --i)
+  {
+    while (k >= lower && Cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+//------------------------------------------------------------------------------
+ShadowReach ReachOfBody(
+  const glm::dmat4& viewProjection, const std::vector<glm::dvec3>& body, double margin)
+{
+  ShadowReach reach;
+  reach.Margin = margin;
+  std::vector<glm::dvec3> clip;
+  if (body.empty() || !ProjectAll(viewProjection, body.data(), body.size(), clip))
+  {
+    return reach;
+  }
+  std::vector<glm::dvec2> footprint;
+  reach.FarthestDepth = std::numeric_limits<double>::lowest();
+  for (const auto& p : clip)
+  {
+    footprint.emplace_back(p.x, p.y);
+    reach.FarthestDepth = std::max(reach.FarthestDepth, p.z);
+  }
+  reach.Footprint = ConvexHull(footprint);
+  // A degenerate footprint (B seen edge-on) bounds nothing reliably.
+  reach.Everywhere = reach.Footprint.size() < 3;
+  return reach;
+}
+
+//------------------------------------------------------------------------------
+bool MayShadowInto(const ShadowReach& reach, const glm::dmat4& viewProjection, const Aabb& bounds)
+{
+  if (reach.Everywhere)
+  {
+    return true;
+  }
+  const std::array<glm::dvec3, 8> corners = bounds.Corners();
+  std::vector<glm::dvec3> clip;
+  if (!ProjectAll(viewProjection, corners.data(), corners.size(), clip))
+  {
+    return true;
+  }
+  glm::dvec2 lo(std::numeric_limits<double>::max());
+  glm::dvec2 hi(std::numeric_limits<double>::lowest());
+  double nearest = std::numeric_limits<double>::max();
+  for (const auto& p : clip)
+  {
+    lo = glm::min(lo, glm::dvec2(p));
+    hi = glm::max(hi, glm::dvec2(p));
+    nearest = std::min(nearest, p.z);
+  }
+  // Widening the caster's footprint by the margin widens B's by as much.
+  lo -= reach.Margin;
+  hi += reach.Margin;
+  return nearest <= reach.FarthestDepth && RectangleMeetsPolygon(lo, hi, reach.Footprint);
+}
+} // namespace shadowmaps
