@@ -13,11 +13,13 @@ add_executable(TestShadowMapMath
   Cxx/TestShadowMapTrapezoid.cxx
   Cxx/TestShadowMapPerspective.cxx
   Cxx/TestShadowMapCascades.cxx
+  Cxx/TestShadowMapCasterReach.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapFocusing.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapWarping.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapTrapezoid.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapPerspective.cxx
-  ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapCascades.cxx)
+  ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapCascades.cxx
+  ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapCasterReach.cxx)
 target_include_directories(TestShadowMapMath PRIVATE ${PROJECT_SOURCE_DIR}/Plugin/Math)
 target_compile_features(TestShadowMapMath PRIVATE cxx_std_17)
 target_link_libraries(TestShadowMapMath PRIVATE glm::glm GTest::gtest_main)
