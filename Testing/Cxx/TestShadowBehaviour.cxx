@@ -1,6 +1,7 @@
 // What users rely on beyond the pictures: when maps re-render, per-actor and
 // per-light control, limits, bad input, and the pass inside other passes.
 #include "ShadowTestUtilities.h"
+#include "vtkDualDepthShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkDepthShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
@@ -481,14 +482,29 @@ TEST(ShadowBehaviour, WorksAsADelegateOfToneMapping)
 
 // Degenerate scenes render without NaN (a NaN shadow factor shows as black or
 // garbage on lit ground) and without GL errors.
-TEST(ShadowBehaviour, DegenerateScenes)
+class DegenerateScenesPerPass : public ::testing::TestWithParam<std::string>
+{
+public:
+  // The warped pass (the focused uniform map and its warps) and the dual-depth
+  // pass, whose receivers measure the map along the light ray.
+  vtkSmartPointer<vtkAbstractShadowMapPass> MakePass() const
+  {
+    if (GetParam() == "DualDepth")
+    {
+      return vtkSmartPointer<vtkDualDepthShadowMapPass>::New();
+    }
+    return vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+  }
+};
+
+TEST_P(DegenerateScenesPerPass, RenderWithoutErrors)
 {
   ErrorCounter errors;
   {
     TestScene empty;
     empty.Renderer->RemoveAllViewProps();
     empty.SetSun(SunDirection);
-    vtkNew<vtkWarpedShadowMapPass> pass;
+    auto pass = MakePass();
     empty.Renderer->SetPass(pass);
     RenderAndCapture(empty.Window);
   }
@@ -497,7 +513,7 @@ TEST(ShadowBehaviour, DegenerateScenes)
     flat.Renderer->RemoveActor(flat.Sphere);
     flat.Renderer->RemoveActor(flat.Box);
     flat.SetSun(SunDirection);
-    vtkNew<vtkWarpedShadowMapPass> pass;
+    auto pass = MakePass();
     flat.Renderer->SetPass(pass);
     auto image = RenderAndCapture(flat.Window);
     EXPECT_GT(LuminanceAt(flat.Renderer, image, { 0, 0, 0 }), LitAbove) << "flat scene";
@@ -514,7 +530,7 @@ TEST(ShadowBehaviour, DegenerateScenes)
     camera->SetFocalPoint(0.0, 0.0, 0.5 * scale);
     scaled.Renderer->ResetCameraClippingRange();
     scaled.SetSun(SunDirection);
-    vtkNew<vtkWarpedShadowMapPass> pass;
+    auto pass = MakePass();
     scaled.Renderer->SetPass(pass);
     auto image = RenderAndCapture(scaled.Window);
     EXPECT_LT(LuminanceAt(scaled.Renderer, image, GroundShadowOfSphereCenter(SunDirection) * scale),
@@ -531,7 +547,7 @@ TEST(ShadowBehaviour, DegenerateScenes)
     camera->SetViewUp(0.0, 1.0, 0.0);
     along.Renderer->ResetCameraClippingRange();
     along.SetSun({ 0.0, 0.0, -1.0 });
-    vtkNew<vtkWarpedShadowMapPass> pass;
+    auto pass = MakePass();
     along.Renderer->SetPass(pass);
     auto image = RenderAndCapture(along.Window);
     EXPECT_GT(LuminanceAt(along.Renderer, image, { -5, -4, 0 }), LitAbove);
@@ -540,6 +556,10 @@ TEST(ShadowBehaviour, DegenerateScenes)
   }
   EXPECT_EQ(errors.Errors(), 0) << errors.Text();
 }
+
+INSTANTIATE_TEST_SUITE_P(ShadowBehaviour, DegenerateScenesPerPass,
+  ::testing::Values("Warped", "DualDepth"),
+  [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // Rendering is deterministic: the same frame twice, whether the maps are reused,
 // re-rendered or rendered by a new pass, is bit-identical (baselines can be strict).

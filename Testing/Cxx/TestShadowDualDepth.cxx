@@ -696,3 +696,23 @@ TEST(DualDepth, PeelingKeepsTheSecondSurfaceOfATexturedCaster)
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
 }
+
+TEST(DualDepth, ParametersClamp)
+{
+  vtkNew<vtkDualDepthShadowMapPass> pass;
+  EXPECT_EQ(pass->GetMode(), vtkDualDepthShadowMapPass::DUAL);
+  EXPECT_EQ(pass->GetLayerMethod(), vtkDualDepthShadowMapPass::AUTO);
+  EXPECT_EQ(pass->GetNormalOffset(), 0.0);
+  EXPECT_EQ(pass->GetConstantBias(), 0.0);
+  EXPECT_EQ(pass->GetSlopeScaledBias(), 0.0);
+  pass->SetMode(7);
+  EXPECT_EQ(pass->GetMode(), vtkDualDepthShadowMapPass::DUAL);
+  pass->SetMode(-1);
+  EXPECT_EQ(pass->GetMode(), vtkDualDepthShadowMapPass::SECOND_DEPTH);
+  pass->SetLayerMethod(9);
+  EXPECT_EQ(pass->GetLayerMethod(), vtkDualDepthShadowMapPass::DEPTH_PEELING);
+  pass->SetDualOffset(-3.0);
+  EXPECT_EQ(pass->GetDualOffset(), 0.0);
+  pass->SetDualOffset(1e9);
+  EXPECT_EQ(pass->GetDualOffset(), 64.0);
+}
