@@ -1,6 +1,7 @@
 #include "ShadowMapCasterReach.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace shadowmaps
@@ -12,18 +13,20 @@ double Cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-// Points through a projection, divided by w; false if any lies behind it.
-bool ProjectAll(const glm::dmat4& m, const glm::dvec3* points, size_t count, std::vector<glm::dvec3>& out)
+// Clip x, y of points through a projection; false if any lies behind it or so
+// close to its plane that the division is not finite.
+bool ProjectAll(const glm::dmat4& m, const glm::dvec3* points, size_t count, std::vector<glm::dvec2>& out)
 {
   out.clear();
   for (size_t i = 0; i < count; ++i)
   {
     const glm::dvec4 clip = m * glm::dvec4(points[i], 1.0);
-    if (!(clip.w > 0.0))
+    const glm::dvec2 xy = glm::dvec2(clip) / clip.w;
+    if (!(clip.w > 0.0) || !std::isfinite(xy.x) || !std::isfinite(xy.y))
     {
       return false;
     }
-    out.emplace_back(glm::dvec3(clip) / clip.w);
+    out.push_back(xy);
   }
   return true;
 }
@@ -98,18 +101,24 @@ ShadowReach ReachOfBody(
   const glm::dmat4& viewProjection, const std::vector<glm::dvec3>& body, double margin)
 {
   ShadowReach reach;
-  reach.Margin = margin;
-  std::vector<glm::dvec3> clip;
-  if (body.empty() || !ProjectAll(viewProjection, body.data(), body.size(), clip))
+  if (!std::isfinite(margin))
   {
     return reach;
   }
-  std::vector<glm::dvec2> footprint;
-  reach.FarthestDepth = std::numeric_limits<double>::lowest();
-  for (const auto& p : clip)
+  // The grown body is convex too: its vertices are among these.
+  std::vector<glm::dvec3> grown;
+  for (const auto& p : body)
   {
-    footprint.emplace_back(p.x, p.y);
-    reach.FarthestDepth = std::max(reach.FarthestDepth, p.z);
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      grown.push_back(p +
+        margin * glm::dvec3(corner & 1 ? 1.0 : -1.0, corner & 2 ? 1.0 : -1.0, corner & 4 ? 1.0 : -1.0));
+    }
+  }
+  std::vector<glm::dvec2> footprint;
+  if (grown.empty() || !ProjectAll(viewProjection, grown.data(), grown.size(), footprint))
+  {
+    return reach;
   }
   reach.Footprint = ConvexHull(footprint);
   // A degenerate footprint (B seen edge-on) bounds nothing reliably.
@@ -125,23 +134,18 @@ bool MayShadowInto(const ShadowReach& reach, const glm::dmat4& viewProjection, c
     return true;
   }
   const std::array<glm::dvec3, 8> corners = bounds.Corners();
-  std::vector<glm::dvec3> clip;
+  std::vector<glm::dvec2> clip;
   if (!ProjectAll(viewProjection, corners.data(), corners.size(), clip))
   {
     return true;
   }
   glm::dvec2 lo(std::numeric_limits<double>::max());
   glm::dvec2 hi(std::numeric_limits<double>::lowest());
-  double nearest = std::numeric_limits<double>::max();
   for (const auto& p : clip)
   {
-    lo = glm::min(lo, glm::dvec2(p));
-    hi = glm::max(hi, glm::dvec2(p));
-    nearest = std::min(nearest, p.z);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
   }
-  // Widening the caster's footprint by the margin widens B's by as much.
-  lo -= reach.Margin;
-  hi += reach.Margin;
-  return nearest <= reach.FarthestDepth && RectangleMeetsPolygon(lo, hi, reach.Footprint);
+  return RectangleMeetsPolygon(lo, hi, reach.Footprint);
 }
 } // namespace shadowmaps

@@ -1,11 +1,14 @@
-// Which casters can shadow what the camera sees, per light view. A light ray is
-// a line of constant x and y in a view's clip space (that is what makes it a
-// shadow map), so a caster can only shadow the visible receivers if its
-// footprint there meets the footprint of the focus body B (camera frustum ∩
-// scene bounds) and some of it lies nearer the light than B's farthest point.
-// The view's own frustum keeps casters of its rectangle; B's footprint is a
-// convex polygon inside it, whose corners (a cascade's slice, a frustum seen
-// at an angle) hold casters whose shadows fall outside the view.
+// Which casters can shadow what a map shades. Receivers look a map up at their
+// own position's clip x, y (moved by their normal offset, widened by the
+// filter's taps), and a caster darkens a lookup only where it was drawn: so a
+// caster whose footprint in the view's clip space misses the footprint of the
+// receivers the map shades cannot shadow them. Those receivers lie in the focus
+// body B (camera frustum ∩ scene bounds, or a cascade's slice of it), grown in
+// the world by how far receivers sample beyond where they are. The view's own
+// frustum keeps casters of its rectangle; B's footprint is a convex polygon
+// inside it whose corners (a stable cascade's square around its slice, a
+// frustum seen at an angle) hold casters whose shadows fall outside the view.
+// Depth is not tested: two-surface maps keep what lies beyond a receiver too.
 #ifndef ShadowMapCasterReach_h
 #define ShadowMapCasterReach_h
 
@@ -17,22 +20,18 @@
 
 namespace shadowmaps
 {
-/// Where in a view's clip space shadows can be seen.
+/// Where in a view's clip space receivers sample it.
 struct ShadowReach
 {
-  /// Every caster may matter (part of B lies behind the light, or B is empty).
+  /// Every caster may matter: part of B lies behind the light or projects to
+  /// no usable polygon, or B is empty.
   bool Everywhere = true;
   /// B's footprint: a convex polygon in clip x, y, counter-clockwise.
   std::vector<glm::dvec2> Footprint;
-  /// B's farthest clip depth.
-  double FarthestDepth = 0.0;
-  /// How far beyond the footprint, in clip x and y, receivers still sample the
-  /// map (filter taps, normal offset).
-  double Margin = 0.0;
 };
 
-/// The reach of the focus body `body` (its vertices) in the view
-/// `viewProjection`, widened by `margin` in clip x and y.
+/// The reach of the focus body `body` (its vertices), each vertex grown by
+/// `margin` world units along every axis, in the view `viewProjection`.
 ShadowReach ReachOfBody(
   const glm::dmat4& viewProjection, const std::vector<glm::dvec3>& body, double margin);
 

@@ -125,15 +125,20 @@ bool IsNonFinite(const LightView& view)
 // The bits of a matrix, so that the signature follows the camera's values
 // rather than its identity or MTime (image-processing passes hand their
 // delegate a fresh copy of the camera every frame).
+void AppendBits(double value, std::vector<vtkMTimeType>& signature)
+{
+  vtkMTimeType bits = 0;
+  std::memcpy(&bits, &value, sizeof(double));
+  signature.push_back(bits);
+}
+
 void AppendMatrixBits(const glm::dmat4& m, std::vector<vtkMTimeType>& signature)
 {
   for (int c = 0; c < 4; ++c)
   {
     for (int r = 0; r < 4; ++r)
     {
-      vtkMTimeType bits = 0;
-      std::memcpy(&bits, &m[c][r], sizeof(double));
-      signature.push_back(bits);
+      AppendBits(m[c][r], signature);
     }
   }
 }
@@ -189,8 +194,37 @@ std::vector<glm::dvec3> ShadedBody(const shadowmaps::ShadowFrame& frame, const L
 
 // The casters inside the view whose shadows may reach `visible`, the focus
 // body (empty: no culling by it).
+// The world-space size of the coarsest texel of `view` over `body` (the one the
+// receivers' normal offset is scaled by); infinite when it varies beyond a
+// formula (warped maps), which turns the culling off.
+double CoarsestTexel(const ShadowLight& light, const LightView& view, const std::vector<glm::dvec3>& body)
+{
+  if (view.TexelSizeFromGradient)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  double farthest = 0.0;
+  for (const auto& p : body)
+  {
+    farthest = std::max(farthest, glm::length(p - light.Position));
+  }
+  return view.TexelConstant + view.TexelPerUnitDistance * farthest;
+}
+
+// How far beyond where they are the receivers of view `index` of `light` look
+// its map up, in world units: the filter's taps (sized by the light's first
+// view in cascades, whose kernels keep their world size), the normal offset,
+// and a texel for rounding.
+double ReachMargin(const ShadowLight& light, size_t index, const std::vector<glm::dvec3>& body,
+  double filterReachTexels, double normalOffsetTexels)
+{
+  const double texel = CoarsestTexel(light, light.Views[index], body);
+  const double first = CoarsestTexel(light, light.Views.front(), body);
+  return filterReachTexels * std::max(texel, first) + (normalOffsetTexels + 1.0) * texel;
+}
+
 std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const LightView& view,
-  const std::vector<glm::dvec3>& visible, double marginTexels, int resolution)
+  const std::vector<glm::dvec3>& visible, double margin)
 {
   std::vector<const Caster*> casters;
   if (view.OutOfView)
@@ -199,8 +233,7 @@ std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const L
   }
   const glm::dmat4 viewProjection = view.ViewProjection();
   const auto planes = shadowmaps::FrustumPlanes(viewProjection);
-  const shadowmaps::ShadowReach reach = shadowmaps::ReachOfBody(
-    viewProjection, visible, 2.0 * marginTexels / std::max(resolution, 1));
+  const shadowmaps::ShadowReach reach = shadowmaps::ReachOfBody(viewProjection, visible, margin);
   for (const auto& caster : all)
   {
     if (FrustumMeetsBox(planes, caster.Bounds) &&
@@ -572,6 +605,12 @@ std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRender
     static_cast<vtkMTimeType>(size[1]) };
   AppendMatrixBits(r.Frame.CameraView, signature);
   AppendMatrixBits(r.Frame.CameraProjection, signature);
+  // The fits and the casters' reach follow every prop's bounds, receivers' too.
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    AppendBits(r.Frame.SceneBounds.Min[axis], signature);
+    AppendBits(r.Frame.SceneBounds.Max[axis], signature);
+  }
   for (const auto& light : r.Lights)
   {
     signature.push_back(reinterpret_cast<vtkMTimeType>(light.Light));
@@ -856,17 +895,14 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
       ? shadowmaps::IntersectFrustumWithBox(
           r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
       : std::vector<glm::dvec3>();
-    // Receivers sample the map up to the filter's reach and their normal offset
-    // beyond where they are, and a texel further for rounding.
-    const double reachMargin = r.Frame.FilterReachTexels + this->NormalOffset + 1.0;
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
       {
         const int layer = light.FirstLayer + static_cast<int>(v);
-        const std::vector<const Caster*> casters =
-          CastersInView(r.Casters, light.Views[v], ShadedBody(r.Frame, light.Views[v], visible),
-            reachMargin, r.Frame.Resolution);
+        const std::vector<glm::dvec3> shaded = ShadedBody(r.Frame, light.Views[v], visible);
+        const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
+          ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
         std::vector<vtkMTimeType> signature = LayerSignature(light.Views[v], casters);
         if (r.LayerSignatures[layer] == signature)
         {

@@ -7,6 +7,7 @@
 #include "vtkWarpedShadowMapViews.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 vtkStandardNewMacro(vtkCascadedShadowMapViews);
@@ -239,11 +240,14 @@ void vtkCascadedShadowMapViews::FitCascades(const shadowmaps::ShadowFrame& frame
       blends ? shadowmaps::BlendBandStart(splits, c, this->BlendFraction) : shadowmaps::NoBlendBand);
     if (this->Selection == BY_DEPTH)
     {
-      // From where the previous cascade starts blending into this one.
+      // From where the previous cascade starts blending into this one; the last
+      // one also shades whatever lies beyond its split (unfaded).
       const double first = c > 0 && light.CascadeDepths[c - 1].z < shadowmaps::NoBlendBand
         ? light.CascadeDepths[c - 1].z
         : splits[c];
-      light.Views.back().ShadedDepths = glm::dvec2(first, splits[c + 1]);
+      const double last =
+        c + 1 < cascades ? splits[c + 1] : std::numeric_limits<double>::infinity();
+      light.Views.back().ShadedDepths = glm::dvec2(first, last);
     }
   }
   light.CoverageBlendFraction = this->Selection == BY_COVERAGE ? this->BlendFraction : -1.0;

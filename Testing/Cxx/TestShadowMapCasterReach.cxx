@@ -40,7 +40,7 @@ TEST(ShadowMapCasterReach, HullDropsInnerAndRepeatedPoints)
 
 // In an orthographic view along -z (clip z grows away from the light), the
 // receivers fill the unit cube around the origin.
-TEST(ShadowMapCasterReach, CastersMustMeetTheFootprintAndBeNearer)
+TEST(ShadowMapCasterReach, CastersMustMeetTheFootprint)
 {
   const glm::dmat4 view = glm::ortho(-5.0, 5.0, -5.0, 5.0, -10.0, 10.0);
   const ShadowReach reach = ReachOfBody(view, Corners(Box({ -1, -1, -1 }, { 1, 1, 1 })), 0.0);
@@ -48,15 +48,16 @@ TEST(ShadowMapCasterReach, CastersMustMeetTheFootprintAndBeNearer)
   EXPECT_TRUE(MayShadowInto(reach, view, Box({ -0.5, -0.5, 2 }, { 0.5, 0.5, 3 })))
     << "above the receivers, nearer the light (the view looks down -z)";
   EXPECT_FALSE(MayShadowInto(reach, view, Box({ 2, 2, 2 }, { 3, 3, 3 }))) << "beside them";
-  EXPECT_FALSE(MayShadowInto(reach, view, Box({ -0.5, -0.5, -4 }, { 0.5, 0.5, -3 })))
-    << "behind them";
+  EXPECT_TRUE(MayShadowInto(reach, view, Box({ -0.5, -0.5, -4 }, { 0.5, 0.5, -3 })))
+    << "behind them: kept, a two-surface map holds what lies beyond a receiver";
   // A footprint that is a diamond: its rectangle's corners hold no shadow.
   const ShadowReach diamond = ReachOfBody(
     view, { { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } }, 0.0);
   EXPECT_FALSE(MayShadowInto(diamond, view, Box({ 0.7, 0.7, 1 }, { 0.9, 0.9, 2 })));
   EXPECT_TRUE(MayShadowInto(diamond, view, Box({ 0.2, 0.2, 1 }, { 0.4, 0.4, 2 })));
-  // The margin (receivers' filter reach) keeps a caster just beside them.
-  const ShadowReach widened = ReachOfBody(view, Corners(Box({ -1, -1, -1 }, { 1, 1, 1 })), 0.1);
+  // The margin (how far receivers sample beyond themselves, in world units)
+  // keeps a caster just beside them.
+  const ShadowReach widened = ReachOfBody(view, Corners(Box({ -1, -1, -1 }, { 1, 1, 1 })), 0.3);
   EXPECT_TRUE(MayShadowInto(widened, view, Box({ 1.2, 0, 2 }, { 1.4, 0.5, 3 })));
   EXPECT_FALSE(MayShadowInto(reach, view, Box({ 1.2, 0, 2 }, { 1.4, 0.5, 3 })));
 }
@@ -74,4 +75,7 @@ TEST(ShadowMapCasterReach, BehindAPerspectiveLightEverythingIsKept)
   EXPECT_TRUE(MayShadowInto(ahead, view, Box({ -1, -1, -1 }, { 1, 1, 1 }))) << "reaches behind";
   EXPECT_FALSE(MayShadowInto(ahead, view, Box({ 5, 5, -3 }, { 6, 6, -2 })));
   EXPECT_TRUE(ReachOfBody(view, {}, 0.0).Everywhere) << "no body: no culling";
+  const glm::dvec3 onTheLightsPlane(1.0, 0.0, -1e-320);
+  EXPECT_TRUE(ReachOfBody(view, { onTheLightsPlane, { 1, 1, -5 }, { -1, 1, -5 } }, 0.0).Everywhere)
+    << "a point the division cannot place";
 }
