@@ -1,5 +1,7 @@
 #include "ShadowMapCasterReach.h"
 
+#include "ShadowMapTrapezoid.h" // For ConvexHull2D
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,38 +67,6 @@ bool RectangleMeetsPolygon(
 } // namespace
 
 //------------------------------------------------------------------------------
-std::vector<glm::dvec2> ConvexHull(std::vector<glm::dvec2> points)
-{
-  std::sort(points.begin(), points.end(),
-    [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() < 3)
-  {
-    return points;
-  }
-  std::vector<glm::dvec2> hull(2 * points.size());
-  size_t k = 0;
-  for (size_t i = 0; i < points.size(); ++i)
-  {
-    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
-    {
-      --k;
-    }
-    hull[k++] = points[i];
-  }
-  for (size_t i = points.size() - 1, lower = k + 1; i > 0; --i)
-  {
-    while (k >= lower && Cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.0)
-    {
-      --k;
-    }
-    hull[k++] = points[i - 1];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
-//------------------------------------------------------------------------------
 ShadowReach ReachOfBody(
   const glm::dmat4& viewProjection, const std::vector<glm::dvec3>& body, double margin)
 {
@@ -120,7 +90,7 @@ ShadowReach ReachOfBody(
   {
     return reach;
   }
-  reach.Footprint = ConvexHull(footprint);
+  reach.Footprint = ConvexHull2D(footprint);
   // A degenerate footprint (B seen edge-on) bounds nothing reliably.
   reach.Everywhere = reach.Footprint.size() < 3;
   return reach;

@@ -37,10 +37,6 @@ ShadowReach ReachOfBody(
 
 /// False only if a caster within `bounds` can shadow nothing in `reach`.
 bool MayShadowInto(const ShadowReach& reach, const glm::dmat4& viewProjection, const Aabb& bounds);
-
-/// Convex hull of points in the plane, counter-clockwise, without repeated or
-/// collinear points (Andrew's monotone chain).
-std::vector<glm::dvec2> ConvexHull(std::vector<glm::dvec2> points);
 } // namespace shadowmaps
 
 #endif

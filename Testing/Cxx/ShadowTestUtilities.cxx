@@ -146,6 +146,13 @@ vtkSmartPointer<vtkImageData> Capture(vtkRenderWindow* window, bool rerender)
 } // namespace
 
 //------------------------------------------------------------------------------
+std::vector<unsigned char> RgbBytes(vtkImageData* image)
+{
+  const auto* first = static_cast<const unsigned char*>(image->GetScalarPointer());
+  return std::vector<unsigned char>(first, first + image->GetNumberOfPoints() * 3);
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source)
 {
   vtkNew<vtkPolyDataMapper> mapper;

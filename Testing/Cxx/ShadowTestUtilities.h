@@ -10,6 +10,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -51,6 +52,9 @@ vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* so
 
 /// Renders and returns the frame as RGB.
 vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window);
+
+/// The RGB bytes of a captured frame, to compare frames byte for byte.
+std::vector<unsigned char> RgbBytes(vtkImageData* image);
 
 /// The frame last rendered, as RGB, without rendering again.
 vtkSmartPointer<vtkImageData> CaptureAsRendered(vtkRenderWindow* window);

@@ -565,10 +565,6 @@ INSTANTIATE_TEST_SUITE_P(ShadowBehaviour, DegenerateScenesPerPass,
 // re-rendered or rendered by a new pass, is bit-identical (baselines can be strict).
 TEST(ShadowBehaviour, TheSameFrameTwiceIsBitIdentical)
 {
-  const auto bytes = [](vtkImageData* image) {
-    const auto* first = static_cast<const unsigned char*>(image->GetScalarPointer());
-    return std::vector<unsigned char>(first, first + image->GetNumberOfPoints() * 3);
-  };
   for (const bool cascaded : { false, true })
   {
     TestScene scene;
@@ -585,16 +581,16 @@ TEST(ShadowBehaviour, TheSameFrameTwiceIsBitIdentical)
     vtkSmartPointer<vtkDepthShadowMapPass> pass = makePass();
     pass->SetFilterToPoisson();
     scene.Renderer->SetPass(pass);
-    const std::vector<unsigned char> first = bytes(RenderAndCapture(scene.Window));
-    EXPECT_EQ(bytes(RenderAndCapture(scene.Window)), first) << "maps reused, cascaded " << cascaded;
+    const std::vector<unsigned char> first = RgbBytes(RenderAndCapture(scene.Window));
+    EXPECT_EQ(RgbBytes(RenderAndCapture(scene.Window)), first) << "maps reused, cascaded " << cascaded;
     const int updates = pass->GetNumberOfShadowMapUpdates();
     pass->Modified();
-    EXPECT_EQ(bytes(RenderAndCapture(scene.Window)), first) << "maps re-rendered, cascaded " << cascaded;
+    EXPECT_EQ(RgbBytes(RenderAndCapture(scene.Window)), first) << "maps re-rendered, cascaded " << cascaded;
     EXPECT_GT(pass->GetNumberOfShadowMapUpdates(), updates);
     vtkSmartPointer<vtkDepthShadowMapPass> fresh = makePass();
     fresh->SetFilterToPoisson();
     scene.Renderer->SetPass(fresh);
-    EXPECT_EQ(bytes(RenderAndCapture(scene.Window)), first) << "a new pass, cascaded " << cascaded;
+    EXPECT_EQ(RgbBytes(RenderAndCapture(scene.Window)), first) << "a new pass, cascaded " << cascaded;
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
     fresh->ReleaseGraphicsResources(scene.Window);
@@ -657,10 +653,6 @@ TEST(ShadowBehaviour, OrbitingCameraBuildsNoShaders)
 // of a fresh pass rendering every layer.
 TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
 {
-  const auto bytes = [](vtkImageData* image) {
-    const auto* first = static_cast<const unsigned char*>(image->GetScalarPointer());
-    return std::vector<unsigned char>(first, first + image->GetNumberOfPoints() * 3);
-  };
   const auto orbit = [](TestScene& scene, double degrees) {
     scene.Renderer->GetActiveCamera()->Azimuth(degrees);
     scene.Renderer->ResetCameraClippingRange();
@@ -671,7 +663,7 @@ TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
     kept->Register(nullptr);
     scene.Renderer->SetPass(fresh);
     scene.Window->Render();
-    const std::vector<unsigned char> frame = bytes(CaptureAsRendered(scene.Window));
+    const std::vector<unsigned char> frame = RgbBytes(CaptureAsRendered(scene.Window));
     scene.Renderer->SetPass(kept);
     kept->UnRegister(nullptr);
     fresh->ReleaseGraphicsResources(scene.Window);
@@ -688,7 +680,7 @@ TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
     orbit(scene, 4.0);
     EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6);
     EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 0) << "the faces stayed put";
-    const std::vector<unsigned char> kept = bytes(CaptureAsRendered(scene.Window));
+    const std::vector<unsigned char> kept = RgbBytes(CaptureAsRendered(scene.Window));
     EXPECT_EQ(kept, freshFrame(scene, vtkSmartPointer<vtkDepthShadowMapPass>::New()));
     scene.Box->AddPosition(0.2, 0.0, 0.0);
     scene.Window->Render();
@@ -715,7 +707,7 @@ TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
     scene.Window->Render();
     orbit(scene, 0.1);
     EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 0) << "spot " << spot;
-    const std::vector<unsigned char> kept = bytes(CaptureAsRendered(scene.Window));
+    const std::vector<unsigned char> kept = RgbBytes(CaptureAsRendered(scene.Window));
     EXPECT_EQ(kept, freshFrame(scene, vtkSmartPointer<vtkWarpedShadowMapPass>::New())) << spot;
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
@@ -732,7 +724,7 @@ TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
     orbit(scene, 0.05);
     EXPECT_GE(pass->GetNumberOfShadowMapUpdates(), 2);
     EXPECT_LT(pass->GetNumberOfRenderedLayers(), pass->GetNumberOfShadowMapLayers());
-    const std::vector<unsigned char> kept = bytes(CaptureAsRendered(scene.Window));
+    const std::vector<unsigned char> kept = RgbBytes(CaptureAsRendered(scene.Window));
     EXPECT_EQ(kept, freshFrame(scene, vtkSmartPointer<vtkCascadedShadowMapPass>::New()));
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);

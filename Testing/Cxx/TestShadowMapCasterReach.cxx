@@ -1,5 +1,6 @@
 // Which casters can shadow what a view shades (Plugin/Math/ShadowMapCasterReach).
 #include "ShadowMapCasterReach.h"
+#include "ShadowMapTrapezoid.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -26,7 +27,7 @@ std::vector<glm::dvec3> Corners(const Aabb& box)
 TEST(ShadowMapCasterReach, HullDropsInnerAndRepeatedPoints)
 {
   const std::vector<glm::dvec2> hull =
-    ConvexHull({ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 }, { 1, 1 }, { 0.5, 0 } });
+    ConvexHull2D({ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 }, { 1, 1 }, { 0.5, 0 } });
   ASSERT_EQ(hull.size(), 4u);
   double area = 0.0;
   for (size_t i = 0; i < hull.size(); ++i)
