@@ -6,13 +6,16 @@
 # Passes (the vtkRenderPass subclasses that coordinate them).
 set(shadowmaps_shaders
   vtkShadowMapsAnalysisFS
+  vtkShadowMapsBlurFS
   vtkShadowMapsCasterFS
   vtkShadowMapsDepthLookupFS
   vtkShadowMapsDualDepthLookupFS
   vtkShadowMapsFilterFS
   vtkShadowMapsLinearDepthFS
   vtkShadowMapsLinearDepthResolveFS
+  vtkShadowMapsMomentsFS
   vtkShadowMapsReceiverFS
+  vtkShadowMapsVarianceLookupFS
   vtkShadowMapsViewFS)
 set(shadowmaps_shader_sources)
 set(shadowmaps_shader_headers)
@@ -34,10 +37,12 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Passes/vtkCascadedShadowMapPass
     Plugin/Passes/vtkDepthShadowMapPass
     Plugin/Passes/vtkDualDepthShadowMapPass
+    Plugin/Passes/vtkVarianceShadowMapPass
     Plugin/Passes/vtkWarpedShadowMapPass
     Plugin/Representations/vtkDepthShadowMapRepresentation
     Plugin/Representations/vtkDualDepthShadowMapRepresentation
     Plugin/Representations/vtkShadowMapRepresentation
+    Plugin/Representations/vtkVarianceShadowMapRepresentation
     Plugin/Views/vtkCascadedShadowMapViews
     Plugin/Views/vtkShadowMapViews
     Plugin/Views/vtkUniformShadowMapViews
@@ -46,10 +51,12 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapCascades.cxx
     Plugin/Math/ShadowMapCasterReach.cxx
     Plugin/Math/ShadowMapFocusing.cxx
+    Plugin/Math/ShadowMapLightDepth.cxx
     Plugin/Math/ShadowMapPerspective.cxx
     Plugin/Math/ShadowMapTrapezoid.cxx
     Plugin/Math/ShadowMapWarping.cxx
     Plugin/OpenGL/ShadowMapAnalysis.cxx
+    Plugin/OpenGL/ShadowMapBlur.cxx
     Plugin/OpenGL/ShadowMapCasterShader.cxx
     Plugin/OpenGL/ShadowMapCasting.cxx
     Plugin/OpenGL/ShadowMapLinearDepthResolve.cxx
@@ -62,6 +69,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     # GLM, which the wrappers need not (and are slow to) parse.
     Plugin/Math/ShadowMapFocusing.h
     Plugin/Math/ShadowMapGlm.h
+    Plugin/Math/ShadowMapLightDepth.h
     Plugin/OpenGL/ShadowMapTextureArray.h
     Plugin/Views/ShadowMapLight.h
   PRIVATE_HEADERS
@@ -71,6 +79,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapTrapezoid.h
     Plugin/Math/ShadowMapWarping.h
     Plugin/OpenGL/ShadowMapAnalysis.h
+    Plugin/OpenGL/ShadowMapBlur.h
     Plugin/OpenGL/ShadowMapCasterShader.h
     Plugin/OpenGL/ShadowMapCasting.h
     Plugin/OpenGL/ShadowMapLinearDepthResolve.h

@@ -7,6 +7,13 @@
 // vtkShadowMaps and defines vtkShadowLookup (vtkShadowMapsDepthLookupFS for
 // depth maps).
 
+// Lookups that compare with their own surface (VTK_SHADOW_RECEIVER_PLANE) or
+// filter over the receiver's footprint in the map (VTK_SHADOW_MAP_FOOTPRINT)
+// take the position's screen derivatives where control flow is uniform.
+#if defined(VTK_SHADOW_RECEIVER_PLANE) || defined(VTK_SHADOW_MAP_FOOTPRINT)
+#define VTK_SHADOW_POSITION_DERIVATIVES
+#endif
+
 // Receivers are evaluated in the camera's view coordinates (VC).
 uniform mat4 vtkShadowViewToWorld;
 
@@ -47,6 +54,10 @@ struct vtkShadowLight
   // Tiles viewLayout (shadowmaps::TileGrid): columns, rows, and a tile's window
   // over the whole map's along x and y.
   vec4 TileGrid;
+  // The light depth (shadowmaps::LightDepth) in VC: dot(DepthPlane.xyz, p) +
+  // DepthPlane.w + DepthPerDistance * |p - PositionVC|.
+  vec4 DepthPlane;
+  float DepthPerDistance;
 };
 uniform vtkShadowLight vtkShadowLights[VTK_SHADOW_MAX_LIGHTS];
 
@@ -222,6 +233,51 @@ bool vtkShadowInsideMap(vec4 clip, int view, int features)
     all(lessThanEqual(mapCoord, vec3(1.0)));
 }
 
+#ifdef VTK_SHADOW_POSITION_DERIVATIVES
+// The drawn surface's screen derivatives. They are taken where VTK's shaders
+// keep control flow uniform (ReceiverShader::Inject); shaders that shape their
+// own surface (impostors) leave them zero.
+vec3 vtkShadowPositionDx = vec3(0.0);
+vec3 vtkShadowPositionDy = vec3(0.0);
+#endif
+
+#ifdef VTK_SHADOW_LIGHT_DEPTH
+// The light depth of a receiver (MapStorage::LightDepth), unclamped.
+float vtkShadowLightDepth(vec3 positionVC, int light)
+{
+  vec4 plane = vtkShadowLights[light].DepthPlane;
+  return dot(plane.xyz, positionVC) + plane.w +
+    vtkShadowLights[light].DepthPerDistance * distance(positionVC, vtkShadowLights[light].PositionVC);
+}
+#endif
+
+#ifdef VTK_SHADOW_MAP_FOOTPRINT
+// For lookups that filter over the pixel's footprint in the map (mipmaps,
+// a variance floor from the receiver's slope), set before each vtkShadowLookup:
+// the map coordinates' and the light depth's changes over one pixel along x
+// and y. They come from the position's derivatives through the map's own
+// gradients, not from derivatives of the map coordinates, which jump where
+// neighbouring pixels pick different views (cascades, cube faces).
+vec2 vtkShadowMapDx = vec2(0.0);
+vec2 vtkShadowMapDy = vec2(0.0);
+vec2 vtkShadowLightDepthDxDy = vec2(0.0);
+
+void vtkShadowMeasureFootprint(vec3 positionVC, int light, int view)
+{
+  vec3 gradU;
+  vec3 gradV;
+  vtkShadowMapGradients(positionVC, view, gradU, gradV);
+  vtkShadowMapDx = vec2(dot(gradU, vtkShadowPositionDx), dot(gradV, vtkShadowPositionDx));
+  vtkShadowMapDy = vec2(dot(gradU, vtkShadowPositionDy), dot(gradV, vtkShadowPositionDy));
+  vec3 toReceiver = positionVC - vtkShadowLights[light].PositionVC;
+  float distanceToLight = max(length(toReceiver), 1e-30);
+  vec3 gradDepth = vtkShadowLights[light].DepthPlane.xyz +
+    vtkShadowLights[light].DepthPerDistance * toReceiver / distanceToLight;
+  vtkShadowLightDepthDxDy =
+    vec2(dot(gradDepth, vtkShadowPositionDx), dot(gradDepth, vtkShadowPositionDy));
+}
+#endif
+
 #ifdef VTK_SHADOW_RECEIVER_PLANE
 // For lookups that compare with a surface of their own behind the casters'
 // (dual-depth maps), set before each vtkShadowLookup:
@@ -242,11 +298,8 @@ const float VTK_SHADOW_MAX_PLANE_TEXELS = 8.0;
 // The receiver's plane is that of the drawn facet, from the position's screen
 // derivatives, not the interpolated shading normal: a tessellated sphere's
 // facets tilt away from its shading normals, and over a filter's taps the
-// difference shows as acne. The derivatives are taken where VTK's shaders keep
-// control flow uniform (ReceiverShader::Inject); shaders that shape their own
-// surface (impostors) leave them zero, and the shading normal stands in.
-vec3 vtkShadowPositionDx = vec3(0.0);
-vec3 vtkShadowPositionDy = vec3(0.0);
+// difference shows as acne. Without derivatives (impostors) the shading normal
+// stands in.
 vec3 vtkShadowPlaneNormalVC = vec3(0.0, 0.0, 1.0);
 
 void vtkShadowSetReceiverPlane(vec3 shadingNormalVC)
@@ -299,15 +352,21 @@ void vtkShadowMeasureReceiver(
 
 float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view, int features)
 {
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
+  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, view, features);
+  vec4 clip = vtkShadowViews[view].ViewToMap * vec4(biased, 1.0);
   if (!vtkShadowInsideMap(clip, view, features))
   {
     return 1.0;
   }
   vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
 #ifdef VTK_SHADOW_RECEIVER_PLANE
-  vtkShadowMeasureReceiver(vtkShadowOffsetAlongNormal(positionVC, normalVC, light, view, features),
-    vtkShadowPlaneNormalVC, mapCoord, light, view, features);
+  vtkShadowMeasureReceiver(biased, vtkShadowPlaneNormalVC, mapCoord, light, view, features);
+#endif
+#ifdef VTK_SHADOW_MAP_FOOTPRINT
+  vtkShadowMeasureFootprint(biased, light, view);
+#endif
+#ifdef VTK_SHADOW_LIGHT_DEPTH
+  mapCoord.z = vtkShadowLightDepth(biased, light);
 #endif
   return vtkShadowLookup(mapCoord, view);
 }

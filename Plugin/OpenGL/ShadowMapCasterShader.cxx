@@ -7,6 +7,8 @@
 #include <functional>
 #include <sstream>
 
+#include <glm/gtc/type_ptr.hpp>
+
 namespace shadowmaps
 {
 namespace
@@ -52,12 +54,16 @@ std::string Declarations(const CasterCode& code)
   {
     dec += "#define VTK_SHADOW_PEEL\n";
   }
+  if (code.LightDepth)
+  {
+    dec += "#define VTK_SHADOW_LIGHT_DEPTH\n";
+  }
   dec += vtkShadowMapsCasterFS;
   if (code.LinearDepth)
   {
     dec += vtkShadowMapsLinearDepthFS;
   }
-  return dec + "\n";
+  return dec + code.StoreFunctions + "\n";
 }
 
 // What the branch writes once it has vtkShadowCasterDepth.
@@ -95,8 +101,10 @@ std::string Branch(
   {
     branch << "    if (!vtkShadowCastsThisFace())\n    {\n      discard;\n    }\n";
   }
-  branch << "    float vtkShadowCasterDepth = "
-         << (code.LinearDepth ? "vtkShadowLinearDepth(" + rawDepth + ")" : rawDepth) << ";\n";
+  const std::string depth = code.LightDepth ? "vtkShadowLightDepthAt(" + rawDepth + ")"
+    : code.LinearDepth                      ? "vtkShadowLinearDepth(" + rawDepth + ")"
+                                            : rawDepth;
+  branch << "    float vtkShadowCasterDepth = " << depth << ";\n";
   if (writeDepth)
   {
     branch << "    gl_FragDepth = vtkShadowCasterDepth;\n";
@@ -137,8 +145,9 @@ void PutAtMarker(std::string& fragmentShader, const char* marker, const std::str
 std::string CasterCode::Key() const
 {
   std::ostringstream key;
-  key << this->Faces << ':' << this->LinearDepth << ':' << static_cast<int>(this->SecondDepth)
-      << ':' << std::hash<std::string>{}(this->StoreCode);
+  key << this->Faces << ':' << this->LinearDepth << ':' << this->LightDepth << ':'
+      << static_cast<int>(this->SecondDepth) << ':'
+      << std::hash<std::string>{}(this->StoreCode + '\n' + this->StoreFunctions);
   return key.str();
 }
 
@@ -204,6 +213,15 @@ void CasterUniforms::SetView(const std::array<float, 3>& windowToInverseW,
 }
 
 //------------------------------------------------------------------------------
+void CasterUniforms::SetLightDepth(
+  const glm::mat4& windowToWorld, const glm::vec4& plane, const glm::vec4& radial)
+{
+  this->WindowToWorld = windowToWorld;
+  this->LightDepthPlane = plane;
+  this->LightDepthRadial = radial;
+}
+
+//------------------------------------------------------------------------------
 void CasterUniforms::SetPeeling(bool secondPass, int peelUnit)
 {
   this->SecondPass = secondPass;
@@ -231,6 +249,13 @@ void CasterUniforms::ApplyCasting(vtkShaderProgram* program) const
   if (program->IsUniformUsed("vtkShadowCasterParallel"))
   {
     program->SetUniformi("vtkShadowCasterParallel", this->Parallel ? 1 : 0);
+  }
+  if (program->IsUniformUsed("vtkShadowWindowToWorld"))
+  {
+    glm::mat4 windowToWorld = this->WindowToWorld; // VTK 9.1 takes a mutable pointer
+    program->SetUniformMatrix4x4("vtkShadowWindowToWorld", glm::value_ptr(windowToWorld));
+    program->SetUniform4f("vtkShadowLightDepthPlane", glm::value_ptr(this->LightDepthPlane));
+    program->SetUniform4f("vtkShadowLightDepthRadial", glm::value_ptr(this->LightDepthRadial));
   }
   if (program->IsUniformUsed("vtkShadowWindowToInverseW"))
   {

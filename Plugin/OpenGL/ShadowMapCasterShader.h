@@ -20,6 +20,8 @@
 #include <array>
 #include <string>
 
+#include <glm/glm.hpp>
+
 class vtkShaderProgram;
 
 namespace shadowmaps
@@ -33,6 +35,11 @@ struct CasterCode
   /// GLSL storing the texel's values (reads `float vtkShadowCasterDepth`,
   /// writes gl_FragData[0]); empty: depth only.
   std::string StoreCode;
+  /// GLSL functions StoreCode calls.
+  std::string StoreFunctions;
+  /// vtkShadowCasterDepth is the light depth (MapStorage::LightDepth), from
+  /// the window position through CasterUniforms::SetLightDepth's uniforms.
+  bool LightDepth = false;
   bool LinearDepth = false;
   /// Not None (nor Auto): the branch stores the two nearest surfaces' depths
   /// this way instead of StoreCode, and draws both faces. FrontAndBackFaces
@@ -80,6 +87,11 @@ public:
   void SetView(const std::array<float, 3>& windowToInverseW,
     const std::array<float, 3>& linearDepthBias, bool parallel);
 
+  /// The light depth (CasterCode::LightDepth) of the view being rendered:
+  /// window coordinates (pixels, window depth) to world, and the light's
+  /// LightDepth in world.
+  void SetLightDepth(const glm::mat4& windowToWorld, const glm::vec4& plane, const glm::vec4& radial);
+
   /// Peeling (CasterCode::SecondDepth): whether this is the second pass, and
   /// the texture unit of the first pass's depths (kept by every program, in
   /// both paths: samplers of two types must not share a unit).
@@ -98,6 +110,9 @@ private:
   int PeelUnit = 0;
   std::array<float, 3> WindowToInverseW{ { 0.0f, 0.0f, 1.0f } };
   std::array<float, 3> LinearDepthBias{ { 0.0f, 0.0f, 0.0f } };
+  glm::mat4 WindowToWorld{ 1.0f };
+  glm::vec4 LightDepthPlane{ 0.0f };
+  glm::vec4 LightDepthRadial{ 0.0f };
   bool Parallel = false;
 };
 } // namespace shadowmaps

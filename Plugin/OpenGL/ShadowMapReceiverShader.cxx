@@ -141,7 +141,7 @@ void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shado
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::ShadowMaps::Dec", Declarations(lights, layers, code));
   vtkShaderProgram::Substitute(fragmentShader, UniformFlowMarker,
-    facetDerivatives ? "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
+    facetDerivatives ? "#ifdef VTK_SHADOW_POSITION_DERIVATIVES\n"
                        "  vtkShadowPositionDx = dFdx(vertexVC.xyz);\n"
                        "  vtkShadowPositionDy = dFdy(vertexVC.xyz);\n"
                        "#endif\n"
@@ -225,13 +225,8 @@ ReceiverUniforms::View ReceiverUniforms::PackView(
   if (light.Layout == ViewLayout::Cascades && index < light.CascadeDepths.size())
   {
     packed.Cascade = ToFloat(light.CascadeDepths[index]);
-    // Cascades of one light share their texel formula's kind (constant for
-    // directional, per unit distance for spot), so the sum compares them.
-    const LightView& first = light.Views.front();
-    const double firstTexel = first.TexelConstant + first.TexelPerUnitDistance;
-    const double texel = view.TexelConstant + view.TexelPerUnitDistance;
-    packed.FilterScale = static_cast<float>(firstTexel > 0.0 && texel > 0.0 ? firstTexel / texel : 1.0);
   }
+  packed.FilterScale = static_cast<float>(FilterScale(light, index));
   return packed;
 }
 
@@ -247,6 +242,9 @@ ReceiverUniforms::Light ReceiverUniforms::PackLight(
   packed.TileGrid = glm::vec4(static_cast<float>(light.Tiles.Columns),
     static_cast<float>(light.Tiles.Rows), static_cast<float>(light.Tiles.WindowFraction.x),
     static_cast<float>(light.Tiles.WindowFraction.y));
+  const LightDepth depthVC = TransformLightDepth(light.Depth, cameraView);
+  packed.DepthPlane = glm::vec4(depthVC.Plane);
+  packed.DepthPerDistance = static_cast<float>(depthVC.PerDistance);
   return packed;
 }
 
@@ -288,7 +286,8 @@ void ReceiverUniforms::NameMembers()
   for (std::size_t i = this->LightNames.size(); i < this->Lights.size(); ++i)
   {
     this->LightNames.push_back(name(
-      "vtkShadowLights", i, { "PositionVC", "Attenuation", "Fade", "CoverageBand", "TileGrid" }));
+      "vtkShadowLights", i, { "PositionVC", "Attenuation", "Fade", "CoverageBand", "TileGrid",
+                              "DepthPlane", "DepthPerDistance" }));
   }
 }
 
@@ -321,6 +320,8 @@ void ReceiverUniforms::Apply(
     program->SetUniform2f(names[2].c_str(), glm::value_ptr(light.Fade));
     program->SetUniformf(names[3].c_str(), light.CoverageBand);
     program->SetUniform4f(names[4].c_str(), glm::value_ptr(light.TileGrid));
+    program->SetUniform4f(names[5].c_str(), glm::value_ptr(light.DepthPlane));
+    program->SetUniformf(names[6].c_str(), light.DepthPerDistance);
   }
   program->SetUniformi("vtkShadowMaps", mapUnit);
   program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(this->ViewToWorld));

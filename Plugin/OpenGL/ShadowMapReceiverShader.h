@@ -111,6 +111,8 @@ private:
     glm::vec2 Fade{ 0.0f };
     float CoverageBand = -1.0f;
     glm::vec4 TileGrid{ 0.0f };
+    glm::vec4 DepthPlane{ 0.0f };
+    float DepthPerDistance = 0.0f;
   };
   static View PackView(const ShadowLight& light, std::size_t index, const glm::dmat4& viewToWorld);
   static Light PackLight(const ShadowLight& light, const glm::dmat4& cameraView);

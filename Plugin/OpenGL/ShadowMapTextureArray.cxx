@@ -52,10 +52,30 @@ int MipmapLevels(int resolution)
 }
 } // namespace
 
+unsigned int InternalFormat(TexelFormat format)
+{
+  switch (format)
+  {
+    case TexelFormat::Depth:
+      return GL_DEPTH_COMPONENT32F;
+    case TexelFormat::Depth16:
+      return GL_DEPTH_COMPONENT16;
+    case TexelFormat::TwoFloats:
+      return GL_RG32F;
+    case TexelFormat::FourFloats:
+      return GL_RGBA32F;
+    case TexelFormat::TwoHalfFloats:
+      return GL_RG16F;
+    case TexelFormat::FourHalfFloats:
+      return GL_RGBA16F;
+  }
+  return GL_RG32F;
+}
+
 bool TextureArray::Reserve(
   int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error)
 {
-  mipmaps = mipmaps && format == TexelFormat::TwoFloats;
+  mipmaps = mipmaps && !IsDepth(format);
   if (this->Texture != 0 && this->Resolution == resolution && this->Layers >= layers &&
     this->Format == format && this->Mipmaps == mipmaps)
   {
@@ -76,7 +96,7 @@ bool TextureArray::Reserve(
   }
   else
   {
-    this->AllocateValueLayers(resolution, layers);
+    this->AllocateValueLayers(resolution, layers, format);
   }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
@@ -99,26 +119,21 @@ bool TextureArray::Reserve(
 
 void TextureArray::AllocateDepthLayers(int resolution, int layers, TexelFormat format)
 {
-  if (format == TexelFormat::Depth16)
-  {
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT16, resolution, resolution, layers, 0,
-      GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, nullptr);
-  }
-  else
-  {
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, resolution, resolution, layers, 0,
-      GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-  }
+  const GLenum type = format == TexelFormat::Depth16 ? GL_UNSIGNED_SHORT : GL_FLOAT;
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, InternalFormat(format), resolution, resolution, layers, 0,
+    GL_DEPTH_COMPONENT, type, nullptr);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
 }
 
-void TextureArray::AllocateValueLayers(int resolution, int layers)
+void TextureArray::AllocateValueLayers(int resolution, int layers, TexelFormat format)
 {
+  const GLint internal = InternalFormat(format);
+  const GLenum channels = ValueChannels(format) == 4 ? GL_RGBA : GL_RG;
   const int levels = this->Mipmaps ? MipmapLevels(resolution) : 1;
   for (int level = 0, size = resolution; level < levels; ++level, size = std::max(size / 2, 1))
   {
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_RG32F, size, size, layers, 0, GL_RG, GL_FLOAT,
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, internal, size, size, layers, 0, channels, GL_FLOAT,
       nullptr);
   }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
@@ -268,12 +283,13 @@ std::size_t TextureArray::GetMemoryBytes() const
 {
   const std::size_t texels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
   const std::size_t secondOutput = this->SecondOutput != 0 ? texels * 4 : 0;
+  const std::size_t layers = texels * this->Layers * TexelBytes(this->Format);
   if (IsDepth(this->Format))
   {
-    return texels * this->Layers * (this->Format == TexelFormat::Depth16 ? 2 : 4) + secondOutput;
+    return layers + secondOutput;
   }
   // A full mipmap chain adds a third; the depth buffer is shared by all layers.
-  const std::size_t values = texels * this->Layers * 8;
+  const std::size_t values = layers;
   return (this->Mipmaps ? values + values / 3 : values) + texels * 4 + secondOutput;
 }
 

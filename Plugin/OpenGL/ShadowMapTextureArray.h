@@ -15,8 +15,8 @@ namespace shadowmaps
 {
 
 /// What one texel holds: a depth (sampled with comparison), 32-bit float or
-/// 16-bit normalized, or two 32-bit floats in a colour attachment (sampled as
-/// values, filterable).
+/// 16-bit normalized, or two or four values, 32- or 16-bit floats, in a colour
+/// attachment (sampled as values, filterable).
 enum class TexelFormat
 {
   Depth,
@@ -24,7 +24,10 @@ enum class TexelFormat
   /// frame (software rasterisers); for maps whose depth steps stay well below
   /// their texels (shadowmaps::SixteenBitDepthSuffices).
   Depth16,
-  TwoFloats
+  TwoFloats,
+  FourFloats,
+  TwoHalfFloats,
+  FourHalfFloats
 };
 
 /// How the pass makes a map of the two nearest caster surfaces along each
@@ -46,8 +49,30 @@ enum class SecondDepthMethod
 
 inline bool IsDepth(TexelFormat format)
 {
-  return format != TexelFormat::TwoFloats;
+  return format == TexelFormat::Depth || format == TexelFormat::Depth16;
 }
+
+/// Values per texel of a value format; 0 for depth.
+inline int ValueChannels(TexelFormat format)
+{
+  return format == TexelFormat::TwoFloats || format == TexelFormat::TwoHalfFloats ? 2
+    : IsDepth(format)                                                            ? 0
+                                                                                 : 4;
+}
+
+/// Bytes of one texel of the format.
+inline int TexelBytes(TexelFormat format)
+{
+  if (IsDepth(format))
+  {
+    return format == TexelFormat::Depth16 ? 2 : 4;
+  }
+  const bool half = format == TexelFormat::TwoHalfFloats || format == TexelFormat::FourHalfFloats;
+  return ValueChannels(format) * (half ? 2 : 4);
+}
+
+/// The GL internal format (GLenum) of a texel format.
+unsigned int InternalFormat(TexelFormat format);
 
 class TextureArray
 {
@@ -58,7 +83,7 @@ public:
   TextureArray& operator=(const TextureArray&) = delete;
 
   /// Makes room for `layers` layers of resolution^2 texels of `format`
-  /// (TwoFloats layers share one depth buffer for the depth test and may have
+  /// (value layers share one depth buffer for the depth test and may have
   /// mipmaps). Keeps the current storage when it fits. On GL failure releases
   /// everything, fills `error` and returns false.
   bool Reserve(int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error);
@@ -69,7 +94,7 @@ public:
   /// output (gl_FragData[1]). Depth formats: casters of a linear-depth view
   /// write that depth there for LinearDepthResolve to copy into the layer (the
   /// casters' shaders then write no gl_FragDepth, which would cost the scene's
-  /// draws of the same programs their early depth test). TwoFloats: peeling
+  /// draws of the same programs their early depth test). Two values: peeling
   /// casters keep there the nearest depth, which the next pass peels away.
   bool BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool secondOutput = false);
 
@@ -80,13 +105,13 @@ public:
   void ReleaseSecondOutput();
 
   /// Depth: nearest (hard) or linear (hardware 2x2 PCF) comparison filtering.
-  /// TwoFloats: nearest or (mipmapped) linear value filtering.
+  /// Values: nearest or (mipmapped) linear value filtering.
   void SetLinearFiltering(bool linear);
 
   /// Depth: whether sampling compares (shadow samplers) or returns the depth.
   void SetDepthComparison(bool compare);
 
-  /// Rebuilds the mipmaps of a mipmapped TwoFloats array from level 0.
+  /// Rebuilds the mipmaps of a mipmapped value array from level 0.
   void GenerateMipmaps();
 
   TexelFormat GetFormat() const { return this->Format; }
@@ -106,12 +131,12 @@ public:
 
 private:
   void AllocateDepthLayers(int resolution, int layers, TexelFormat format);
-  void AllocateValueLayers(int resolution, int layers);
+  void AllocateValueLayers(int resolution, int layers, TexelFormat format);
   void ApplyFiltering(bool linear);
 
   unsigned int Texture = 0;
   unsigned int Framebuffer = 0;
-  unsigned int DepthBuffer = 0; // TwoFloats only
+  unsigned int DepthBuffer = 0; // value formats only
   unsigned int SecondOutput = 0; // BindLayer's secondOutput, made on first use
   TexelFormat Format = TexelFormat::Depth;
   bool Mipmaps = false;

@@ -109,6 +109,18 @@ bool SixteenBitDepthSuffices(const std::vector<ShadowLight>& lights, bool thirty
   });
 }
 
+// Window coordinates (pixels of a resolution^2 map, window depth) to world.
+glm::dmat4 WindowToWorld(const LightView& view, int resolution)
+{
+  const double half = 0.5 * resolution;
+  glm::dmat4 viewport(1.0);
+  viewport[0][0] = viewport[1][1] = half;
+  viewport[3][0] = viewport[3][1] = half;
+  viewport[2][2] = 0.5;
+  viewport[3][2] = 0.5;
+  return glm::inverse(viewport * view.ViewProjection());
+}
+
 bool AnyLinearDepthView(const std::vector<ShadowLight>& lights)
 {
   return std::any_of(lights.begin(), lights.end(), [](const ShadowLight& light) {
@@ -707,6 +719,9 @@ bool vtkAbstractShadowMapPass::FitViews()
   for (ShadowLight& light : r.Lights)
   {
     r.Views->FitLight(r.Frame, light);
+    light.Depth = light.Kind == LightKind::Directional
+      ? shadowmaps::DirectionalLightDepth(light.Direction, r.Frame.SceneBounds)
+      : shadowmaps::PositionalLightDepth(light.Position, r.Frame.SceneBounds);
   }
   this->DropLightsWithoutUsableViews();
   this->AssignLayers();
@@ -738,7 +753,11 @@ void vtkAbstractShadowMapPass::ChooseStorage()
   {
     r.Storage.Format = shadowmaps::TexelFormat::Depth16;
   }
-  r.Code.Definitions = r.Representation->GetReceiverDefinitions();
+  // Depth maps store the views' own depths; two-surface maps compare them.
+  r.Storage.LightDepth = r.Storage.LightDepth && !shadowmaps::IsDepth(r.Storage.Format) &&
+    r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
+  r.Code.Definitions = std::string(r.Storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
+    r.Representation->GetReceiverDefinitions();
   r.Code.Lookup = r.Representation->GetReceiverLookupCode();
 }
 
@@ -784,8 +803,10 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
   // Two surfaces' depths need both faces of the casters.
   r.CasterCode.Faces =
     r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
-  r.CasterCode.StoreCode =
-    r.Storage.Format == shadowmaps::TexelFormat::TwoFloats ? r.Storage.StoreCode : std::string();
+  const bool values = !shadowmaps::IsDepth(r.Storage.Format);
+  r.CasterCode.StoreCode = values ? r.Storage.StoreCode : std::string();
+  r.CasterCode.StoreFunctions = values ? r.Storage.StoreFunctions : std::string();
+  r.CasterCode.LightDepth = values && r.Storage.LightDepth;
   r.CasterCode.LinearDepth = AnyLinearDepthView(r.Lights);
   std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code) +
     '|' + r.CasterCode.Key();
@@ -838,6 +859,12 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
     glPolygonOffset(slope, constant);
     r.CasterUniforms.SetView(windowToInverseW, { { 0.0f, 0.0f, 0.0f } }, !view.Perspective);
   }
+  if (r.CasterCode.LightDepth)
+  {
+    const shadowmaps::LightDepth& depth = light.Depth;
+    r.CasterUniforms.SetLightDepth(glm::mat4(WindowToWorld(view, r.Frame.Resolution)),
+      glm::vec4(depth.Plane), glm::vec4(glm::dvec3(depth.Origin), depth.PerDistance));
+  }
   // Every program takes the view's uniforms on its first draw into it.
   r.CasterPrograms.Invalidate();
 }
@@ -885,7 +912,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   bool ok = true;
   {
     const shadowmaps::CasterGLState casterState(state,
-      r.Storage.Format == shadowmaps::TexelFormat::TwoFloats && r.Storage.MinimumBlending);
+      !shadowmaps::IsDepth(r.Storage.Format) && r.Storage.MinimumBlending);
     vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
     r.SceneCameraParallel = userCamera->GetParallelProjection() != 0;
     renderer->SetActiveCamera(r.LightCamera);
@@ -969,12 +996,24 @@ bool vtkAbstractShadowMapPass::PostProcessShadowMaps(
   vtkOpenGLRenderer* renderer, const std::vector<int>& layers)
 {
   Internals& r = *this->Internal;
-  r.Maps.GenerateMipmaps();
-  if (!r.Representation->PostProcessMaps(renderer, r.Maps, layers))
+  std::vector<shadowmaps::RenderedLayer> rendered;
+  for (const ShadowLight& light : r.Lights)
+  {
+    for (std::size_t v = 0; v < light.Views.size(); ++v)
+    {
+      const int layer = light.FirstLayer + static_cast<int>(v);
+      if (std::find(layers.begin(), layers.end(), layer) != layers.end())
+      {
+        rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
+      }
+    }
+  }
+  if (!r.Representation->PostProcessMaps(renderer, r.Maps, rendered))
   {
     r.LastGLError = "the shadow maps could not be post-processed";
     return false;
   }
+  r.Maps.GenerateMipmaps();
   return true;
 }
 
@@ -986,9 +1025,10 @@ void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer, bool line
   state->vtkglViewport(0, 0, r.Frame.Resolution, r.Frame.Resolution);
   state->vtkglClearDepth(1.0);
   GLbitfield buffers = GL_DEPTH_BUFFER_BIT;
-  if (r.Storage.Format == shadowmaps::TexelFormat::TwoFloats)
+  if (!shadowmaps::IsDepth(r.Storage.Format))
   {
-    state->vtkglClearColor(r.Storage.ClearValues[0], r.Storage.ClearValues[1], 0.0, 0.0);
+    const float* clear = r.Storage.ClearValues;
+    state->vtkglClearColor(clear[0], clear[1], clear[2], clear[3]);
     buffers |= GL_COLOR_BUFFER_BIT;
   }
   else if (linearDepths)

@@ -32,7 +32,7 @@ shadowmaps::DepthOffset vtkShadowMapRepresentation::GetCasterDepthOffset() const
 
 //------------------------------------------------------------------------------
 bool vtkShadowMapRepresentation::PostProcessMaps(
-  vtkOpenGLRenderer*, shadowmaps::TextureArray&, const std::vector<int>&)
+  vtkOpenGLRenderer*, shadowmaps::TextureArray&, const std::vector<shadowmaps::RenderedLayer>&)
 {
   return true;
 }

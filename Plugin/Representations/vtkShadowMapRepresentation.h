@@ -9,7 +9,7 @@
  *   written by a GLSL snippet, optionally with minimum blending, or the depths
  *   of the two nearest caster surfaces);
  * - how the maps are post-processed once rendered (PostProcessMaps: a blur;
- *   the pass builds the mipmaps MapStorage asks for before);
+ *   the pass builds the mipmaps MapStorage asks for after);
  * - how receivers read them (GetReceiverLookupCode: the GLSL that defines
  *   vtkShadowLookup, usually one file of Shaders/), with its own parameters
  *   (GetReceiverDefinitions, SetReceiverUniforms);
@@ -42,23 +42,38 @@ namespace shadowmaps
 struct MapStorage
 {
   TexelFormat Format = TexelFormat::Depth;
-  /// TwoFloats: GLSL statements that read `float vtkShadowCasterDepth` (the
-  /// fragment's window depth; gl_FrontFacing is available too) and write
-  /// gl_FragData[0].xy. Ignored for depth storage.
+  /// Value formats: GLSL statements that read `float vtkShadowCasterDepth` (the
+  /// fragment's window depth, or its light depth; gl_FrontFacing is available
+  /// too) and write gl_FragData[0]. Ignored for depth storage.
   std::string StoreCode;
-  /// TwoFloats: each channel keeps the minimum over all fragments of a texel
-  /// (blending with GL_MIN, no depth test), e.g. nearest front and back faces.
-  /// Otherwise the nearest fragment's values are kept (depth test).
+  /// Value formats: GLSL functions StoreCode calls, put before main().
+  std::string StoreFunctions;
+  /// Value formats: vtkShadowCasterDepth, and the depth receivers pass to
+  /// vtkShadowLookup, is the light depth (ShadowLight::Depth): linear in light
+  /// space, the same for every view of a light, in [0, 1] over the scene.
+  bool LightDepth = false;
+  /// Value formats: each channel keeps the minimum over all fragments of a
+  /// texel (blending with GL_MIN, no depth test), e.g. nearest front and back
+  /// faces. Otherwise the nearest fragment's values are kept (depth test).
   bool MinimumBlending = false;
-  /// TwoFloats: values of a texel no caster covers.
-  float ClearValues[2] = { 1.0f, 1.0f };
-  /// TwoFloats: build a mipmap chain after rendering (filterable storage).
+  /// Value formats: values of a texel no caster covers.
+  float ClearValues[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+  /// Value formats: build a mipmap chain after rendering (filterable storage).
   bool Mipmaps = false;
   /// TwoFloats: store the depths of the two nearest caster surfaces (the far
   /// value 1 where there are fewer), made by this method; StoreCode,
   /// MinimumBlending and ClearValues are then the pass's
   /// (vtkAbstractShadowMapPass::ChooseSecondDepthMethod).
   SecondDepthMethod SecondDepth = SecondDepthMethod::None;
+};
+
+/// A map layer the casters were just rendered into (PostProcessMaps).
+struct RenderedLayer
+{
+  int Layer = 0;
+  /// Its light's first view's texel size over this layer's (1 but for
+  /// cascades): a filter radius in texels times it keeps its world size.
+  double FilterScale = 1.0;
 };
 
 /// Depth offset applied to the casters (glPolygonOffset's factor and units).
@@ -107,15 +122,14 @@ public:
   VTK_WRAPEXCLUDE virtual shadowmaps::DepthOffset GetCasterDepthOffset() const;
 
   /**
-   * Called after the casters were rendered into `layers` and the mipmaps
-   * MapStorage asks for were built, before receivers sample them: blur or
-   * other map filtering of those layers goes here (call maps.GenerateMipmaps()
-   * again after changing level 0). The other layers were not re-rendered and
-   * keep what the last call left in them. Returning false reports a GL
-   * failure: the frame renders unshadowed.
+   * Called after the casters were rendered into `layers`, before the mipmaps
+   * MapStorage asks for are built and receivers sample the maps: blur or other
+   * filtering of level 0 of those layers goes here. The other layers were not
+   * re-rendered and keep what the last call left in them. Returning false
+   * reports a GL failure: the frame renders unshadowed.
    */
-  VTK_WRAPEXCLUDE virtual bool PostProcessMaps(
-    vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps, const std::vector<int>& layers);
+  VTK_WRAPEXCLUDE virtual bool PostProcessMaps(vtkOpenGLRenderer* renderer,
+    shadowmaps::TextureArray& maps, const std::vector<shadowmaps::RenderedLayer>& layers);
 
   ///@{
   /**

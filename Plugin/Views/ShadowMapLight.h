@@ -3,7 +3,8 @@
 #ifndef ShadowMapLight_h
 #define ShadowMapLight_h
 
-#include "ShadowMapFocusing.h" // For Aabb, LightView, TileGrid
+#include "ShadowMapFocusing.h"  // For Aabb, LightView, TileGrid
+#include "ShadowMapLightDepth.h" // For LightDepth
 
 #include <vector>
 
@@ -81,6 +82,9 @@ struct ShadowLight
   /// map that holds the receiver, blended into the next over this outer
   /// fraction of the map's half-width. Negative: picked by depth.
   double CoverageBlendFraction = -1.0;
+  /// The light depth over the scene (set by the pass for every light): what
+  /// representations that store MapStorage::LightDepth store.
+  LightDepth Depth;
   /// View depths over which the shadows fade out; no fade unless y > x.
   glm::dvec2 Fade{ 0.0, 0.0 };
   /// ReceiverFeature bits the views strategy's settings may produce for this
@@ -115,6 +119,24 @@ inline int ReceiverFeatures(const ShadowLight& light)
       (view.TexelPerUnitDistance != 0.0 ? DistantTexels : 0) | (view.LinearDepth ? LinearDepths : 0);
   }
   return features;
+}
+
+/// The light's first view's texel size over view `index`'s (1 but for
+/// cascades): filters whose size is given in texels scale by it so that they
+/// keep one world size in every cascade.
+inline double FilterScale(const ShadowLight& light, std::size_t index)
+{
+  if (light.Layout != ViewLayout::Cascades || index >= light.CascadeDepths.size())
+  {
+    return 1.0;
+  }
+  // Cascades of one light share their texel formula's kind (constant for
+  // directional, per unit distance for spot), so the sum compares them.
+  const LightView& first = light.Views.front();
+  const LightView& view = light.Views[index];
+  const double firstTexel = first.TexelConstant + first.TexelPerUnitDistance;
+  const double texel = view.TexelConstant + view.TexelPerUnitDistance;
+  return firstTexel > 0.0 && texel > 0.0 ? firstTexel / texel : 1.0;
 }
 
 /// The frame a light's views are fitted for.

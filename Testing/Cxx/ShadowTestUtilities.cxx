@@ -5,6 +5,11 @@
 #include "vtkCubeSource.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtk_glew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -21,6 +26,7 @@
 #include <numeric>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -306,6 +312,80 @@ std::string CompareWithBaseline(vtkImageData* image, const std::string& name)
     return text.str();
   }
   return {};
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkActor> AddBox(vtkRenderer* renderer, const glm::dvec3& center, const glm::dvec3& size)
+{
+  vtkNew<vtkCubeSource> box;
+  box->SetCenter(center.x, center.y, center.z);
+  box->SetXLength(size.x);
+  box->SetYLength(size.y);
+  box->SetZLength(size.z);
+  return AddSourceActor(renderer, box);
+}
+
+//------------------------------------------------------------------------------
+std::string ShaderFile(const std::string& name)
+{
+  std::ifstream file(std::string(SHADOWMAPS_SHADER_DIR) + "/" + name + ".glsl");
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+//------------------------------------------------------------------------------
+std::vector<glm::vec4> EvaluateGLSL(const std::string& functions, const std::string& expression,
+  const std::vector<glm::vec4>& cases, const std::function<void(vtkShaderProgram*)>& uniforms)
+{
+  const int count = static_cast<int>(cases.size());
+  const std::string fragment = "//VTK::System::Dec\n" + functions + "\nuniform vec4 cases[" +
+    std::to_string(count) + "];\n//VTK::Output::Dec\nvoid main()\n{\n" +
+    "  vec4 c = cases[int(gl_FragCoord.x)];\n  gl_FragData[0] = " + expression + ";\n}\n";
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(true);
+  window->SetSize(count, 1);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  window->Render();
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  gl->MakeCurrent();
+  vtkOpenGLState* state = gl->GetState();
+  state->PushFramebufferBindings();
+  GLuint texture = 0;
+  GLuint framebuffer = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, count, 1, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glGenFramebuffers(1, &framebuffer);
+  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  state->vtkglViewport(0, 0, count, 1);
+  vtkOpenGLState::ScopedglEnableDisable keepBlend(state, GL_BLEND);
+  state->vtkglDisable(GL_BLEND);
+  std::vector<glm::vec4> results(cases.size(), glm::vec4(-1.0f));
+  {
+    vtkOpenGLQuadHelper quad(gl, nullptr, fragment.c_str(), "");
+    if (quad.Program && quad.Program->GetCompiled())
+    {
+      quad.Program->SetUniform4fv(
+        "cases", count, reinterpret_cast<const float(*)[4]>(cases.data()));
+      if (uniforms)
+      {
+        uniforms(quad.Program);
+      }
+      quad.Render();
+      glReadPixels(0, 0, count, 1, GL_RGBA, GL_FLOAT, results.data());
+    }
+    quad.ReleaseGraphicsResources(gl);
+  }
+  state->PopFramebufferBindings();
+  glDeleteFramebuffers(1, &framebuffer);
+  glDeleteTextures(1, &texture);
+  return results;
 }
 
 } // namespace shadowtest

@@ -9,6 +9,7 @@
 #include "vtkRenderer.h"     // For TestScene members
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ class vtkActor;
 class vtkAlgorithm;
 class vtkImageData;
 class vtkLight;
+class vtkShaderProgram;
 class vtkSphereSource;
 
 namespace shadowtest
@@ -50,6 +52,9 @@ glm::dvec3 GroundShadowOfSphereCenterFrom(const glm::dvec3& lightPosition);
 /// An actor drawing `source`'s output with a vtkPolyDataMapper, added to `renderer`.
 vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source);
 
+/// A box of `size` centred at `center`, added to `renderer`.
+vtkSmartPointer<vtkActor> AddBox(vtkRenderer* renderer, const glm::dvec3& center, const glm::dvec3& size);
+
 /// Renders and returns the frame as RGB.
 vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window);
 
@@ -77,6 +82,18 @@ int CountUndersampled(vtkImageData* image);
 /// match, else what differed. With SHADOWMAPS_UPDATE_BASELINES=1 in the
 /// environment it writes the baseline instead (and says so in the result).
 std::string CompareWithBaseline(vtkImageData* image, const std::string& name);
+
+/// Evaluates GLSL on the GPU: a fragment shader made of `functions` (the
+/// module's shader files, their #defines and the uniforms they read) whose
+/// main() sets `vec4 c` to case i and writes `expression` (a vec4 of c) for it.
+/// `uniforms` sets the functions' other uniforms. Returns one vec4 per case; -1
+/// everywhere when the shader does not compile.
+std::vector<glm::vec4> EvaluateGLSL(const std::string& functions, const std::string& expression,
+  const std::vector<glm::vec4>& cases,
+  const std::function<void(vtkShaderProgram*)>& uniforms = nullptr);
+
+/// The text of Shaders/<name>.glsl (SHADOWMAPS_SHADER_DIR).
+std::string ShaderFile(const std::string& name);
 
 /// Counts VTK errors and warnings (shader compile failures arrive as errors).
 using ErrorCounter = shadowbench::MessageLog;

@@ -2,6 +2,7 @@
 // per-light control, limits, bad input, and the pass inside other passes.
 #include "ShadowTestUtilities.h"
 #include "vtkDualDepthShadowMapPass.h"
+#include "vtkVarianceShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkDepthShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
@@ -485,13 +486,18 @@ TEST(ShadowBehaviour, WorksAsADelegateOfToneMapping)
 class DegenerateScenesPerPass : public ::testing::TestWithParam<std::string>
 {
 public:
-  // The warped pass (the focused uniform map and its warps) and the dual-depth
-  // pass, whose receivers measure the map along the light ray.
+  // The warped pass (the focused uniform map and its warps), the dual-depth
+  // pass, whose receivers measure the map along the light ray, and the
+  // variance pass, whose light depth spans the scene.
   vtkSmartPointer<vtkAbstractShadowMapPass> MakePass() const
   {
     if (GetParam() == "DualDepth")
     {
       return vtkSmartPointer<vtkDualDepthShadowMapPass>::New();
+    }
+    if (GetParam() == "Variance")
+    {
+      return vtkSmartPointer<vtkVarianceShadowMapPass>::New();
     }
     return vtkSmartPointer<vtkWarpedShadowMapPass>::New();
   }
@@ -558,7 +564,7 @@ TEST_P(DegenerateScenesPerPass, RenderWithoutErrors)
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadowBehaviour, DegenerateScenesPerPass,
-  ::testing::Values("Warped", "DualDepth"),
+  ::testing::Values("Warped", "DualDepth", "Variance"),
   [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // Rendering is deterministic: the same frame twice, whether the maps are reused,

@@ -73,16 +73,6 @@ const char* MethodName(int method)
                                        << world.y << ", " << world.z;
 }
 
-vtkSmartPointer<vtkActor> AddBox(vtkRenderer* renderer, const glm::dvec3& center, const glm::dvec3& size)
-{
-  vtkNew<vtkCubeSource> box;
-  box->SetCenter(center.x, center.y, center.z);
-  box->SetXLength(size.x);
-  box->SetYLength(size.y);
-  box->SetZLength(size.z);
-  return AddSourceActor(renderer, box);
-}
-
 vtkSmartPointer<vtkDualDepthShadowMapPass> MakeUnbiasedPass(int mode, int method)
 {
   auto pass = vtkSmartPointer<vtkDualDepthShadowMapPass>::New();
@@ -317,57 +307,22 @@ namespace
 /// (stored x, stored y, offset).
 std::vector<float> VirtualSurfaces(int mode, const std::vector<glm::vec3>& cases)
 {
-  std::ifstream file(SHADOWMAPS_SHADER_DIR "/vtkShadowMapsDualDepthLookupFS.glsl");
-  std::stringstream lookup;
-  lookup << file.rdbuf();
-  const int count = static_cast<int>(cases.size());
-  const std::string fragment = "//VTK::System::Dec\n"
-                               "uniform float vtkShadowMapResolution;\n"
-                               "float vtkShadowDepthPerTexel = 0.0;\n"
-                               "vec2 vtkShadowReceiverSlope = vec2(0.0);\n"
-                               "#define VTK_SHADOW_FILTER 0\n#define VTK_SHADOW_DUAL_MODE " +
-    std::to_string(mode) + "\n" + lookup.str() + "uniform vec3 cases[" + std::to_string(count) +
-    "];\n//VTK::Output::Dec\nvoid main()\n{\n  vec3 c = cases[int(gl_FragCoord.x)];\n"
-    "  gl_FragData[0] = vec4(vtkShadowVirtualSurface(c.xy, c.z));\n}\n";
-
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(true);
-  window->SetSize(count, 1);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  window->Render();
-  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  gl->MakeCurrent();
-  vtkOpenGLState* state = gl->GetState();
-  state->PushFramebufferBindings();
-  GLuint texture = 0;
-  GLuint framebuffer = 0;
-  glGenTextures(1, &texture);
-  glBindTexture(GL_TEXTURE_2D, texture);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, count, 1, 0, GL_RED, GL_FLOAT, nullptr);
-  glGenFramebuffers(1, &framebuffer);
-  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-  glDrawBuffer(GL_COLOR_ATTACHMENT0);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  state->vtkglViewport(0, 0, count, 1);
-  vtkOpenGLState::ScopedglEnableDisable keepBlend(state, GL_BLEND);
-  state->vtkglDisable(GL_BLEND);
-  std::vector<float> results(cases.size(), -1.0f);
+  const std::string functions = "uniform float vtkShadowMapResolution;\n"
+                                "float vtkShadowDepthPerTexel = 0.0;\n"
+                                "vec2 vtkShadowReceiverSlope = vec2(0.0);\n"
+                                "#define VTK_SHADOW_FILTER 0\n#define VTK_SHADOW_DUAL_MODE " +
+    std::to_string(mode) + "\n" + ShaderFile("vtkShadowMapsDualDepthLookupFS");
+  std::vector<glm::vec4> inputs;
+  for (const glm::vec3& c : cases)
   {
-    vtkOpenGLQuadHelper quad(gl, nullptr, fragment.c_str(), "");
-    if (quad.Program && quad.Program->GetCompiled())
-    {
-      quad.Program->SetUniform3fv("cases", count, reinterpret_cast<const float(*)[3]>(cases.data()));
-      quad.Render();
-      glReadPixels(0, 0, count, 1, GL_RED, GL_FLOAT, results.data());
-    }
-    quad.ReleaseGraphicsResources(gl);
+    inputs.emplace_back(c, 0.0f);
   }
-  state->PopFramebufferBindings();
-  glDeleteFramebuffers(1, &framebuffer);
-  glDeleteTextures(1, &texture);
-  return results;
+  std::vector<float> surfaces;
+  for (const glm::vec4& result : EvaluateGLSL(functions, "vec4(vtkShadowVirtualSurface(c.xy, c.z))", inputs))
+  {
+    surfaces.push_back(result.x);
+  }
+  return surfaces;
 }
 } // namespace
 

@@ -67,8 +67,8 @@ float vtkShadowLookup(vec3 mapCoord, int layer)
     offset.Constant = 4.0;
     return offset;
   }
-  bool PostProcessMaps(
-    vtkOpenGLRenderer*, shadowmaps::TextureArray& maps, const std::vector<int>& layers) override
+  bool PostProcessMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray& maps,
+    const std::vector<shadowmaps::RenderedLayer>& layers) override
   {
     ++this->PostProcessCalls;
     this->PostProcessedLayers += static_cast<int>(layers.size());
@@ -299,7 +299,8 @@ class vtkTestFailingPostProcess : public vtkDepthShadowMapRepresentation
 public:
   static vtkTestFailingPostProcess* New();
   vtkTypeMacro(vtkTestFailingPostProcess, vtkDepthShadowMapRepresentation);
-  bool PostProcessMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray&, const std::vector<int>&) override
+  bool PostProcessMaps(vtkOpenGLRenderer*, shadowmaps::TextureArray&,
+    const std::vector<shadowmaps::RenderedLayer>&) override
   {
     return false;
   }

@@ -114,8 +114,20 @@ def main(output_dir):
           f"sphere top {sphere_top:.1f}")
     assert under < 80 and open_ground > 120 and sphere_top > 120
     assert dual.GetNumberOfCasterPassesPerLayer() == 2, "the ground is open: peeled"
+
+    # Filterable moments with cascades: the shadow, the lit ground and top.
+    variance = vtkshadowmaps.vtkVarianceShadowMapPass()
+    variance.SetMomentsToMSM()
+    variance.SetBlurRadius(2.0)
+    variance.SetViews(cascades)
+    _, (under, open_ground, sphere_top) = render_with(
+        renderer, window, grab, variance, UNDER_THE_SPHERE, OPEN_GROUND, SPHERE_TOP)
+    print(f"variance (MSM): under the sphere {under:.1f}, open ground {open_ground:.1f}, "
+          f"sphere top {sphere_top:.1f}")
+    assert under < 80 and open_ground > 120 and sphere_top > 120
+    assert variance.GetMoments() == vtkshadowmaps.vtkVarianceShadowMapPass.MSM
     print(f"imported {vtkshadowmaps.__file__}")
-    print("3 passed, 0 failed")
+    print("4 passed, 0 failed")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,164 @@
+#include "ShadowMapBlur.h"
+
+#include "ShadowMapQuad.h"
+#include "ShadowMapTextureArray.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapsBlurFS.h"
+#include "vtkTextureUnitManager.h"
+#include "vtk_glew.h"
+
+#include <cmath>
+
+namespace shadowmaps
+{
+namespace
+{
+// Taps each side of the centre: the kernel spans +-2 sigma.
+int TapsEachSide(double radius)
+{
+  return static_cast<int>(std::ceil(2.0 * BlurSigma(radius) - 1e-6));
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+MapBlur::MapBlur() = default;
+
+//------------------------------------------------------------------------------
+MapBlur::~MapBlur() = default;
+
+//------------------------------------------------------------------------------
+bool MapBlur::ReserveScratch(const TextureArray& maps, std::string& error)
+{
+  const int format = static_cast<int>(maps.GetFormat());
+  if (this->Scratch != 0 && this->ScratchResolution == maps.GetResolution() &&
+    this->ScratchFormat == format)
+  {
+    return true;
+  }
+  if (this->Scratch != 0)
+  {
+    glDeleteTextures(1, &this->Scratch);
+  }
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  GLint previous = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
+  glGenTextures(1, &this->Scratch);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Scratch);
+  const int resolution = maps.GetResolution();
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, InternalFormat(maps.GetFormat()), resolution, resolution, 1,
+    0, ValueChannels(maps.GetFormat()) == 4 ? GL_RGBA : GL_RG, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(previous));
+  if (this->ScratchFramebuffer == 0)
+  {
+    glGenFramebuffers(1, &this->ScratchFramebuffer);
+  }
+  if (glGetError() != GL_NO_ERROR)
+  {
+    error = "cannot allocate the shadow maps' blur layer";
+    return false;
+  }
+  this->ScratchResolution = resolution;
+  this->ScratchFormat = format;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void MapBlur::DrawPass(vtkOpenGLRenderWindow* window, unsigned int source, int layer, int unit,
+  int dx, int dy, double radius)
+{
+  vtkShaderProgram* program = this->Quad->Program;
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, source);
+  program->SetUniformi("vtkShadowBlurSource", unit);
+  program->SetUniformi("vtkShadowBlurLayer", layer);
+  const int step[2] = { dx, dy };
+  program->SetUniform2i("vtkShadowBlurStep", step);
+  program->SetUniformi("vtkShadowBlurTaps", TapsEachSide(radius));
+  program->SetUniformf("vtkShadowBlurSigma", static_cast<float>(BlurSigma(radius)));
+  this->Quad->Render();
+}
+
+//------------------------------------------------------------------------------
+bool MapBlur::Blur(
+  vtkOpenGLRenderWindow* window, TextureArray& maps, int layer, double radius, std::string& error)
+{
+  if (!(radius >= 0.5) || IsDepth(maps.GetFormat()))
+  {
+    return true;
+  }
+  vtkShaderProgram* program = ReadyQuadProgram(this->Quad, window, vtkShadowMapsBlurFS);
+  if (!program)
+  {
+    error = "the shadow maps' blur shader did not compile";
+    return false;
+  }
+  if (!this->ReserveScratch(maps, error))
+  {
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  vtkOpenGLState::ScopedglViewport keepViewport(state);
+  vtkOpenGLState::ScopedglEnableDisable keepDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable keepBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable keepScissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglActiveTexture keepUnit(state);
+  // The renderer's scissor box is the window's, not the map's.
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglViewport(0, 0, maps.GetResolution(), maps.GetResolution());
+  const int unit = window->GetTextureUnitManager()->Allocate();
+
+  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->ScratchFramebuffer);
+  glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->Scratch, 0, 0);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  if (ok)
+  {
+    this->DrawPass(window, maps.GetTextureName(), layer, unit, 1, 0, radius);
+    ok = maps.BindLayer(state, layer, error);
+  }
+  if (ok)
+  {
+    this->DrawPass(window, this->Scratch, 0, unit, 0, 1, radius);
+  }
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  window->GetTextureUnitManager()->Free(unit);
+  state->PopFramebufferBindings();
+  if (!ok && error.empty())
+  {
+    error = "the shadow maps' blur framebuffer is incomplete";
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void MapBlur::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+    this->Quad.reset();
+  }
+  if (this->ScratchFramebuffer != 0)
+  {
+    glDeleteFramebuffers(1, &this->ScratchFramebuffer);
+    this->ScratchFramebuffer = 0;
+  }
+  if (this->Scratch != 0)
+  {
+    glDeleteTextures(1, &this->Scratch);
+    this->Scratch = 0;
+  }
+  this->ScratchResolution = 0;
+  this->ScratchFormat = -1;
+}
+} // namespace shadowmaps

@@ -1,0 +1,251 @@
+#include "vtkVarianceShadowMapRepresentation.h"
+
+#include "ShadowMapBlur.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapsMomentsFS.h"
+#include "vtkShadowMapsVarianceLookupFS.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkVarianceShadowMapRepresentation);
+
+namespace
+{
+// exp(c) of a stored value and, for the variance maps, exp(2 c) of its square
+// must stay below the storage's largest finite value, with room for a blur's
+// sums: 3.4e38 = e^88.7 for 32-bit floats, 65504 = e^11.09 for 16-bit ones.
+constexpr double LargestExponent32 = 88.0;
+constexpr double LargestExponent16 = 11.08;
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkVarianceShadowMapRepresentation::vtkVarianceShadowMapRepresentation() = default;
+
+//------------------------------------------------------------------------------
+vtkVarianceShadowMapRepresentation::~vtkVarianceShadowMapRepresentation() = default;
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::SetMoments(int moments)
+{
+  moments = std::min(std::max(moments, static_cast<int>(VSM)), static_cast<int>(ESM));
+  if (moments != this->Moments)
+  {
+    this->Moments = moments;
+    this->ClampExponents();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::SetStorage(int bits)
+{
+  const int storage = bits < 24 ? HALF_FLOAT : FLOAT;
+  if (storage != this->Storage)
+  {
+    this->Storage = storage;
+    this->ClampExponents();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::SetPositiveExponent(double exponent)
+{
+  exponent = std::isfinite(exponent) ? std::max(exponent, 0.0) : this->PositiveExponent;
+  if (exponent != this->PositiveExponent)
+  {
+    this->PositiveExponent = exponent;
+    this->ClampExponents();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::SetNegativeExponent(double exponent)
+{
+  exponent = std::isfinite(exponent) ? std::max(exponent, 0.0) : this->NegativeExponent;
+  if (exponent != this->NegativeExponent)
+  {
+    this->NegativeExponent = exponent;
+    this->ClampExponents();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkVarianceShadowMapRepresentation::GetEffectiveStorage() const
+{
+  return this->Moments == MSM ? FLOAT : this->Storage;
+}
+
+//------------------------------------------------------------------------------
+double vtkVarianceShadowMapRepresentation::GetMaximumExponent() const
+{
+  const double largest = this->GetEffectiveStorage() == FLOAT ? LargestExponent32 : LargestExponent16;
+  // Variance maps store the square too.
+  const double limit = this->Moments == ESM ? largest : 0.5 * largest;
+  // Headroom for the blur's and the filtering's weighted sums.
+  return std::floor(limit * 0.95 * 100.0) / 100.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::ClampExponents()
+{
+  const double maximum = this->GetMaximumExponent();
+  if (this->PositiveExponent > maximum || this->NegativeExponent > maximum)
+  {
+    vtkWarningMacro(<< "Exponents " << this->PositiveExponent << " and " << this->NegativeExponent
+                    << " exceed what " << this->GetEffectiveStorage()
+                    << "-bit storage holds for these moments; reduced to " << maximum << ".");
+    this->PositiveExponent = std::min(this->PositiveExponent, maximum);
+    this->NegativeExponent = std::min(this->NegativeExponent, maximum);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::GetMomentsOfDepth(double depth, double moments[4]) const
+{
+  const double d = std::min(std::max(depth, 0.0), 1.0);
+  const double warped = 2.0 * d - 1.0;
+  const double positive = std::exp(this->PositiveExponent * warped);
+  const double negative = -std::exp(-this->NegativeExponent * warped);
+  switch (this->Moments)
+  {
+    case VSM:
+      moments[0] = d;
+      moments[1] = d * d;
+      moments[2] = moments[3] = 0.0;
+      break;
+    case EVSM2:
+    case EVSM4:
+      moments[0] = positive;
+      moments[1] = positive * positive;
+      moments[2] = this->Moments == EVSM4 ? negative : 0.0;
+      moments[3] = this->Moments == EVSM4 ? negative * negative : 0.0;
+      break;
+    case MSM:
+      moments[0] = d;
+      moments[1] = d * d;
+      moments[2] = d * d * d;
+      moments[3] = d * d * d * d;
+      break;
+    default:
+      moments[0] = positive;
+      moments[1] = moments[2] = moments[3] = 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkVarianceShadowMapRepresentation::MomentDefinitions() const
+{
+  std::ostringstream definitions;
+  definitions.precision(9);
+  definitions << std::showpoint << "#define VTK_SHADOW_MOMENTS " << this->Moments << "\n"
+              << "#define VTK_SHADOW_POSITIVE_EXPONENT " << this->PositiveExponent << "\n"
+              << "#define VTK_SHADOW_NEGATIVE_EXPONENT " << this->NegativeExponent << "\n";
+  return definitions.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::GetMapStorage(shadowmaps::MapStorage& storage) const
+{
+  using shadowmaps::TexelFormat;
+  storage = shadowmaps::MapStorage();
+  const bool four = this->Moments == EVSM4 || this->Moments == MSM;
+  const bool half = this->GetEffectiveStorage() == HALF_FLOAT;
+  storage.Format = four ? (half ? TexelFormat::FourHalfFloats : TexelFormat::FourFloats)
+                        : (half ? TexelFormat::TwoHalfFloats : TexelFormat::TwoFloats);
+  storage.LightDepth = true;
+  storage.StoreFunctions = this->MomentDefinitions() + vtkShadowMapsMomentsFS;
+  storage.StoreCode = "    gl_FragData[0] = vtkShadowMomentsOf(vtkShadowCasterDepth);";
+  double far[4];
+  this->GetMomentsOfDepth(1.0, far);
+  std::transform(far, far + 4, storage.ClearValues, [](double v) { return static_cast<float>(v); });
+  storage.Mipmaps = this->Mipmaps;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkVarianceShadowMapRepresentation::GetReceiverLookupCode() const
+{
+  return std::string(vtkShadowMapsMomentsFS) + vtkShadowMapsVarianceLookupFS;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkVarianceShadowMapRepresentation::GetReceiverDefinitions() const
+{
+  std::ostringstream definitions;
+  definitions.precision(9);
+  definitions << std::showpoint << this->MomentDefinitions() << "#define VTK_SHADOW_MAP_FOOTPRINT\n"
+              << "#define VTK_SHADOW_BLUR_SIGMA " << shadowmaps::BlurSigma(this->BlurRadius) << "\n"
+              << "#define VTK_SHADOW_ANISOTROPY " << this->Anisotropy << "\n";
+  return definitions.str();
+}
+
+//------------------------------------------------------------------------------
+double vtkVarianceShadowMapRepresentation::GetFilterReachTexels() const
+{
+  // The blur's kernel, and the bilinear sample's texel beyond it.
+  return std::ceil(2.0 * shadowmaps::BlurSigma(this->BlurRadius)) + 1.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVarianceShadowMapRepresentation::PostProcessMaps(vtkOpenGLRenderer* renderer,
+  shadowmaps::TextureArray& maps, const std::vector<shadowmaps::RenderedLayer>& layers)
+{
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  std::unique_ptr<shadowmaps::MapBlur>& blur = this->BlurPerWindow[window];
+  if (!blur)
+  {
+    blur.reset(new shadowmaps::MapBlur());
+  }
+  for (const shadowmaps::RenderedLayer& layer : layers)
+  {
+    std::string error;
+    if (!blur->Blur(window, maps, layer.Layer, this->BlurRadius * layer.FilterScale, error))
+    {
+      vtkWarningMacro(<< error);
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformf("vtkShadowLightBleeding", static_cast<float>(this->LightBleedingReduction));
+  program->SetUniformf("vtkShadowMinimumVariance", static_cast<float>(this->MinimumVariance));
+  program->SetUniformf("vtkShadowMomentBias", static_cast<float>(this->MomentBias));
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::ReleaseGraphicsResources(vtkWindow* window)
+{
+  const auto found = this->BlurPerWindow.find(window);
+  if (found != this->BlurPerWindow.end())
+  {
+    found->second->ReleaseGraphicsResources(window);
+    this->BlurPerWindow.erase(found);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Moments: " << this->Moments << "\n";
+  os << indent << "Storage: " << this->Storage << "\n";
+  os << indent << "PositiveExponent: " << this->PositiveExponent << "\n";
+  os << indent << "NegativeExponent: " << this->NegativeExponent << "\n";
+  os << indent << "BlurRadius: " << this->BlurRadius << "\n";
+  os << indent << "Mipmaps: " << this->Mipmaps << "\n";
+  os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "LightBleedingReduction: " << this->LightBleedingReduction << "\n";
+  os << indent << "MinimumVariance: " << this->MinimumVariance << "\n";
+  os << indent << "MomentBias: " << this->MomentBias << "\n";
+}

@@ -1,0 +1,144 @@
+// Comparison of moment maps (vtkVarianceShadowMapRepresentation), after
+// vtkShadowMapsMomentsFS. A receiver at light depth t reads the moments of the
+// occluders' depths over its filter footprint, one trilinear (mipmapped)
+// sample over the pixel's footprint in the map (vtkShadowMapDx, vtkShadowMapDy),
+// and bounds the fraction of them in front of it (thesis 000 on [DL06],
+// [Lau06]; text 003; Peters and Klein's moment shadow maps for MSM).
+
+uniform sampler2DArray vtkShadowMaps;
+// Visibilities below it become 0, the rest is stretched over [0, 1].
+uniform float vtkShadowLightBleeding;
+// Least variance of the depth distribution (squared light depth).
+uniform float vtkShadowMinimumVariance;
+// MSM: the weight of the safe moment vector mixed into the stored one.
+uniform float vtkShadowMomentBias;
+
+// Chebyshev's one-sided bound on the fraction of the distribution with mean
+// and second moment `moments` that lies at or beyond t: the visibility.
+float vtkShadowChebyshev(vec2 moments, float t, float minimumVariance)
+{
+  if (t <= moments.x)
+  {
+    return 1.0;
+  }
+  float variance = max(moments.y - moments.x * moments.x, minimumVariance);
+  float d = t - moments.x;
+  return variance / (variance + d * d);
+}
+
+// Peters and Klein's Hamburger reconstruction: the least fraction of the
+// occluders that can lie in front of z among all depth distributions with
+// these four moments (biased toward those of half at depth 0, half at 1, which
+// keeps the Hankel matrix invertible). Returns the visibility.
+float vtkShadowHamburger(vec4 stored, float z)
+{
+  vec4 b = mix(stored, vec4(0.5), vtkShadowMomentBias);
+  // B c = (1, z, z^2) with B = [1 b1 b2; b1 b2 b3; b2 b3 b4], by LDL^T.
+  float d2 = max(b.y - b.x * b.x, 1e-12);
+  float l32 = (b.z - b.x * b.y) / d2;
+  float d3 = max(b.w - b.y * b.y - l32 * l32 * d2, 1e-12);
+  float y2 = z - b.x;
+  float y3 = z * z - b.y - l32 * y2;
+  float c3 = y3 / d3;
+  float c2 = y2 / d2 - l32 * c3;
+  float c1 = 1.0 - b.x * c2 - b.y * c3;
+  // The other two support points: the roots of c1 + c2 x + c3 x^2.
+  float discriminant = max(c2 * c2 - 4.0 * c3 * c1, 0.0);
+  float root = sqrt(discriminant);
+  float q = -0.5 * (c2 + (c2 < 0.0 ? -root : root));
+  float r1 = q / (abs(c3) > 1e-30 ? c3 : 1e-30);
+  float r2 = c1 / (abs(q) > 1e-30 ? q : 1e-30);
+  float z2 = min(r1, r2);
+  float z3 = max(r1, r2);
+  float shadow;
+  if (z <= z2)
+  {
+    shadow = 0.0;
+  }
+  else if (z <= z3)
+  {
+    // The weight of z2, the only support point in front of z.
+    shadow = (z * z3 - b.x * (z + z3) + b.y) / ((z3 - z2) * (z - z2));
+  }
+  else
+  {
+    // All but the weight of z itself.
+    shadow = 1.0 - (z2 * z3 - b.x * (z2 + z3) + b.y) / ((z - z2) * (z - z3));
+  }
+  return 1.0 - clamp(shadow, 0.0, 1.0);
+}
+
+// The variance a receiver's own plane has over the filter at t: its depth
+// change per texel (from the footprint's screen derivatives), squared, times
+// the texel's own variance (1/12) and the blur's (sigma^2 in this layer's
+// texels).
+float vtkShadowReceiverVariance(int layer)
+{
+  float det = vtkShadowMapDx.x * vtkShadowMapDy.y - vtkShadowMapDx.y * vtkShadowMapDy.x;
+  if (!(abs(det) > 1e-30))
+  {
+    return 0.0;
+  }
+  vec2 perUV = vec2(vtkShadowLightDepthDxDy.x * vtkShadowMapDy.y - vtkShadowLightDepthDxDy.y * vtkShadowMapDx.y,
+                 vtkShadowMapDx.x * vtkShadowLightDepthDxDy.y - vtkShadowMapDy.x * vtkShadowLightDepthDxDy.x) /
+    det;
+  vec2 perTexel = perUV / vtkShadowMapResolution;
+  float sigma = VTK_SHADOW_BLUR_SIGMA * vtkShadowViews[layer].FilterScale;
+  return dot(perTexel, perTexel) * (1.0 / 12.0 + sigma * sigma);
+}
+
+float vtkShadowReduceBleeding(float visibility)
+{
+  return clamp((visibility - vtkShadowLightBleeding) / (1.0 - vtkShadowLightBleeding), 0.0, 1.0);
+}
+
+// The mipmap level of the pixel's footprint in the map: that of its short
+// axis, or of its long axis over VTK_SHADOW_ANISOTROPY if coarser. Without
+// mipmaps every level but 0 is clamped away.
+float vtkShadowMomentsLevel()
+{
+  float x = length(vtkShadowMapDx) * vtkShadowMapResolution;
+  float y = length(vtkShadowMapDy) * vtkShadowMapResolution;
+  float texels = max(max(x, y) / VTK_SHADOW_ANISOTROPY, min(x, y));
+  return log2(max(texels, 1.0));
+}
+
+// The visibility of a receiver at light depth t from the stored moments, with
+// `variance` the least variance of the depth distribution.
+float vtkShadowMomentsVisibility(vec4 moments, float t, float variance)
+{
+#if VTK_SHADOW_MOMENTS == 0
+  float visibility = vtkShadowChebyshev(moments.xy, t, variance);
+#elif VTK_SHADOW_MOMENTS == 1 || VTK_SHADOW_MOMENTS == 2
+  // The variance floor in each warped space: depth variance times the warp's
+  // slope squared (d/dt of exp(c (2t - 1)) is 2c exp(c (2t - 1))) at the
+  // occluders' mean, where a depth spread of theirs would be; at the
+  // receiver's, far behind them, the slope would be many times steeper.
+  vec2 warped = vtkShadowWarpDepth(t);
+  vec2 slopes = 2.0 * vec2(VTK_SHADOW_POSITIVE_EXPONENT, VTK_SHADOW_NEGATIVE_EXPONENT) *
+    abs(vec2(moments.x, moments.z));
+  float visibility = vtkShadowChebyshev(moments.xy, warped.x, variance * slopes.x * slopes.x);
+#if VTK_SHADOW_MOMENTS == 2
+  visibility =
+    min(visibility, vtkShadowChebyshev(moments.zw, warped.y, variance * slopes.y * slopes.y));
+#endif
+#elif VTK_SHADOW_MOMENTS == 3
+  float visibility = vtkShadowHamburger(moments, t);
+#else
+  // ESM: exp(c (2d - 1)) averaged over the occluders, over the receiver's.
+  float visibility = clamp(moments.x / vtkShadowWarpDepth(t).x, 0.0, 1.0);
+#endif
+#if VTK_SHADOW_MOMENTS == 4
+  return visibility;
+#else
+  return vtkShadowReduceBleeding(visibility);
+#endif
+}
+
+float vtkShadowLookup(vec3 mapCoord, int layer)
+{
+  vec4 moments =
+    textureLod(vtkShadowMaps, vec3(mapCoord.xy, float(layer)), vtkShadowMomentsLevel());
+  float variance = vtkShadowMinimumVariance + vtkShadowReceiverVariance(layer);
+  return vtkShadowMomentsVisibility(moments, clamp(mapCoord.z, 0.0, 1.0), variance);
+}
