@@ -140,6 +140,8 @@ struct Row
   int Resolution = 0;
   double MemoryMiB = 0.0;
   shadowmetrics::Classification Errors;
+  /// Light leaks where the truth's shadow ray meets two or more occluders (%).
+  double Bleeding = NotMeasured;
   double Undersampled = NotMeasured;
   double Flicker = NotMeasured;
   double Changes = NotMeasured;
@@ -231,6 +233,8 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   shadoworacle::Surface surface;
   const auto truth = TruthOfView(view, oracle, &surface);
   const std::vector<std::uint8_t>& valid = surface.Valid;
+  const std::vector<unsigned char> occluders =
+    oracle.CountOccluders(surface, FirstLight(view.Renderer), truth);
 
   std::vector<TechniqueInstance> techniques;
   for (const std::string& name : options.Techniques)
@@ -256,6 +260,7 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
     const auto factor =
       shadowmetrics::FactorFromRenders(CaptureRGB(view.Window), plain, view.Width * view.Height);
     row.Errors = shadowmetrics::Classify(truth, factor, view.Width, view.Height);
+    row.Bleeding = shadowmetrics::LeakBehindSeveral(occluders, factor);
     row.MemoryMiB = MemoryMiB(technique);
     if (technique.Ours)
     {
@@ -333,17 +338,17 @@ double Ratio(const std::vector<Row>& rows, const Row& row, const std::string& re
 void PrintTable(const std::vector<Row>& rows, std::ostream& out)
 {
   out << "| scene | light | technique | map | MiB | misclassified % | false shadow % | leak % | "
-         "inner % | mean abs. diff. | undersampled % | flicker % | changes % (truth %) | "
+         "bleeding % | inner % | mean abs. diff. | undersampled % | flicker % | changes % (truth %) | "
          "first frame / none | "
          "steady / none | steady / vtk | moving / none | moving / vtk |\n"
-      << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Row& row : rows)
   {
     out << "| " << row.Scene << " | " << row.Setup << " | " << row.Technique << " | "
         << (row.Resolution > 0 ? std::to_string(row.Resolution) + "²" : "-") << " | "
         << FormatNumber(row.MemoryMiB, 1) << " | " << FormatNumber(row.Errors.Misclassified) << " | "
         << FormatNumber(row.Errors.FalseShadow) << " | " << FormatNumber(row.Errors.LightLeak) << " | "
-        << FormatNumber(row.Errors.InnerMisclassified) << " | "
+        << FormatNumber(row.Bleeding) << " | " << FormatNumber(row.Errors.InnerMisclassified) << " | "
         << FormatNumber(row.Errors.MeanAbsoluteDifference, 3) << " | " << FormatNumber(row.Undersampled)
         << " | "
         << (std::isnan(row.Flicker) ? std::string("-") : FormatNumber(row.Flicker, 3)) << " | "
@@ -361,13 +366,13 @@ void PrintTable(const std::vector<Row>& rows, std::ostream& out)
 void WriteCSV(const std::vector<Row>& rows, const std::string& path)
 {
   std::ofstream csv(path);
-  csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,inner,"
+  csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,bleeding,inner,"
          "mean_abs_diff,undersampled,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels\n";
   for (const Row& row : rows)
   {
     csv << row.Scene << ',' << row.Setup << ',' << row.Technique << ',' << row.Resolution << ','
         << row.MemoryMiB << ',' << row.Errors.Misclassified << ',' << row.Errors.FalseShadow << ','
-        << row.Errors.LightLeak << ',' << row.Errors.InnerMisclassified << ','
+        << row.Errors.LightLeak << ',' << row.Bleeding << ',' << row.Errors.InnerMisclassified << ','
         << row.Errors.MeanAbsoluteDifference << ',' << row.Undersampled << ',' << row.Flicker << ','
         << row.Changes << ',' << row.TruthChanges << ',' << row.Time.First << ',' << row.Time.Steady << ','
         << row.Time.Moving << ',' << row.Errors.Counted << '\n';

@@ -1,5 +1,7 @@
 #include "ShadowMetrics.h"
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 
@@ -56,6 +58,22 @@ std::vector<std::uint8_t> TruthEdges(const std::vector<Truth>& truth, int width,
     }
   }
   return edges;
+}
+
+//------------------------------------------------------------------------------
+double LeakBehindSeveral(const std::vector<unsigned char>& occluders, const std::vector<float>& factor)
+{
+  std::int64_t behind = 0;
+  std::int64_t lit = 0;
+  for (std::size_t i = 0; i < occluders.size() && i < factor.size(); ++i)
+  {
+    if (occluders[i] >= 2)
+    {
+      ++behind;
+      lit += factor[i] >= ShadowedBelow ? 1 : 0;
+    }
+  }
+  return behind > 0 ? Percent(lit, behind) : std::numeric_limits<double>::quiet_NaN();
 }
 
 //------------------------------------------------------------------------------

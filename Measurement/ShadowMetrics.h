@@ -43,6 +43,11 @@ struct Classification
 Classification Classify(
   const std::vector<Truth>& truth, const std::vector<float>& factor, int width, int height);
 
+/// Light bleeding: the percentage of the pixels whose truth's shadow ray meets
+/// two or more occluders (Oracle::CountOccluders >= 2) that the technique
+/// lights (factor at or above ShadowedBelow); NaN where there are none.
+double LeakBehindSeveral(const std::vector<unsigned char>& occluders, const std::vector<float>& factor);
+
 /// True where the truth has a different non-ignored state at a 4-neighbour.
 std::vector<std::uint8_t> TruthEdges(const std::vector<Truth>& truth, int width, int height);
 

@@ -727,15 +727,23 @@ struct Oracle::Impl
     return hit;
   }
 
-  bool Intersect(const Ray& ray, Hit& hit) const
+  // The nearest hit along the ray from t = near; geomID is invalid without one.
+  RTCRayHit Nearest(const Ray& ray, float near = 0.0f) const
   {
     RTCRayHit rayHit{};
     rayHit.ray = ToEmbree(ray);
+    rayHit.ray.tnear = near;
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     rtcIntersect1(this->Scene.get(), &context, &rayHit);
+    return rayHit;
+  }
+
+  bool Intersect(const Ray& ray, Hit& hit) const
+  {
+    const RTCRayHit rayHit = this->Nearest(ray);
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
     {
       return false;
@@ -753,29 +761,61 @@ struct Oracle::Impl
     return shadowRay.tfar < 0.0f; // Embree sets -inf on a hit
   }
 
-  Truth ClassifyPoint(const LightFrame& light, const glm::dvec3& position,
-    const glm::dvec3& normal, double minimumCosine) const
+  // Distinct geometries along the ray, up to `most`: each hit restarts the
+  // ray just beyond it.
+  int CountGeometries(const Ray& ray, int most) const
+  {
+    std::vector<unsigned> seen;
+    float near = 0.0f;
+    while (static_cast<int>(seen.size()) < most)
+    {
+      const RTCRayHit rayHit = this->Nearest(ray, near);
+      if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+      {
+        break;
+      }
+      if (std::find(seen.begin(), seen.end(), rayHit.hit.geomID) == seen.end())
+      {
+        seen.push_back(rayHit.hit.geomID);
+      }
+      const float t = rayHit.ray.tfar;
+      near = t + std::max(t * 1e-6f, static_cast<float>(this->SurfaceOffset));
+    }
+    return static_cast<int>(seen.size());
+  }
+
+  // The occlusion ray of a surface point toward the light; false where the
+  // point is not counted (behind the light, outside a spot's cone, facing away).
+  bool ShadowRay(const LightFrame& light, const glm::dvec3& position, const glm::dvec3& normal,
+    double minimumCosine, Ray& ray) const
   {
     const glm::dvec3 origin = position + this->SurfaceOffset * normal;
-    Ray ray{ origin, light.TowardLight, std::numeric_limits<double>::infinity() };
+    ray = Ray{ origin, light.TowardLight, std::numeric_limits<double>::infinity() };
     if (light.Positional)
     {
       const glm::dvec3 toLight = light.Position - position;
       const double distance = glm::length(toLight);
       if (distance <= 0.0)
       {
-        return Truth::Ignored;
+        return false;
       }
       if (light.Spot && glm::dot(-toLight / distance, light.Axis) < light.CosCone)
       {
-        return Truth::Ignored;
+        return false;
       }
       ray.Direction = glm::normalize(light.Position - origin);
       ray.Far = std::max(0.0, glm::length(light.Position - origin) - this->SurfaceOffset);
     }
     const glm::dvec3 towardLight =
       light.Positional ? glm::normalize(light.Position - position) : light.TowardLight;
-    if (glm::dot(normal, towardLight) <= minimumCosine)
+    return glm::dot(normal, towardLight) > minimumCosine;
+  }
+
+  Truth ClassifyPoint(const LightFrame& light, const glm::dvec3& position,
+    const glm::dvec3& normal, double minimumCosine) const
+  {
+    Ray ray;
+    if (!this->ShadowRay(light, position, normal, minimumCosine, ray))
     {
       return Truth::Ignored;
     }
@@ -964,6 +1004,35 @@ std::vector<Truth> Oracle::Classify(
     }
   });
   return truth;
+}
+
+//------------------------------------------------------------------------------
+std::vector<unsigned char> Oracle::CountOccluders(
+  const Surface& surface, vtkLight* light, const std::vector<Truth>& truth, int most) const
+{
+  std::vector<unsigned char> counts(truth.size(), 0);
+  const LightFrame frame = light ? MakeLightFrame(light) : LightFrame();
+  if (!light || !this->Pimpl || !this->Pimpl->Scene || !frame.Usable ||
+    truth.size() != surface.Valid.size() || surface.Position.size() != truth.size() ||
+    surface.Normal.size() != truth.size())
+  {
+    return counts;
+  }
+  const Impl& impl = *this->Pimpl;
+  const int capped = std::max(1, std::min(most, 255));
+  ForEachRow(surface.Height, [&](int y) {
+    for (int x = 0; x < surface.Width; ++x)
+    {
+      const std::size_t i = static_cast<std::size_t>(y) * surface.Width + x;
+      Ray ray;
+      if (truth[i] == Truth::Shadowed &&
+        impl.ShadowRay(frame, surface.Position[i], surface.Normal[i], -1.0, ray))
+      {
+        counts[i] = static_cast<unsigned char>(impl.CountGeometries(ray, capped));
+      }
+    }
+  });
+  return counts;
 }
 
 } // namespace shadoworacle

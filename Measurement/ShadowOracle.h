@@ -122,6 +122,16 @@ public:
   std::vector<Truth> Classify(
     const Surface& surface, vtkLight* light, double minimumCosine = 0.1) const;
 
+  /**
+   * Per pixel, for the pixels `truth` (Classify's for the same surface and
+   * light) marks Shadowed: how many distinct occluders (BVH geometries: one
+   * per polydata leaf) the pixel's shadow ray meets, counted up to `most`;
+   * 0 elsewhere. Where two or more are met, filtered maps that average the
+   * occluders' depths may let light through (light bleeding).
+   */
+  std::vector<unsigned char> CountOccluders(const Surface& surface, vtkLight* light,
+    const std::vector<Truth>& truth, int most = 2) const;
+
   /// Triangles in the BVH (0 before a successful Build).
   std::size_t GetNumberOfTriangles() const;
 

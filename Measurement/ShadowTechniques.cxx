@@ -5,6 +5,7 @@
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkDualDepthShadowMapPass.h"
+#include "vtkVarianceShadowMapPass.h"
 #include "vtkWarpedShadowMapViews.h"
 #include "vtkWarpedShadowMapPass.h"
 
@@ -97,6 +98,29 @@ std::pair<int, int> DualDepthOf(const std::string& name)
     : std::make_pair(-1, 0);
 }
 
+// The vtkVarianceShadowMapPass moments a technique name stands for; -1: none.
+int MomentsOf(const std::string& name)
+{
+  static const std::map<std::string, int> moments = {
+    { "vsm", vtkVarianceShadowMapPass::VSM },
+    { "evsm2", vtkVarianceShadowMapPass::EVSM2 },
+    { "evsm4", vtkVarianceShadowMapPass::EVSM4 },
+    { "msm", vtkVarianceShadowMapPass::MSM },
+    { "esm", vtkVarianceShadowMapPass::ESM },
+  };
+  const auto found = moments.find(name);
+  return found == moments.end() ? -1 : found->second;
+}
+
+// The depth filters of the uniform map that soften like the moment maps'
+// default blur: "pcf3" (3 x 3 bilinear PCF) and "poisson" (16 taps).
+int DepthFilterOf(const std::string& name)
+{
+  return name == "pcf3" ? vtkDepthShadowMapPass::PCF_NXN
+    : name == "poisson" ? vtkDepthShadowMapPass::POISSON
+                        : -1;
+}
+
 // The dual mode's offset sweep: "dual-offset<K>", K texels ("dual" is K = 2).
 std::vector<std::string> DualOffsetSweepNames()
 {
@@ -167,14 +191,15 @@ vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(unsigned int resolution, vtk
 std::vector<std::string> DefaultTechniqueNames()
 {
   return { "none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
-    "csm-tight", "csm-lispsm", "second-depth", "midpoint", "dual" };
+    "csm-tight", "csm-lispsm", "second-depth", "midpoint", "dual", "evsm4" };
 }
 
 //------------------------------------------------------------------------------
 std::vector<std::string> TechniqueNames()
 {
   std::vector<std::string> names = DefaultTechniqueNames();
-  names.insert(names.end(), { "dual-minblend", "dual-peel" });
+  names.insert(names.end(), { "dual-minblend", "dual-peel", "vsm", "evsm2", "msm", "esm", "pcf3",
+                              "poisson" });
   const std::vector<std::string> offsets = DualOffsetSweepNames();
   names.insert(names.end(), offsets.begin(), offsets.end());
   const std::vector<std::string> biases = BiasSweepNames();
@@ -278,6 +303,31 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
     {
       pass->SetDualOffset(std::stod(name.substr(std::string("dual-offset").size())));
     }
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = resolution;
+  }
+  else if (MomentsOf(name) >= 0)
+  {
+    // The uniform technique's views; the moments' defaults.
+    auto pass = vtkSmartPointer<vtkVarianceShadowMapPass>::New();
+    auto views = vtkSmartPointer<vtkWarpedShadowMapViews>::New();
+    views->SetWarpModeToUniform();
+    pass->SetViews(views);
+    pass->SetResolution(resolution);
+    pass->SetMoments(MomentsOf(name));
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = resolution;
+  }
+  else if (DepthFilterOf(name) >= 0)
+  {
+    auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    pass->SetResolution(resolution);
+    pass->SetWarpModeToUniform();
+    pass->SetFilter(DepthFilterOf(name));
+    pass->SetKernelSize(3);
+    pass->SetFilterRadius(1.5);
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;

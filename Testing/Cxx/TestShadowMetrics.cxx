@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using shadowmetrics::Truth;
 
 namespace
@@ -105,4 +107,13 @@ TEST(ShadowMetrics, ErrorMapColours)
   EXPECT_EQ(rgb[6], rgb[8]); // agreement: grey
   EXPECT_GT(rgb[6], rgb[9]); // lit lighter than shadowed
   EXPECT_EQ(rgb[12] + rgb[13] + rgb[14], 0);
+}
+
+TEST(ShadowMetrics, LeakBehindSeveralCountsOnlyPixelsBehindTwoOccluders)
+{
+  const std::vector<unsigned char> occluders = { 0, 1, 2, 2, 3, 2 };
+  const std::vector<float> factor = { 1.0f, 1.0f, 0.9f, 0.1f, 0.5f, 0.0f };
+  // Four pixels behind two or more occluders; two of them lit (0.9 and 0.5).
+  EXPECT_NEAR(shadowmetrics::LeakBehindSeveral(occluders, factor), 50.0, 1e-9);
+  EXPECT_TRUE(std::isnan(shadowmetrics::LeakBehindSeveral({ 0, 1 }, { 1.0f, 1.0f })));
 }

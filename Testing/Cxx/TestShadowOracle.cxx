@@ -905,3 +905,60 @@ TEST(ShadowOracle, MovedOracleStillTraces)
   assigned = std::move(moved);
   EXPECT_EQ(CountValid(assigned.Trace(view.Renderer, 32, 32)), 32 * 32);
 }
+
+// Occluders counted along shadow rays: two stacked squares over the ground
+// under an overhead sun, the surface a grid of ground points (the squares hide
+// what is under them from any camera above). Under the small high square both
+// are met; under the large low one alone one is; lit ground none.
+TEST(ShadowOracle, CountOccludersAlongShadowRays)
+{
+  View view;
+  AddGround(view, 15.0);
+  vtkActor* high = view.Add(Square(2.0));
+  high->SetPosition(0.0, 0.0, 0.6);
+  vtkActor* low = view.Add(Square(6.0));
+  low->SetPosition(0.0, 0.0, 0.3);
+  vtkLight* sun = view.SetSun({ 0.0, 0.0, 1.0 });
+  view.LookDown({ 0.0, 0.0 }, 5.0);
+  view.Window->Render();
+  Oracle oracle;
+  std::string error;
+  ASSERT_TRUE(oracle.Build(view.Renderer, error)) << error;
+
+  Surface surface;
+  surface.Width = 41;
+  surface.Height = 41;
+  for (int y = 0; y < surface.Height; ++y)
+  {
+    for (int x = 0; x < surface.Width; ++x)
+    {
+      surface.Valid.push_back(1);
+      surface.Position.emplace_back(-5.0 + 0.25 * x + 0.01, -5.0 + 0.25 * y + 0.01, 0.0);
+      surface.Normal.emplace_back(0.0, 0.0, 1.0);
+      surface.ViewDepth.push_back(1.0);
+    }
+  }
+  const std::vector<Truth> truth = oracle.Classify(surface, sun);
+  const std::vector<unsigned char> counts = oracle.CountOccluders(surface, sun, truth);
+  ASSERT_EQ(counts.size(), truth.size());
+  int none = 0;
+  int one = 0;
+  int two = 0;
+  for (size_t i = 0; i < counts.size(); ++i)
+  {
+    const double x = std::abs(surface.Position[i].x);
+    const double y = std::abs(surface.Position[i].y);
+    const int expected = std::max(x, y) < 1.0 ? 2 : std::max(x, y) < 3.0 ? 1 : 0;
+    EXPECT_EQ(counts[i], expected) << surface.Position[i].x << ", " << surface.Position[i].y;
+    EXPECT_EQ(truth[i], expected > 0 ? Truth::Shadowed : Truth::Lit);
+    none += expected == 0 ? 1 : 0;
+    one += expected == 1 ? 1 : 0;
+    two += expected == 2 ? 1 : 0;
+  }
+  EXPECT_GT(two, 20);
+  EXPECT_GT(one, 20);
+  EXPECT_GT(none, 20);
+  // Capped at `most`.
+  const std::vector<unsigned char> capped = oracle.CountOccluders(surface, sun, truth, 1);
+  EXPECT_EQ(*std::max_element(capped.begin(), capped.end()), 1);
+}

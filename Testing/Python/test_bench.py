@@ -29,7 +29,7 @@ def test_bench(program, output):
                  "--flicker-frames", "3", "--out", directory, *SMALL)
     check(result.returncode == 0, "bench failed: " + result.stderr[-2000:])
     table = [line for line in result.stdout.splitlines() if line.startswith("| model")]
-    check(len(table) == 28, "expected 28 table rows (2 set-ups x 14 techniques), got %d" % len(table))
+    check(len(table) == 30, "expected 30 table rows (2 set-ups x 15 techniques), got %d" % len(table))
     rows = rows_by_case(os.path.join(directory, "results.csv"))
     for setup in ("perpendicular", "point"):
         none = rows[("model", setup, "none")]
@@ -37,12 +37,12 @@ def test_bench(program, output):
         check(float(none["misclassified"]) > 0.5, setup + ": the scene has shadows to find")
         check(float(none["misclassified"]) == float(none["leak"]), setup + ": all leaks")
         for technique in ("uniform", "psm", "lispsm", "tsm", "gmnpr", "csm", "csm-tight", "csm-lispsm",
-                          "second-depth", "midpoint", "dual"):
+                          "second-depth", "midpoint", "dual", "evsm4"):
             focused = rows[("model", setup, technique)]
             check(float(focused["misclassified"]) < 0.5 * float(none["misclassified"]),
                   setup + ": " + technique + " finds the shadows")
         for technique in ("none", "vtk", "vtk-equal", "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
-                          "csm-tight", "csm-lispsm", "second-depth", "midpoint", "dual"):
+                          "csm-tight", "csm-lispsm", "second-depth", "midpoint", "dual", "evsm4"):
             name = "model-%s-%s-errors.png" % (setup, technique)
             check(os.path.getsize(os.path.join(directory, name)) > 0, name + " written")
         check(os.path.getsize(os.path.join(directory, "model-%s-chart.png" % setup)) > 0, "chart")
@@ -63,6 +63,10 @@ def test_bench(program, output):
           "two floats per texel and a shared 32-bit depth: 48 MiB at 2048^2")
     check(float(rows[("model", "perpendicular", "dual")]["memory_mib"]) == 64.0,
           "the ground is open, so the dual map is peeled: one float per texel more")
+    check(abs(float(rows[("model", "perpendicular", "evsm4")]["memory_mib"]) - (64.0 * 4 / 3 + 16.0)) < 0.01,
+          "four 32-bit floats per texel, a third more for mipmaps, a shared 32-bit depth")
+    check(rows[("model", "perpendicular", "uniform")]["bleeding"] != "",
+          "the bleeding column is written")
     check(int(rows[("model", "perpendicular", "vtk-equal")]["resolution"]) == 1448,
           "VTK at the memory of a 32-bit 2048^2 map: 1448^2 colour + depth = 16 MiB")
 
