@@ -779,7 +779,8 @@ struct Oracle::Impl
         seen.push_back(rayHit.hit.geomID);
       }
       const float t = rayHit.ray.tfar;
-      near = t + std::max(t * 1e-6f, static_cast<float>(this->SurfaceOffset));
+      const float next = t + std::max(t * 1e-6f, static_cast<float>(this->SurfaceOffset));
+      near = next > t ? next : std::nextafter(t, std::numeric_limits<float>::infinity());
     }
     return static_cast<int>(seen.size());
   }

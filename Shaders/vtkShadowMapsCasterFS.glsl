@@ -37,19 +37,19 @@ bool vtkShadowPeeledAway(float depth)
 #ifdef VTK_SHADOW_LIGHT_DEPTH
 // Filterable maps store the light depth (shadowmaps::LightDepth): linear in
 // light space and shared by all views of a light, whatever a view's projection
-// does to the window depth. The fragment's world position is recovered from its
-// window position, which works for every projective view.
-uniform mat4 vtkShadowWindowToWorld;
+// does to the window depth. The fragment's position, relative to the light
+// depth's origin, is recovered from its window position, which works for every
+// projective view.
+uniform mat4 vtkShadowWindowToLight;
 uniform vec4 vtkShadowLightDepthPlane;
-// xyz: the light's position; w: depth per unit distance from it.
-uniform vec4 vtkShadowLightDepthRadial;
+uniform float vtkShadowLightDepthPerDistance;
 
 float vtkShadowLightDepthAt(float windowDepth)
 {
-  vec4 h = vtkShadowWindowToWorld * vec4(gl_FragCoord.xy, windowDepth, 1.0);
-  vec3 world = h.xyz / h.w;
-  float depth = dot(vtkShadowLightDepthPlane.xyz, world) + vtkShadowLightDepthPlane.w +
-    vtkShadowLightDepthRadial.w * distance(world, vtkShadowLightDepthRadial.xyz);
+  vec4 h = vtkShadowWindowToLight * vec4(gl_FragCoord.xy, windowDepth, 1.0);
+  vec3 relative = h.xyz / h.w;
+  float depth = dot(vtkShadowLightDepthPlane.xyz, relative) + vtkShadowLightDepthPlane.w +
+    vtkShadowLightDepthPerDistance * length(relative);
   return clamp(depth, 0.0, 1.0);
 }
 #endif

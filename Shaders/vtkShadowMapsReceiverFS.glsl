@@ -54,9 +54,10 @@ struct vtkShadowLight
   // Tiles viewLayout (shadowmaps::TileGrid): columns, rows, and a tile's window
   // over the whole map's along x and y.
   vec4 TileGrid;
-  // The light depth (shadowmaps::LightDepth) in VC: dot(DepthPlane.xyz, p) +
-  // DepthPlane.w + DepthPerDistance * |p - PositionVC|.
+  // The light depth (shadowmaps::LightDepth) in VC: with r = p - DepthOrigin,
+  // dot(DepthPlane.xyz, r) + DepthPlane.w + DepthPerDistance * |r|.
   vec4 DepthPlane;
+  vec3 DepthOrigin;
   float DepthPerDistance;
 };
 uniform vtkShadowLight vtkShadowLights[VTK_SHADOW_MAX_LIGHTS];
@@ -246,8 +247,8 @@ vec3 vtkShadowPositionDy = vec3(0.0);
 float vtkShadowLightDepth(vec3 positionVC, int light)
 {
   vec4 plane = vtkShadowLights[light].DepthPlane;
-  return dot(plane.xyz, positionVC) + plane.w +
-    vtkShadowLights[light].DepthPerDistance * distance(positionVC, vtkShadowLights[light].PositionVC);
+  vec3 relative = positionVC - vtkShadowLights[light].DepthOrigin;
+  return dot(plane.xyz, relative) + plane.w + vtkShadowLights[light].DepthPerDistance * length(relative);
 }
 #endif
 
@@ -269,10 +270,9 @@ void vtkShadowMeasureFootprint(vec3 positionVC, int light, int view)
   vtkShadowMapGradients(positionVC, view, gradU, gradV);
   vtkShadowMapDx = vec2(dot(gradU, vtkShadowPositionDx), dot(gradV, vtkShadowPositionDx));
   vtkShadowMapDy = vec2(dot(gradU, vtkShadowPositionDy), dot(gradV, vtkShadowPositionDy));
-  vec3 toReceiver = positionVC - vtkShadowLights[light].PositionVC;
-  float distanceToLight = max(length(toReceiver), 1e-30);
+  vec3 relative = positionVC - vtkShadowLights[light].DepthOrigin;
   vec3 gradDepth = vtkShadowLights[light].DepthPlane.xyz +
-    vtkShadowLights[light].DepthPerDistance * toReceiver / distanceToLight;
+    vtkShadowLights[light].DepthPerDistance * relative / max(length(relative), 1e-30);
   vtkShadowLightDepthDxDy =
     vec2(dot(gradDepth, vtkShadowPositionDx), dot(gradDepth, vtkShadowPositionDy));
 }

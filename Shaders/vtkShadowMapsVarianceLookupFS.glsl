@@ -46,8 +46,8 @@ float vtkShadowHamburger(vec4 stored, float z)
   float discriminant = max(c2 * c2 - 4.0 * c3 * c1, 0.0);
   float root = sqrt(discriminant);
   float q = -0.5 * (c2 + (c2 < 0.0 ? -root : root));
-  float r1 = q / (abs(c3) > 1e-30 ? c3 : 1e-30);
-  float r2 = c1 / (abs(q) > 1e-30 ? q : 1e-30);
+  float r1 = q / (abs(c3) > 1e-30 ? c3 : (c3 < 0.0 ? -1e-30 : 1e-30));
+  float r2 = c1 / (abs(q) > 1e-30 ? q : (q < 0.0 ? -1e-30 : 1e-30));
   float z2 = min(r1, r2);
   float z3 = max(r1, r2);
   float shadow;

@@ -43,9 +43,11 @@ LightDepth DirectionalLightDepth(const glm::dvec3& direction, const Aabb& scene)
     }
   }
   const double scale = scene.IsEmpty() ? 1.0 : scene.Diagonal();
+  const glm::dvec3 origin = scene.IsEmpty() ? glm::dvec3(0.0) : scene.Center();
   const glm::dvec2 n = Normalization(nearest, farthest, scale);
   LightDepth depth;
-  depth.Plane = glm::dvec4(d * n.x, n.y);
+  depth.Plane = glm::dvec4(d * n.x, n.y + n.x * glm::dot(d, origin));
+  depth.Origin = origin;
   return depth;
 }
 
@@ -72,15 +74,16 @@ LightDepth PositionalLightDepth(const glm::dvec3& position, const Aabb& scene)
 
 double EvaluateLightDepth(const LightDepth& depth, const glm::dvec3& p)
 {
-  return glm::dot(glm::dvec3(depth.Plane), p) + depth.Plane.w +
-    depth.PerDistance * glm::length(p - depth.Origin);
+  const glm::dvec3 relative = p - depth.Origin;
+  return glm::dot(glm::dvec3(depth.Plane), relative) + depth.Plane.w +
+    depth.PerDistance * glm::length(relative);
 }
 
 LightDepth TransformLightDepth(const LightDepth& depth, const glm::dmat4& rigid)
 {
-  // A plane's coefficients transform by the inverse transpose; distances keep.
+  // Relative positions rotate with the frame; lengths keep.
   LightDepth moved = depth;
-  moved.Plane = glm::transpose(glm::inverse(rigid)) * depth.Plane;
+  moved.Plane = glm::dvec4(glm::dmat3(rigid) * glm::dvec3(depth.Plane), depth.Plane.w);
   moved.Origin = glm::dvec3(rigid * glm::dvec4(depth.Origin, 1.0));
   return moved;
 }

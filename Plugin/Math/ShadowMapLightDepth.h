@@ -12,9 +12,11 @@
 
 namespace shadowmaps
 {
-/// depth(p) = dot(Plane.xyz, p) + Plane.w + PerDistance * |p - Origin|: along
-/// the direction of a directional light (PerDistance 0), or the distance from a
-/// positional light (Plane.xyz 0).
+/// depth(p) = dot(Plane.xyz, p - Origin) + Plane.w + PerDistance * |p - Origin|:
+/// along the direction of a directional light (PerDistance 0; Origin the
+/// scene's centre), or the distance from a positional light (Plane.xyz 0;
+/// Origin the light). Positions are taken relative to Origin so that shaders
+/// never form large coordinates in single precision.
 struct LightDepth
 {
   glm::dvec4 Plane{ 0.0, 0.0, 0.0, 0.0 };
@@ -33,8 +35,8 @@ LightDepth PositionalLightDepth(const glm::dvec3& position, const Aabb& scene);
 /// The light depth of `p`, unclamped.
 double EvaluateLightDepth(const LightDepth& depth, const glm::dvec3& p);
 
-/// The same function of points given in the frame `rigid` takes world points
-/// to (a camera's view matrix: rotation and translation).
+/// The same function of points given in the frame `rigid` (a rotation and a
+/// translation, such as a camera's view matrix) takes world points to.
 LightDepth TransformLightDepth(const LightDepth& depth, const glm::dmat4& rigid);
 } // namespace shadowmaps
 

@@ -103,6 +103,12 @@ bool MapBlur::Blur(
   {
     return false;
   }
+  const int unit = window->GetTextureUnitManager()->Allocate();
+  if (unit < 0)
+  {
+    error = "no texture unit is free for the shadow maps' blur";
+    return false;
+  }
   vtkOpenGLState* state = window->GetState();
   state->PushFramebufferBindings();
   vtkOpenGLState::ScopedglViewport keepViewport(state);
@@ -115,7 +121,6 @@ bool MapBlur::Blur(
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_BLEND);
   state->vtkglViewport(0, 0, maps.GetResolution(), maps.GetResolution());
-  const int unit = window->GetTextureUnitManager()->Allocate();
 
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->ScratchFramebuffer);
   glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->Scratch, 0, 0);

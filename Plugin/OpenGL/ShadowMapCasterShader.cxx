@@ -107,7 +107,9 @@ std::string Branch(
   branch << "    float vtkShadowCasterDepth = " << depth << ";\n";
   if (writeDepth)
   {
-    branch << "    gl_FragDepth = vtkShadowCasterDepth;\n";
+    // The depth test keeps the nearest fragment by window depth; light depth
+    // is a value, not that.
+    branch << "    gl_FragDepth = " << (code.LightDepth ? rawDepth : "vtkShadowCasterDepth") << ";\n";
   }
   branch << StoreCode(code) << "\n    return;\n  }\n";
   return branch.str();
@@ -214,11 +216,11 @@ void CasterUniforms::SetView(const std::array<float, 3>& windowToInverseW,
 
 //------------------------------------------------------------------------------
 void CasterUniforms::SetLightDepth(
-  const glm::mat4& windowToWorld, const glm::vec4& plane, const glm::vec4& radial)
+  const glm::mat4& windowToLight, const glm::vec4& plane, float perDistance)
 {
-  this->WindowToWorld = windowToWorld;
+  this->WindowToLight = windowToLight;
   this->LightDepthPlane = plane;
-  this->LightDepthRadial = radial;
+  this->LightDepthPerDistance = perDistance;
 }
 
 //------------------------------------------------------------------------------
@@ -250,12 +252,12 @@ void CasterUniforms::ApplyCasting(vtkShaderProgram* program) const
   {
     program->SetUniformi("vtkShadowCasterParallel", this->Parallel ? 1 : 0);
   }
-  if (program->IsUniformUsed("vtkShadowWindowToWorld"))
+  if (program->IsUniformUsed("vtkShadowWindowToLight"))
   {
-    glm::mat4 windowToWorld = this->WindowToWorld; // VTK 9.1 takes a mutable pointer
-    program->SetUniformMatrix4x4("vtkShadowWindowToWorld", glm::value_ptr(windowToWorld));
+    glm::mat4 windowToLight = this->WindowToLight; // VTK 9.1 takes a mutable pointer
+    program->SetUniformMatrix4x4("vtkShadowWindowToLight", glm::value_ptr(windowToLight));
     program->SetUniform4f("vtkShadowLightDepthPlane", glm::value_ptr(this->LightDepthPlane));
-    program->SetUniform4f("vtkShadowLightDepthRadial", glm::value_ptr(this->LightDepthRadial));
+    program->SetUniformf("vtkShadowLightDepthPerDistance", this->LightDepthPerDistance);
   }
   if (program->IsUniformUsed("vtkShadowWindowToInverseW"))
   {

@@ -88,9 +88,9 @@ public:
     const std::array<float, 3>& linearDepthBias, bool parallel);
 
   /// The light depth (CasterCode::LightDepth) of the view being rendered:
-  /// window coordinates (pixels, window depth) to world, and the light's
-  /// LightDepth in world.
-  void SetLightDepth(const glm::mat4& windowToWorld, const glm::vec4& plane, const glm::vec4& radial);
+  /// window coordinates (pixels, window depth) to world positions relative to
+  /// the light's LightDepth::Origin, and its Plane and PerDistance.
+  void SetLightDepth(const glm::mat4& windowToLight, const glm::vec4& plane, float perDistance);
 
   /// Peeling (CasterCode::SecondDepth): whether this is the second pass, and
   /// the texture unit of the first pass's depths (kept by every program, in
@@ -110,9 +110,9 @@ private:
   int PeelUnit = 0;
   std::array<float, 3> WindowToInverseW{ { 0.0f, 0.0f, 1.0f } };
   std::array<float, 3> LinearDepthBias{ { 0.0f, 0.0f, 0.0f } };
-  glm::mat4 WindowToWorld{ 1.0f };
+  glm::mat4 WindowToLight{ 1.0f };
   glm::vec4 LightDepthPlane{ 0.0f };
-  glm::vec4 LightDepthRadial{ 0.0f };
+  float LightDepthPerDistance = 0.0f;
   bool Parallel = false;
 };
 } // namespace shadowmaps

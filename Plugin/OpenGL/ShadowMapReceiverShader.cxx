@@ -244,6 +244,7 @@ ReceiverUniforms::Light ReceiverUniforms::PackLight(
     static_cast<float>(light.Tiles.WindowFraction.y));
   const LightDepth depthVC = TransformLightDepth(light.Depth, cameraView);
   packed.DepthPlane = glm::vec4(depthVC.Plane);
+  packed.DepthOrigin = glm::vec3(depthVC.Origin);
   packed.DepthPerDistance = static_cast<float>(depthVC.PerDistance);
   return packed;
 }
@@ -287,7 +288,7 @@ void ReceiverUniforms::NameMembers()
   {
     this->LightNames.push_back(name(
       "vtkShadowLights", i, { "PositionVC", "Attenuation", "Fade", "CoverageBand", "TileGrid",
-                              "DepthPlane", "DepthPerDistance" }));
+                              "DepthPlane", "DepthOrigin", "DepthPerDistance" }));
   }
 }
 
@@ -321,7 +322,8 @@ void ReceiverUniforms::Apply(
     program->SetUniformf(names[3].c_str(), light.CoverageBand);
     program->SetUniform4f(names[4].c_str(), glm::value_ptr(light.TileGrid));
     program->SetUniform4f(names[5].c_str(), glm::value_ptr(light.DepthPlane));
-    program->SetUniformf(names[6].c_str(), light.DepthPerDistance);
+    program->SetUniform3f(names[6].c_str(), glm::value_ptr(light.DepthOrigin));
+    program->SetUniformf(names[7].c_str(), light.DepthPerDistance);
   }
   program->SetUniformi("vtkShadowMaps", mapUnit);
   program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(this->ViewToWorld));

@@ -112,6 +112,7 @@ private:
     float CoverageBand = -1.0f;
     glm::vec4 TileGrid{ 0.0f };
     glm::vec4 DepthPlane{ 0.0f };
+    glm::vec3 DepthOrigin{ 0.0f };
     float DepthPerDistance = 0.0f;
   };
   static View PackView(const ShadowLight& light, std::size_t index, const glm::dmat4& viewToWorld);

@@ -38,6 +38,8 @@
 #include "vtkTextureUnitManager.h"
 #include "vtkShaderProgram.h"
 #include "vtkVolume.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -258,12 +260,20 @@ std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const L
 }
 
 // What a layer's content depends on besides what ForgetLayersIfStale watches:
-// its view and the casters in it, with their data.
-std::vector<vtkMTimeType> LayerSignature(const LightView& view, const std::vector<const Caster*>& casters)
+// its view, its light's depth (stored by light-depth maps) and the casters in
+// it, with their data.
+std::vector<vtkMTimeType> LayerSignature(
+  const ShadowLight& light, const LightView& view, const std::vector<const Caster*>& casters)
 {
   std::vector<vtkMTimeType> signature;
   AppendMatrixBits(view.View, signature);
   AppendMatrixBits(view.Projection, signature);
+  const shadowmaps::LightDepth& depth = light.Depth;
+  for (double value : { depth.Plane.x, depth.Plane.y, depth.Plane.z, depth.Plane.w,
+         depth.PerDistance, depth.Origin.x, depth.Origin.y, depth.Origin.z })
+  {
+    AppendBits(value, signature);
+  }
   signature.push_back(view.OutOfView ? 1 : 0);
   signature.push_back(view.LinearDepth ? 1 : 0);
   for (const Caster* caster : casters)
@@ -861,9 +871,13 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
   }
   if (r.CasterCode.LightDepth)
   {
+    // Positions relative to the depth's origin, composed in double: no large
+    // world coordinate is formed in float.
     const shadowmaps::LightDepth& depth = light.Depth;
-    r.CasterUniforms.SetLightDepth(glm::mat4(WindowToWorld(view, r.Frame.Resolution)),
-      glm::vec4(depth.Plane), glm::vec4(glm::dvec3(depth.Origin), depth.PerDistance));
+    const glm::dmat4 windowToLight =
+      glm::translate(glm::dmat4(1.0), -depth.Origin) * WindowToWorld(view, r.Frame.Resolution);
+    r.CasterUniforms.SetLightDepth(
+      glm::mat4(windowToLight), glm::vec4(depth.Plane), static_cast<float>(depth.PerDistance));
   }
   // Every program takes the view's uniforms on its first draw into it.
   r.CasterPrograms.Invalidate();
@@ -930,7 +944,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         const std::vector<glm::dvec3> shaded = ShadedBody(r.Frame, light.Views[v], visible);
         const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
           ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
-        std::vector<vtkMTimeType> signature = LayerSignature(light.Views[v], casters);
+        std::vector<vtkMTimeType> signature = LayerSignature(light, light.Views[v], casters);
         if (r.LayerSignatures[layer] == signature)
         {
           continue;

@@ -94,6 +94,13 @@ double vtkVarianceShadowMapRepresentation::GetMaximumExponent() const
 }
 
 //------------------------------------------------------------------------------
+double vtkVarianceShadowMapRepresentation::GetWarpExponent() const
+{
+  // ESM has no variance to absorb filtering: the steepest warp the storage holds.
+  return this->Moments == ESM ? this->GetMaximumExponent() : this->PositiveExponent;
+}
+
+//------------------------------------------------------------------------------
 void vtkVarianceShadowMapRepresentation::ClampExponents()
 {
   const double maximum = this->GetMaximumExponent();
@@ -112,7 +119,7 @@ void vtkVarianceShadowMapRepresentation::GetMomentsOfDepth(double depth, double 
 {
   const double d = std::min(std::max(depth, 0.0), 1.0);
   const double warped = 2.0 * d - 1.0;
-  const double positive = std::exp(this->PositiveExponent * warped);
+  const double positive = std::exp(this->GetWarpExponent() * warped);
   const double negative = -std::exp(-this->NegativeExponent * warped);
   switch (this->Moments)
   {
@@ -146,7 +153,7 @@ std::string vtkVarianceShadowMapRepresentation::MomentDefinitions() const
   std::ostringstream definitions;
   definitions.precision(9);
   definitions << std::showpoint << "#define VTK_SHADOW_MOMENTS " << this->Moments << "\n"
-              << "#define VTK_SHADOW_POSITIVE_EXPONENT " << this->PositiveExponent << "\n"
+              << "#define VTK_SHADOW_POSITIVE_EXPONENT " << this->GetWarpExponent() << "\n"
               << "#define VTK_SHADOW_NEGATIVE_EXPONENT " << this->NegativeExponent << "\n";
   return definitions.str();
 }

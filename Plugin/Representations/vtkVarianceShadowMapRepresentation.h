@@ -17,8 +17,9 @@
  * - EVSM4: EVSM2 and the same on -exp(-c- d), the smaller of the two bounds.
  * - MSM: four powers of depth and the Hamburger reconstruction (Peters and
  *   Klein's moment shadow maps), biased toward a safe moment vector.
- * - ESM: exp(c d) alone, visibility exp(c (m - t)) (the sane version of
- *   vtkShadowMapPass's exponential map, for comparison).
+ * - ESM: exp(c d) alone, visibility exp(c (m - t)), c the largest exponent the
+ *   storage holds (the sane version of vtkShadowMapPass's exponential map, for
+ *   comparison).
  *
  * Light bleeding (a receiver lit through two occluders at different depths)
  * is cut by LightBleedingReduction; acne on surfaces that slope away from the
@@ -93,10 +94,11 @@ public:
   ///@{
   /**
    * Exponents of EVSM's positive and negative warps (EVSM2 uses the positive
-   * one) and of ESM (the positive one), applied to depth in [-1, 1]. Larger
-   * means less light bleeding and less room for filtering; clamped to [0,
-   * GetMaximumExponent()] for the storage and moments, with a warning when a
-   * value had to be reduced. Defaults 40 and 5 (32-bit storage).
+   * one), applied to depth in [-1, 1]. Larger means less light bleeding and
+   * less room for filtering; clamped to [0, GetMaximumExponent()] for the
+   * storage and moments, with a warning when a value had to be reduced.
+   * Defaults 40 and 5 (32-bit storage). ESM uses the largest exponent its
+   * storage holds (GetWarpExponent), as its shadows lighten with a smaller one.
    */
   void SetPositiveExponent(double exponent);
   vtkGetMacro(PositiveExponent, double);
@@ -110,6 +112,9 @@ public:
    * for 16-bit ones.
    */
   double GetMaximumExponent() const;
+
+  /** The exponent of the positive warp the maps use: PositiveExponent, or for ESM GetMaximumExponent(). */
+  double GetWarpExponent() const;
 
   ///@{
   /**
