@@ -98,7 +98,9 @@ std::pair<int, int> DualDepthOf(const std::string& name)
     : std::make_pair(-1, 0);
 }
 
-// The vtkVarianceShadowMapPass moments a technique name stands for; -1: none.
+// The vtkVarianceShadowMapPass moments a technique name stands for ("vsm",
+// "evsm2", "evsm4", "msm", "esm", each optionally followed by the variants of
+// MomentVariants); -1: none.
 int MomentsOf(const std::string& name)
 {
   static const std::map<std::string, int> moments = {
@@ -108,8 +110,38 @@ int MomentsOf(const std::string& name)
     { "msm", vtkVarianceShadowMapPass::MSM },
     { "esm", vtkVarianceShadowMapPass::ESM },
   };
-  const auto found = moments.find(name);
+  const auto found = moments.find(name.substr(0, name.find('-')));
   return found == moments.end() ? -1 : found->second;
+}
+
+// The parameter sweep of the moment maps: "-half" (16-bit storage, exponents 5),
+// "-bleedX" (LightBleedingReduction X), "-blurX" (BlurRadius X texels).
+std::vector<std::string> MomentVariantNames()
+{
+  return { "vsm-bleed0", "vsm-bleed0.4", "evsm4-bleed0", "evsm4-half", "evsm4-blur0", "evsm4-blur2",
+    "evsm4-blur4", "msm-bleed0" };
+}
+
+void ApplyMomentVariant(const std::string& name, vtkVarianceShadowMapPass* pass)
+{
+  const auto valueAfter = [&name](const std::string& key) {
+    return std::stod(name.substr(name.find(key) + key.size()));
+  };
+  if (name.find("-half") != std::string::npos)
+  {
+    // Exponents that 16-bit storage holds, set first: no clamping warning.
+    pass->SetPositiveExponent(5.0);
+    pass->SetNegativeExponent(5.0);
+    pass->SetStorageToHalfFloat();
+  }
+  if (name.find("-bleed") != std::string::npos)
+  {
+    pass->SetLightBleedingReduction(valueAfter("-bleed"));
+  }
+  if (name.find("-blur") != std::string::npos)
+  {
+    pass->SetBlurRadius(valueAfter("-blur"));
+  }
 }
 
 // The depth filters of the uniform map that soften like the moment maps'
@@ -200,6 +232,8 @@ std::vector<std::string> TechniqueNames()
   std::vector<std::string> names = DefaultTechniqueNames();
   names.insert(names.end(), { "dual-minblend", "dual-peel", "vsm", "evsm2", "msm", "esm", "pcf3",
                               "poisson" });
+  const std::vector<std::string> variants = MomentVariantNames();
+  names.insert(names.end(), variants.begin(), variants.end());
   const std::vector<std::string> offsets = DualOffsetSweepNames();
   names.insert(names.end(), offsets.begin(), offsets.end());
   const std::vector<std::string> biases = BiasSweepNames();
@@ -316,6 +350,7 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
     pass->SetViews(views);
     pass->SetResolution(resolution);
     pass->SetMoments(MomentsOf(name));
+    ApplyMomentVariant(name, pass);
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;

@@ -1,12 +1,15 @@
 //VTK::System::Dec
 // The SHADOW_MAP analysis view: the analysed light's maps tiled over the
 // viewport, depth (or the first stored value) as grey; maps of two surfaces
-// (dual depth) show the nearest on the left of their tile, the next on the right.
+// (dual depth) show the nearest on the left of their tile, the next on the right;
+// exponentially warped values (vtkShadowWarpExponent c > 0: exp(c (2d - 1)))
+// show their depth d.
 in vec2 texCoord;
 uniform sampler2DArray vtkShadowMaps;
 uniform int vtkShadowFirstView;
 uniform int vtkShadowViewCount;
 uniform int vtkShadowSurfaces;
+uniform float vtkShadowWarpExponent;
 //VTK::Output::Dec
 
 void main()
@@ -30,5 +33,9 @@ void main()
   }
   vec4 stored = texture(vtkShadowMaps, vec3(inTile, float(vtkShadowFirstView + view)));
   float value = surface == 0 ? stored.x : stored.y;
+  if (vtkShadowWarpExponent > 0.0)
+  {
+    value = 0.5 * log(max(value, 1e-38)) / vtkShadowWarpExponent + 0.5;
+  }
   gl_FragData[0] = vec4(vec3(value), 1.0);
 }

@@ -39,7 +39,7 @@ MapView::~MapView() = default;
 
 //------------------------------------------------------------------------------
 bool MapView::Render(vtkOpenGLRenderWindow* window, TextureArray& maps, int mapUnit,
-  const ShadowLight& light, bool twoSurfaces)
+  const ShadowLight& light, bool twoSurfaces, double warpExponent)
 {
   vtkShaderProgram* program = ReadyQuadProgram(this->Quad, window, vtkShadowMapsViewFS);
   if (!program)
@@ -50,6 +50,7 @@ bool MapView::Render(vtkOpenGLRenderWindow* window, TextureArray& maps, int mapU
   program->SetUniformi("vtkShadowFirstView", light.FirstLayer);
   program->SetUniformi("vtkShadowViewCount", static_cast<int>(light.Views.size()));
   program->SetUniformi("vtkShadowSurfaces", twoSurfaces ? 2 : 1);
+  program->SetUniformf("vtkShadowWarpExponent", static_cast<float>(warpExponent));
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);

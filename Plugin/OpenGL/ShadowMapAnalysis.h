@@ -35,10 +35,12 @@ public:
   MapView& operator=(const MapView&) = delete;
 
   /// Draws the maps of `light`, bound to texture unit `mapUnit`; `twoSurfaces`:
-  /// maps of two surfaces' depths (SecondDepthMethod), both side by side.
-  /// False when the view's shader does not compile.
+  /// maps of two surfaces' depths (SecondDepthMethod), both side by side;
+  /// `warpExponent` c > 0: the first value stored is exp(c (2 d - 1)) of the
+  /// depth d shown (MapStorage::WarpExponent). False when the view's shader
+  /// does not compile.
   bool Render(vtkOpenGLRenderWindow* window, TextureArray& maps, int mapUnit,
-    const ShadowLight& light, bool twoSurfaces);
+    const ShadowLight& light, bool twoSurfaces, double warpExponent = 0.0);
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

@@ -1304,7 +1304,8 @@ void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   const bool twoSurfaces = r.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
-  if (!r.MapView.Render(window, r.Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces))
+  if (!r.MapView.Render(window, r.Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces,
+        r.Storage.WarpExponent))
   {
     this->ReportGLFailure("the shadow-map view shader did not compile");
   }

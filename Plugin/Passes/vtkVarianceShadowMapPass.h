@@ -92,7 +92,7 @@ public:
   ///@}
 
   ///@{
-  /** vtkVarianceShadowMapRepresentation's LightBleedingReduction, [0, 0.95], default 0.2. */
+  /** vtkVarianceShadowMapRepresentation's LightBleedingReduction, [0, 0.95], default 0. */
   void SetLightBleedingReduction(double amount) { this->Variance->SetLightBleedingReduction(amount); }
   double GetLightBleedingReduction() { return this->Variance->GetLightBleedingReduction(); }
   ///@}

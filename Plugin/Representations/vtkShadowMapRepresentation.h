@@ -60,6 +60,9 @@ struct MapStorage
   float ClearValues[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
   /// Value formats: build a mipmap chain after rendering (filterable storage).
   bool Mipmaps = false;
+  /// Value formats: c > 0 when the first value is exp(c (2 d - 1)) of a depth
+  /// d (exponential warps), for the SHADOW_MAP view to show d.
+  double WarpExponent = 0.0;
   /// TwoFloats: store the depths of the two nearest caster surfaces (the far
   /// value 1 where there are fewer), made by this method; StoreCode,
   /// MinimumBlending and ClearValues are then the pass's

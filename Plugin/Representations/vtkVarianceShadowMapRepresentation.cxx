@@ -174,6 +174,8 @@ void vtkVarianceShadowMapRepresentation::GetMapStorage(shadowmaps::MapStorage& s
   this->GetMomentsOfDepth(1.0, far);
   std::transform(far, far + 4, storage.ClearValues, [](double v) { return static_cast<float>(v); });
   storage.Mipmaps = this->Mipmaps;
+  const bool warped = this->Moments == EVSM2 || this->Moments == EVSM4 || this->Moments == ESM;
+  storage.WarpExponent = warped ? this->GetWarpExponent() : 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -1,6 +1,6 @@
 # Unit tests of the fitting math (Plugin/Math/ShadowMap*.cxx): bounds, focusing,
-# cube faces, tiles, degenerate input, warping, trapezoids, perspective maps
-# and cascades. Included from Testing/CMakeLists.txt, so relative paths are
+# cube faces, tiles, degenerate input, warping, trapezoids, perspective maps,
+# cascades, caster reach and the light depth. Included from Testing/CMakeLists.txt, so relative paths are
 # relative to Testing/. The math source is compiled into the test directly: the
 # test needs GLM and GoogleTest only, not the VTK module.
 add_executable(TestShadowMapMath
@@ -14,7 +14,9 @@ add_executable(TestShadowMapMath
   Cxx/TestShadowMapPerspective.cxx
   Cxx/TestShadowMapCascades.cxx
   Cxx/TestShadowMapCasterReach.cxx
+  Cxx/TestShadowMapLightDepth.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapFocusing.cxx
+  ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapLightDepth.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapWarping.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapTrapezoid.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapPerspective.cxx

@@ -516,3 +516,34 @@ TEST(Variance, BlurWidensThePenumbra)
   std::cout << "penumbra samples: blur 0 " << sharp << ", blur 4 " << soft << "\n";
   EXPECT_GT(soft, 2 * sharp);
 }
+
+// The SHADOW_MAP analysis view shows the light depth of exponentially warped
+// maps, not their exp(c d): the casters as shades of grey between the near
+// black and the far white, for EVSM4 as for VSM.
+TEST(Variance, ShadowMapViewShowsDepth)
+{
+  for (int moments : { vtkVarianceShadowMapPass::VSM, vtkVarianceShadowMapPass::EVSM4 })
+  {
+    SCOPED_TRACE(MomentsName(moments));
+    TestScene scene;
+    scene.SetSun(SunDirection);
+    auto pass = MakePass(moments);
+    pass->SetAnalysisView(vtkAbstractShadowMapPass::SHADOW_MAP);
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    int dims[3];
+    image->GetDimensions(dims);
+    int grey = 0;
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x)
+      {
+        const auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+        grey += rgb[0] > 20 && rgb[0] < 235 ? 1 : 0;
+      }
+    }
+    EXPECT_GT(grey, dims[0] * dims[1] / 4) << "the ground and the casters in grey";
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
+  }
+}
