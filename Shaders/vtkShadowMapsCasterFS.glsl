@@ -50,6 +50,7 @@ float vtkShadowLightDepthAt(float windowDepth)
   vec3 relative = h.xyz / h.w;
   float depth = dot(vtkShadowLightDepthPlane.xyz, relative) + vtkShadowLightDepthPlane.w +
     vtkShadowLightDepthPerDistance * length(relative);
-  return clamp(depth, 0.0, 1.0);
+  // A depth that is not a number (a degenerate view) stores the far value.
+  return depth >= 0.0 ? min(depth, 1.0) : (depth < 0.0 ? 0.0 : 1.0);
 }
 #endif

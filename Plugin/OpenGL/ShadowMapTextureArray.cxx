@@ -194,6 +194,89 @@ bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& erro
   return true;
 }
 
+bool TextureArray::BindSamples(vtkOpenGLState* state, int samples, std::string& error)
+{
+  if (this->SampleFramebuffer != 0 && this->Samples != samples)
+  {
+    this->ReleaseSamples();
+  }
+  if (this->SampleFramebuffer == 0)
+  {
+    ClearGLErrors();
+    glGenRenderbuffers(1, &this->SampleColor);
+    glBindRenderbuffer(GL_RENDERBUFFER, this->SampleColor);
+    glRenderbufferStorageMultisample(
+      GL_RENDERBUFFER, samples, InternalFormat(this->Format), this->Resolution, this->Resolution);
+    glGenRenderbuffers(1, &this->SampleDepth);
+    glBindRenderbuffer(GL_RENDERBUFFER, this->SampleDepth);
+    glRenderbufferStorageMultisample(
+      GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, this->Resolution, this->Resolution);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glGenFramebuffers(1, &this->SampleFramebuffer);
+    this->Samples = samples;
+    const GLenum code = glGetError();
+    if (code != GL_NO_ERROR)
+    {
+      error = "cannot allocate " + std::to_string(samples) + " samples per shadow-map texel (" +
+        GLErrorText(code) + ")";
+      this->ReleaseSamples();
+      return false;
+    }
+  }
+  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->SampleFramebuffer);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, this->SampleColor);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->SampleDepth);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+  {
+    error = "multisampled shadow-map framebuffer incomplete";
+    return false;
+  }
+  return true;
+}
+
+bool TextureArray::ResolveSamples(vtkOpenGLState* state, int layer, std::string& error)
+{
+  if (!this->BindLayer(state, layer, error))
+  {
+    return false;
+  }
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, this->SampleFramebuffer);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  ClearGLErrors();
+  glBlitFramebuffer(0, 0, this->Resolution, this->Resolution, 0, 0, this->Resolution,
+    this->Resolution, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  const GLenum code = glGetError();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, this->Framebuffer);
+  if (code != GL_NO_ERROR)
+  {
+    error = "cannot resolve the shadow map's samples (" + GLErrorText(code) + ")";
+    return false;
+  }
+  return true;
+}
+
+void TextureArray::ReleaseSamples()
+{
+  if (this->SampleFramebuffer != 0)
+  {
+    glDeleteFramebuffers(1, &this->SampleFramebuffer);
+  }
+  if (this->SampleColor != 0)
+  {
+    glDeleteRenderbuffers(1, &this->SampleColor);
+  }
+  if (this->SampleDepth != 0)
+  {
+    glDeleteRenderbuffers(1, &this->SampleDepth);
+  }
+  this->SampleFramebuffer = 0;
+  this->SampleColor = 0;
+  this->SampleDepth = 0;
+  this->Samples = 0;
+}
+
 void TextureArray::SetLinearFiltering(bool linear)
 {
   if (this->Texture == 0 || this->LinearFiltering == static_cast<int>(linear))
@@ -263,6 +346,7 @@ void TextureArray::Release()
     glDeleteFramebuffers(1, &this->Framebuffer);
   }
   this->ReleaseSecondOutput();
+  this->ReleaseSamples();
   if (this->DepthBuffer != 0)
   {
     glDeleteRenderbuffers(1, &this->DepthBuffer);
@@ -290,7 +374,9 @@ std::size_t TextureArray::GetMemoryBytes() const
   }
   // A full mipmap chain adds a third; the depth buffer is shared by all layers.
   const std::size_t values = layers;
-  return (this->Mipmaps ? values + values / 3 : values) + texels * 4 + secondOutput;
+  const std::size_t samples =
+    texels * static_cast<std::size_t>(this->Samples) * (TexelBytes(this->Format) + 4);
+  return (this->Mipmaps ? values + values / 3 : values) + texels * 4 + secondOutput + samples;
 }
 
 } // namespace shadowmaps

@@ -98,11 +98,23 @@ public:
   /// casters keep there the nearest depth, which the next pass peels away.
   bool BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool secondOutput = false);
 
+  /// Value formats: binds, instead of a layer, multisample buffers of the
+  /// layers' size with `samples` samples per texel (made on first use) for the
+  /// casters to draw into; ResolveSamples then averages them into a layer.
+  /// Moments average, so the layer holds the moments of its texels' samples.
+  bool BindSamples(vtkOpenGLState* state, int samples, std::string& error);
+
+  /// Averages the samples BindSamples' buffers hold into `layer` (a blit).
+  bool ResolveSamples(vtkOpenGLState* state, int layer, std::string& error);
+
   /// The colour buffer of BindLayer's secondOutput (0 before its first use).
   unsigned int GetSecondOutput() const { return this->SecondOutput; }
 
   /// Frees that buffer while no view needs it (it is made again on demand).
   void ReleaseSecondOutput();
+
+  /// Frees BindSamples' buffers while no view needs them.
+  void ReleaseSamples();
 
   /// Depth: nearest (hard) or linear (hardware 2x2 PCF) comparison filtering.
   /// Values: nearest or (mipmapped) linear value filtering.
@@ -138,6 +150,10 @@ private:
   unsigned int Framebuffer = 0;
   unsigned int DepthBuffer = 0; // value formats only
   unsigned int SecondOutput = 0; // BindLayer's secondOutput, made on first use
+  unsigned int SampleFramebuffer = 0; // BindSamples' buffers, made on first use
+  unsigned int SampleColor = 0;
+  unsigned int SampleDepth = 0;
+  int Samples = 0;
   TexelFormat Format = TexelFormat::Depth;
   bool Mipmaps = false;
   int Resolution = 0;

@@ -111,6 +111,14 @@ bool SixteenBitDepthSuffices(const std::vector<ShadowLight>& lights, bool thirty
   });
 }
 
+// The most samples GL offers per texel of a multisample buffer.
+int MaximumSamples()
+{
+  GLint samples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &samples);
+  return std::max(1, static_cast<int>(samples));
+}
+
 // Window coordinates (pixels of a resolution^2 map, window depth) to world.
 glm::dmat4 WindowToWorld(const LightView& view, int resolution)
 {
@@ -685,6 +693,10 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   {
     r.Maps.ReleaseSecondOutput();
   }
+  if (r.Storage.Samples <= 1)
+  {
+    r.Maps.ReleaseSamples();
+  }
   r.Uniforms.Pack(r.Lights, r.Frame.CameraView);
   r.RenderedLights = r.Lights;
   r.Signature = std::move(signature);
@@ -764,8 +776,12 @@ void vtkAbstractShadowMapPass::ChooseStorage()
     r.Storage.Format = shadowmaps::TexelFormat::Depth16;
   }
   // Depth maps store the views' own depths; two-surface maps compare them.
-  r.Storage.LightDepth = r.Storage.LightDepth && !shadowmaps::IsDepth(r.Storage.Format) &&
+  const bool oneValueMap = !shadowmaps::IsDepth(r.Storage.Format) &&
     r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
+  r.Storage.LightDepth = r.Storage.LightDepth && oneValueMap;
+  r.Storage.Samples = oneValueMap && !r.Storage.MinimumBlending
+    ? std::max(1, std::min(r.Storage.Samples, MaximumSamples()))
+    : 1;
   r.Code.Definitions = std::string(r.Storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
     r.Representation->GetReceiverDefinitions();
   r.Code.Lookup = r.Representation->GetReceiverLookupCode();
@@ -952,7 +968,9 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         const bool linearDepths =
           light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Storage.Format);
         const bool peeling = r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
-        ok = r.Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling);
+        const bool multisampled = r.Storage.Samples > 1;
+        ok = multisampled ? r.Maps.BindSamples(state, r.Storage.Samples, r.LastGLError)
+                          : r.Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling);
         if (ok)
         {
           this->ApplyCasterUniforms(light, light.Views[v]);
@@ -960,7 +978,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           std::transform(casters.begin(), casters.end(), std::back_inserter(props),
             [](const Caster* caster) { return caster->Prop; });
           draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
-          ok = !linearDepths || r.LinearDepths.Render(window, r.Maps, layer, r.LastGLError);
+          ok = !multisampled || r.Maps.ResolveSamples(state, layer, r.LastGLError);
+          ok = ok && (!linearDepths || r.LinearDepths.Render(window, r.Maps, layer, r.LastGLError));
           if (ok && peeling && !props.empty())
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);

@@ -86,6 +86,12 @@ public:
   ///@}
 
   ///@{
+  /** vtkVarianceShadowMapRepresentation's CasterSamples (multisampled casters), [1, 8], default 1. */
+  void SetCasterSamples(int samples) { this->Variance->SetCasterSamples(samples); }
+  int GetCasterSamples() { return this->Variance->GetCasterSamples(); }
+  ///@}
+
+  ///@{
   /** vtkVarianceShadowMapRepresentation's Anisotropy, [1, 16], default 8. */
   void SetAnisotropy(double anisotropy) { this->Variance->SetAnisotropy(anisotropy); }
   double GetAnisotropy() { return this->Variance->GetAnisotropy(); }

@@ -60,6 +60,10 @@ struct MapStorage
   float ClearValues[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
   /// Value formats: build a mipmap chain after rendering (filterable storage).
   bool Mipmaps = false;
+  /// Value formats without a second depth: samples per texel the casters are
+  /// rendered with, averaged into the texel (values that average, such as
+  /// moments, then hold the texel's coverage). 1: none.
+  int Samples = 1;
   /// Value formats: c > 0 when the first value is exp(c (2 d - 1)) of a depth
   /// d (exponential warps), for the SHADOW_MAP view to show d.
   double WarpExponent = 0.0;

@@ -174,6 +174,7 @@ void vtkVarianceShadowMapRepresentation::GetMapStorage(shadowmaps::MapStorage& s
   this->GetMomentsOfDepth(1.0, far);
   std::transform(far, far + 4, storage.ClearValues, [](double v) { return static_cast<float>(v); });
   storage.Mipmaps = this->Mipmaps;
+  storage.Samples = this->CasterSamples;
   const bool warped = this->Moments == EVSM2 || this->Moments == EVSM4 || this->Moments == ESM;
   storage.WarpExponent = warped ? this->GetWarpExponent() : 0.0;
 }
@@ -254,6 +255,7 @@ void vtkVarianceShadowMapRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "Mipmaps: " << this->Mipmaps << "\n";
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "CasterSamples: " << this->CasterSamples << "\n";
   os << indent << "LightBleedingReduction: " << this->LightBleedingReduction << "\n";
   os << indent << "MinimumVariance: " << this->MinimumVariance << "\n";
   os << indent << "MomentBias: " << this->MomentBias << "\n";

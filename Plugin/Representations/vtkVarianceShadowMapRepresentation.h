@@ -136,6 +136,18 @@ public:
 
   ///@{
   /**
+   * Samples per map texel the casters are rendered with (multisampling),
+   * averaged into the texel's moments: a caster covering part of a texel
+   * contributes that part, which smooths the maps' edges before any blur.
+   * Costs the multisample buffers' memory and their resolve per re-rendered
+   * layer; limited to what GL offers. Clamped to [1, 8]; default 1 (off).
+   */
+  vtkSetClampMacro(CasterSamples, int, 1, 8);
+  vtkGetMacro(CasterSamples, int);
+  ///@}
+
+  ///@{
+  /**
    * Mipmaps: how elongated a pixel's footprint in the map may be before its
    * long axis picks the mipmap level. Where receivers are seen at a grazing
    * angle, the level of the long axis blurs their shadows across the short one
@@ -214,6 +226,7 @@ protected:
   double BlurRadius = 1.0;
   bool Mipmaps = true;
   double Anisotropy = 8.0;
+  int CasterSamples = 1;
   double LightBleedingReduction = 0.0;
   double MinimumVariance = 1e-6;
   double MomentBias = 3e-5;

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <string>
@@ -75,10 +76,13 @@ void UseLayout(TestScene& scene, vtkVarianceShadowMapPass* pass, const std::stri
   {
     pass->SetViews(vtkSmartPointer<vtkCascadedShadowMapViews>::New());
   }
-  else if (layout == "LiSPSM")
+  else if (layout != "Uniform")
   {
     auto warped = vtkSmartPointer<vtkWarpedShadowMapViews>::New();
-    warped->SetWarpModeToLiSPSM();
+    warped->SetWarpMode(layout == "PSM" ? vtkWarpedShadowMapViews::PSM
+        : layout == "TSM"               ? vtkWarpedShadowMapViews::TSM
+        : layout == "GMNPR"             ? vtkWarpedShadowMapViews::GMNPR
+                                        : vtkWarpedShadowMapViews::LISPSM);
     pass->SetViews(warped);
   }
 }
@@ -121,6 +125,16 @@ TEST_P(VarianceMomentsAndViews, ShadowsAndLitFaces)
 INSTANTIATE_TEST_SUITE_P(Variance, VarianceMomentsAndViews,
   ::testing::Combine(::testing::ValuesIn(AllMoments),
     ::testing::Values("Uniform", "Cascaded", "LiSPSM", "Spot", "Point")),
+  [](const ::testing::TestParamInfo<std::tuple<int, std::string>>& info) {
+    return std::string(MomentsName(std::get<0>(info.param))) + std::get<1>(info.param);
+  });
+
+// The other warps, whose views store their own depth in other ways (PSM's
+// post-perspective depth, TSM's and GMNPR's linear depth): the light depth is
+// the same in all of them.
+INSTANTIATE_TEST_SUITE_P(VarianceWarps, VarianceMomentsAndViews,
+  ::testing::Combine(::testing::Values(vtkVarianceShadowMapPass::EVSM4),
+    ::testing::Values("PSM", "TSM", "GMNPR")),
   [](const ::testing::TestParamInfo<std::tuple<int, std::string>>& info) {
     return std::string(MomentsName(std::get<0>(info.param))) + std::get<1>(info.param);
   });
@@ -487,34 +501,80 @@ TEST(Variance, MemoryFollowsTheStorage)
   pass->ReleaseGraphicsResources(scene.Window);
 }
 
+namespace
+{
+/// Pixels between shadow and light along a line across the sphere's shadow,
+/// with EVSM4 maps of 256^2 set up by `configure`; the shadow's centre must be
+/// dark. `frame` (optional) gets the image.
+int PenumbraSamples(const std::function<void(vtkVarianceShadowMapPass*)>& configure,
+  vtkSmartPointer<vtkImageData>* frame = nullptr, size_t* memory = nullptr)
+{
+  TestScene scene;
+  scene.SetSun(SunDirection);
+  auto pass = MakePass(vtkVarianceShadowMapPass::EVSM4);
+  pass->SetResolution(256);
+  configure(pass);
+  ErrorCounter errors;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  const glm::dvec3 centre = GroundShadowOfSphereCenter(SunDirection);
+  int between = 0;
+  for (double x = -2.0; x <= 2.0; x += 0.02)
+  {
+    const double luminance = LuminanceAt(scene.Renderer, image, centre + glm::dvec3(x, 0.0, 0.0));
+    between += luminance > 50.0 && luminance < 200.0 ? 1 : 0;
+  }
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, centre), ShadowedBelow);
+  if (frame)
+  {
+    *frame = image;
+  }
+  if (memory)
+  {
+    *memory = pass->GetShadowMapMemory();
+  }
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
+  return between;
+}
+} // namespace
+
 // The blur widens the penumbra: more pixels between shadow and light across
 // the sphere's shadow edge, the same dark core.
 TEST(Variance, BlurWidensThePenumbra)
 {
-  const auto penumbraPixels = [](double radius) {
-    TestScene scene;
-    scene.SetSun(SunDirection);
-    auto pass = MakePass(vtkVarianceShadowMapPass::EVSM4);
-    pass->SetResolution(256);
-    pass->SetBlurRadius(radius);
-    scene.Renderer->SetPass(pass);
-    auto image = RenderAndCapture(scene.Window);
-    const glm::dvec3 centre = GroundShadowOfSphereCenter(SunDirection);
-    int between = 0;
-    for (double x = -2.0; x <= 2.0; x += 0.02)
-    {
-      const double luminance = LuminanceAt(scene.Renderer, image, centre + glm::dvec3(x, 0.0, 0.0));
-      between += luminance > 50.0 && luminance < 200.0 ? 1 : 0;
-    }
-    EXPECT_LT(LuminanceAt(scene.Renderer, image, centre), ShadowedBelow);
-    scene.Renderer->SetPass(nullptr);
-    pass->ReleaseGraphicsResources(scene.Window);
-    return between;
-  };
-  const int sharp = penumbraPixels(0.0);
-  const int soft = penumbraPixels(4.0);
+  const int sharp = PenumbraSamples([](vtkVarianceShadowMapPass* pass) { pass->SetBlurRadius(0.0); });
+  const int soft = PenumbraSamples([](vtkVarianceShadowMapPass* pass) { pass->SetBlurRadius(4.0); });
   std::cout << "penumbra samples: blur 0 " << sharp << ", blur 4 " << soft << "\n";
   EXPECT_GT(soft, 2 * sharp);
+}
+
+// Multisampled casters: each texel holds the moments of its samples, so
+// without any blur the shadow's edge takes intermediate values where one
+// sample per texel leaves a hard step. The samples' buffers count in the
+// maps' memory.
+TEST(Variance, MultisampledCastersSmoothTheEdges)
+{
+  size_t single = 0;
+  size_t multi = 0;
+  const auto configure = [](int samples) {
+    return [samples](vtkVarianceShadowMapPass* pass) {
+      pass->SetBlurRadius(0.0);
+      pass->SetMipmaps(false);
+      pass->SetResolution(128);
+      pass->SetCasterSamples(samples);
+    };
+  };
+  const int hard = PenumbraSamples(configure(1), nullptr, &single);
+  vtkSmartPointer<vtkImageData> frame;
+  const int smooth = PenumbraSamples(configure(4), &frame, &multi);
+  std::cout << "penumbra samples: 1 sample " << hard << ", 4 samples " << smooth << "\n";
+  EXPECT_GT(smooth, hard + 2);
+  // Four samples of four floats and a 32-bit depth per texel.
+  EXPECT_EQ(multi - single, 128u * 128u * 4u * (16u + 4u));
+  const std::string difference = CompareWithBaseline(frame, "VarianceEVSM4Multisampled");
+  EXPECT_TRUE(difference.empty()) << difference;
 }
 
 // The SHADOW_MAP analysis view shows the light depth of exponentially warped
