@@ -116,11 +116,11 @@ int MomentsOf(const std::string& name)
 
 // The parameter sweep of the moment maps: "-half" (16-bit storage, exponents 5),
 // "-bleedX" (LightBleedingReduction X), "-blurX" (BlurRadius X texels),
-// "-samplesN" (CasterSamples N).
+// "-samplesN" (CasterSamples N), "-biasX" (MomentBias X).
 std::vector<std::string> MomentVariantNames()
 {
   return { "vsm-bleed0", "vsm-bleed0.4", "evsm4-bleed0", "evsm4-half", "evsm4-blur0", "evsm4-blur2",
-    "evsm4-blur4", "msm-bleed0", "evsm4-samples4" };
+    "evsm4-blur4", "msm-bleed0", "evsm4-samples4", "msm-bias0.0001", "msm-bias0.001" };
 }
 
 void ApplyMomentVariant(const std::string& name, vtkVarianceShadowMapPass* pass)
@@ -142,6 +142,10 @@ void ApplyMomentVariant(const std::string& name, vtkVarianceShadowMapPass* pass)
   if (name.find("-blur") != std::string::npos)
   {
     pass->SetBlurRadius(valueAfter("-blur"));
+  }
+  if (name.find("-bias") != std::string::npos)
+  {
+    pass->SetMomentBias(valueAfter("-bias"));
   }
   if (name.find("-samples") != std::string::npos)
   {

@@ -114,7 +114,7 @@ void PrintUsage(std::ostream& out)
          "                           softer filters pcf3 (3 x 3) and poisson (radius 1.5); the\n"
          "                           moment maps' sweep vsm-bleed0, vsm-bleed0.4, evsm4-bleed0,\n"
          "                           evsm4-half, evsm4-blur0, evsm4-blur2, evsm4-blur4, msm-bleed0,\n"
-         "                           evsm4-samples4;\n"
+         "                           evsm4-samples4, msm-biasX (X: 0.0001, 0.001);\n"
          "                           none and vtk are always measured (frame-time references)\n"
          "  --technique NAME         one technique (with none and vtk)\n"
          "  --resolution N           map size of this project's techniques [2048]\n"
