@@ -1,4 +1,5 @@
 // The light depth filterable maps store (Plugin/Math/ShadowMapLightDepth).
+#include "FocusingTestHelpers.h"
 #include "ShadowMapLightDepth.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,16 +9,10 @@
 #include <cmath>
 
 using namespace shadowmaps;
+using focusingtest::MakeBox;
 
 namespace
 {
-Aabb Box(const glm::dvec3& lo, const glm::dvec3& hi)
-{
-  Aabb box;
-  box.Add(lo);
-  box.Add(hi);
-  return box;
-}
 
 /// Least and greatest light depth over the box's corners.
 glm::dvec2 RangeOverCorners(const LightDepth& depth, const Aabb& box)
@@ -37,7 +32,7 @@ glm::dvec2 RangeOverCorners(const LightDepth& depth, const Aabb& box)
 // anywhere (linear in light space).
 TEST(ShadowMapLightDepth, DirectionalSpansTheSceneLinearly)
 {
-  const Aabb scene = Box({ -10, -5, 0 }, { 30, 5, 8 });
+  const Aabb scene = MakeBox({ -10, -5, 0 }, { 30, 5, 8 });
   const glm::dvec3 direction = glm::normalize(glm::dvec3(-0.4, 0.3, -1.0));
   const LightDepth depth = DirectionalLightDepth(direction, scene);
   const glm::dvec2 range = RangeOverCorners(depth, scene);
@@ -61,7 +56,7 @@ TEST(ShadowMapLightDepth, DirectionalSpansTheSceneLinearly)
 // the farthest corner just under 1.
 TEST(ShadowMapLightDepth, PositionalIsTheDistance)
 {
-  const Aabb scene = Box({ -10, -10, 0 }, { 10, 10, 10 });
+  const Aabb scene = MakeBox({ -10, -10, 0 }, { 10, 10, 10 });
   const glm::dvec3 light(1, 2, 6);
   const LightDepth depth = PositionalLightDepth(light, scene);
   EXPECT_NEAR(EvaluateLightDepth(depth, light), 0.0, 0.01);
@@ -79,7 +74,7 @@ TEST(ShadowMapLightDepth, PositionalIsTheDistance)
 // the function alike.
 TEST(ShadowMapLightDepth, TransformFollowsARigidFrame)
 {
-  const Aabb scene = Box({ -3, -3, 0 }, { 3, 3, 2 });
+  const Aabb scene = MakeBox({ -3, -3, 0 }, { 3, 3, 2 });
   const glm::dmat4 view = glm::lookAt(glm::dvec3(4, -9, 5), glm::dvec3(0, 0, 0.5), glm::dvec3(0, 0, 1));
   for (const LightDepth& depth : { DirectionalLightDepth({ 0.2, 0.1, -1.0 }, scene),
          PositionalLightDepth({ 1, 1, 4 }, scene) })
@@ -103,12 +98,12 @@ TEST(ShadowMapLightDepth, DegenerateScenesStayFinite)
   };
   EXPECT_TRUE(finite(DirectionalLightDepth({ 0, 0, -1 }, Aabb())));
   EXPECT_TRUE(finite(PositionalLightDepth({ 0, 0, 1 }, Aabb())));
-  const Aabb flat = Box({ -1, -1, 0 }, { 1, 1, 0 });
+  const Aabb flat = MakeBox({ -1, -1, 0 }, { 1, 1, 0 });
   const LightDepth along = DirectionalLightDepth({ 0, 0, -1 }, flat);
   EXPECT_TRUE(finite(along));
   EXPECT_NEAR(EvaluateLightDepth(along, { 0, 0, 0 }), 0.5, 1e-9);
-  EXPECT_TRUE(finite(DirectionalLightDepth({ 0, 0, -1 }, Box({ -1e6, -1e6, -1e6 }, { 1e6, 1e6, 1e6 }))));
-  EXPECT_TRUE(finite(PositionalLightDepth({ 0, 0, 0 }, Box({ -1e-6, -1e-6, 0 }, { 1e-6, 1e-6, 1e-6 }))));
+  EXPECT_TRUE(finite(DirectionalLightDepth({ 0, 0, -1 }, MakeBox({ -1e6, -1e6, -1e6 }, { 1e6, 1e6, 1e6 }))));
+  EXPECT_TRUE(finite(PositionalLightDepth({ 0, 0, 0 }, MakeBox({ -1e-6, -1e-6, 0 }, { 1e-6, 1e-6, 1e-6 }))));
   // The light on a flat scene's only point.
-  EXPECT_TRUE(finite(PositionalLightDepth({ 0, 0, 0 }, Box({ 0, 0, 0 }, { 0, 0, 0 }))));
+  EXPECT_TRUE(finite(PositionalLightDepth({ 0, 0, 0 }, MakeBox({ 0, 0, 0 }, { 0, 0, 0 }))));
 }
