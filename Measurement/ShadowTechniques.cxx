@@ -120,7 +120,10 @@ int MomentsOf(const std::string& name)
 std::vector<std::string> MomentVariantNames()
 {
   return { "vsm-bleed0", "vsm-bleed0.4", "evsm4-bleed0", "evsm4-half", "evsm4-blur0", "evsm4-blur2",
-    "evsm4-blur4", "msm-bleed0", "evsm4-samples4", "msm-bias0.0001", "msm-bias0.001" };
+    "evsm4-blur4", "msm-bleed0", "evsm4-samples4", "msm-bias0.0001", "msm-bias0.001",
+    // The sweep that chose the defaults, when the reduction was 0.2:
+    "evsm4-bleed0.2", "vsm-bleed0.2", "msm-bleed0.2", "evsm4-half-bleed0.2",
+    "evsm4-blur0-bleed0.2", "evsm4-blur2-bleed0.2", "evsm4-blur4-bleed0.2" };
 }
 
 void ApplyMomentVariant(const std::string& name, vtkVarianceShadowMapPass* pass)

@@ -68,6 +68,7 @@ CasterGLState::CasterGLState(vtkOpenGLState* state, bool minimumBlending)
   , Blend(state, GL_BLEND)
   , DepthTest(state, GL_DEPTH_TEST)
   , Offset(state, GL_POLYGON_OFFSET_FILL)
+  , Multisample(state, GL_MULTISAMPLE)
   , DepthClampWasOn(glIsEnabled(GL_DEPTH_CLAMP))
   , MinimumBlending(minimumBlending)
 {
@@ -78,6 +79,8 @@ CasterGLState::CasterGLState(vtkOpenGLState* state, bool minimumBlending)
   state->vtkglDepthFunc(GL_LEQUAL);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglEnable(GL_POLYGON_OFFSET_FILL);
+  // Multisampled value maps need it; other mappers may have turned it off.
+  state->vtkglEnable(GL_MULTISAMPLE);
   glEnable(GL_DEPTH_CLAMP);
   if (this->MinimumBlending)
   {

@@ -52,6 +52,7 @@ private:
   vtkOpenGLState::ScopedglEnableDisable Blend;
   vtkOpenGLState::ScopedglEnableDisable DepthTest;
   vtkOpenGLState::ScopedglEnableDisable Offset;
+  vtkOpenGLState::ScopedglEnableDisable Multisample;
   unsigned char DepthClampWasOn;
   bool MinimumBlending;
 };

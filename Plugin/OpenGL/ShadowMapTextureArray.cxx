@@ -213,7 +213,13 @@ bool TextureArray::BindSamples(vtkOpenGLState* state, int samples, std::string& 
       GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, this->Resolution, this->Resolution);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
     glGenFramebuffers(1, &this->SampleFramebuffer);
+    // GL may round the count up to one it supports: the memory counts those.
+    GLint allocated = samples;
+    glBindRenderbuffer(GL_RENDERBUFFER, this->SampleColor);
+    glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &allocated);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
     this->Samples = samples;
+    this->AllocatedSamples = std::max(static_cast<int>(allocated), samples);
     const GLenum code = glGetError();
     if (code != GL_NO_ERROR)
     {
@@ -275,6 +281,7 @@ void TextureArray::ReleaseSamples()
   this->SampleColor = 0;
   this->SampleDepth = 0;
   this->Samples = 0;
+  this->AllocatedSamples = 0;
 }
 
 void TextureArray::SetLinearFiltering(bool linear)
@@ -375,7 +382,7 @@ std::size_t TextureArray::GetMemoryBytes() const
   // A full mipmap chain adds a third; the depth buffer is shared by all layers.
   const std::size_t values = layers;
   const std::size_t samples =
-    texels * static_cast<std::size_t>(this->Samples) * (TexelBytes(this->Format) + 4);
+    texels * static_cast<std::size_t>(this->AllocatedSamples) * (TexelBytes(this->Format) + 4);
   return (this->Mipmaps ? values + values / 3 : values) + texels * 4 + secondOutput + samples;
 }
 

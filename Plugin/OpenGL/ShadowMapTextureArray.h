@@ -154,6 +154,7 @@ private:
   unsigned int SampleColor = 0;
   unsigned int SampleDepth = 0;
   int Samples = 0;
+  int AllocatedSamples = 0;
   TexelFormat Format = TexelFormat::Depth;
   bool Mipmaps = false;
   int Resolution = 0;
