@@ -41,19 +41,15 @@ bool MapBlur::ReserveScratch(const TextureArray& maps, std::string& error)
   {
     glDeleteTextures(1, &this->Scratch);
   }
-  while (glGetError() != GL_NO_ERROR)
-  {
-  }
+  ClearGLErrors();
   GLint previous = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
   glGenTextures(1, &this->Scratch);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Scratch);
   const int resolution = maps.GetResolution();
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, InternalFormat(maps.GetFormat()), resolution, resolution, 1,
-    0, ValueChannels(maps.GetFormat()) == 4 ? GL_RGBA : GL_RG, GL_FLOAT, nullptr);
+  AllocateValueLevels(resolution, 1, maps.GetFormat(), 1);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
   glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(previous));
   if (this->ScratchFramebuffer == 0)
   {

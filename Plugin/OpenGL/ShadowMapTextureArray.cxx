@@ -33,12 +33,6 @@ private:
 using ScopedArrayBinding = ScopedBinding<GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BINDING_2D_ARRAY>;
 using ScopedTextureBinding = ScopedBinding<GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D>;
 
-void ClearGLErrors()
-{
-  while (glGetError() != GL_NO_ERROR)
-  {
-  }
-}
 
 
 int MipmapLevels(int resolution)
@@ -51,6 +45,25 @@ int MipmapLevels(int resolution)
   return levels;
 }
 } // namespace
+
+void ClearGLErrors()
+{
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+}
+
+void AllocateValueLevels(int resolution, int layers, TexelFormat format, int levels)
+{
+  const GLint internal = InternalFormat(format);
+  const GLenum channels = ValueChannels(format) == 4 ? GL_RGBA : GL_RG;
+  for (int level = 0, size = resolution; level < levels; ++level, size = std::max(size / 2, 1))
+  {
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, internal, size, size, layers, 0, channels, GL_FLOAT,
+      nullptr);
+  }
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+}
 
 unsigned int InternalFormat(TexelFormat format)
 {
@@ -128,15 +141,7 @@ void TextureArray::AllocateDepthLayers(int resolution, int layers, TexelFormat f
 
 void TextureArray::AllocateValueLayers(int resolution, int layers, TexelFormat format)
 {
-  const GLint internal = InternalFormat(format);
-  const GLenum channels = ValueChannels(format) == 4 ? GL_RGBA : GL_RG;
-  const int levels = this->Mipmaps ? MipmapLevels(resolution) : 1;
-  for (int level = 0, size = resolution; level < levels; ++level, size = std::max(size / 2, 1))
-  {
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, internal, size, size, layers, 0, channels, GL_FLOAT,
-      nullptr);
-  }
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+  AllocateValueLevels(resolution, layers, format, this->Mipmaps ? MipmapLevels(resolution) : 1);
   glGenRenderbuffers(1, &this->DepthBuffer);
   glBindRenderbuffer(GL_RENDERBUFFER, this->DepthBuffer);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, resolution, resolution);

@@ -74,6 +74,14 @@ inline int TexelBytes(TexelFormat format)
 /// The GL internal format (GLenum) of a texel format.
 unsigned int InternalFormat(TexelFormat format);
 
+/// Allocates `levels` mipmap levels of `layers` layers of resolution^2 texels
+/// of the value format `format` for the 2D array texture bound to the active
+/// unit, and limits sampling to them.
+void AllocateValueLevels(int resolution, int layers, TexelFormat format, int levels);
+
+/// Drops the GL errors pending, so that the next glGetError reports only what follows.
+void ClearGLErrors();
+
 class TextureArray
 {
 public:

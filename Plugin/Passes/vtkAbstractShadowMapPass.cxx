@@ -938,7 +938,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   vtkOpenGLState* state = window->GetState();
   this->ForgetLayersIfStale();
   int draws = 0;
-  std::vector<int> rendered;
+  std::vector<shadowmaps::RenderedLayer> rendered;
   bool ok = true;
   {
     const shadowmaps::CasterGLState casterState(state,
@@ -985,7 +985,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
             ok = this->PeelSecondSurface(renderer, layer, props, draws);
           }
           r.LayerSignatures[layer] = std::move(signature);
-          rendered.push_back(layer);
+          rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
         }
       }
     }
@@ -1026,21 +1026,9 @@ void vtkAbstractShadowMapPass::ForgetLayersIfStale()
 
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::PostProcessShadowMaps(
-  vtkOpenGLRenderer* renderer, const std::vector<int>& layers)
+  vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered)
 {
   Internals& r = *this->Internal;
-  std::vector<shadowmaps::RenderedLayer> rendered;
-  for (const ShadowLight& light : r.Lights)
-  {
-    for (std::size_t v = 0; v < light.Views.size(); ++v)
-    {
-      const int layer = light.FirstLayer + static_cast<int>(v);
-      if (std::find(layers.begin(), layers.end(), layer) != layers.end())
-      {
-        rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
-      }
-    }
-  }
   if (!r.Representation->PostProcessMaps(renderer, r.Maps, rendered))
   {
     r.LastGLError = "the shadow maps could not be post-processed";

@@ -74,6 +74,7 @@ namespace shadowmaps
 {
 enum class CasterBranch;
 struct LightView;
+struct RenderedLayer;
 struct ShadowLight;
 }
 
@@ -326,7 +327,8 @@ private:
     std::string& geometryShader, std::string& fragmentShader, bool receives);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void ForgetLayersIfStale();
-  bool PostProcessShadowMaps(vtkOpenGLRenderer* renderer, const std::vector<int>& layers);
+  bool PostProcessShadowMaps(
+    vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered);
   int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,
     std::vector<vtkProp*>& casters, bool linearDepths);
   bool PeelSecondSurface(
