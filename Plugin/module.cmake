@@ -50,6 +50,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
   SOURCES
     Plugin/Math/ShadowMapCascades.cxx
     Plugin/Math/ShadowMapCasterReach.cxx
+    Plugin/Math/ShadowMapCrop.cxx
     Plugin/Math/ShadowMapFocusing.cxx
     Plugin/Math/ShadowMapLightDepth.cxx
     Plugin/Math/ShadowMapPerspective.cxx
@@ -75,6 +76,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
   PRIVATE_HEADERS
     Plugin/Math/ShadowMapCascades.h
     Plugin/Math/ShadowMapCasterReach.h
+    Plugin/Math/ShadowMapCrop.h
     Plugin/Math/ShadowMapPerspective.h
     Plugin/Math/ShadowMapTrapezoid.h
     Plugin/Math/ShadowMapWarping.h

@@ -37,6 +37,10 @@ struct vtkShadowView
   // filter offsets in texels are multiplied by it so that a kernel keeps its
   // world size in every cascade.
   float FilterScale;
+  // Lights with VTK_SHADOW_FEATURE_CROPPED_VIEWS: the view is its light's first
+  // followed by this scale and offset of the map coordinates (shadowmaps::MapCrop).
+  vec3 CropScale;
+  vec3 CropOffset;
 };
 uniform vtkShadowView vtkShadowViews[VTK_SHADOW_MAX_VIEWS];
 
@@ -92,7 +96,28 @@ bool vtkShadowHas(int features, int feature)
   return (features & feature) != 0;
 }
 
-vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features);
+// The matrix of map `view` of a light whose views start at layer firstView.
+// Cropped views read their light's first matrix, indexed by a literal, and only
+// a scale and an offset by the view that varies from fragment to fragment:
+// software rasterisers gather per fragment whatever such a view indexes.
+mat4 vtkShadowMapMatrix(int firstView, int view, int features)
+{
+  if (!vtkShadowHas(features, VTK_SHADOW_FEATURE_CROPPED_VIEWS))
+  {
+    return vtkShadowViews[view].ViewToMap;
+  }
+  mat4 m = vtkShadowViews[firstView].ViewToMap;
+  vec3 scale = vtkShadowViews[view].CropScale;
+  vec3 offset = vtkShadowViews[view].CropOffset;
+  for (int column = 0; column < 4; ++column)
+  {
+    m[column].xyz = m[column].xyz * scale + m[column].w * offset;
+  }
+  return m;
+}
+
+vec4 vtkShadowMapClip(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features);
 bool vtkShadowInsideMap(vec4 clip, int view, int features);
 
 // The cascade that shades the receiver: by view depth, or the first (finest)
@@ -104,7 +129,7 @@ int vtkShadowSelectCascade(
   {
     for (int i = 0; i < count - 1; ++i)
     {
-      vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView + i, features);
+      vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, firstView + i, features);
       if (vtkShadowInsideMap(clip, firstView + i, features))
       {
         return firstView + i;
@@ -128,7 +153,7 @@ int vtkShadowSelectCascade(
 int vtkShadowSelectTile(vec3 positionVC, vec3 normalVC, int light, int firstView, int features)
 {
   vec4 grid = vtkShadowLights[light].TileGrid;
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, features);
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, firstView, features);
   if (clip.w <= 0.0)
   {
     return firstView; // behind the light: outside every tile, lit
@@ -165,9 +190,10 @@ int vtkShadowSelectView(
 
 // Gradients at positionVC of the projective map coordinates t in {u, v}:
 // grad t = (row_t - t row_w) / w.
-void vtkShadowMapGradients(vec3 positionVC, int view, out vec3 gradU, out vec3 gradV)
+void vtkShadowMapGradients(
+  vec3 positionVC, int firstView, int view, int features, out vec3 gradU, out vec3 gradV)
 {
-  mat4 m = vtkShadowViews[view].ViewToMap;
+  mat4 m = vtkShadowMapMatrix(firstView, view, features);
   vec4 q = m * vec4(positionVC, 1.0);
   vec3 rowW = vec3(m[0][3], m[1][3], m[2][3]);
   gradU = (vec3(m[0][0], m[1][0], m[2][0]) - (q.x / q.w) * rowW) / q.w;
@@ -176,17 +202,17 @@ void vtkShadowMapGradients(vec3 positionVC, int view, out vec3 gradU, out vec3 g
 
 // World (= VC) length of one texel along the map's coarser axis at positionVC:
 // 1 / (resolution * |grad t|).
-float vtkShadowGradientTexel(vec3 positionVC, int view)
+float vtkShadowGradientTexel(vec3 positionVC, int firstView, int view, int features)
 {
   vec3 gradU;
   vec3 gradV;
-  vtkShadowMapGradients(positionVC, view, gradU, gradV);
+  vtkShadowMapGradients(positionVC, firstView, view, features, gradU, gradV);
   float slowest = min(length(gradU), length(gradV));
   return 1.0 / (vtkShadowMapResolution * max(slowest, 1e-20));
 }
 
 // World size of one texel of map `view` at the receiver.
-float vtkShadowTexelWorldSize(vec3 positionVC, int light, int view, int features)
+float vtkShadowTexelWorldSize(vec3 positionVC, int light, int firstView, int view, int features)
 {
   vec2 texelSize = vtkShadowViews[view].TexelSize;
   float texel = texelSize.x;
@@ -196,23 +222,25 @@ float vtkShadowTexelWorldSize(vec3 positionVC, int light, int view, int features
   }
   if (vtkShadowHas(features, VTK_SHADOW_FEATURE_GRADIENT_TEXELS) && texelSize.x < 0.0)
   {
-    texel = vtkShadowGradientTexel(positionVC, view);
+    texel = vtkShadowGradientTexel(positionVC, firstView, view, features);
   }
   return texel;
 }
 
 // The receiver moved along its normal by the world-space size of a texel there
 // (normal offset, Kozlov, GPU Gems 14), and its clip coordinates in map `view`.
-vec3 vtkShadowOffsetAlongNormal(vec3 positionVC, vec3 normalVC, int light, int view, int features)
+vec3 vtkShadowOffsetAlongNormal(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
 {
-  float texel = vtkShadowTexelWorldSize(positionVC, light, view, features);
+  float texel = vtkShadowTexelWorldSize(positionVC, light, firstView, view, features);
   return positionVC + normalVC * (vtkShadowNormalOffset * texel);
 }
 
-vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int view, int features)
+vec4 vtkShadowMapClip(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
 {
-  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, view, features);
-  return vtkShadowViews[view].ViewToMap * vec4(biased, 1.0);
+  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
+  return vtkShadowMapMatrix(firstView, view, features) * vec4(biased, 1.0);
 }
 
 // Texture coordinates and depth of the receiver in map `view`.
@@ -263,11 +291,11 @@ vec2 vtkShadowMapDx = vec2(0.0);
 vec2 vtkShadowMapDy = vec2(0.0);
 vec2 vtkShadowLightDepthDxDy = vec2(0.0);
 
-void vtkShadowMeasureFootprint(vec3 positionVC, int light, int view)
+void vtkShadowMeasureFootprint(vec3 positionVC, int light, int firstView, int view, int features)
 {
   vec3 gradU;
   vec3 gradV;
-  vtkShadowMapGradients(positionVC, view, gradU, gradV);
+  vtkShadowMapGradients(positionVC, firstView, view, features, gradU, gradV);
   vtkShadowMapDx = vec2(dot(gradU, vtkShadowPositionDx), dot(gradV, vtkShadowPositionDx));
   vtkShadowMapDy = vec2(dot(gradU, vtkShadowPositionDy), dot(gradV, vtkShadowPositionDy));
   vec3 relative = positionVC - vtkShadowLights[light].DepthOrigin;
@@ -311,34 +339,36 @@ void vtkShadowSetReceiverPlane(vec3 shadingNormalVC)
                                                : facet / facetLength;
 }
 
-vec3 vtkShadowMapPoint(vec3 positionVC, int view, int features)
+vec3 vtkShadowMapPoint(vec3 positionVC, mat4 viewToMap, int view, int features)
 {
-  return vtkShadowMapCoord(vtkShadowViews[view].ViewToMap * vec4(positionVC, 1.0), view, features);
+  return vtkShadowMapCoord(viewToMap * vec4(positionVC, 1.0), view, features);
 }
 
-void vtkShadowMeasureReceiver(
-  vec3 positionVC, vec3 normalVC, vec3 mapCoord, int light, int view, int features)
+void vtkShadowMeasureReceiver(vec3 positionVC, vec3 normalVC, vec3 mapCoord, int light,
+  int firstView, int view, int features)
 {
   vtkShadowDepthPerTexel = 0.0;
   vtkShadowReceiverSlope = vec2(0.0);
   vec3 gradU;
   vec3 gradV;
-  vtkShadowMapGradients(positionVC, view, gradU, gradV);
+  vtkShadowMapGradients(positionVC, firstView, view, features, gradU, gradV);
   vec3 ray = cross(gradU, gradV);
   float rayLength = length(ray);
   if (!(rayLength > 0.0))
   {
     return;
   }
-  float texel = vtkShadowTexelWorldSize(positionVC, light, view, features);
+  float texel = vtkShadowTexelWorldSize(positionVC, light, firstView, view, features);
+  mat4 viewToMap = vtkShadowMapMatrix(firstView, view, features);
   vtkShadowDepthPerTexel =
-    abs(vtkShadowMapPoint(positionVC + ray * (texel / rayLength), view, features).z - mapCoord.z);
+    abs(vtkShadowMapPoint(positionVC + ray * (texel / rayLength), viewToMap, view, features).z -
+      mapCoord.z);
   // Two tangents of the receiver, a texel long, in map coordinates.
   vec3 side = abs(normalVC.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
   vec3 t1 = normalize(cross(normalVC, side)) * texel;
   vec3 t2 = normalize(cross(normalVC, t1)) * texel;
-  vec3 m1 = vtkShadowMapPoint(positionVC + t1, view, features) - mapCoord;
-  vec3 m2 = vtkShadowMapPoint(positionVC + t2, view, features) - mapCoord;
+  vec3 m1 = vtkShadowMapPoint(positionVC + t1, viewToMap, view, features) - mapCoord;
+  vec3 m2 = vtkShadowMapPoint(positionVC + t2, viewToMap, view, features) - mapCoord;
   float det = m1.x * m2.y - m1.y * m2.x;
   if (abs(det) > 1e-30)
   {
@@ -350,20 +380,22 @@ void vtkShadowMeasureReceiver(
 }
 #endif
 
-float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int view, int features)
+float vtkShadowViewVisibility(
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
 {
-  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, view, features);
-  vec4 clip = vtkShadowViews[view].ViewToMap * vec4(biased, 1.0);
+  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
+  vec4 clip = vtkShadowMapMatrix(firstView, view, features) * vec4(biased, 1.0);
   if (!vtkShadowInsideMap(clip, view, features))
   {
     return 1.0;
   }
   vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
 #ifdef VTK_SHADOW_RECEIVER_PLANE
-  vtkShadowMeasureReceiver(biased, vtkShadowPlaneNormalVC, mapCoord, light, view, features);
+  vtkShadowMeasureReceiver(
+    biased, vtkShadowPlaneNormalVC, mapCoord, light, firstView, view, features);
 #endif
 #ifdef VTK_SHADOW_MAP_FOOTPRINT
-  vtkShadowMeasureFootprint(biased, light, view);
+  vtkShadowMeasureFootprint(biased, light, firstView, view, features);
 #endif
 #ifdef VTK_SHADOW_LIGHT_DEPTH
   mapCoord.z = vtkShadowLightDepth(biased, light);
@@ -376,7 +408,7 @@ float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int vie
 // (a receiver the depth rule would give to a farther cascade is not blended:
 // its own map is the finest that holds it).
 float vtkShadowBlendIntoNext(
-  vec3 positionVC, vec3 normalVC, int light, int view, float depth, int features)
+  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, float depth, int features)
 {
   float band = vtkShadowLights[light].CoverageBand;
   if (band < 0.0)
@@ -388,7 +420,7 @@ float vtkShadowBlendIntoNext(
   {
     return 0.0;
   }
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, view, features);
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, view, features);
   vec2 ndc = abs(2.0 * clip.xy / clip.w - 1.0);
   return clamp((max(ndc.x, ndc.y) - (1.0 - band)) / band, 0.0, 1.0);
 }
@@ -400,14 +432,16 @@ float vtkShadowVisibility(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int viewLayout, int count, int features)
 {
   int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, viewLayout, count, features);
-  float visibility = vtkShadowViewVisibility(positionVC, normalVC, light, view, features);
+  float visibility = vtkShadowViewVisibility(positionVC, normalVC, light, firstView, view, features);
   float depth = -positionVC.z;
   if (viewLayout == VTK_SHADOW_LAYOUT_CASCADES)
   {
-    float weight = vtkShadowBlendIntoNext(positionVC, normalVC, light, view, depth, features);
+    float weight =
+      vtkShadowBlendIntoNext(positionVC, normalVC, light, firstView, view, depth, features);
     if (view < firstView + count - 1 && weight > 0.0)
     {
-      float next = vtkShadowViewVisibility(positionVC, normalVC, light, view + 1, features);
+      float next =
+        vtkShadowViewVisibility(positionVC, normalVC, light, firstView, view + 1, features);
       visibility = mix(visibility, next, weight);
     }
   }

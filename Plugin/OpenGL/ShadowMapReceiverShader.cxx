@@ -1,5 +1,6 @@
 #include "ShadowMapReceiverShader.h"
 
+#include "ShadowMapCrop.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapTrapezoid.h"
 #include "vtkShaderProgram.h"
@@ -78,6 +79,7 @@ std::string ReceiverShaderConstants()
     { "VTK_SHADOW_FEATURE_GRADIENT_TEXELS", GradientTexels },
     { "VTK_SHADOW_FEATURE_DISTANT_TEXELS", DistantTexels },
     { "VTK_SHADOW_FEATURE_LINEAR_DEPTHS", LinearDepths },
+    { "VTK_SHADOW_FEATURE_CROPPED_VIEWS", CroppedViews },
   };
   std::ostringstream defines;
   for (const auto& constant : constants)
@@ -227,6 +229,16 @@ ReceiverUniforms::View ReceiverUniforms::PackView(
     packed.Cascade = ToFloat(light.CascadeDepths[index]);
   }
   packed.FilterScale = static_cast<float>(FilterScale(light, index));
+  if ((ReceiverFeatures(light) & CroppedViews) != 0)
+  {
+    const MapCrop crop = CropBetween(ClipToTexture() * light.Views.front().ViewProjection(),
+      ClipToTexture() * view.ViewProjection());
+    if (IsFiniteVector(crop.Scale) && IsFiniteVector(crop.Offset))
+    {
+      packed.CropScale = ToFloat(crop.Scale);
+      packed.CropOffset = ToFloat(crop.Offset);
+    }
+  }
   return packed;
 }
 
@@ -282,7 +294,8 @@ void ReceiverUniforms::NameMembers()
   for (std::size_t i = this->ViewNames.size(); i < this->Views.size(); ++i)
   {
     this->ViewNames.push_back(name(
-      "vtkShadowViews", i, { "ViewToMap", "TexelSize", "DepthInverseW", "Cascade", "FilterScale" }));
+      "vtkShadowViews", i, { "ViewToMap", "TexelSize", "DepthInverseW", "Cascade", "FilterScale",
+                              "CropScale", "CropOffset" }));
   }
   for (std::size_t i = this->LightNames.size(); i < this->Lights.size(); ++i)
   {
@@ -311,6 +324,8 @@ void ReceiverUniforms::Apply(
     program->SetUniform3f(names[2].c_str(), glm::value_ptr(view.DepthInverseW));
     program->SetUniform3f(names[3].c_str(), glm::value_ptr(view.Cascade));
     program->SetUniformf(names[4].c_str(), view.FilterScale);
+    program->SetUniform3f(names[5].c_str(), glm::value_ptr(view.CropScale));
+    program->SetUniform3f(names[6].c_str(), glm::value_ptr(view.CropOffset));
   }
   for (std::size_t i = 0; i < this->Lights.size(); ++i)
   {

@@ -103,6 +103,8 @@ private:
     glm::vec3 DepthInverseW{ 0.0f };
     glm::vec3 Cascade{ 0.0f, 1e38f, 1e38f };
     float FilterScale = 1.0f;
+    glm::vec3 CropScale{ 1.0f };
+    glm::vec3 CropOffset{ 0.0f };
   };
   struct Light
   {

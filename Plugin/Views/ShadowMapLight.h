@@ -49,7 +49,11 @@ enum ReceiverFeature : int
   /// Positional lights: texels grow with the distance to the light.
   DistantTexels = 2,
   /// Maps that store depth linear in light space; 1 / W is recovered.
-  LinearDepths = 4
+  LinearDepths = 4,
+  /// Not a need but a promise of the views strategy: every view of the light is
+  /// its first followed by a crop (ShadowMapCrop.h), as unwarped cascades and
+  /// tiles are. Receivers then transform by the first view only.
+  CroppedViews = 8
 };
 
 /// Cones wider than this (half angle, degrees) are rendered as six cube faces:

@@ -205,9 +205,15 @@ void vtkCascadedShadowMapViews::FitLight(
     vtkShadowMapViews::FitUniformViews(frame, light);
     return;
   }
-  // Warped maps store linear depth (FitWarpedFrame, FitSpotWarped).
+  // Warped maps store linear depth (FitWarpedFrame, FitSpotWarped). A spot's
+  // tiles crop one map, warped or not; unwarped cascades share the light's
+  // rotation and differ by their orthographic boxes.
   light.PossibleFeatures =
     this->MayWarp() ? shadowmaps::GradientTexels | shadowmaps::LinearDepths : 0;
+  if (light.Kind == shadowmaps::LightKind::Spot || !this->MayWarp())
+  {
+    light.PossibleFeatures |= shadowmaps::CroppedViews;
+  }
   double fade[2];
   const std::vector<double> splits = this->ComputeSplits(frame, fade);
   this->LastSplits = splits;
