@@ -120,7 +120,7 @@ bool MapBlur::Blur(
 
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->ScratchFramebuffer);
   glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->Scratch, 0, 0);
-  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
   bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   if (ok)
   {

@@ -166,16 +166,18 @@ bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& erro
   {
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, second, 0);
-    const GLenum outputs[2] = { GL_NONE, GL_COLOR_ATTACHMENT0 };
+    // Through the state, which caches each framebuffer's buffers: ParaView's
+    // VTK checks the cache against GL.
+    unsigned int outputs[2] = { GL_NONE, GL_COLOR_ATTACHMENT0 };
     if (secondOutput)
     {
-      glDrawBuffers(2, outputs);
+      state->vtkglDrawBuffers(2, outputs);
     }
     else
     {
-      glDrawBuffer(GL_NONE);
+      state->vtkglDrawBuffer(GL_NONE);
     }
-    glReadBuffer(GL_NONE);
+    state->vtkglReadBuffer(GL_NONE);
   }
   else
   {
@@ -184,9 +186,9 @@ bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& erro
     // Detached when not asked for: a texture sampled while attached would
     // make a feedback loop.
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, second, 0);
-    const GLenum outputs[2] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1 };
-    glDrawBuffers(secondOutput ? 2 : 1, outputs);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    unsigned int outputs[2] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1 };
+    state->vtkglDrawBuffers(secondOutput ? 2 : 1, outputs);
+    state->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
   }
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
@@ -237,8 +239,8 @@ bool TextureArray::BindSamples(vtkOpenGLState* state, int samples, std::string& 
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->SampleFramebuffer);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, this->SampleColor);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->SampleDepth);
-  glDrawBuffer(GL_COLOR_ATTACHMENT0);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
+  state->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
   {
     error = "multisampled shadow-map framebuffer incomplete";
@@ -254,7 +256,7 @@ bool TextureArray::ResolveSamples(vtkOpenGLState* state, int layer, std::string&
     return false;
   }
   state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, this->SampleFramebuffer);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  state->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
   ClearGLErrors();
   glBlitFramebuffer(0, 0, this->Resolution, this->Resolution, 0, 0, this->Resolution,
     this->Resolution, GL_COLOR_BUFFER_BIT, GL_NEAREST);

@@ -1,0 +1,216 @@
+#include "vtkPVShadowRenderView.h"
+
+#include "vtkAbstractShadowMapPass.h"
+#include "vtkCascadedShadowMapViews.h"
+#include "vtkDepthShadowMapPass.h"
+#include "vtkDualDepthShadowMapPass.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkLightKit.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVDefaultPass.h"
+#include "vtkPVSynchronizedRenderer.h"
+#include "vtkRenderer.h"
+#include "vtkVarianceShadowMapPass.h"
+#include "vtkWarpedShadowMapViews.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkPVShadowRenderView);
+
+namespace
+{
+template <typename T>
+T Clamped(vtkObject* self, const char* name, T value, T lowest, T highest)
+{
+  const T clamped = std::min(std::max(value, lowest), highest);
+  if (clamped != value)
+  {
+    vtkWarningWithObjectMacro(self, << name << " " << value << " is outside [" << lowest << ", "
+                                    << highest << "]; using " << clamped << ".");
+  }
+  return clamped;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkPVShadowRenderView::vtkPVShadowRenderView()
+  : DepthPass(vtkDepthShadowMapPass::New())
+  , DualDepthPass(vtkDualDepthShadowMapPass::New())
+  , MomentsPass(vtkVarianceShadowMapPass::New())
+  , WarpedViews(vtkWarpedShadowMapViews::New())
+  , CascadedViews(vtkCascadedShadowMapViews::New())
+  , ScenePass(vtkPVDefaultPass::New())
+{
+  for (vtkAbstractShadowMapPass* pass : { static_cast<vtkAbstractShadowMapPass*>(this->DepthPass),
+         static_cast<vtkAbstractShadowMapPass*>(this->DualDepthPass),
+         static_cast<vtkAbstractShadowMapPass*>(this->MomentsPass) })
+  {
+    // The renderer's own steps (SSAO, hidden lines, translucency, volumes)
+    // render the scene, as in ParaView's plain render view.
+    pass->SetDelegatePass(this->ScenePass);
+    pass->SetResolution(this->ShadowMapResolution);
+  }
+  this->MarkLightKitLights();
+  this->UsePass();
+}
+
+//------------------------------------------------------------------------------
+vtkPVShadowRenderView::~vtkPVShadowRenderView()
+{
+  this->SynchronizedRenderers->SetRenderPass(nullptr);
+  this->DepthPass->Delete();
+  this->DualDepthPass->Delete();
+  this->MomentsPass->Delete();
+  this->WarpedViews->Delete();
+  this->CascadedViews->Delete();
+  this->ScenePass->Delete();
+}
+
+//------------------------------------------------------------------------------
+vtkAbstractShadowMapPass* vtkPVShadowRenderView::GetShadowPass()
+{
+  switch (this->ShadowStorage)
+  {
+    case DUAL_DEPTH:
+      return this->DualDepthPass;
+    case MOMENTS:
+      return this->MomentsPass;
+    default:
+      return this->DepthPass;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkPVShadowRenderView::GetNumberOfShadowedLights()
+{
+  return this->GetShadowPass()->GetNumberOfShadowedLights();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::UsePass()
+{
+  if (this->ShadowViews == CASCADES)
+  {
+    this->GetShadowPass()->SetViews(this->CascadedViews);
+  }
+  else
+  {
+    const int modes[] = { vtkWarpedShadowMapViews::UNIFORM, vtkWarpedShadowMapViews::LISPSM,
+      vtkWarpedShadowMapViews::TSM, vtkWarpedShadowMapViews::PSM, vtkWarpedShadowMapViews::GMNPR };
+    this->WarpedViews->SetWarpMode(modes[this->ShadowViews]);
+    this->GetShadowPass()->SetViews(this->WarpedViews);
+  }
+  this->GetShadowPass()->SetAnalysisView(this->ShadowAnalysisView);
+  this->SynchronizedRenderers->SetRenderPass(this->GetShadowPass());
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::MarkLightKitLights()
+{
+  // vtkLightKit adds its head light, then its key, fill and back lights; the key
+  // light is the first that is not a headlight (headlights never cast).
+  vtkNew<vtkRenderer> kitLights;
+  this->LightKit->AddLightsToRenderer(kitLights);
+  vtkLightCollection* lights = kitLights->GetLights();
+  lights->InitTraversal();
+  bool keyFound = false;
+  for (vtkLight* light = lights->GetNextItem(); light; light = lights->GetNextItem())
+  {
+    const bool isKey = !keyFound && !light->LightTypeIsHeadlight();
+    keyFound = keyFound || isKey;
+    light->GetInformation()->Set(
+      vtkAbstractShadowMapPass::CASTS_SHADOWS(), isKey && this->KeyLightShadows ? 1 : 0);
+    light->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowViews(int views)
+{
+  views = Clamped(this, "ShadowViews", views, static_cast<int>(UNIFORM), static_cast<int>(CASCADES));
+  if (views != this->ShadowViews)
+  {
+    this->ShadowViews = views;
+    this->UsePass();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowStorage(int storage)
+{
+  storage =
+    Clamped(this, "ShadowStorage", storage, static_cast<int>(DEPTH), static_cast<int>(MOMENTS));
+  if (storage != this->ShadowStorage)
+  {
+    this->ShadowStorage = storage;
+    this->UsePass();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowMapResolution(int resolution)
+{
+  resolution = Clamped(this, "ShadowMapResolution", resolution, 64, 16384);
+  if (resolution != this->ShadowMapResolution)
+  {
+    this->ShadowMapResolution = resolution;
+    this->DepthPass->SetResolution(resolution);
+    this->DualDepthPass->SetResolution(resolution);
+    this->MomentsPass->SetResolution(resolution);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetNumberOfCascades(int count)
+{
+  this->CascadedViews->SetNumberOfCascades(count);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkPVShadowRenderView::GetNumberOfCascades()
+{
+  return this->CascadedViews->GetNumberOfCascades();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowAnalysisView(int view)
+{
+  view = Clamped(this, "ShadowAnalysisView", view, static_cast<int>(vtkAbstractShadowMapPass::NO_ANALYSIS),
+    static_cast<int>(vtkAbstractShadowMapPass::PARTITION));
+  if (view != this->ShadowAnalysisView)
+  {
+    this->ShadowAnalysisView = view;
+    this->GetShadowPass()->SetAnalysisView(view);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetKeyLightShadows(bool on)
+{
+  if (on != this->KeyLightShadows)
+  {
+    this->KeyLightShadows = on;
+    this->MarkLightKitLights();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ShadowViews: " << this->ShadowViews << "\n";
+  os << indent << "ShadowStorage: " << this->ShadowStorage << "\n";
+  os << indent << "ShadowMapResolution: " << this->ShadowMapResolution << "\n";
+  os << indent << "NumberOfCascades: " << this->CascadedViews->GetNumberOfCascades() << "\n";
+  os << indent << "ShadowAnalysisView: " << this->ShadowAnalysisView << "\n";
+  os << indent << "KeyLightShadows: " << this->KeyLightShadows << "\n";
+}

@@ -1,0 +1,129 @@
+/**
+ * @class   vtkPVShadowRenderView
+ * @brief   ParaView's render view with rasterised shadows.
+ *
+ * A vtkPVRenderView whose geometry is rendered through one of the module's
+ * shadow passes, put where ParaView renders geometry
+ * (vtkPVSynchronizedRenderer::SetRenderPass), so that with IceT each rank
+ * shades its own geometry, and the image passes (FXAA, tone mapping) still
+ * follow. The passes render the scene through vtkPVDefaultPass, so SSAO,
+ * hidden-line removal and the translucent and volume steps of the renderer
+ * keep working.
+ *
+ * Two independent choices, as in the module: where each light's views go
+ * (ShadowViews: a uniform or warped map, or cascades) and what a texel stores
+ * (ShadowStorage: depth with PCF, two depths without bias, or filterable
+ * moments). Lights: the light kit's key light casts shadows (KeyLightShadows),
+ * its fill, back and head lights do not; every light added to the view casts.
+ */
+#ifndef vtkPVShadowRenderView_h
+#define vtkPVShadowRenderView_h
+
+#include "vtkPVRenderView.h"
+#include "vtkParaViewShadowViewModule.h" // For export macro
+
+class vtkAbstractShadowMapPass;
+class vtkCascadedShadowMapViews;
+class vtkDepthShadowMapPass;
+class vtkDualDepthShadowMapPass;
+class vtkPVDefaultPass;
+class vtkVarianceShadowMapPass;
+class vtkWarpedShadowMapViews;
+
+class VTKPARAVIEWSHADOWVIEW_EXPORT vtkPVShadowRenderView : public vtkPVRenderView
+{
+public:
+  static vtkPVShadowRenderView* New();
+  vtkTypeMacro(vtkPVShadowRenderView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ShadowViewsType
+  {
+    UNIFORM = 0,
+    LISPSM = 1,
+    TSM = 2,
+    PSM = 3,
+    GMNPR = 4,
+    CASCADES = 5
+  };
+
+  ///@{
+  /** Where each light's views go: a focused uniform map (default), a warped map, or cascades. */
+  void SetShadowViews(int views);
+  vtkGetMacro(ShadowViews, int);
+  ///@}
+
+  enum ShadowStorageType
+  {
+    DEPTH = 0,
+    DUAL_DEPTH = 1,
+    MOMENTS = 2
+  };
+
+  ///@{
+  /**
+   * What a texel stores: depth with 2 x 2 PCF (default), two depths and no
+   * bias (vtkDualDepthShadowMapPass), or EVSM4 moments (vtkVarianceShadowMapPass).
+   */
+  void SetShadowStorage(int storage);
+  vtkGetMacro(ShadowStorage, int);
+  ///@}
+
+  ///@{
+  /** Map width and height in texels, [64, 16384], default 2048 (each cascade is one such map). */
+  void SetShadowMapResolution(int resolution);
+  vtkGetMacro(ShadowMapResolution, int);
+  ///@}
+
+  ///@{
+  /** Cascades when ShadowViews is CASCADES, [1, 8], default 4. */
+  void SetNumberOfCascades(int count);
+  int GetNumberOfCascades();
+  ///@}
+
+  ///@{
+  /** vtkAbstractShadowMapPass's AnalysisView (0 none, 1 shadow factor, 2 texel density, 3 map, 4 partition). */
+  void SetShadowAnalysisView(int view);
+  vtkGetMacro(ShadowAnalysisView, int);
+  ///@}
+
+  ///@{
+  /** Whether the light kit's key light casts shadows (default on). */
+  void SetKeyLightShadows(bool on);
+  vtkGetMacro(KeyLightShadows, bool);
+  ///@}
+
+  /** The pass that renders this view's geometry now. */
+  vtkAbstractShadowMapPass* GetShadowPass();
+
+  /** Lights the last frame rendered shadows of (an information property). */
+  int GetNumberOfShadowedLights();
+
+protected:
+  vtkPVShadowRenderView();
+  ~vtkPVShadowRenderView() override;
+
+private:
+  vtkPVShadowRenderView(const vtkPVShadowRenderView&) = delete;
+  void operator=(const vtkPVShadowRenderView&) = delete;
+
+  /** Puts the pass for the current choices in the geometry slot. */
+  void UsePass();
+  /** Marks which of the light kit's lights cast shadows. */
+  void MarkLightKitLights();
+
+  int ShadowViews = UNIFORM;
+  int ShadowStorage = DEPTH;
+  int ShadowMapResolution = 2048;
+  int ShadowAnalysisView = 0;
+  bool KeyLightShadows = true;
+
+  vtkDepthShadowMapPass* DepthPass;
+  vtkDualDepthShadowMapPass* DualDepthPass;
+  vtkVarianceShadowMapPass* MomentsPass;
+  vtkWarpedShadowMapViews* WarpedViews;
+  vtkCascadedShadowMapViews* CascadedViews;
+  vtkPVDefaultPass* ScenePass;
+};
+
+#endif

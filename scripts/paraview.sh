@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The ParaView half of the tests (scripts/test.sh runs it after the VTK half):
+# builds the ShadowMaps plugin (ParaView/) against ParaView's own VTK and runs
+# its tests in pvpython. Debian's python3-paraview, which pvpython and the
+# plugin's wrapping need, conflicts with python3-vtk9 (and so with libvtk9-dev):
+# this script swaps them in and, whatever happens, back out, leaving the
+# packages the README's main command needs.
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+PARAVIEW_BUILD_DIR="${PARAVIEW_BUILD_DIR:-$ROOT/build-paraview}"
+PARAVIEW_PACKAGES=(paraview paraview-dev python3-paraview openmpi-bin)
+VTK_PACKAGES=(libvtk9-dev python3-vtk9)
+PLUGIN="$PARAVIEW_BUILD_DIR/lib/paraview-5.11/plugins/ShadowMaps/ShadowMaps.so"
+
+apt_install() {
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$@" ||
+    { as_root apt-get update -qq &&
+      as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$@"; }
+}
+
+swap_back() {
+  echo "Restoring ${VTK_PACKAGES[*]} (removes python3-paraview)"
+  apt_install "${VTK_PACKAGES[@]}" >/dev/null
+}
+trap swap_back EXIT
+
+echo "Installing ${PARAVIEW_PACKAGES[*]} (removes ${VTK_PACKAGES[*]} until the end)"
+apt_install "${PARAVIEW_PACKAGES[@]}" >/dev/null
+cmake -S "$ROOT/ParaView" -B "$PARAVIEW_BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DPython3_EXECUTABLE=/usr/bin/python3
+cmake --build "$PARAVIEW_BUILD_DIR"
+with_display pvpython "$ROOT/Testing/ParaView/test_shadow_view.py" "$PLUGIN" \
+  "$PARAVIEW_BUILD_DIR/Testing/Output"
