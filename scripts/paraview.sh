@@ -22,6 +22,11 @@ swap_back() {
   echo "Restoring ${VTK_PACKAGES[*]} (removes python3-paraview)"
   apt_install "${VTK_PACKAGES[@]}" >/dev/null
 }
+if [ "${SHADOWMAPS_SKIP_PARAVIEW:-0}" = 1 ]; then
+  echo "SKIPPED: the ParaView plugin's build and tests (SHADOWMAPS_SKIP_PARAVIEW=1)" >&2
+  exit 0
+fi
+install_missing_packages
 trap swap_back EXIT
 
 echo "Installing ${PARAVIEW_PACKAGES[*]} (removes ${VTK_PACKAGES[*]} until the end)"
@@ -31,3 +36,6 @@ cmake -S "$ROOT/ParaView" -B "$PARAVIEW_BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=R
 cmake --build "$PARAVIEW_BUILD_DIR"
 with_display pvpython "$ROOT/Testing/ParaView/test_shadow_view.py" "$PLUGIN" \
   "$PARAVIEW_BUILD_DIR/Testing/Output"
+if [ "${SHADOWMAPS_GUI_SCREENSHOT:-0}" = 1 ]; then
+  bash "$ROOT/scripts/paraview_gui_screenshot.sh"
+fi

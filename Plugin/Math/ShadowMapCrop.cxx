@@ -54,12 +54,15 @@ double CropError(const glm::dmat4& first, const glm::dmat4& view)
   {
     for (int row = 0; row < 4; ++row)
     {
-      const bool keeps = column == row || (column == 3 && row < 3);
       const double value = std::abs(relative[column][row]);
+      if (!std::isfinite(value))
+      {
+        return std::numeric_limits<double>::infinity();
+      }
+      const bool keeps = column == row || (column == 3 && row < 3);
       (keeps ? kept : stray) = std::max(keeps ? kept : stray, value);
     }
   }
-  const double error = kept > 0.0 ? stray / kept : std::numeric_limits<double>::infinity();
-  return std::isnan(error) ? std::numeric_limits<double>::infinity() : error;
+  return kept > 0.0 ? stray / kept : std::numeric_limits<double>::infinity();
 }
 } // namespace shadowmaps

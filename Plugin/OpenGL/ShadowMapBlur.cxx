@@ -120,7 +120,8 @@ bool MapBlur::Blur(
 
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->ScratchFramebuffer);
   glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->Scratch, 0, 0);
-  state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
+  const unsigned int output = GL_COLOR_ATTACHMENT0;
+  SelectBuffers(state, 1, &output, GL_COLOR_ATTACHMENT0);
   bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   if (ok)
   {

@@ -53,6 +53,22 @@ void ClearGLErrors()
   }
 }
 
+void SelectBuffers(vtkOpenGLState* state, int count, const unsigned int* draws, unsigned int read)
+{
+  unsigned int buffers[2] = { draws[0], count > 1 ? draws[1] : GL_NONE };
+  if (count == 1)
+  {
+    state->vtkglDrawBuffer(buffers[0]);
+  }
+  else
+  {
+    state->vtkglDrawBuffers(count, buffers);
+    // The state may have skipped the call on a stale second entry.
+    glDrawBuffers(count, buffers);
+  }
+  state->vtkglReadBuffer(read);
+}
+
 void AllocateValueLevels(int resolution, int layers, TexelFormat format, int levels)
 {
   const GLint internal = InternalFormat(format);
@@ -166,18 +182,8 @@ bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& erro
   {
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, second, 0);
-    // Through the state, which caches each framebuffer's buffers: ParaView's
-    // VTK checks the cache against GL.
-    unsigned int outputs[2] = { GL_NONE, GL_COLOR_ATTACHMENT0 };
-    if (secondOutput)
-    {
-      state->vtkglDrawBuffers(2, outputs);
-    }
-    else
-    {
-      state->vtkglDrawBuffer(GL_NONE);
-    }
-    state->vtkglReadBuffer(GL_NONE);
+    const unsigned int outputs[2] = { GL_NONE, GL_COLOR_ATTACHMENT0 };
+    SelectBuffers(state, secondOutput ? 2 : 1, outputs, GL_NONE);
   }
   else
   {
@@ -186,9 +192,8 @@ bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& erro
     // Detached when not asked for: a texture sampled while attached would
     // make a feedback loop.
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, second, 0);
-    unsigned int outputs[2] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1 };
-    state->vtkglDrawBuffers(secondOutput ? 2 : 1, outputs);
-    state->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
+    const unsigned int outputs[2] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1 };
+    SelectBuffers(state, secondOutput ? 2 : 1, outputs, GL_COLOR_ATTACHMENT0);
   }
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
@@ -239,8 +244,8 @@ bool TextureArray::BindSamples(vtkOpenGLState* state, int samples, std::string& 
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->SampleFramebuffer);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, this->SampleColor);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->SampleDepth);
-  state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
-  state->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
+  const unsigned int output = GL_COLOR_ATTACHMENT0;
+  SelectBuffers(state, 1, &output, GL_COLOR_ATTACHMENT0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
   {
     error = "multisampled shadow-map framebuffer incomplete";

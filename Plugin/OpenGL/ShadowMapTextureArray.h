@@ -82,6 +82,12 @@ void AllocateValueLevels(int resolution, int layers, TexelFormat format, int lev
 /// Drops the GL errors pending, so that the next glGetError reports only what follows.
 void ClearGLErrors();
 
+/// Sets the bound framebuffer's `count` (1 or 2) draw buffers and its read
+/// buffer through `state`, whose cache ParaView's VTK checks against GL; two
+/// draw buffers are also set in GL directly, since VTK 9.1's cache re-reads only
+/// the first when a framebuffer is bound and may skip a call it thinks is made.
+void SelectBuffers(vtkOpenGLState* state, int count, const unsigned int* draws, unsigned int read);
+
 class TextureArray
 {
 public:

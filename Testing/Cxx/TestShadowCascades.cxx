@@ -8,6 +8,9 @@
 #include "vtkDualDepthShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
 
+#include "ShadowMapCrop.h"
+#include "ShadowMapLight.h"
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
@@ -23,6 +26,8 @@
 #include <cmath>
 #include <iostream>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 using namespace shadowtest;
 
@@ -714,3 +719,78 @@ TEST_P(ReachCulling, KeepsTheShadowOfACasterOutsideTheView)
   }
   EXPECT_GT(dark, 20) << "the pole's shadow is in view";
 }
+
+namespace
+{
+// The receivers' shader relies on every view of a light whose strategy promises
+// CroppedViews being a crop of its first (ShadowMapCrop): fitted through the
+// strategy itself, for every setting that makes the promise, and not made where
+// the views are not crops (warped cascades, cube faces).
+TEST(ShadowCascades, CroppedViewsPromiseHoldsForEveryFitThatMakesIt)
+{
+  shadowmaps::ShadowFrame frame;
+  frame.CameraView = glm::lookAt(glm::dvec3(0.0, -40.0, 9.0), glm::dvec3(0.0, 0.0, 0.0),
+    glm::dvec3(0.0, 0.0, 1.0));
+  frame.CameraProjection = glm::perspective(glm::radians(45.0), 16.0 / 9.0, 0.5, 200.0);
+  frame.SceneBounds = { glm::dvec3(-60.0, -60.0, 0.0), glm::dvec3(60.0, 60.0, 12.0) };
+  frame.PropBounds = { frame.SceneBounds };
+  frame.Resolution = 1024;
+
+  struct Setting
+  {
+    const char* Name;
+    int FitMode;
+    int Warp;
+    shadowmaps::LightKind Kind;
+    double Cone;
+    bool Promised;
+  };
+  const Setting settings[] = {
+    { "stable sun", vtkCascadedShadowMapViews::STABLE, vtkCascadedShadowMapViews::NO_WARP,
+      shadowmaps::LightKind::Directional, 90.0, true },
+    { "stable sun, warp set (unused)", vtkCascadedShadowMapViews::STABLE,
+      vtkCascadedShadowMapViews::LISPSM_WARP, shadowmaps::LightKind::Directional, 90.0, true },
+    { "tight sun", vtkCascadedShadowMapViews::TIGHT, vtkCascadedShadowMapViews::NO_WARP,
+      shadowmaps::LightKind::Directional, 90.0, true },
+    { "tight LiSPSM sun", vtkCascadedShadowMapViews::TIGHT, vtkCascadedShadowMapViews::LISPSM_WARP,
+      shadowmaps::LightKind::Directional, 90.0, false },
+    { "spot tiles", vtkCascadedShadowMapViews::STABLE, vtkCascadedShadowMapViews::NO_WARP,
+      shadowmaps::LightKind::Spot, 35.0, true },
+    { "warped spot tiles", vtkCascadedShadowMapViews::TIGHT, vtkCascadedShadowMapViews::LISPSM_WARP,
+      shadowmaps::LightKind::Spot, 35.0, true },
+    { "wide spot (cube faces)", vtkCascadedShadowMapViews::STABLE,
+      vtkCascadedShadowMapViews::NO_WARP, shadowmaps::LightKind::Spot, 75.0, false },
+  };
+  for (const Setting& setting : settings)
+  {
+    vtkNew<vtkCascadedShadowMapViews> views;
+    views->SetNumberOfCascades(4);
+    views->SetFitMode(setting.FitMode);
+    views->SetCascadeWarp(setting.Warp);
+    shadowmaps::ShadowLight light;
+    light.Kind = setting.Kind;
+    light.ConeAngle = setting.Cone;
+    light.Position = glm::dvec3(10.0, -15.0, 30.0);
+    light.Direction = glm::normalize(glm::dvec3(-0.3, 0.4, -1.0));
+    views->FitLight(frame, light);
+    const bool promised = (shadowmaps::ReceiverFeatures(light) & shadowmaps::CroppedViews) != 0;
+    EXPECT_EQ(promised, setting.Promised) << setting.Name;
+    ASSERT_GE(light.Views.size(), 2u) << setting.Name;
+    const glm::dmat4 first = shadowmaps::ClipToTexture() * light.Views.front().ViewProjection();
+    double largest = 0.0;
+    for (const shadowmaps::LightView& view : light.Views)
+    {
+      largest = std::max(largest,
+        shadowmaps::CropError(first, shadowmaps::ClipToTexture() * view.ViewProjection()));
+    }
+    if (setting.Promised)
+    {
+      EXPECT_LT(largest, 1e-9) << setting.Name;
+    }
+    else if (setting.Kind == shadowmaps::LightKind::Directional)
+    {
+      EXPECT_GT(largest, 1e-3) << setting.Name << ": warped cascades are not crops";
+    }
+  }
+}
+} // namespace

@@ -88,6 +88,9 @@ TEST(MapCrop, ReportsWhatIsNotACrop)
   singular[2] = glm::dvec4(0.0);
   EXPECT_TRUE(std::isinf(shadowmaps::CropError(singular, first)));
   EXPECT_TRUE(std::isinf(shadowmaps::CropError(first, glm::dmat4(std::nan("")))));
+  glm::dmat4 partlyNaN = first;
+  partlyNaN[1][0] = std::nan("");
+  EXPECT_TRUE(std::isinf(shadowmaps::CropError(first, partlyNaN)));
 }
 
 // Stable and tight cascades of a sun: one light rotation, a box each.

@@ -128,10 +128,45 @@ for views_choice in views:
             compare_with_baseline(png, "ParaViewShadowView" + ("" if views_choice == "Uniform" else "Cascades"))
         Delete(view)
 
-# SSAO, FXAA and tone mapping keep working with the shadows.
+# SSAO, FXAA and tone mapping keep working with the shadows, and do change the frame.
+def mean_difference(first, second):
+    result = subprocess.run(["idiff", "-abs", "-o", os.path.join(OUT, "difference.png"), first, second],
+                            capture_output=True, text=True)
+    for line in result.stdout.splitlines():
+        if line.strip().startswith("Mean error"):
+            return float(line.split("=")[1])
+    return 0.0
+
+
+plain_effects = make_view("ShadowRenderView")
+show_scene(plain_effects)
+without = render(plain_effects, "ParaViewShadowViewNoEffects")
+Delete(plain_effects)
 view = make_view("ShadowRenderView", UseAmbientOcclusion=1, UseFXAA=1, UseToneMapping=1)
 show_scene(view)
-shadow_probes(view, render(view, "ParaViewShadowViewSSAO"), "SSAO, FXAA and tone mapping")
+with_effects = render(view, "ParaViewShadowViewSSAO")
+shadow_probes(view, with_effects, "SSAO, FXAA and tone mapping")
+difference = mean_difference(without, with_effects)
+check(difference > 0.01, f"SSAO, FXAA and tone mapping change the frame (mean difference {difference:.3f})")
+Delete(view)
+
+# One view whose choices change between frames: each pass it switches to shadows,
+# the one it leaves frees its maps, and the other settings reach the pass.
+view = make_view("ShadowRenderView")
+show_scene(view)
+for views_choice, storage in (("Cascades", "Moments (EVSM4)"), ("LiSPSM", "Dual depth (no bias)"),
+                              ("Uniform", "Depth (PCF)"), ("Cascades", "Depth (PCF)")):
+    view.ShadowViews = views_choice
+    view.ShadowStorage = storage
+    png = render(view, "ParaViewShadowViewSwitched")
+    shadow_probes(view, png, "switched to " + views_choice + " / " + storage)
+view.NumberOfCascades = 2
+view.ShadowMapResolution = 256
+shadow_probes(view, render(view, "ParaViewShadowViewSmall"), "2 cascades of 256^2")
+view.ShadowAnalysisView = "Shadow factor"
+png = render(view, "ParaViewShadowViewFactor")
+check(luminance_at(view, png, SHADOWED) < 10 and luminance_at(view, png, LIT) > 245,
+      "the shadow-factor analysis view shows visibility as grey (0 in the shadow, 1 on the lit ground)")
 Delete(view)
 
 # The light kit: its key light casts, the others do not.

@@ -8,10 +8,12 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightKit.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
 #include "vtkPVSynchronizedRenderer.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkVarianceShadowMapPass.h"
 #include "vtkWarpedShadowMapViews.h"
@@ -60,6 +62,14 @@ vtkPVShadowRenderView::vtkPVShadowRenderView()
 //------------------------------------------------------------------------------
 vtkPVShadowRenderView::~vtkPVShadowRenderView()
 {
+  // Before the pass leaves the renderer: the window's release then no longer
+  // reaches it, and the maps' texture array frees nothing on its own.
+  for (vtkAbstractShadowMapPass* pass : { static_cast<vtkAbstractShadowMapPass*>(this->DepthPass),
+         static_cast<vtkAbstractShadowMapPass*>(this->DualDepthPass),
+         static_cast<vtkAbstractShadowMapPass*>(this->MomentsPass) })
+  {
+    this->ReleasePass(pass);
+  }
   this->SynchronizedRenderers->SetRenderPass(nullptr);
   this->DepthPass->Delete();
   this->DualDepthPass->Delete();
@@ -87,6 +97,37 @@ vtkAbstractShadowMapPass* vtkPVShadowRenderView::GetShadowPass()
 int vtkPVShadowRenderView::GetNumberOfShadowedLights()
 {
   return this->GetShadowPass()->GetNumberOfShadowedLights();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::ReleasePass(vtkAbstractShadowMapPass* pass)
+{
+  vtkRenderWindow* window = this->GetRenderWindow();
+  if (window && !window->GetNeverRendered())
+  {
+    window->MakeCurrent();
+    pass->ReleaseGraphicsResources(window);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::WarnIfParallel()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!this->ParallelWarned && controller && controller->GetNumberOfProcesses() > 1)
+  {
+    vtkWarningMacro(<< "Render View (Shadows) runs on " << controller->GetNumberOfProcesses()
+                    << " ranks: each rank's shadow maps hold only its own piece of the data, "
+                       "so a caster on one rank does not shadow receivers on another.");
+    this->ParallelWarned = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::Render(bool interactive, bool skip_rendering)
+{
+  this->WarnIfParallel();
+  this->Superclass::Render(interactive, skip_rendering);
 }
 
 //------------------------------------------------------------------------------
@@ -146,6 +187,9 @@ void vtkPVShadowRenderView::SetShadowStorage(int storage)
     Clamped(this, "ShadowStorage", storage, static_cast<int>(DEPTH), static_cast<int>(MOMENTS));
   if (storage != this->ShadowStorage)
   {
+    // The pass left behind frees its maps now: a later release of the window
+    // reaches only the pass in use.
+    this->ReleasePass(this->GetShadowPass());
     this->ShadowStorage = storage;
     this->UsePass();
     this->Modified();

@@ -15,6 +15,9 @@
  * (ShadowStorage: depth with PCF, two depths without bias, or filterable
  * moments). Lights: the light kit's key light casts shadows (KeyLightShadows),
  * its fill, back and head lights do not; every light added to the view casts.
+ *
+ * Not yet correct on several ranks (pvbatch, pvserver under MPI): each rank fits
+ * and fills its maps from its own piece of the data; the view warns once.
  */
 #ifndef vtkPVShadowRenderView_h
 #define vtkPVShadowRenderView_h
@@ -103,6 +106,9 @@ protected:
   vtkPVShadowRenderView();
   ~vtkPVShadowRenderView() override;
 
+  /** Warns once when it runs on several ranks (not yet correct in parallel). */
+  void Render(bool interactive, bool skip_rendering) override;
+
 private:
   vtkPVShadowRenderView(const vtkPVShadowRenderView&) = delete;
   void operator=(const vtkPVShadowRenderView&) = delete;
@@ -111,12 +117,16 @@ private:
   void UsePass();
   /** Marks which of the light kit's lights cast shadows. */
   void MarkLightKitLights();
+  /** Frees a pass's GL objects, if the window ever rendered. */
+  void ReleasePass(vtkAbstractShadowMapPass* pass);
+  void WarnIfParallel();
 
   int ShadowViews = UNIFORM;
   int ShadowStorage = DEPTH;
   int ShadowMapResolution = 2048;
   int ShadowAnalysisView = 0;
   bool KeyLightShadows = true;
+  bool ParallelWarned = false;
 
   vtkDepthShadowMapPass* DepthPass;
   vtkDualDepthShadowMapPass* DualDepthPass;
