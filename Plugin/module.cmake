@@ -38,6 +38,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Passes/vtkDepthShadowMapPass
     Plugin/Passes/vtkDualDepthShadowMapPass
     Plugin/Passes/vtkVarianceShadowMapPass
+    Plugin/Passes/vtkShadowMapExchange
     Plugin/Passes/vtkWarpedShadowMapPass
     Plugin/Representations/vtkDepthShadowMapRepresentation
     Plugin/Representations/vtkDualDepthShadowMapRepresentation

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The ParaView half of the tests (scripts/test.sh runs it after the VTK half):
 # builds the ShadowMaps plugin (ParaView/) against ParaView's own VTK and runs
-# its tests in pvpython. Debian's python3-paraview, which pvpython and the
-# plugin's wrapping need, conflicts with python3-vtk9 (and so with libvtk9-dev):
+# its tests in pvpython and, on three MPI ranks, pvbatch. Debian's
+# python3-paraview, which pvpython, pvbatch and the plugin's wrapping need,
+# conflicts with python3-vtk9 (and so with libvtk9-dev):
 # this script swaps them in and, whatever happens, back out, leaving the
 # packages the README's main command needs.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -34,8 +35,12 @@ apt_install "${PARAVIEW_PACKAGES[@]}" >/dev/null
 cmake -S "$ROOT/ParaView" -B "$PARAVIEW_BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DPython3_EXECUTABLE=/usr/bin/python3
 cmake --build "$PARAVIEW_BUILD_DIR"
-with_display pvpython "$ROOT/Testing/ParaView/test_shadow_view.py" "$PLUGIN" \
-  "$PARAVIEW_BUILD_DIR/Testing/Output"
+OUTPUT="$PARAVIEW_BUILD_DIR/Testing/Output"
+with_display pvpython "$ROOT/Testing/ParaView/test_shadow_view.py" "$PLUGIN" "$OUTPUT"
+# In parallel: the same scene on one rank, then split over three (oversubscribed).
+with_display pvbatch "$ROOT/Testing/ParaView/test_parallel.py" "$PLUGIN" "$OUTPUT" serial
+with_display mpiexec --allow-run-as-root --oversubscribe -np 3 \
+  pvbatch "$ROOT/Testing/ParaView/test_parallel.py" "$PLUGIN" "$OUTPUT" parallel
 if [ "${SHADOWMAPS_GUI_SCREENSHOT:-0}" = 1 ]; then
   bash "$ROOT/scripts/paraview_gui_screenshot.sh"
 fi

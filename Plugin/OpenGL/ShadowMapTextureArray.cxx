@@ -343,6 +343,51 @@ void TextureArray::GenerateMipmaps()
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
 }
 
+bool TextureArray::ReadDepths(std::vector<float>& depths, std::string& error) const
+{
+  if (this->Texture == 0 || !IsDepth(this->Format))
+  {
+    error = "no depth maps to read";
+    return false;
+  }
+  depths.resize(static_cast<std::size_t>(this->Resolution) * this->Resolution * this->Layers);
+  ScopedArrayBinding keep;
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  ClearGLErrors();
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+  const GLenum code = glGetError();
+  if (code != GL_NO_ERROR)
+  {
+    error = "cannot read the shadow maps back (" + GLErrorText(code) + ")";
+    return false;
+  }
+  return true;
+}
+
+bool TextureArray::WriteDepths(const std::vector<float>& depths, std::string& error)
+{
+  const std::size_t texels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
+  if (this->Texture == 0 || !IsDepth(this->Format) || depths.size() != texels * this->Layers)
+  {
+    error = "no depth maps of that size to write";
+    return false;
+  }
+  ScopedArrayBinding keep;
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  ClearGLErrors();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, this->Resolution, this->Resolution,
+    this->Layers, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+  const GLenum code = glGetError();
+  if (code != GL_NO_ERROR)
+  {
+    error = "cannot write the combined shadow maps (" + GLErrorText(code) + ")";
+    return false;
+  }
+  return true;
+}
+
 void TextureArray::BindToUnit(vtkOpenGLState* state, int unit) const
 {
   state->vtkglActiveTexture(GL_TEXTURE0 + unit);

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 class vtkOpenGLState;
 
@@ -139,6 +140,11 @@ public:
 
   /// Rebuilds the mipmaps of a mipmapped value array from level 0.
   void GenerateMipmaps();
+
+  /// Depth formats: every layer's depths, layer after layer, row after row
+  /// (ReadDepths), and back (WriteDepths, the same size); false on GL failure.
+  bool ReadDepths(std::vector<float>& depths, std::string& error) const;
+  bool WriteDepths(const std::vector<float>& depths, std::string& error);
 
   TexelFormat GetFormat() const { return this->Format; }
   unsigned int GetTextureName() const { return this->Texture; }

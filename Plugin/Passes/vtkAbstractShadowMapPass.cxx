@@ -32,6 +32,7 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkShadowMapExchange.h"
 #include "vtkShadowMapRepresentation.h"
 #include "vtkShadowMapViews.h"
 #include "vtkSmartPointer.h"
@@ -323,6 +324,7 @@ struct vtkAbstractShadowMapPass::Internals
   // Per layer, what it was last rendered for (see LayerSignature); all of them
   // are forgotten when what every layer depends on changes (LayersKey).
   std::vector<std::vector<vtkMTimeType>> LayerSignatures;
+  bool WarnedUncombined = false;
   std::vector<vtkMTimeType> LayersKey;
   /// The lights and views the maps were rendered for (reused with the maps).
   std::vector<shadowmaps::ShadowLight> RenderedLights;
@@ -374,7 +376,11 @@ vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
 vtkAbstractShadowMapPass::~vtkAbstractShadowMapPass()
 {
   this->SetDelegatePass(nullptr);
+  this->SetExchange(nullptr);
 }
+
+//------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkAbstractShadowMapPass, Exchange, vtkShadowMapExchange);
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::SetDelegatePass(vtkRenderPass* delegate)
@@ -616,6 +622,13 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
     }
   }
 
+  const Aabb given = Aabb::FromBounds(this->SceneBounds);
+  if (this->UseSceneBounds && !given.IsEmpty() && std::isfinite(given.Diagonal()))
+  {
+    // The same on every process of a parallel renderer, whatever piece it holds.
+    frame.SceneBounds = given;
+    frame.PropBounds.assign(1, given);
+  }
   vtkCamera* camera = renderer->GetActiveCamera();
   frame.CameraView = ToGlm(camera->GetViewTransformMatrix());
   frame.CameraProjection =
@@ -659,7 +672,9 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
-  if (r.MapsValid && signature == r.Signature)
+  const bool stale = !(r.MapsValid && signature == r.Signature);
+  // Every process asks every frame: another one's casters may have moved.
+  if (!(this->Exchange ? this->Exchange->AnyOf(stale) : stale))
   {
     // CollectLights rebuilt the lights without views; the maps hold these.
     r.Lights = r.RenderedLights;
@@ -937,6 +952,12 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
   this->ForgetLayersIfStale();
+  if (this->Exchange)
+  {
+    // The layers hold the combination of every process's casters, not this
+    // one's: all of them are rendered again and combined again.
+    r.LayerSignatures.assign(r.LayerSignatures.size(), {});
+  }
   int draws = 0;
   std::vector<shadowmaps::RenderedLayer> rendered;
   bool ok = true;
@@ -997,12 +1018,44 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   {
     this->NumberOfCasterDraws = draws;
   }
+  ok = ok && (!this->Exchange || this->CombineAcrossProcesses());
   if (!ok)
   {
     r.LayerSignatures.clear();
     return false;
   }
   return rendered.empty() || this->PostProcessShadowMaps(renderer, rendered);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::CombineAcrossProcesses()
+{
+  Internals& r = *this->Internal;
+  // Every process has the same storage, so all of them skip or none does.
+  if (!shadowmaps::IsDepth(r.Storage.Format) ||
+    r.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None)
+  {
+    if (!r.WarnedUncombined)
+    {
+      vtkWarningMacro(<< "Only depth maps are combined across processes; these maps hold "
+                         "each process's own casters.");
+      r.WarnedUncombined = true;
+    }
+    return true;
+  }
+  std::vector<float> depths;
+  const bool read = r.Maps.ReadDepths(depths, r.LastGLError);
+  // Every process takes part, so that none waits for one that failed.
+  if (!read)
+  {
+    std::fill(depths.begin(), depths.end(), 1.0f);
+  }
+  const bool combined = this->Exchange->MinimumOf(depths);
+  if (!combined && r.LastGLError.empty())
+  {
+    r.LastGLError = "the shadow maps could not be combined across processes";
+  }
+  return read && combined && r.Maps.WriteDepths(depths, r.LastGLError);
 }
 
 //------------------------------------------------------------------------------
@@ -1347,6 +1400,11 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "Exchange: " << this->Exchange << "\n";
+  os << indent << "UseSceneBounds: " << this->UseSceneBounds << "\n";
+  os << indent << "SceneBounds: " << this->SceneBounds[0] << " " << this->SceneBounds[1] << " "
+     << this->SceneBounds[2] << " " << this->SceneBounds[3] << " " << this->SceneBounds[4] << " "
+     << this->SceneBounds[5] << "\n";
   os << indent << "Views:\n";
   this->Internal->Views->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Representation:\n";

@@ -68,6 +68,7 @@ class vtkInformationIntegerKey;
 class vtkOpenGLRenderer;
 class vtkProp;
 class vtkRenderPass;
+class vtkShadowMapExchange;
 class vtkShadowMapRepresentation;
 class vtkShadowMapViews;
 namespace shadowmaps
@@ -122,6 +123,30 @@ public:
    */
   void SetRepresentation(vtkShadowMapRepresentation* representation);
   vtkShadowMapRepresentation* GetRepresentation();
+  ///@}
+
+  ///@{
+  /**
+   * Parallel rendering: the collectives with which the processes that each
+   * render a piece of the data combine their depth maps (vtkShadowMapExchange).
+   * nullptr (default): one process. Moment and two-surface maps are not
+   * combined (a warning says so).
+   */
+  void SetExchange(vtkShadowMapExchange* exchange);
+  vtkGetObjectMacro(Exchange, vtkShadowMapExchange);
+  ///@}
+
+  ///@{
+  /**
+   * The bounds the views are fitted to, instead of the visible props': the
+   * global bounds of a parallel renderer, so that every process fits the same
+   * views. Used while UseSceneBounds is on (default off).
+   */
+  vtkSetVector6Macro(SceneBounds, double);
+  vtkGetVector6Macro(SceneBounds, double);
+  vtkSetMacro(UseSceneBounds, bool);
+  vtkGetMacro(UseSceneBounds, bool);
+  vtkBooleanMacro(UseSceneBounds, bool);
   ///@}
 
   ///@{
@@ -285,6 +310,9 @@ protected:
   ~vtkAbstractShadowMapPass() override;
 
   vtkRenderPass* DelegatePass = nullptr;
+  vtkShadowMapExchange* Exchange = nullptr;
+  double SceneBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
+  bool UseSceneBounds = false;
   int Resolution = 2048;
   int CasterFaces = BOTH_FACES;
   double NormalOffset = 1.0;
@@ -327,6 +355,7 @@ private:
     std::string& geometryShader, std::string& fragmentShader, bool receives);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void ForgetLayersIfStale();
+  bool CombineAcrossProcesses();
   bool PostProcessShadowMaps(
     vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered);
   int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,

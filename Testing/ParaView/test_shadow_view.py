@@ -12,95 +12,15 @@ import os
 import subprocess
 import sys
 
-from paraview.simple import (AddLight, CreateView, Delete, LoadPlugin, Plane, Render,
-                             SaveScreenshot, Show, Sphere)
-from vtkmodules.vtkIOImage import vtkPNGReader
+from paraview.simple import Delete, LoadPlugin
 
-PLUGIN, OUT = sys.argv[1], sys.argv[2]
-HERE = os.path.dirname(os.path.abspath(__file__))
-BASELINES = os.path.join(HERE, "..", "Data", "Baseline")
-SIZE = [400, 300]
-SUN = [2.0, 1.0, 6.0]             # from the focal point (origin) toward the sun
-SPHERE_CENTER = [0.0, 0.0, 1.5]
-# Where the sun's ray through the sphere's centre meets the ground, and a point
-# no shadow reaches.
-SHADOWED = [SPHERE_CENTER[i] - SUN[i] * SPHERE_CENTER[2] / SUN[2] for i in range(3)]
-LIT = [3.0, 3.0, 0.0]
-failures = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import shadow_view_testing as testing  # noqa: E402
+from shadow_view_testing import (LIT, SHADOWED, check, compare_with_baseline,  # noqa: E402
+                                 failures, luminance_at, make_view, render, shadow_probes, show_scene)
 
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
-
-
-def make_view(kind, **properties):
-    view = CreateView(kind)
-    view.ViewSize = SIZE
-    view.OrientationAxesVisibility = 0
-    view.Background = [0.32, 0.34, 0.43]
-    view.CameraPosition = [0, -12, 7]
-    view.CameraFocalPoint = [0, 0, 0.5]
-    view.CameraViewUp = [0, 0, 1]
-    for name, value in properties.items():
-        setattr(view, name, value)
-    return view
-
-
-def show_scene(view, sun=True):
-    Show(Plane(Origin=[-5, -5, 0], Point1=[5, -5, 0], Point2=[-5, 5, 0]), view)
-    Show(Sphere(Center=SPHERE_CENTER, Radius=1.0, ThetaResolution=48, PhiResolution=48), view)
-    if sun:
-        view.UseLight = 0
-        light = AddLight(view=view)
-        light.Coords = "Scene"
-        light.Type = "Directional"
-        light.Position = SUN
-        light.FocalPoint = [0, 0, 0]
-
-
-def luminance_at(view, png, world):
-    renderer = view.GetRenderer()
-    renderer.SetWorldPoint(world[0], world[1], world[2], 1.0)
-    renderer.WorldToDisplay()
-    x, y, _ = renderer.GetDisplayPoint()
-    reader = vtkPNGReader()
-    reader.SetFileName(png)
-    reader.Update()
-    image = reader.GetOutput()
-    pixel = image.GetScalarComponentAsDouble  # (x, y from the bottom, z, component)
-    rgb = [pixel(int(round(x)), int(round(y)), 0, c) for c in range(3)]
-    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
-
-
-def render(view, name):
-    Render(view)
-    png = os.path.join(OUT, name + ".png")
-    SaveScreenshot(png, view, ImageResolution=SIZE)
-    return png
-
-
-def compare_with_baseline(png, name):
-    baseline = os.path.join(BASELINES, name + ".png")
-    if os.environ.get("SHADOWMAPS_UPDATE_BASELINES") == "1":
-        subprocess.run(["cp", png, baseline], check=True)
-        print("baseline written: " + baseline + " (look at it, then rerun)")
-        return
-    # As the C++ image tests: any pixel off by more than 1.5/255 fails.
-    result = subprocess.run(["idiff", "-fail", "0.0059", "-warn", "0.0059", baseline, png],
-                            capture_output=True, text=True)
-    check(result.returncode == 0, name + " equals its baseline " + baseline +
-          ("" if result.returncode == 0 else ":\n" + result.stdout))
-
-
-def shadow_probes(view, png, what):
-    dark = luminance_at(view, png, SHADOWED)
-    lit = luminance_at(view, png, LIT)
-    check(dark < 0.45 * lit, f"{what}: the shadow is dark ({dark:.0f} against lit {lit:.0f})")
-    check(lit > 150, f"{what}: the lit ground is lit ({lit:.0f})")
-
-
+PLUGIN = sys.argv[1]
+OUT = testing.OUT = sys.argv[2]
 os.makedirs(OUT, exist_ok=True)
 LoadPlugin(PLUGIN, remote=False, ns=globals())
 

@@ -12,6 +12,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
+#include "vtkPVShadowMapExchange.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -45,6 +46,7 @@ vtkPVShadowRenderView::vtkPVShadowRenderView()
   , WarpedViews(vtkWarpedShadowMapViews::New())
   , CascadedViews(vtkCascadedShadowMapViews::New())
   , ScenePass(vtkPVDefaultPass::New())
+  , Exchange(vtkPVShadowMapExchange::New())
 {
   for (vtkAbstractShadowMapPass* pass : { static_cast<vtkAbstractShadowMapPass*>(this->DepthPass),
          static_cast<vtkAbstractShadowMapPass*>(this->DualDepthPass),
@@ -54,6 +56,8 @@ vtkPVShadowRenderView::vtkPVShadowRenderView()
     // render the scene, as in ParaView's plain render view.
     pass->SetDelegatePass(this->ScenePass);
     pass->SetResolution(this->ShadowMapResolution);
+    // One rank keeps the per-layer re-rendering the exchange gives up.
+    pass->SetExchange(IsParallel() ? this->Exchange : nullptr);
   }
   this->MarkLightKitLights();
   this->UsePass();
@@ -77,6 +81,7 @@ vtkPVShadowRenderView::~vtkPVShadowRenderView()
   this->WarpedViews->Delete();
   this->CascadedViews->Delete();
   this->ScenePass->Delete();
+  this->Exchange->Delete();
 }
 
 //------------------------------------------------------------------------------
@@ -111,22 +116,35 @@ void vtkPVShadowRenderView::ReleasePass(vtkAbstractShadowMapPass* pass)
 }
 
 //------------------------------------------------------------------------------
-void vtkPVShadowRenderView::WarnIfParallel()
+bool vtkPVShadowRenderView::IsParallel()
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (!this->ParallelWarned && controller && controller->GetNumberOfProcesses() > 1)
+  return controller && controller->GetNumberOfProcesses() > 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::Update()
+{
+  this->Superclass::Update();
+  if (IsParallel())
   {
-    vtkWarningMacro(<< "Render View (Shadows) runs on " << controller->GetNumberOfProcesses()
-                    << " ranks: each rank's shadow maps hold only its own piece of the data, "
-                       "so a caster on one rank does not shadow receivers on another.");
-    this->ParallelWarned = true;
+    // IceT skips the render of a rank whose geometry is empty; the maps'
+    // combination waits for every rank.
+    this->RenderEmptyImages = true;
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkPVShadowRenderView::Render(bool interactive, bool skip_rendering)
 {
-  this->WarnIfParallel();
+  vtkAbstractShadowMapPass* pass = this->GetShadowPass();
+  if (IsParallel() && this->GeometryBounds.IsValid())
+  {
+    double bounds[6];
+    this->GeometryBounds.GetBounds(bounds);
+    pass->SetSceneBounds(bounds);
+    pass->UseSceneBoundsOn();
+  }
   this->Superclass::Render(interactive, skip_rendering);
 }
 

@@ -16,8 +16,12 @@
  * moments). Lights: the light kit's key light casts shadows (KeyLightShadows),
  * its fill, back and head lights do not; every light added to the view casts.
  *
- * Not yet correct on several ranks (pvbatch, pvserver under MPI): each rank fits
- * and fills its maps from its own piece of the data; the view warns once.
+ * On several ranks (pvbatch, pvserver under MPI) every rank fits its views to
+ * the view's global geometry bounds, renders its own casters into its maps, and
+ * the depth maps are combined, nearest depth over the ranks
+ * (vtkPVShadowMapExchange), so a caster on one rank shadows receivers on
+ * another; ranks without geometry still render and take part. Dual-depth and
+ * moment maps are not combined (the pass warns).
  */
 #ifndef vtkPVShadowRenderView_h
 #define vtkPVShadowRenderView_h
@@ -30,6 +34,7 @@ class vtkCascadedShadowMapViews;
 class vtkDepthShadowMapPass;
 class vtkDualDepthShadowMapPass;
 class vtkPVDefaultPass;
+class vtkPVShadowMapExchange;
 class vtkVarianceShadowMapPass;
 class vtkWarpedShadowMapViews;
 
@@ -106,7 +111,9 @@ protected:
   vtkPVShadowRenderView();
   ~vtkPVShadowRenderView() override;
 
-  /** Warns once when it runs on several ranks (not yet correct in parallel). */
+  /** Every rank renders, even one with no geometry: the maps' combination needs all. */
+  void Update() override;
+  /** On several ranks, fits the pass's views to the global geometry bounds. */
   void Render(bool interactive, bool skip_rendering) override;
 
 private:
@@ -119,14 +126,14 @@ private:
   void MarkLightKitLights();
   /** Frees a pass's GL objects, if the window ever rendered. */
   void ReleasePass(vtkAbstractShadowMapPass* pass);
-  void WarnIfParallel();
+  /** More than one rank renders this view's data. */
+  static bool IsParallel();
 
   int ShadowViews = UNIFORM;
   int ShadowStorage = DEPTH;
   int ShadowMapResolution = 2048;
   int ShadowAnalysisView = 0;
   bool KeyLightShadows = true;
-  bool ParallelWarned = false;
 
   vtkDepthShadowMapPass* DepthPass;
   vtkDualDepthShadowMapPass* DualDepthPass;
@@ -134,6 +141,7 @@ private:
   vtkWarpedShadowMapViews* WarpedViews;
   vtkCascadedShadowMapViews* CascadedViews;
   vtkPVDefaultPass* ScenePass;
+  vtkPVShadowMapExchange* Exchange;
 };
 
 #endif

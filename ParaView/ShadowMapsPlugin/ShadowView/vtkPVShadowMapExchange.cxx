@@ -1,0 +1,37 @@
+#include "vtkPVShadowMapExchange.h"
+
+#include "vtkCommunicator.h"
+#include "vtkMultiProcessController.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkPVShadowMapExchange);
+
+//------------------------------------------------------------------------------
+bool vtkPVShadowMapExchange::AnyOf(bool local)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() < 2)
+  {
+    return local;
+  }
+  int mine = local ? 1 : 0;
+  int any = 0;
+  controller->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
+  return any != 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVShadowMapExchange::MinimumOf(std::vector<float>& values)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() < 2 || values.empty())
+  {
+    return true;
+  }
+  std::vector<float> smallest(values.size());
+  const int ok = controller->AllReduce(
+    values.data(), smallest.data(), static_cast<vtkIdType>(values.size()), vtkCommunicator::MIN_OP);
+  this->BytesReduced += static_cast<double>(values.size() * sizeof(float));
+  values.swap(smallest);
+  return ok != 0;
+}

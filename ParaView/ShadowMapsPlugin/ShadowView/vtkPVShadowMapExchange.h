@@ -1,0 +1,37 @@
+/**
+ * @class   vtkPVShadowMapExchange
+ * @brief   The shadow passes' collectives over ParaView's processes.
+ *
+ * vtkShadowMapExchange over vtkMultiProcessController's global controller (the
+ * MPI ranks of pvbatch or pvserver): AnyOf and MinimumOf are all-reductions.
+ */
+#ifndef vtkPVShadowMapExchange_h
+#define vtkPVShadowMapExchange_h
+
+#include "vtkParaViewShadowViewModule.h" // For export macro
+#include "vtkShadowMapExchange.h"
+
+class VTKPARAVIEWSHADOWVIEW_EXPORT vtkPVShadowMapExchange : public vtkShadowMapExchange
+{
+public:
+  static vtkPVShadowMapExchange* New();
+  vtkTypeMacro(vtkPVShadowMapExchange, vtkShadowMapExchange);
+
+  bool AnyOf(bool local) override;
+  bool MinimumOf(std::vector<float>& values) override;
+
+  /** Bytes each process sent to MinimumOf over its life (the maps' reduction). */
+  vtkGetMacro(BytesReduced, double);
+
+protected:
+  vtkPVShadowMapExchange() = default;
+  ~vtkPVShadowMapExchange() override = default;
+
+private:
+  vtkPVShadowMapExchange(const vtkPVShadowMapExchange&) = delete;
+  void operator=(const vtkPVShadowMapExchange&) = delete;
+
+  double BytesReduced = 0.0;
+};
+
+#endif

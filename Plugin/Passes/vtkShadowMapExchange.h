@@ -1,0 +1,50 @@
+/**
+ * @class   vtkShadowMapExchange
+ * @brief   What a shadow pass needs from a parallel renderer: two collectives.
+ *
+ * Where each process renders its own piece of the data (ParaView's ranks under
+ * MPI), a caster on one process must shadow receivers on another. A pass given
+ * an exchange (vtkAbstractShadowMapPass::SetExchange) asks it, every frame on
+ * every process, whether any process's maps must be re-rendered; if so, every
+ * process re-renders all its layers from its own casters and the pass combines
+ * the depth layers into the nearest depth over all processes. The views must
+ * be the same on every process: give the pass the global bounds
+ * (SetSceneBounds). The module knows no communication library; a subclass
+ * wraps one (the ParaView plugin's vtkPVShadowMapExchange wraps
+ * vtkMultiProcessController).
+ */
+#ifndef vtkShadowMapExchange_h
+#define vtkShadowMapExchange_h
+
+#include "vtkObject.h"
+#include "vtkRenderingShadowMapsModule.h" // For export macro
+
+#include <vector> // For MinimumOf
+
+class VTKRENDERINGSHADOWMAPS_EXPORT vtkShadowMapExchange : public vtkObject
+{
+public:
+  vtkTypeMacro(vtkShadowMapExchange, vtkObject);
+
+  /**
+   * Called on every process in the same order: true on all of them if `local`
+   * is true on any.
+   */
+  virtual bool AnyOf(bool local) = 0;
+
+  /**
+   * Called on every process with arrays of the same size: each element becomes
+   * the smallest of that element over the processes. False on failure.
+   */
+  virtual bool MinimumOf(std::vector<float>& values) = 0;
+
+protected:
+  vtkShadowMapExchange() = default;
+  ~vtkShadowMapExchange() override = default;
+
+private:
+  vtkShadowMapExchange(const vtkShadowMapExchange&) = delete;
+  void operator=(const vtkShadowMapExchange&) = delete;
+};
+
+#endif

@@ -1,0 +1,245 @@
+// Image tests: passes that each render a piece of the scene combine their depth
+// maps through a vtkShadowMapExchange (Plugin/Passes), as ParaView's ranks do.
+// Two "processes" are two test scenes in this process: A holds the sphere, B the
+// ground. Their exchanges stand for the collectives: A's MinimumOf keeps what A
+// sends, B's combines with it, as if both had called it together.
+#include "ShadowTestUtilities.h"
+#include "vtkDepthShadowMapPass.h"
+#include "vtkShadowMapExchange.h"
+#include "vtkVarianceShadowMapPass.h"
+
+#include "vtkActor.h"
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace
+{
+using namespace shadowtest;
+
+// What the processes have sent; each process's exchange is one of its ends.
+struct Wire
+{
+  bool AnyChanged = false;
+  std::vector<float> Depths;
+};
+
+class TestExchange : public vtkShadowMapExchange
+{
+public:
+  static TestExchange* New();
+  vtkTypeMacro(TestExchange, vtkShadowMapExchange);
+
+  Wire* Shared = nullptr;
+  bool Sends = true; // A sends what it has; B combines with what A sent
+  int Calls = 0;
+
+  bool AnyOf(bool local) override
+  {
+    ++this->Calls;
+    if (this->Sends)
+    {
+      this->Shared->AnyChanged = local;
+      return local;
+    }
+    return local || this->Shared->AnyChanged;
+  }
+
+  bool MinimumOf(std::vector<float>& values) override
+  {
+    if (this->Sends)
+    {
+      this->Shared->Depths = values;
+      return true;
+    }
+    if (this->Shared->Depths.size() != values.size())
+    {
+      return false;
+    }
+    std::transform(values.begin(), values.end(), this->Shared->Depths.begin(), values.begin(),
+      [](float mine, float theirs) { return std::min(mine, theirs); });
+    return true;
+  }
+};
+vtkStandardNewMacro(TestExchange);
+
+const glm::dvec3 SunDirection(-0.3, 0.2, -1.0);
+
+// Both processes fit their views to the whole scene's bounds, as ParaView's
+// synchronised geometry bounds give them.
+void ShareBounds(vtkAbstractShadowMapPass* pass, const TestScene& whole)
+{
+  double bounds[6];
+  whole.Renderer->ComputeVisiblePropBounds(bounds);
+  pass->SetSceneBounds(bounds);
+  pass->UseSceneBoundsOn();
+}
+
+struct TwoProcesses
+{
+  TestScene Whole;
+  TestScene A; // the sphere only
+  TestScene B; // the ground only
+  Wire Shared;
+  vtkNew<TestExchange> ExchangeA;
+  vtkNew<TestExchange> ExchangeB;
+
+  TwoProcesses()
+  {
+    for (TestScene* scene : { &Whole, &A, &B })
+    {
+      scene->SetSun(SunDirection);
+      scene->Box->SetVisibility(false);
+    }
+    A.Ground->SetVisibility(false);
+    B.Sphere->SetVisibility(false);
+    ExchangeA->Shared = &Shared;
+    ExchangeB->Shared = &Shared;
+    ExchangeB->Sends = false;
+  }
+
+  void Use(vtkAbstractShadowMapPass* a, vtkAbstractShadowMapPass* b, bool exchange)
+  {
+    ShareBounds(a, Whole);
+    ShareBounds(b, Whole);
+    a->SetExchange(exchange ? ExchangeA.Get() : nullptr);
+    b->SetExchange(exchange ? ExchangeB.Get() : nullptr);
+    A.Renderer->SetPass(a);
+    B.Renderer->SetPass(b);
+  }
+
+  // A renders first: its MinimumOf leaves what it sent for B's.
+  vtkSmartPointer<vtkImageData> RenderBoth()
+  {
+    A.Window->Render();
+    B.Window->Render();
+    return CaptureAsRendered(B.Window);
+  }
+
+  void Release()
+  {
+    for (TestScene* scene : { &A, &B })
+    {
+      vtkRenderPass* pass = scene->Renderer->GetPass();
+      scene->Renderer->SetPass(nullptr);
+      pass->ReleaseGraphicsResources(scene->Window);
+    }
+  }
+};
+
+TEST(ShadowExchange, ACasterOnAnotherProcessShadowsThisOnesGround)
+{
+  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(SunDirection);
+  const glm::dvec3 lit(-5.0, -4.0, 0.0);
+  for (const bool exchange : { false, true })
+  {
+    TwoProcesses processes;
+    vtkNew<vtkDepthShadowMapPass> a;
+    vtkNew<vtkDepthShadowMapPass> b;
+    processes.Use(a, b, exchange);
+    vtkSmartPointer<vtkImageData> image = processes.RenderBoth();
+    const double dark = LuminanceAt(processes.B.Renderer, image, shadowed);
+    const double bright = LuminanceAt(processes.B.Renderer, image, lit);
+    EXPECT_GT(bright, 150.0);
+    if (exchange)
+    {
+      EXPECT_LT(dark, 0.45 * bright) << "the sphere lives on the other process";
+      EXPECT_GE(processes.ExchangeB->Calls, 1);
+    }
+    else
+    {
+      EXPECT_GT(dark, 0.9 * bright) << "without the exchange, B's maps hold no caster";
+    }
+    processes.Release();
+  }
+}
+
+// The combined maps equal the maps of the whole scene: B's ground shades as the
+// whole scene's ground does wherever the whole scene's sphere does not hide it.
+TEST(ShadowExchange, CombinedMapsShadeLikeTheWholeScenesMaps)
+{
+  TwoProcesses processes;
+  vtkNew<vtkDepthShadowMapPass> a;
+  vtkNew<vtkDepthShadowMapPass> b;
+  processes.Use(a, b, true);
+  vtkSmartPointer<vtkImageData> combined = processes.RenderBoth();
+
+  TestScene& whole = processes.Whole;
+  vtkSmartPointer<vtkImageData> withSphere = RenderAndCapture(whole.Window);
+  whole.Sphere->SetVisibility(false);
+  vtkSmartPointer<vtkImageData> withoutSphere = RenderAndCapture(whole.Window);
+  whole.Sphere->SetVisibility(true);
+  vtkNew<vtkDepthShadowMapPass> wholePass;
+  ShareBounds(wholePass, whole);
+  whole.Renderer->SetPass(wholePass);
+  vtkSmartPointer<vtkImageData> reference = RenderAndCapture(whole.Window);
+
+  int compared = 0;
+  int shadowed = 0;
+  int differing = 0;
+  for (double x = -8.0; x <= 8.0; x += 0.5)
+  {
+    for (double y = -8.0; y <= 8.0; y += 0.5)
+    {
+      const glm::dvec3 p(x, y, 0.0);
+      if (LuminanceAt(whole.Renderer, withSphere, p) != LuminanceAt(whole.Renderer, withoutSphere, p))
+      {
+        continue; // the sphere hides the ground there
+      }
+      const double expected = LuminanceAt(whole.Renderer, reference, p);
+      ++compared;
+      shadowed += expected < 0.5 * LuminanceAt(whole.Renderer, withoutSphere, p);
+      differing += std::abs(LuminanceAt(processes.B.Renderer, combined, p) - expected) > 1.5;
+    }
+  }
+  EXPECT_GT(compared, 900);
+  EXPECT_GT(shadowed, 5) << "the comparison covers the shadow";
+  EXPECT_EQ(differing, 0);
+  whole.Renderer->SetPass(nullptr);
+  wholePass->ReleaseGraphicsResources(whole.Window);
+  processes.Release();
+}
+
+// A change on one process re-renders every process's maps: B's own scene did
+// not change, A's sphere moved, and B's shadow follows it.
+TEST(ShadowExchange, AChangeOnAnyProcessReRendersAll)
+{
+  TwoProcesses processes;
+  vtkNew<vtkDepthShadowMapPass> a;
+  vtkNew<vtkDepthShadowMapPass> b;
+  processes.Use(a, b, true);
+  processes.RenderBoth();
+  processes.RenderBoth();
+  processes.RenderBoth();
+  EXPECT_EQ(b->GetNumberOfRenderedLayers(), 0) << "nothing changed anywhere";
+  processes.A.Sphere->AddPosition(3.0, 0.0, 0.0);
+  vtkSmartPointer<vtkImageData> image = processes.RenderBoth();
+  EXPECT_GT(b->GetNumberOfRenderedLayers(), 0) << "A's change re-renders B's maps";
+  const glm::dvec3 moved = GroundShadowOfSphereCenter(SunDirection) + glm::dvec3(3.0, 0.0, 0.0);
+  const glm::dvec3 left = GroundShadowOfSphereCenter(SunDirection);
+  EXPECT_LT(LuminanceAt(processes.B.Renderer, image, moved), 0.45 * LuminanceAt(processes.B.Renderer, image, left))
+    << "the shadow moved with the sphere, and left its old place";
+  processes.Release();
+}
+
+// Moments are not combined: a warning says so, and each process keeps its own.
+TEST(ShadowExchange, MomentMapsAreNotCombinedAndSaySo)
+{
+  TwoProcesses processes;
+  vtkNew<vtkVarianceShadowMapPass> a;
+  vtkNew<vtkVarianceShadowMapPass> b;
+  processes.Use(a, b, true);
+  ErrorCounter warnings;
+  processes.RenderBoth();
+  processes.RenderBoth();
+  EXPECT_EQ(warnings.Warnings(), 2) << "once per pass: " << warnings.Text();
+  EXPECT_NE(warnings.Text().find("Only depth maps are combined"), std::string::npos);
+  processes.Release();
+}
+} // namespace
