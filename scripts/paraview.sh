@@ -39,7 +39,8 @@ OUTPUT="$PARAVIEW_BUILD_DIR/Testing/Output"
 with_display pvpython "$ROOT/Testing/ParaView/test_shadow_view.py" "$PLUGIN" "$OUTPUT"
 # In parallel: the same scene on one rank, then split over three (oversubscribed).
 with_display pvbatch "$ROOT/Testing/ParaView/test_parallel.py" "$PLUGIN" "$OUTPUT" serial
-with_display mpiexec --allow-run-as-root --oversubscribe -np 3 \
+# A rank that missed a collective would hang the others: time out instead.
+with_display timeout 600 mpiexec --allow-run-as-root --oversubscribe -np 3 \
   pvbatch "$ROOT/Testing/ParaView/test_parallel.py" "$PLUGIN" "$OUTPUT" parallel
 if [ "${SHADOWMAPS_GUI_SCREENSHOT:-0}" = 1 ]; then
   bash "$ROOT/scripts/paraview_gui_screenshot.sh"

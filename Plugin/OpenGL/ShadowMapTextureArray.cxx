@@ -343,19 +343,23 @@ void TextureArray::GenerateMipmaps()
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
 }
 
-bool TextureArray::ReadDepths(std::vector<float>& depths, std::string& error) const
+bool TextureArray::ReadDepths(
+  vtkOpenGLState* state, int layers, std::vector<float>& depths, std::string& error) const
 {
-  if (this->Texture == 0 || !IsDepth(this->Format))
+  if (this->Texture == 0 || !IsDepth(this->Format) || layers < 1 || layers > this->Layers)
   {
-    error = "no depth maps to read";
+    error = "no such depth maps to read";
     return false;
   }
-  depths.resize(static_cast<std::size_t>(this->Resolution) * this->Resolution * this->Layers);
+  const std::size_t layerTexels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
+  depths.resize(layerTexels * this->Layers);
   ScopedArrayBinding keep;
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   ClearGLErrors();
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  // GL reads a whole level: every allocated layer, then the used ones are kept.
   glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+  depths.resize(layerTexels * layers);
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
   {
@@ -365,10 +369,12 @@ bool TextureArray::ReadDepths(std::vector<float>& depths, std::string& error) co
   return true;
 }
 
-bool TextureArray::WriteDepths(const std::vector<float>& depths, std::string& error)
+bool TextureArray::WriteDepths(
+  vtkOpenGLState* state, int layers, const std::vector<float>& depths, std::string& error)
 {
-  const std::size_t texels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
-  if (this->Texture == 0 || !IsDepth(this->Format) || depths.size() != texels * this->Layers)
+  const std::size_t layerTexels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
+  if (this->Texture == 0 || !IsDepth(this->Format) || layers < 1 || layers > this->Layers ||
+    depths.size() != layerTexels * layers)
   {
     error = "no depth maps of that size to write";
     return false;
@@ -376,9 +382,9 @@ bool TextureArray::WriteDepths(const std::vector<float>& depths, std::string& er
   ScopedArrayBinding keep;
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   ClearGLErrors();
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, this->Resolution, this->Resolution,
-    this->Layers, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+  state->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, this->Resolution, this->Resolution, layers,
+    GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
   {

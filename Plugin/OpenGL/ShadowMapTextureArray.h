@@ -141,10 +141,12 @@ public:
   /// Rebuilds the mipmaps of a mipmapped value array from level 0.
   void GenerateMipmaps();
 
-  /// Depth formats: every layer's depths, layer after layer, row after row
-  /// (ReadDepths), and back (WriteDepths, the same size); false on GL failure.
-  bool ReadDepths(std::vector<float>& depths, std::string& error) const;
-  bool WriteDepths(const std::vector<float>& depths, std::string& error);
+  /// Depth formats: the depths of the first `layers` layers, layer after
+  /// layer, row after row (ReadDepths), and back (WriteDepths, the same size);
+  /// false on GL failure. Pixel alignment goes through `state`'s cache.
+  bool ReadDepths(vtkOpenGLState* state, int layers, std::vector<float>& depths, std::string& error) const;
+  bool WriteDepths(
+    vtkOpenGLState* state, int layers, const std::vector<float>& depths, std::string& error);
 
   TexelFormat GetFormat() const { return this->Format; }
   unsigned int GetTextureName() const { return this->Texture; }

@@ -15,6 +15,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
+#include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkInformationObjectBaseVectorKey.h"
@@ -460,6 +461,14 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   Internals& r = *this->Internal;
   this->NumberOfRenderedLayers = 0;
   r.Active = false;
+  if (renderer && renderer->GetSelector())
+  {
+    // A hardware selection pass: ids, not light. The maps stay as they are.
+    this->LeaveRenderPasses();
+    delegate->Render(s);
+    this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
+    return;
+  }
   r.Active = renderer && this->PrepareShadows(renderer, s);
   if (r.Active)
   {
@@ -684,24 +693,33 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   r.MapsValid = false;
 
   r.Frame.Resolution = this->UsableResolution();
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  // Each failure still answers the other processes' question (CombineAcrossProcesses).
   if (!this->FitViews())
   {
+    this->CombineAcrossProcesses(state, false);
     return false;
   }
   this->ChooseStorage();
   this->UpdateShaderKey(renderer);
   if (!r.ShaderCodeCompiles)
   {
+    this->CombineAcrossProcesses(state, false);
     this->ReportGLFailure("the shadow shader code does not compile (see the shader error above; a "
                           "representation's GLSL?)");
     return false;
   }
   std::string error;
   if (!r.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Storage.Format,
-        r.Storage.Mipmaps, error) ||
-    !this->RenderShadowMaps(renderer))
+        r.Storage.Mipmaps, error))
   {
-    this->ReportGLFailure(error.empty() ? r.LastGLError : error);
+    this->CombineAcrossProcesses(state, false);
+    this->ReportGLFailure(error);
+    return false;
+  }
+  if (!this->RenderShadowMaps(renderer))
+  {
+    this->ReportGLFailure(r.LastGLError);
     return false;
   }
   if (!this->NeedsSecondOutput())
@@ -952,7 +970,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
   this->ForgetLayersIfStale();
-  if (this->Exchange)
+  if (this->CombinesDepths())
   {
     // The layers hold the combination of every process's casters, not this
     // one's: all of them are rendered again and combined again.
@@ -1018,7 +1036,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   {
     this->NumberOfCasterDraws = draws;
   }
-  ok = ok && (!this->Exchange || this->CombineAcrossProcesses());
+  ok = this->CombineAcrossProcesses(state, ok);
   if (!ok)
   {
     r.LayerSignatures.clear();
@@ -1028,12 +1046,33 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::CombineAcrossProcesses()
+bool vtkAbstractShadowMapPass::CombinesDepths() const
+{
+  const Internals& r = *this->Internal;
+  return this->Exchange && shadowmaps::IsDepth(r.Storage.Format) &&
+    r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLState* state, bool ok)
 {
   Internals& r = *this->Internal;
-  // Every process has the same storage, so all of them skip or none does.
-  if (!shadowmaps::IsDepth(r.Storage.Format) ||
-    r.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None)
+  if (!this->Exchange)
+  {
+    return ok;
+  }
+  // Every process that is updating its maps calls the same collectives in the
+  // same order, whatever failed where: first whether any failed, then (all
+  // having chosen the same storage) the maps' shape, then the depths.
+  if (this->Exchange->AnyOf(!ok))
+  {
+    if (ok)
+    {
+      r.LastGLError = "another process could not render its shadow maps";
+    }
+    return false;
+  }
+  if (!this->CombinesDepths())
   {
     if (!r.WarnedUncombined)
     {
@@ -1044,18 +1083,26 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses()
     return true;
   }
   std::vector<float> depths;
-  const bool read = r.Maps.ReadDepths(depths, r.LastGLError);
-  // Every process takes part, so that none waits for one that failed.
-  if (!read)
+  const int layers = this->NumberOfShadowMapLayers;
+  const int resolution = r.Frame.Resolution;
+  const bool read = r.Maps.ReadDepths(state, layers, depths, r.LastGLError);
+  std::vector<float> shape = { float(resolution), -float(resolution), float(layers),
+    -float(layers), read ? 0.0f : -1.0f };
+  if (!this->Exchange->MinimumOf(shape) || shape[0] != -shape[1] || shape[2] != -shape[3] ||
+    shape[4] != 0.0f)
   {
-    std::fill(depths.begin(), depths.end(), 1.0f);
+    if (read)
+    {
+      r.LastGLError = "the processes' shadow maps differ in size, or one could not read its maps";
+    }
+    return false;
   }
-  const bool combined = this->Exchange->MinimumOf(depths);
-  if (!combined && r.LastGLError.empty())
+  if (!this->Exchange->MinimumOf(depths))
   {
     r.LastGLError = "the shadow maps could not be combined across processes";
+    return false;
   }
-  return read && combined && r.Maps.WriteDepths(depths, r.LastGLError);
+  return r.Maps.WriteDepths(state, layers, depths, r.LastGLError);
 }
 
 //------------------------------------------------------------------------------

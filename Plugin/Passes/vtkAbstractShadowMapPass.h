@@ -66,6 +66,7 @@
 
 class vtkInformationIntegerKey;
 class vtkOpenGLRenderer;
+class vtkOpenGLState;
 class vtkProp;
 class vtkRenderPass;
 class vtkShadowMapExchange;
@@ -355,7 +356,14 @@ private:
     std::string& geometryShader, std::string& fragmentShader, bool receives);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void ForgetLayersIfStale();
-  bool CombineAcrossProcesses();
+  /** With an exchange, depth maps without a second depth are combined. */
+  bool CombinesDepths() const;
+  /**
+   * With an exchange, on every process that updates its maps: agrees with the
+   * others on whether all rendered them (`ok` here), then combines the depth
+   * maps. Without one, returns `ok`.
+   */
+  bool CombineAcrossProcesses(vtkOpenGLState* state, bool ok);
   bool PostProcessShadowMaps(
     vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered);
   int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,

@@ -23,11 +23,18 @@ namespace
 {
 using namespace shadowtest;
 
-// What the processes have sent; each process's exchange is one of its ends.
+// What process A has sent, call by call; B answers each call with A's.
 struct Wire
 {
-  bool AnyChanged = false;
-  std::vector<float> Depths;
+  struct Call
+  {
+    bool Flag = false;
+    std::vector<float> Values;
+    bool IsAnyOf = true;
+  };
+  std::vector<Call> Sent;
+  std::size_t Received = 0;
+  bool Mismatch = false; // B called something A did not, or with another size
 };
 
 class TestExchange : public vtkShadowMapExchange
@@ -45,26 +52,42 @@ public:
     ++this->Calls;
     if (this->Sends)
     {
-      this->Shared->AnyChanged = local;
+      this->Shared->Sent.push_back({ local, {}, true });
       return local;
     }
-    return local || this->Shared->AnyChanged;
+    const Wire::Call* call = this->Next(true);
+    return local || (call && call->Flag);
   }
 
   bool MinimumOf(std::vector<float>& values) override
   {
+    ++this->Calls;
     if (this->Sends)
     {
-      this->Shared->Depths = values;
+      this->Shared->Sent.push_back({ false, values, false });
       return true;
     }
-    if (this->Shared->Depths.size() != values.size())
+    const Wire::Call* call = this->Next(false);
+    if (!call || call->Values.size() != values.size())
     {
+      this->Shared->Mismatch = true;
       return false;
     }
-    std::transform(values.begin(), values.end(), this->Shared->Depths.begin(), values.begin(),
+    std::transform(values.begin(), values.end(), call->Values.begin(), values.begin(),
       [](float mine, float theirs) { return std::min(mine, theirs); });
     return true;
+  }
+
+private:
+  const Wire::Call* Next(bool anyOf)
+  {
+    Wire& wire = *this->Shared;
+    if (wire.Received >= wire.Sent.size() || wire.Sent[wire.Received].IsAnyOf != anyOf)
+    {
+      wire.Mismatch = true;
+      return nullptr;
+    }
+    return &wire.Sent[wire.Received++];
   }
 };
 vtkStandardNewMacro(TestExchange);
@@ -114,11 +137,15 @@ struct TwoProcesses
     B.Renderer->SetPass(b);
   }
 
-  // A renders first: its MinimumOf leaves what it sent for B's.
+  // A renders first and leaves its calls for B's, which must be the same ones.
   vtkSmartPointer<vtkImageData> RenderBoth()
   {
+    Shared.Sent.clear();
+    Shared.Received = 0;
     A.Window->Render();
     B.Window->Render();
+    EXPECT_FALSE(Shared.Mismatch) << "the processes called different collectives";
+    EXPECT_EQ(Shared.Received, Shared.Sent.size()) << "B made fewer calls than A";
     return CaptureAsRendered(B.Window);
   }
 
@@ -150,7 +177,7 @@ TEST(ShadowExchange, ACasterOnAnotherProcessShadowsThisOnesGround)
     if (exchange)
     {
       EXPECT_LT(dark, 0.45 * bright) << "the sphere lives on the other process";
-      EXPECT_GE(processes.ExchangeB->Calls, 1);
+      EXPECT_EQ(processes.ExchangeB->Calls, 4) << "any changed, any failed, the maps' shape, the depths";
     }
     else
     {

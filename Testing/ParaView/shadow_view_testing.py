@@ -50,10 +50,14 @@ def add_sun(view):
 
 
 def show_scene(view, sun=True):
-    Show(Plane(Origin=[-5, -5, 0], Point1=[5, -5, 0], Point2=[-5, 5, 0]), view)
-    Show(Sphere(Center=SPHERE_CENTER, Radius=1.0, ThetaResolution=48, PhiResolution=48), view)
+    """Shows the ground and the sphere in `view` (and the sun); returns both sources."""
+    ground = Plane(Origin=[-5, -5, 0], Point1=[5, -5, 0], Point2=[-5, 5, 0])
+    sphere = Sphere(Center=SPHERE_CENTER, Radius=1.0, ThetaResolution=48, PhiResolution=48)
+    Show(ground, view)
+    Show(sphere, view)
     if sun:
         add_sun(view)
+    return ground, sphere
 
 
 def luminance_at(view, png, world):

@@ -12,7 +12,9 @@ import os
 import subprocess
 import sys
 
-from paraview.simple import Delete, LoadPlugin
+from paraview import servermanager
+from paraview.simple import (ClearSelection, Delete, ExtractSelection, LoadPlugin,
+                             SelectSurfaceCells, SetActiveSource, SetActiveView)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
@@ -87,6 +89,22 @@ view.ShadowAnalysisView = "Shadow factor"
 png = render(view, "ParaViewShadowViewFactor")
 check(luminance_at(view, png, SHADOWED) < 10 and luminance_at(view, png, LIT) > 245,
       "the shadow-factor analysis view shows visibility as grey (0 in the shadow, 1 on the lit ground)")
+Delete(view)
+
+# Selection renders ids through the view: the shadow pass steps aside and the
+# cells of the sphere under the rectangle are selected.
+view = make_view("ShadowRenderView")
+_, sphere = show_scene(view)
+render(view, "ParaViewShadowViewBeforeSelection")
+SetActiveView(view)
+SetActiveSource(sphere)
+SelectSurfaceCells(Rectangle=[150, 150, 250, 220], View=view)
+selected = servermanager.Fetch(ExtractSelection(Input=sphere))
+check(selected is not None and selected.GetNumberOfCells() > 0,
+      f"surface selection in the shadow view selects the sphere's cells "
+      f"({selected.GetNumberOfCells() if selected else 0})")
+ClearSelection(sphere)
+shadow_probes(view, render(view, "ParaViewShadowViewAfterSelection"), "after a selection")
 Delete(view)
 
 # The light kit: its key light casts, the others do not.

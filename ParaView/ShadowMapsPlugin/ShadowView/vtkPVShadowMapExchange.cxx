@@ -24,7 +24,8 @@ bool vtkPVShadowMapExchange::AnyOf(bool local)
 bool vtkPVShadowMapExchange::MinimumOf(std::vector<float>& values)
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (!controller || controller->GetNumberOfProcesses() < 2 || values.empty())
+  // Not skipped for an empty array: the other processes would wait for this one.
+  if (!controller || controller->GetNumberOfProcesses() < 2)
   {
     return true;
   }

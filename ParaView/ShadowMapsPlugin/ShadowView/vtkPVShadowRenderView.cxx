@@ -56,8 +56,6 @@ vtkPVShadowRenderView::vtkPVShadowRenderView()
     // render the scene, as in ParaView's plain render view.
     pass->SetDelegatePass(this->ScenePass);
     pass->SetResolution(this->ShadowMapResolution);
-    // One rank keeps the per-layer re-rendering the exchange gives up.
-    pass->SetExchange(IsParallel() ? this->Exchange : nullptr);
   }
   this->MarkLightKitLights();
   this->UsePass();
@@ -116,17 +114,21 @@ void vtkPVShadowRenderView::ReleasePass(vtkAbstractShadowMapPass* pass)
 }
 
 //------------------------------------------------------------------------------
-bool vtkPVShadowRenderView::IsParallel()
+bool vtkPVShadowRenderView::CombinesAcrossRanks()
 {
+  // Ranks that share one camera and split the data combine their maps. CAVE and
+  // tile displays, whose ranks see through cameras or tiles of their own (and
+  // CAVEs replicate the data), would combine different views.
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  return controller && controller->GetNumberOfProcesses() > 1;
+  return controller && controller->GetNumberOfProcesses() > 1 && !this->InCaveDisplayMode() &&
+    !this->InTileDisplayMode();
 }
 
 //------------------------------------------------------------------------------
 void vtkPVShadowRenderView::Update()
 {
   this->Superclass::Update();
-  if (IsParallel())
+  if (this->CombinesAcrossRanks())
   {
     // IceT skips the render of a rank whose geometry is empty; the maps'
     // combination waits for every rank.
@@ -138,13 +140,17 @@ void vtkPVShadowRenderView::Update()
 void vtkPVShadowRenderView::Render(bool interactive, bool skip_rendering)
 {
   vtkAbstractShadowMapPass* pass = this->GetShadowPass();
-  if (IsParallel() && this->GeometryBounds.IsValid())
+  // One rank keeps the per-layer re-rendering the exchange gives up.
+  const bool combine = this->CombinesAcrossRanks();
+  pass->SetExchange(combine ? this->Exchange : nullptr);
+  const bool global = combine && this->GeometryBounds.IsValid();
+  if (global)
   {
     double bounds[6];
     this->GeometryBounds.GetBounds(bounds);
     pass->SetSceneBounds(bounds);
-    pass->UseSceneBoundsOn();
   }
+  pass->SetUseSceneBounds(global);
   this->Superclass::Render(interactive, skip_rendering);
 }
 

@@ -126,8 +126,8 @@ private:
   void MarkLightKitLights();
   /** Frees a pass's GL objects, if the window ever rendered. */
   void ReleasePass(vtkAbstractShadowMapPass* pass);
-  /** More than one rank renders this view's data. */
-  static bool IsParallel();
+  /** Several ranks render pieces of this view's data through one camera. */
+  bool CombinesAcrossRanks();
 
   int ShadowViews = UNIFORM;
   int ShadowStorage = DEPTH;
