@@ -9,9 +9,11 @@
  * process re-renders all its layers from its own casters and the pass combines
  * the depth layers into the nearest depth over all processes. The views must
  * be the same on every process: give the pass the global bounds
- * (SetSceneBounds). The module knows no communication library; a subclass
- * wraps one (the ParaView plugin's vtkPVShadowMapExchange wraps
- * vtkMultiProcessController).
+ * (SetSceneBounds). So must the shadowed lights and hardware selections: a
+ * frame without shadowed lights, or one a selector renders, makes no
+ * collective call, on every process alike. The module knows no
+ * communication library; a subclass wraps one (the ParaView plugin's
+ * vtkPVShadowMapExchange wraps vtkMultiProcessController).
  */
 #ifndef vtkShadowMapExchange_h
 #define vtkShadowMapExchange_h
