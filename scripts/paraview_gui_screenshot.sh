@@ -5,6 +5,7 @@
 # python3-vtk9: run it between the two, as scripts/paraview.sh does with
 # SHADOWMAPS_GUI_SCREENSHOT=1.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+install_missing_packages imagemagick # import and convert
 PARAVIEW_BUILD_DIR="${PARAVIEW_BUILD_DIR:-$ROOT/build-paraview}"
 export SHADOWMAPS_PLUGIN="$PARAVIEW_BUILD_DIR/lib/paraview-5.11/plugins/ShadowMaps/ShadowMaps.so"
 DISPLAY_NUMBER=:97

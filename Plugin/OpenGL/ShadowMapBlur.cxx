@@ -37,10 +37,7 @@ bool MapBlur::ReserveScratch(const TextureArray& maps, std::string& error)
   {
     return true;
   }
-  if (this->Scratch != 0)
-  {
-    glDeleteTextures(1, &this->Scratch);
-  }
+  DeleteTexture(this->Scratch);
   ClearGLErrors();
   GLint previous = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
@@ -150,16 +147,8 @@ void MapBlur::ReleaseGraphicsResources(vtkWindow* window)
     this->Quad->ReleaseGraphicsResources(window);
     this->Quad.reset();
   }
-  if (this->ScratchFramebuffer != 0)
-  {
-    glDeleteFramebuffers(1, &this->ScratchFramebuffer);
-    this->ScratchFramebuffer = 0;
-  }
-  if (this->Scratch != 0)
-  {
-    glDeleteTextures(1, &this->Scratch);
-    this->Scratch = 0;
-  }
+  DeleteFramebuffer(this->ScratchFramebuffer);
+  DeleteTexture(this->Scratch);
   this->ScratchResolution = 0;
   this->ScratchFormat = -1;
 }

@@ -53,6 +53,33 @@ void ClearGLErrors()
   }
 }
 
+void DeleteTexture(unsigned int& name)
+{
+  if (name != 0)
+  {
+    glDeleteTextures(1, &name);
+  }
+  name = 0;
+}
+
+void DeleteFramebuffer(unsigned int& name)
+{
+  if (name != 0)
+  {
+    glDeleteFramebuffers(1, &name);
+  }
+  name = 0;
+}
+
+void DeleteRenderbuffer(unsigned int& name)
+{
+  if (name != 0)
+  {
+    glDeleteRenderbuffers(1, &name);
+  }
+  name = 0;
+}
+
 void SelectBuffers(vtkOpenGLState* state, int count, const unsigned int* draws, unsigned int read)
 {
   unsigned int buffers[2] = { draws[0], count > 1 ? draws[1] : GL_NONE };
@@ -277,21 +304,9 @@ bool TextureArray::ResolveSamples(vtkOpenGLState* state, int layer, std::string&
 
 void TextureArray::ReleaseSamples()
 {
-  if (this->SampleFramebuffer != 0)
-  {
-    glDeleteFramebuffers(1, &this->SampleFramebuffer);
-  }
-  if (this->SampleColor != 0)
-  {
-    glDeleteRenderbuffers(1, &this->SampleColor);
-  }
-  if (this->SampleDepth != 0)
-  {
-    glDeleteRenderbuffers(1, &this->SampleDepth);
-  }
-  this->SampleFramebuffer = 0;
-  this->SampleColor = 0;
-  this->SampleDepth = 0;
+  DeleteFramebuffer(this->SampleFramebuffer);
+  DeleteRenderbuffer(this->SampleColor);
+  DeleteRenderbuffer(this->SampleDepth);
   this->Samples = 0;
   this->AllocatedSamples = 0;
 }
@@ -402,32 +417,16 @@ void TextureArray::BindToUnit(vtkOpenGLState* state, int unit) const
 
 void TextureArray::ReleaseSecondOutput()
 {
-  if (this->SecondOutput != 0)
-  {
-    glDeleteTextures(1, &this->SecondOutput);
-    this->SecondOutput = 0;
-  }
+  DeleteTexture(this->SecondOutput);
 }
 
 void TextureArray::Release()
 {
-  if (this->Framebuffer != 0)
-  {
-    glDeleteFramebuffers(1, &this->Framebuffer);
-  }
+  DeleteFramebuffer(this->Framebuffer);
   this->ReleaseSecondOutput();
   this->ReleaseSamples();
-  if (this->DepthBuffer != 0)
-  {
-    glDeleteRenderbuffers(1, &this->DepthBuffer);
-  }
-  if (this->Texture != 0)
-  {
-    glDeleteTextures(1, &this->Texture);
-  }
-  this->Framebuffer = 0;
-  this->DepthBuffer = 0;
-  this->Texture = 0;
+  DeleteRenderbuffer(this->DepthBuffer);
+  DeleteTexture(this->Texture);
   this->Resolution = 0;
   this->Layers = 0;
   this->LinearFiltering = -1;

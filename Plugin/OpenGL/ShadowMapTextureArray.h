@@ -83,6 +83,11 @@ void AllocateValueLevels(int resolution, int layers, TexelFormat format, int lev
 /// Drops the GL errors pending, so that the next glGetError reports only what follows.
 void ClearGLErrors();
 
+/// Delete the GL object `name` names, if any, and zero the name.
+void DeleteTexture(unsigned int& name);
+void DeleteFramebuffer(unsigned int& name);
+void DeleteRenderbuffer(unsigned int& name);
+
 /// Sets the bound framebuffer's `count` (1 or 2) draw buffers and its read
 /// buffer through `state`, whose cache ParaView's VTK checks against GL; two
 /// draw buffers are also set in GL directly, since VTK 9.1's cache re-reads only

@@ -87,11 +87,14 @@ def compare_with_baseline(png, name):
         subprocess.run(["cp", png, baseline], check=True)
         print("baseline written: " + baseline + " (look at it, then rerun)")
         return
-    # As the C++ image tests: any pixel off by more than 1.5/255 fails.
-    result = subprocess.run(["idiff", "-fail", "0.0059", "-warn", "0.0059", baseline, png],
+    check_same_image(baseline, png, name + " equals its baseline " + baseline)
+
+
+def check_same_image(expected, actual, what):
+    """As the C++ image tests: any pixel off by more than 1.5/255 fails."""
+    result = subprocess.run(["idiff", "-fail", "0.0059", "-warn", "0.0059", expected, actual],
                             capture_output=True, text=True)
-    check(result.returncode == 0, name + " equals its baseline " + baseline +
-          ("" if result.returncode == 0 else ":\n" + result.stdout))
+    check(result.returncode == 0, what + ("" if result.returncode == 0 else ":\n" + result.stdout))
 
 
 def shadow_probes(view, png, what):

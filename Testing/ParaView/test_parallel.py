@@ -9,7 +9,6 @@ first by the `serial` run, for the uniform map and for cascades.
   xvfb-run -a mpiexec -np 3 pvbatch Testing/ParaView/test_parallel.py PLUGIN OUTDIR parallel
 """
 import os
-import subprocess
 import sys
 import time
 from statistics import median
@@ -18,7 +17,7 @@ from paraview.simple import Delete, LoadPlugin, ProgrammableSource, Render, Show
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
-from shadow_view_testing import (SUN, add_sun, check, failures,  # noqa: E402
+from shadow_view_testing import (SUN, add_sun, check_same_image, failures,  # noqa: E402
                                  make_view, render, shadow_probes)
 
 PLUGIN, MODE = sys.argv[1], sys.argv[3]
@@ -80,10 +79,7 @@ for views_choice in ("Uniform", "Cascades"):
     if MODE == "parallel":
         shadow_probes(view, png, views_choice + " on 3 ranks (caster on rank 1, ground on rank 0)")
         serial = os.path.join(OUT, name + "_serial.png")
-        result = subprocess.run(["idiff", "-fail", "0.0059", "-warn", "0.0059", serial, png],
-                                capture_output=True, text=True)
-        check(result.returncode == 0, views_choice + ": the 3-rank frame equals the 1-rank frame" +
-              ("" if result.returncode == 0 else ":\n" + result.stdout))
+        check_same_image(serial, png, views_choice + ": the 3-rank frame equals the 1-rank frame")
     else:
         shadow_probes(view, png, views_choice + " on 1 rank")
     layers = view.NumberOfCascades if views_choice == "Cascades" else 1

@@ -40,17 +40,14 @@ T Clamped(vtkObject* self, const char* name, T value, T lowest, T highest)
 
 //------------------------------------------------------------------------------
 vtkPVShadowRenderView::vtkPVShadowRenderView()
-  : DepthPass(vtkDepthShadowMapPass::New())
-  , DualDepthPass(vtkDualDepthShadowMapPass::New())
-  , MomentsPass(vtkVarianceShadowMapPass::New())
+  : Passes{ vtkDepthShadowMapPass::New(), vtkDualDepthShadowMapPass::New(),
+    vtkVarianceShadowMapPass::New() }
   , WarpedViews(vtkWarpedShadowMapViews::New())
   , CascadedViews(vtkCascadedShadowMapViews::New())
   , ScenePass(vtkPVDefaultPass::New())
   , Exchange(vtkPVShadowMapExchange::New())
 {
-  for (vtkAbstractShadowMapPass* pass : { static_cast<vtkAbstractShadowMapPass*>(this->DepthPass),
-         static_cast<vtkAbstractShadowMapPass*>(this->DualDepthPass),
-         static_cast<vtkAbstractShadowMapPass*>(this->MomentsPass) })
+  for (vtkAbstractShadowMapPass* pass : this->Passes)
   {
     // The renderer's own steps (SSAO, hidden lines, translucency, volumes)
     // render the scene, as in ParaView's plain render view.
@@ -66,16 +63,15 @@ vtkPVShadowRenderView::~vtkPVShadowRenderView()
 {
   // Before the pass leaves the renderer: the window's release then no longer
   // reaches it, and the maps' texture array frees nothing on its own.
-  for (vtkAbstractShadowMapPass* pass : { static_cast<vtkAbstractShadowMapPass*>(this->DepthPass),
-         static_cast<vtkAbstractShadowMapPass*>(this->DualDepthPass),
-         static_cast<vtkAbstractShadowMapPass*>(this->MomentsPass) })
+  for (vtkAbstractShadowMapPass* pass : this->Passes)
   {
     this->ReleasePass(pass);
   }
   this->SynchronizedRenderers->SetRenderPass(nullptr);
-  this->DepthPass->Delete();
-  this->DualDepthPass->Delete();
-  this->MomentsPass->Delete();
+  for (vtkAbstractShadowMapPass* pass : this->Passes)
+  {
+    pass->Delete();
+  }
   this->WarpedViews->Delete();
   this->CascadedViews->Delete();
   this->ScenePass->Delete();
@@ -85,15 +81,7 @@ vtkPVShadowRenderView::~vtkPVShadowRenderView()
 //------------------------------------------------------------------------------
 vtkAbstractShadowMapPass* vtkPVShadowRenderView::GetShadowPass()
 {
-  switch (this->ShadowStorage)
-  {
-    case DUAL_DEPTH:
-      return this->DualDepthPass;
-    case MOMENTS:
-      return this->MomentsPass;
-    default:
-      return this->DepthPass;
-  }
+  return this->Passes[this->ShadowStorage];
 }
 
 //------------------------------------------------------------------------------
@@ -227,9 +215,10 @@ void vtkPVShadowRenderView::SetShadowMapResolution(int resolution)
   if (resolution != this->ShadowMapResolution)
   {
     this->ShadowMapResolution = resolution;
-    this->DepthPass->SetResolution(resolution);
-    this->DualDepthPass->SetResolution(resolution);
-    this->MomentsPass->SetResolution(resolution);
+    for (vtkAbstractShadowMapPass* pass : this->Passes)
+    {
+      pass->SetResolution(resolution);
+    }
     this->Modified();
   }
 }

@@ -31,11 +31,8 @@
 
 class vtkAbstractShadowMapPass;
 class vtkCascadedShadowMapViews;
-class vtkDepthShadowMapPass;
-class vtkDualDepthShadowMapPass;
 class vtkPVDefaultPass;
 class vtkPVShadowMapExchange;
-class vtkVarianceShadowMapPass;
 class vtkWarpedShadowMapViews;
 
 class VTKPARAVIEWSHADOWVIEW_EXPORT vtkPVShadowRenderView : public vtkPVRenderView
@@ -135,9 +132,8 @@ private:
   int ShadowAnalysisView = 0;
   bool KeyLightShadows = true;
 
-  vtkDepthShadowMapPass* DepthPass;
-  vtkDualDepthShadowMapPass* DualDepthPass;
-  vtkVarianceShadowMapPass* MomentsPass;
+  /** One pass per ShadowStorage, in its order: depth, dual depth, moments. */
+  vtkAbstractShadowMapPass* Passes[3];
   vtkWarpedShadowMapViews* WarpedViews;
   vtkCascadedShadowMapViews* CascadedViews;
   vtkPVDefaultPass* ScenePass;
