@@ -114,13 +114,15 @@ int MomentsOf(const std::string& name)
   return found == moments.end() ? -1 : found->second;
 }
 
-// The parameter sweep of the moment maps: "-half" (16-bit storage, exponents 5),
+// The parameter sweep of the moment maps: "-half" (16-bit storage, exponents 5;
+// MSM's moments in the Chebyshev basis),
 // "-bleedX" (LightBleedingReduction X), "-blurX" (BlurRadius X texels),
 // "-samplesN" (CasterSamples N), "-biasX" (MomentBias X).
 std::vector<std::string> MomentVariantNames()
 {
   return { "vsm-bleed0", "vsm-bleed0.4", "evsm4-bleed0", "evsm4-half", "evsm4-blur0", "evsm4-blur2",
-    "evsm4-blur4", "msm-bleed0", "evsm4-samples4", "msm-bias0.0001", "msm-bias0.001",
+    "evsm4-blur4", "msm-bleed0", "evsm4-samples4", "msm-bias0.0001", "msm-bias0.001", "msm-half",
+    "msm-half-bias0.0001", "msm-half-bias0.001",
     // The sweep that chose the defaults, when the reduction was 0.2:
     "evsm4-bleed0.2", "vsm-bleed0.2", "msm-bleed0.2", "evsm4-half-bleed0.2",
     "evsm4-blur0-bleed0.2", "evsm4-blur2-bleed0.2", "evsm4-blur4-bleed0.2" };

@@ -124,6 +124,8 @@ unsigned int InternalFormat(TexelFormat format)
       return GL_RG16F;
     case TexelFormat::FourHalfFloats:
       return GL_RGBA16F;
+    case TexelFormat::FourNormalized16:
+      return GL_RGBA16;
   }
   return GL_RG32F;
 }

@@ -16,8 +16,8 @@ namespace shadowmaps
 {
 
 /// What one texel holds: a depth (sampled with comparison), 32-bit float or
-/// 16-bit normalized, or two or four values, 32- or 16-bit floats, in a colour
-/// attachment (sampled as values, filterable).
+/// 16-bit normalized, or two or four values, 32- or 16-bit floats or 16-bit
+/// normalized integers, in a colour attachment (sampled as values, filterable).
 enum class TexelFormat
 {
   Depth,
@@ -28,7 +28,9 @@ enum class TexelFormat
   TwoFloats,
   FourFloats,
   TwoHalfFloats,
-  FourHalfFloats
+  FourHalfFloats,
+  /// Values in [0, 1], evenly spaced: finer than half floats near 1.
+  FourNormalized16
 };
 
 /// How the pass makes a map of the two nearest caster surfaces along each
@@ -68,8 +70,9 @@ inline int TexelBytes(TexelFormat format)
   {
     return format == TexelFormat::Depth16 ? 2 : 4;
   }
-  const bool half = format == TexelFormat::TwoHalfFloats || format == TexelFormat::FourHalfFloats;
-  return ValueChannels(format) * (half ? 2 : 4);
+  const bool sixteen = format == TexelFormat::TwoHalfFloats ||
+    format == TexelFormat::FourHalfFloats || format == TexelFormat::FourNormalized16;
+  return ValueChannels(format) * (sixteen ? 2 : 4);
 }
 
 /// The GL internal format (GLenum) of a texel format.

@@ -58,7 +58,7 @@ public:
   ///@}
 
   ///@{
-  /** vtkVarianceShadowMapRepresentation's Storage: 16 (half floats) or 32 bits (default). */
+  /** vtkVarianceShadowMapRepresentation's Storage: 16 (half floats; MSM: normalized integers) or 32 bits (default). */
   void SetStorage(int bits) { this->Variance->SetStorage(bits); }
   int GetStorage() { return this->Variance->GetStorage(); }
   void SetStorageToHalfFloat() { this->Variance->SetStorageToHalfFloat(); }

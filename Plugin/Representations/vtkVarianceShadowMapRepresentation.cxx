@@ -78,15 +78,15 @@ void vtkVarianceShadowMapRepresentation::SetNegativeExponent(double exponent)
 }
 
 //------------------------------------------------------------------------------
-int vtkVarianceShadowMapRepresentation::GetEffectiveStorage() const
+bool vtkVarianceShadowMapRepresentation::StoresChebyshevMoments() const
 {
-  return this->Moments == MSM ? FLOAT : this->Storage;
+  return this->Moments == MSM && this->Storage == HALF_FLOAT;
 }
 
 //------------------------------------------------------------------------------
 double vtkVarianceShadowMapRepresentation::GetMaximumExponent() const
 {
-  const double largest = this->GetEffectiveStorage() == FLOAT ? LargestExponent32 : LargestExponent16;
+  const double largest = this->Storage == FLOAT ? LargestExponent32 : LargestExponent16;
   // Variance maps store the square too.
   const double limit = this->Moments == ESM ? largest : 0.5 * largest;
   // Headroom for the blur's and the filtering's weighted sums.
@@ -103,11 +103,16 @@ double vtkVarianceShadowMapRepresentation::GetWarpExponent() const
 //------------------------------------------------------------------------------
 void vtkVarianceShadowMapRepresentation::ClampExponents()
 {
+  if (this->Moments == VSM || this->Moments == MSM)
+  {
+    // They warp no depth: the exponents are clamped when moments that do are chosen.
+    return;
+  }
   const double maximum = this->GetMaximumExponent();
   if (this->PositiveExponent > maximum || this->NegativeExponent > maximum)
   {
     vtkWarningMacro(<< "Exponents " << this->PositiveExponent << " and " << this->NegativeExponent
-                    << " exceed what " << this->GetEffectiveStorage()
+                    << " exceed what " << this->Storage
                     << "-bit storage holds for these moments; reduced to " << maximum << ".");
     this->PositiveExponent = std::min(this->PositiveExponent, maximum);
     this->NegativeExponent = std::min(this->NegativeExponent, maximum);
@@ -136,6 +141,15 @@ void vtkVarianceShadowMapRepresentation::GetMomentsOfDepth(double depth, double 
       moments[3] = this->Moments == EVSM4 ? negative * negative : 0.0;
       break;
     case MSM:
+      if (this->StoresChebyshevMoments())
+      {
+        // Shaders/vtkShadowMapsMomentsFS.glsl says why.
+        const double u = warped;
+        const double polynomials[4] = { u, 2.0 * u * u - 1.0, u * (4.0 * u * u - 3.0),
+          8.0 * u * u * (u * u - 1.0) + 1.0 };
+        std::transform(polynomials, polynomials + 4, moments, [](double t) { return 0.5 + 0.5 * t; });
+        break;
+      }
       moments[0] = d;
       moments[1] = d * d;
       moments[2] = d * d * d;
@@ -154,7 +168,8 @@ std::string vtkVarianceShadowMapRepresentation::MomentDefinitions() const
   definitions.precision(9);
   definitions << std::showpoint << "#define VTK_SHADOW_MOMENTS " << this->Moments << "\n"
               << "#define VTK_SHADOW_POSITIVE_EXPONENT " << this->GetWarpExponent() << "\n"
-              << "#define VTK_SHADOW_NEGATIVE_EXPONENT " << this->NegativeExponent << "\n";
+              << "#define VTK_SHADOW_NEGATIVE_EXPONENT " << this->NegativeExponent << "\n"
+              << "#define VTK_SHADOW_CHEBYSHEV_BASIS " << this->StoresChebyshevMoments() << "\n";
   return definitions.str();
 }
 
@@ -164,9 +179,10 @@ void vtkVarianceShadowMapRepresentation::GetMapStorage(shadowmaps::MapStorage& s
   using shadowmaps::TexelFormat;
   storage = shadowmaps::MapStorage();
   const bool four = this->Moments == EVSM4 || this->Moments == MSM;
-  const bool half = this->GetEffectiveStorage() == HALF_FLOAT;
-  storage.Format = four ? (half ? TexelFormat::FourHalfFloats : TexelFormat::FourFloats)
-                        : (half ? TexelFormat::TwoHalfFloats : TexelFormat::TwoFloats);
+  const bool half = this->Storage == HALF_FLOAT;
+  storage.Format = this->StoresChebyshevMoments() ? TexelFormat::FourNormalized16
+    : four ? (half ? TexelFormat::FourHalfFloats : TexelFormat::FourFloats)
+           : (half ? TexelFormat::TwoHalfFloats : TexelFormat::TwoFloats);
   storage.LightDepth = true;
   storage.StoreFunctions = this->MomentDefinitions() + vtkShadowMapsMomentsFS;
   storage.StoreCode = "    gl_FragData[0] = vtkShadowMomentsOf(vtkShadowCasterDepth);";

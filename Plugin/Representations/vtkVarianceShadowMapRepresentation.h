@@ -16,7 +16,9 @@
  *   makes the bound much tighter where occluders are far from the receiver.
  * - EVSM4: EVSM2 and the same on -exp(-c- d), the smaller of the two bounds.
  * - MSM: four powers of depth and the Hamburger reconstruction (Peters and
- *   Klein's moment shadow maps), biased toward a safe moment vector.
+ *   Klein's moment shadow maps), biased toward a safe moment vector; in
+ *   16-bit storage, the moments in a basis that keeps their differences
+ *   (normalized integers holding shifted Chebyshev polynomials of depth).
  * - ESM: exp(c d) alone, visibility exp(c (m - t)), c the largest exponent the
  *   storage holds (the sane version of vtkShadowMapPass's exponential map, for
  *   comparison).
@@ -79,11 +81,14 @@ public:
 
   ///@{
   /**
-   * Bits per stored value: HALF_FLOAT (16) or FLOAT (32, default). Half floats
-   * halve the memory and hold exponents up to GetMaximumExponent() only
-   * (about 5.5 for EVSM instead of 42); MSM needs 32 bits here and uses them
-   * whatever this says (its 16-bit quantization is not implemented).
-   * Other values snap to the nearer one.
+   * Bits per stored value: HALF_FLOAT (16) or FLOAT (32, default). 16 bits
+   * halve the memory. Half floats hold exponents up to GetMaximumExponent()
+   * only (about 5.5 for EVSM instead of 42). MSM stores 16-bit normalized
+   * integers instead of half floats: its four moments in a shifted Chebyshev
+   * basis, where rounding costs the reconstruction little (Peters and Klein
+   * quantize for the same reason with a basis of their own; this one is
+   * derived in Shaders/vtkShadowMapsMomentsFS.glsl). Other values snap to the
+   * nearer one.
    */
   void SetStorage(int bits);
   vtkGetMacro(Storage, int);
@@ -212,8 +217,8 @@ protected:
   vtkVarianceShadowMapRepresentation();
   ~vtkVarianceShadowMapRepresentation() override;
 
-  /** The storage these moments get: MSM is always 32-bit. */
-  int GetEffectiveStorage() const;
+  /** MSM in 16-bit storage: moments in the Chebyshev basis, normalized integers. */
+  bool StoresChebyshevMoments() const;
   /** Exponents reduced to what the storage holds, warning when one was. */
   void ClampExponents();
   /** The shared GLSL definitions of casters and receivers. */

@@ -22,6 +22,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <random>
 #include <string>
 #include <tuple>
 
@@ -190,12 +191,17 @@ TEST(Variance, StoredMomentsMatchTheirClosedForms)
   vtkNew<vtkVarianceShadowMapRepresentation> representation;
   const std::vector<glm::vec4> depths = { glm::vec4(0.0f), glm::vec4(0.25f), glm::vec4(0.5f),
     glm::vec4(0.8f), glm::vec4(1.0f) };
-  for (int moments : AllMoments)
+  const std::pair<int, int> settings[] = { { vtkVarianceShadowMapPass::VSM, 32 },
+    { vtkVarianceShadowMapPass::EVSM2, 32 }, { vtkVarianceShadowMapPass::EVSM4, 32 },
+    { vtkVarianceShadowMapPass::MSM, 32 }, { vtkVarianceShadowMapPass::MSM, 16 },
+    { vtkVarianceShadowMapPass::ESM, 32 } };
+  for (const auto& setting : settings)
   {
-    SCOPED_TRACE(MomentsName(moments));
+    const int moments = setting.first;
+    SCOPED_TRACE(MomentsName(moments) + std::to_string(setting.second));
     representation->SetMoments(moments);
+    representation->SetStorage(setting.second);
     representation->SetPositiveExponent(40.0);
-    representation->SetStorageToFloat();
     const std::vector<glm::vec4> stored =
       EvaluateMoments(representation, "vtkShadowMomentsOf(c.x)", depths);
     for (size_t i = 0; i < depths.size(); ++i)
@@ -292,6 +298,112 @@ TEST(Variance, TwoOccludersBleedAsEachReconstructionIsKnownTo)
     "vec4(vtkShadowMomentsVisibility(c, 0.6, 1e-6))", { MixedMoments(representation, 0.2, 0.5) })[0]
                           .x;
   EXPECT_NEAR(reduced, (vsm - 0.2) / 0.8, 1e-5);
+}
+
+namespace
+{
+/// `moments` rounded to 16-bit normalized integers, as GL_RGBA16 stores them.
+glm::vec4 RoundedTo16Bits(const glm::vec4& moments)
+{
+  glm::vec4 rounded;
+  for (int k = 0; k < 4; ++k)
+  {
+    rounded[k] = static_cast<float>(std::round(moments[k] * 65535.0) / 65535.0);
+  }
+  return rounded;
+}
+} // namespace
+
+// MSM in 16 bits: the Chebyshev basis keeps the reconstruction of 32-bit
+// moments. Over texels that mix two occluders at random depths and receivers
+// at several depths, the 16-bit maps' visibility (moments rounded to 16-bit
+// normalized integers) stays within a few thousandths of the 32-bit maps' on
+// average, several times closer than the four powers of depth rounded to 16
+// bits would be (which is why the basis is there).
+TEST(Variance, SixteenBitMSMRoundsLittle)
+{
+  vtkNew<vtkVarianceShadowMapRepresentation> chebyshev;
+  chebyshev->SetMomentsToMSM();
+  chebyshev->SetStorageToHalfFloat();
+  vtkNew<vtkVarianceShadowMapRepresentation> powers;
+  powers->SetMomentsToMSM();
+  powers->SetStorageToFloat();
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> depth(0.05, 0.95);
+  std::uniform_real_distribution<double> weight(0.1, 0.9);
+  std::vector<glm::vec4> exact;
+  std::vector<glm::vec4> stored;
+  std::vector<glm::vec4> roundedPowers;
+  for (int i = 0; i < 150; ++i)
+  {
+    const double a = depth(random);
+    const double b = depth(random);
+    const double w = weight(random);
+    const auto mix = [a, b, w](vtkVarianceShadowMapRepresentation* representation) {
+      double ma[4];
+      double mb[4];
+      representation->GetMomentsOfDepth(a, ma);
+      representation->GetMomentsOfDepth(b, mb);
+      return glm::vec4(w * ma[0] + (1 - w) * mb[0], w * ma[1] + (1 - w) * mb[1],
+        w * ma[2] + (1 - w) * mb[2], w * ma[3] + (1 - w) * mb[3]);
+    };
+    exact.push_back(mix(powers));
+    stored.push_back(RoundedTo16Bits(mix(chebyshev)));
+    roundedPowers.push_back(RoundedTo16Bits(exact.back()));
+  }
+  double chebyshevError = 0.0;
+  double powersError = 0.0;
+  int count = 0;
+  for (const char* t : { "0.3", "0.5", "0.7", "0.9" })
+  {
+    const std::string visibility = std::string("vec4(vtkShadowMomentsVisibility(c, ") + t + ", 1e-6))";
+    const auto reference = EvaluateMoments(powers, visibility, exact);
+    const auto sixteen = EvaluateMoments(chebyshev, visibility, stored);
+    const auto naive = EvaluateMoments(powers, visibility, roundedPowers);
+    for (size_t i = 0; i < exact.size(); ++i)
+    {
+      ASSERT_GE(reference[i].x, 0.0f) << "the shader compiles";
+      chebyshevError += std::abs(sixteen[i].x - reference[i].x);
+      powersError += std::abs(naive[i].x - reference[i].x);
+      ++count;
+    }
+  }
+  chebyshevError /= count;
+  powersError /= count;
+  std::cout << "Mean |visibility - 32-bit visibility| over " << count
+            << " texels: Chebyshev basis in 16 bits " << chebyshevError << ", powers in 16 bits "
+            << powersError << "\n";
+  EXPECT_LT(chebyshevError, 0.005);
+  EXPECT_LT(chebyshevError * 4.0, powersError);
+}
+
+// Each stored Chebyshev coordinate spans all of [0, 1] over the depths (what
+// spreads the rounding evenly), and depth 1 (the cleared texel) stores 1s.
+TEST(Variance, ChebyshevMomentsSpanTheUnitInterval)
+{
+  vtkNew<vtkVarianceShadowMapRepresentation> representation;
+  representation->SetMomentsToMSM();
+  representation->SetStorageToHalfFloat();
+  double least[4] = { 1, 1, 1, 1 };
+  double most[4] = { 0, 0, 0, 0 };
+  for (int i = 0; i <= 1000; ++i)
+  {
+    double moments[4];
+    representation->GetMomentsOfDepth(i / 1000.0, moments);
+    for (int k = 0; k < 4; ++k)
+    {
+      least[k] = std::min(least[k], moments[k]);
+      most[k] = std::max(most[k], moments[k]);
+    }
+  }
+  for (int k = 0; k < 4; ++k)
+  {
+    EXPECT_NEAR(least[k], 0.0, 1e-4) << "coordinate " << k;
+    EXPECT_NEAR(most[k], 1.0, 1e-4) << "coordinate " << k;
+  }
+  double far[4];
+  representation->GetMomentsOfDepth(1.0, far);
+  EXPECT_EQ(glm::dvec4(far[0], far[1], far[2], far[3]), glm::dvec4(1.0));
 }
 
 // A receiver between the two occluders (at 0.35) sees half of them in front:
@@ -420,7 +532,7 @@ TEST(Variance, StackedOccludersBleedLessWithEVSM4AndMSM)
 }
 
 // Parameters clamp; exponents that the storage cannot hold are reduced with a
-// warning, and MSM keeps 32-bit storage.
+// warning.
 TEST(Variance, ParametersClamp)
 {
   vtkNew<vtkVarianceShadowMapPass> pass;
@@ -458,19 +570,25 @@ TEST(Variance, ParametersClamp)
   EXPECT_GT(pass->GetPositiveExponent(), 80.0);
   EXPECT_LT(pass->GetPositiveExponent(), 88.7);
 
-  // MSM is 32-bit whatever the storage says.
+  // MSM in 16 bits: four normalized 16-bit integers per texel and the
+  // shared depth buffer; it warps no depth, so its storage clamps no exponent
+  // (until moments that warp are chosen).
   TestScene scene;
   scene.SetSun(SunDirection);
   pass->SetMomentsToMSM();
   pass->SetStorageToHalfFloat();
+  EXPECT_EQ(errors.Warnings(), 3) << errors.Text();
+  EXPECT_GT(pass->GetPositiveExponent(), 80.0);
   pass->SetResolution(256);
   pass->SetMipmaps(false);
   scene.Renderer->SetPass(pass);
   RenderAndCapture(scene.Window);
-  // Four 32-bit floats per texel and the shared depth buffer.
-  EXPECT_EQ(pass->GetShadowMapMemory(), 256u * 256u * 16u + 256u * 256u * 4u);
+  EXPECT_EQ(pass->GetShadowMapMemory(), 256u * 256u * 8u + 256u * 256u * 4u);
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
+  pass->SetMomentsToEVSM4();
+  EXPECT_EQ(errors.Warnings(), 4) << errors.Text();
+  EXPECT_EQ(pass->GetPositiveExponent(), halfLimit);
 }
 
 // Storage: two or four values of 16 or 32 bits, a third more for mipmaps.
@@ -621,13 +739,21 @@ TEST(Variance, ShadowMapViewShowsDepth)
   }
 }
 
-// Half floats: EVSM4 with the exponents 16 bits hold keeps the standard
-// scene's shadow dark and its lit faces free of acne.
-TEST(Variance, HalfFloatStorage)
+class VarianceSixteenBits : public ::testing::TestWithParam<std::tuple<int, std::string>>
 {
+};
+
+// 16-bit storage (EVSM4 in half floats with the exponents they hold, MSM in
+// normalized integers in the Chebyshev basis) keeps the standard scene's
+// shadow dark and its lit faces free of acne, for a sun and, for MSM, the
+// positional lights, whose light depths near 0 its reconstruction must keep.
+TEST_P(VarianceSixteenBits, ShadowsAndLitFaces)
+{
+  const int moments = std::get<0>(GetParam());
+  const std::string layout = std::get<1>(GetParam());
   TestScene scene;
-  scene.SetSun(SunDirection);
-  auto pass = MakePass(vtkVarianceShadowMapPass::EVSM4);
+  auto pass = MakePass(moments);
+  UseLayout(scene, pass, layout);
   pass->SetPositiveExponent(5.0);
   pass->SetNegativeExponent(5.0);
   pass->SetStorageToHalfFloat();
@@ -635,15 +761,30 @@ TEST(Variance, HalfFloatStorage)
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
   EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
-  EXPECT_LT(LuminanceAt(scene.Renderer, image, ShadowOfSphere("Uniform")), ShadowedBelow);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, ShadowOfSphere(layout)), ShadowedBelow);
   EXPECT_GT(DarkestAround(scene.Renderer, image, { -5, -4, 0 }), LitAbove);
   EXPECT_GT(DarkestAround(scene.Renderer, image, { 4, 2, 1.5 }), LitAbove);
-  EXPECT_GT(DarkestAround(scene.Renderer, image, glm::dvec3(0, 0, 1.5) - SunDirection), LitAbove);
-  // Four half floats per texel, a third more for mipmaps, the shared depth.
-  const size_t values = 512u * 512u * 8u;
-  EXPECT_EQ(pass->GetShadowMapMemory(), values + values / 3 + 512u * 512u * 4u);
-  const std::string difference = CompareWithBaseline(image, "VarianceEVSM4HalfFloat");
+  if (layout == "Uniform")
+  {
+    EXPECT_GT(DarkestAround(scene.Renderer, image, glm::dvec3(0, 0, 1.5) - SunDirection), LitAbove);
+    // Four 16-bit values per texel, a third more for mipmaps, the shared depth.
+    const size_t values = 512u * 512u * 8u;
+    EXPECT_EQ(pass->GetShadowMapMemory(), values + values / 3 + 512u * 512u * 4u);
+  }
+  const std::string baseline = moments == vtkVarianceShadowMapPass::MSM
+    ? "VarianceMSMSixteenBits" + std::string(layout == "Uniform" ? "" : layout)
+    : "VarianceEVSM4HalfFloat";
+  const std::string difference = CompareWithBaseline(image, baseline);
   EXPECT_TRUE(difference.empty()) << difference;
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
 }
+
+INSTANTIATE_TEST_SUITE_P(Variance, VarianceSixteenBits,
+  ::testing::Values(std::make_tuple(int(vtkVarianceShadowMapPass::EVSM4), std::string("Uniform")),
+    std::make_tuple(int(vtkVarianceShadowMapPass::MSM), std::string("Uniform")),
+    std::make_tuple(int(vtkVarianceShadowMapPass::MSM), std::string("Spot")),
+    std::make_tuple(int(vtkVarianceShadowMapPass::MSM), std::string("Point"))),
+  [](const ::testing::TestParamInfo<std::tuple<int, std::string>>& info) {
+    return std::string(MomentsName(std::get<0>(info.param))) + std::get<1>(info.param);
+  });
