@@ -62,6 +62,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapCasterShader.cxx
     Plugin/OpenGL/ShadowMapCasting.cxx
     Plugin/OpenGL/ShadowMapLinearDepthResolve.cxx
+    Plugin/OpenGL/ShadowMapStoreFromLightDepths.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Scene/ShadowMapClosedSurfaces.cxx
@@ -86,6 +87,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapCasterShader.h
     Plugin/OpenGL/ShadowMapCasting.h
     Plugin/OpenGL/ShadowMapLinearDepthResolve.h
+    Plugin/OpenGL/ShadowMapStoreFromLightDepths.h
     Plugin/OpenGL/ShadowMapProgramStamps.h
     Plugin/OpenGL/ShadowMapQuad.h
     Plugin/OpenGL/ShadowMapReceiverShader.h

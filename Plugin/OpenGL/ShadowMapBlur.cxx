@@ -39,15 +39,15 @@ bool MapBlur::ReserveScratch(const TextureArray& maps, std::string& error)
   }
   DeleteTexture(this->Scratch);
   ClearGLErrors();
-  GLint previous = 0;
-  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
-  glGenTextures(1, &this->Scratch);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Scratch);
   const int resolution = maps.GetResolution();
-  AllocateValueLevels(resolution, 1, maps.GetFormat(), 1);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(previous));
+  {
+    ScopedTextureBinding keep(true);
+    glGenTextures(1, &this->Scratch);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, this->Scratch);
+    AllocateValueLevels(resolution, 1, maps.GetFormat(), 1);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
   if (this->ScratchFramebuffer == 0)
   {
     glGenFramebuffers(1, &this->ScratchFramebuffer);

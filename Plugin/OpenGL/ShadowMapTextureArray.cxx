@@ -10,31 +10,6 @@ namespace shadowmaps
 {
 namespace
 {
-std::string GLErrorText(GLenum code)
-{
-  std::ostringstream text;
-  text << "GL error 0x" << std::hex << code;
-  return text.str();
-}
-
-// Restores a binding of the active unit, which may belong to someone else.
-template <GLenum Target, GLenum Binding>
-class ScopedBinding
-{
-public:
-  ScopedBinding() { glGetIntegerv(Binding, &this->Previous); }
-  ~ScopedBinding() { glBindTexture(Target, static_cast<GLuint>(this->Previous)); }
-  ScopedBinding(const ScopedBinding&) = delete;
-  ScopedBinding& operator=(const ScopedBinding&) = delete;
-
-private:
-  GLint Previous = 0;
-};
-using ScopedArrayBinding = ScopedBinding<GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BINDING_2D_ARRAY>;
-using ScopedTextureBinding = ScopedBinding<GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D>;
-
-
-
 int MipmapLevels(int resolution)
 {
   int levels = 1;
@@ -45,6 +20,24 @@ int MipmapLevels(int resolution)
   return levels;
 }
 } // namespace
+
+std::string GLErrorText(unsigned int code)
+{
+  std::ostringstream text;
+  text << "GL error 0x" << std::hex << code;
+  return text.str();
+}
+
+ScopedTextureBinding::ScopedTextureBinding(bool array)
+  : Array(array)
+{
+  glGetIntegerv(array ? GL_TEXTURE_BINDING_2D_ARRAY : GL_TEXTURE_BINDING_2D, &this->Previous);
+}
+
+ScopedTextureBinding::~ScopedTextureBinding()
+{
+  glBindTexture(this->Array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, static_cast<GLuint>(this->Previous));
+}
 
 void ClearGLErrors()
 {
@@ -142,7 +135,7 @@ bool TextureArray::Reserve(
   this->Release();
   ++this->Allocations;
   ClearGLErrors();
-  ScopedArrayBinding keep;
+  ScopedTextureBinding keep(true);
   this->Format = format;
   this->Mipmaps = mipmaps;
 
@@ -198,7 +191,7 @@ bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& erro
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer);
   if (secondOutput && this->SecondOutput == 0)
   {
-    ScopedTextureBinding keep;
+    ScopedTextureBinding keep(false);
     glGenTextures(1, &this->SecondOutput);
     glBindTexture(GL_TEXTURE_2D, this->SecondOutput);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, this->Resolution, this->Resolution, 0, GL_RED,
@@ -319,7 +312,7 @@ void TextureArray::SetLinearFiltering(bool linear)
   {
     return;
   }
-  ScopedArrayBinding keep;
+  ScopedTextureBinding keep(true);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   this->ApplyFiltering(linear);
 }
@@ -343,7 +336,7 @@ void TextureArray::SetDepthComparison(bool compare)
   {
     return;
   }
-  ScopedArrayBinding keep;
+  ScopedTextureBinding keep(true);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   glTexParameteri(
     GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
@@ -355,28 +348,42 @@ void TextureArray::GenerateMipmaps()
   {
     return;
   }
-  ScopedArrayBinding keep;
+  ScopedTextureBinding keep(true);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
 }
 
-bool TextureArray::ReadDepths(
-  vtkOpenGLState* state, int layers, std::vector<float>& depths, std::string& error) const
+namespace
 {
-  if (this->Texture == 0 || !IsDepth(this->Format) || layers < 1 || layers > this->Layers)
+// The client-side format of a texel format's texels as floats: a depth, or its values.
+GLenum TexelsAsFloats(TexelFormat format)
+{
+  return IsDepth(format) ? GL_DEPTH_COMPONENT : ValueChannels(format) == 2 ? GL_RG : GL_RGBA;
+}
+} // namespace
+
+std::size_t TextureArray::FloatsPerLayer() const
+{
+  const int channels = IsDepth(this->Format) ? 1 : ValueChannels(this->Format);
+  return static_cast<std::size_t>(this->Resolution) * this->Resolution * channels;
+}
+
+bool TextureArray::ReadTexels(
+  vtkOpenGLState* state, int layers, std::vector<float>& texels, std::string& error) const
+{
+  if (this->Texture == 0 || layers < 1 || layers > this->Layers)
   {
-    error = "no such depth maps to read";
+    error = "no such shadow maps to read";
     return false;
   }
-  const std::size_t layerTexels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
-  depths.resize(layerTexels * this->Layers);
-  ScopedArrayBinding keep;
+  texels.resize(this->FloatsPerLayer() * this->Layers);
+  ScopedTextureBinding keep(true);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   ClearGLErrors();
   state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
   // GL reads a whole level: every allocated layer, then the used ones are kept.
-  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
-  depths.resize(layerTexels * layers);
+  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, TexelsAsFloats(this->Format), GL_FLOAT, texels.data());
+  texels.resize(this->FloatsPerLayer() * layers);
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
   {
@@ -386,22 +393,21 @@ bool TextureArray::ReadDepths(
   return true;
 }
 
-bool TextureArray::WriteDepths(
-  vtkOpenGLState* state, int layers, const std::vector<float>& depths, std::string& error)
+bool TextureArray::WriteTexels(
+  vtkOpenGLState* state, int layers, const std::vector<float>& texels, std::string& error)
 {
-  const std::size_t layerTexels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
-  if (this->Texture == 0 || !IsDepth(this->Format) || layers < 1 || layers > this->Layers ||
-    depths.size() != layerTexels * layers)
+  if (this->Texture == 0 || layers < 1 || layers > this->Layers ||
+    texels.size() != this->FloatsPerLayer() * layers)
   {
-    error = "no depth maps of that size to write";
+    error = "no shadow maps of that size to write";
     return false;
   }
-  ScopedArrayBinding keep;
+  ScopedTextureBinding keep(true);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   ClearGLErrors();
   state->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, this->Resolution, this->Resolution, layers,
-    GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+    TexelsAsFloats(this->Format), GL_FLOAT, texels.data());
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
   {

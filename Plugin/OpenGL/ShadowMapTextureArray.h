@@ -86,6 +86,24 @@ void AllocateValueLevels(int resolution, int layers, TexelFormat format, int lev
 /// Drops the GL errors pending, so that the next glGetError reports only what follows.
 void ClearGLErrors();
 
+/// "GL error 0x..." for a glGetError code.
+std::string GLErrorText(unsigned int code);
+
+/// Restores the active unit's 2D (or, with `array`, 2D array) texture binding
+/// when it goes: that unit may belong to someone else.
+class ScopedTextureBinding
+{
+public:
+  explicit ScopedTextureBinding(bool array);
+  ~ScopedTextureBinding();
+  ScopedTextureBinding(const ScopedTextureBinding&) = delete;
+  ScopedTextureBinding& operator=(const ScopedTextureBinding&) = delete;
+
+private:
+  bool Array;
+  int Previous = 0;
+};
+
 /// Delete the GL object `name` names, if any, and zero the name.
 void DeleteTexture(unsigned int& name);
 void DeleteFramebuffer(unsigned int& name);
@@ -149,12 +167,14 @@ public:
   /// Rebuilds the mipmaps of a mipmapped value array from level 0.
   void GenerateMipmaps();
 
-  /// Depth formats: the depths of the first `layers` layers, layer after
-  /// layer, row after row (ReadDepths), and back (WriteDepths, the same size);
-  /// false on GL failure. Pixel alignment goes through `state`'s cache.
-  bool ReadDepths(vtkOpenGLState* state, int layers, std::vector<float>& depths, std::string& error) const;
-  bool WriteDepths(
-    vtkOpenGLState* state, int layers, const std::vector<float>& depths, std::string& error);
+  /// The texels of the first `layers` layers as floats (a depth, or a value
+  /// format's values), layer after layer, row after row (ReadTexels), and back
+  /// (WriteTexels, the same size); false on GL failure. Pixel alignment goes
+  /// through `state`'s cache.
+  bool ReadTexels(
+    vtkOpenGLState* state, int layers, std::vector<float>& texels, std::string& error) const;
+  bool WriteTexels(
+    vtkOpenGLState* state, int layers, const std::vector<float>& texels, std::string& error);
 
   TexelFormat GetFormat() const { return this->Format; }
   unsigned int GetTextureName() const { return this->Texture; }
@@ -175,6 +195,8 @@ private:
   void AllocateDepthLayers(int resolution, int layers, TexelFormat format);
   void AllocateValueLayers(int resolution, int layers, TexelFormat format);
   void ApplyFiltering(bool linear);
+  /// Floats of one layer's texels for ReadTexels and WriteTexels.
+  std::size_t FloatsPerLayer() const;
 
   unsigned int Texture = 0;
   unsigned int Framebuffer = 0;

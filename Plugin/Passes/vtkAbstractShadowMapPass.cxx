@@ -10,6 +10,7 @@
 #include "ShadowMapLight.h"
 #include "ShadowMapLinearDepthResolve.h"
 #include "ShadowMapReceiverShader.h"
+#include "ShadowMapStoreFromLightDepths.h"
 #include "ShadowMapTextureArray.h"
 
 #include "vtkActor.h"
@@ -317,6 +318,8 @@ struct vtkAbstractShadowMapPass::Internals
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
   shadowmaps::MapView MapView;
   shadowmaps::LinearDepthResolve LinearDepths;
+  // Light depths of value maps, while the processes' maps are combined.
+  shadowmaps::StoreFromLightDepths LightDepths;
   shadowmaps::ClosedCasters ClosedCasters;
 
   // What the maps were last rendered for; empty when they must be re-rendered.
@@ -693,18 +696,18 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   r.MapsValid = false;
 
   r.Frame.Resolution = this->UsableResolution();
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   // Each failure still answers the other processes' question (CombineAcrossProcesses).
   if (!this->FitViews())
   {
-    this->CombineAcrossProcesses(state, false);
+    this->CombineAcrossProcesses(window, false);
     return false;
   }
   this->ChooseStorage();
   this->UpdateShaderKey(renderer);
   if (!r.ShaderCodeCompiles)
   {
-    this->CombineAcrossProcesses(state, false);
+    this->CombineAcrossProcesses(window, false);
     this->ReportGLFailure("the shadow shader code does not compile (see the shader error above; a "
                           "representation's GLSL?)");
     return false;
@@ -713,7 +716,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   if (!r.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Storage.Format,
         r.Storage.Mipmaps, error))
   {
-    this->CombineAcrossProcesses(state, false);
+    this->CombineAcrossProcesses(window, false);
     this->ReportGLFailure(error);
     return false;
   }
@@ -742,9 +745,11 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::NeedsSecondOutput() const
 {
-  // Peeled two-surface maps, and linear-depth views of depth maps.
+  // Peeled two-surface maps, value maps whose light depths are combined, and
+  // linear-depth views of depth maps.
   const Internals& r = *this->Internal;
-  if (r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
+  if (r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling ||
+    this->MapCombination() == Combination::NEAREST_LIGHT_DEPTHS)
   {
     return true;
   }
@@ -812,7 +817,8 @@ void vtkAbstractShadowMapPass::ChooseStorage()
   const bool oneValueMap = !shadowmaps::IsDepth(r.Storage.Format) &&
     r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
   r.Storage.LightDepth = r.Storage.LightDepth && oneValueMap;
-  r.Storage.Samples = oneValueMap && !r.Storage.MinimumBlending
+  // Combined maps are rebuilt from each texel's nearest light depth, not its samples.
+  r.Storage.Samples = oneValueMap && !r.Storage.MinimumBlending && !this->Exchange
     ? std::max(1, std::min(r.Storage.Samples, MaximumSamples()))
     : 1;
   r.Code.Definitions = std::string(r.Storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
@@ -837,8 +843,11 @@ void vtkAbstractShadowMapPass::ChooseSecondDepthMethod()
     {
       casters.emplace_back(caster.Prop, caster.MTime);
     }
-    storage.SecondDepth = r.ClosedCasters.AllClosed(casters) ? SecondDepthMethod::FrontAndBackFaces
-                                                             : SecondDepthMethod::Peeling;
+    // Processes that combine their maps must make them the same way, and
+    // peeling is right whatever each one's casters are.
+    storage.SecondDepth = !this->Exchange && r.ClosedCasters.AllClosed(casters)
+      ? SecondDepthMethod::FrontAndBackFaces
+      : SecondDepthMethod::Peeling;
   }
   if (storage.SecondDepth != SecondDepthMethod::None)
   {
@@ -864,6 +873,10 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
     r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
   const bool values = !shadowmaps::IsDepth(r.Storage.Format);
   r.CasterCode.StoreCode = values ? r.Storage.StoreCode : std::string();
+  if (this->MapCombination() == Combination::NEAREST_LIGHT_DEPTHS)
+  {
+    r.CasterCode.StoreCode += "\n    gl_FragData[1] = vec4(vtkShadowCasterDepth);";
+  }
   r.CasterCode.StoreFunctions = values ? r.Storage.StoreFunctions : std::string();
   r.CasterCode.LightDepth = values && r.Storage.LightDepth;
   r.CasterCode.LinearDepth = AnyLinearDepthView(r.Lights);
@@ -970,11 +983,17 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
   this->ForgetLayersIfStale();
-  if (this->CombinesDepths())
+  const Combination combination = this->MapCombination();
+  if (combination != Combination::NONE)
   {
     // The layers hold the combination of every process's casters, not this
     // one's: all of them are rendered again and combined again.
     r.LayerSignatures.assign(r.LayerSignatures.size(), {});
+  }
+  const bool keepsLightDepths = combination == Combination::NEAREST_LIGHT_DEPTHS;
+  if (keepsLightDepths)
+  {
+    r.LightDepths.Reset(r.Maps, this->NumberOfShadowMapLayers);
   }
   int draws = 0;
   std::vector<shadowmaps::RenderedLayer> rendered;
@@ -1008,8 +1027,9 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Storage.Format);
         const bool peeling = r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
         const bool multisampled = r.Storage.Samples > 1;
-        ok = multisampled ? r.Maps.BindSamples(state, r.Storage.Samples, r.LastGLError)
-                          : r.Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling);
+        ok = multisampled
+          ? r.Maps.BindSamples(state, r.Storage.Samples, r.LastGLError)
+          : r.Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling || keepsLightDepths);
         if (ok)
         {
           this->ApplyCasterUniforms(light, light.Views[v]);
@@ -1019,6 +1039,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
           ok = !multisampled || r.Maps.ResolveSamples(state, layer, r.LastGLError);
           ok = ok && (!linearDepths || r.LinearDepths.Render(window, r.Maps, layer, r.LastGLError));
+          ok = ok && (!keepsLightDepths || r.LightDepths.Keep(r.Maps, layer, r.LastGLError));
           if (ok && peeling && !props.empty())
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);
@@ -1036,7 +1057,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   {
     this->NumberOfCasterDraws = draws;
   }
-  ok = this->CombineAcrossProcesses(state, ok);
+  ok = this->CombineAcrossProcesses(window, ok);
   if (!ok)
   {
     r.LayerSignatures.clear();
@@ -1046,15 +1067,27 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::CombinesDepths() const
+vtkAbstractShadowMapPass::Combination vtkAbstractShadowMapPass::MapCombination() const
 {
-  const Internals& r = *this->Internal;
-  return this->Exchange && shadowmaps::IsDepth(r.Storage.Format) &&
-    r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
+  using shadowmaps::SecondDepthMethod;
+  const shadowmaps::MapStorage& storage = this->Internal->Storage;
+  if (!this->Exchange)
+  {
+    return Combination::NONE;
+  }
+  if (storage.SecondDepth == SecondDepthMethod::Peeling)
+  {
+    return Combination::NEAREST_TWO_SURFACES;
+  }
+  if (shadowmaps::IsDepth(storage.Format) || storage.SecondDepth == SecondDepthMethod::FrontAndBackFaces)
+  {
+    return Combination::NEAREST_TEXELS;
+  }
+  return storage.LightDepth ? Combination::NEAREST_LIGHT_DEPTHS : Combination::NONE;
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLState* state, bool ok)
+bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* window, bool ok)
 {
   Internals& r = *this->Internal;
   if (!this->Exchange)
@@ -1063,7 +1096,7 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLState* state, boo
   }
   // Every process that is updating its maps calls the same collectives in the
   // same order, whatever failed where: first whether any failed, then (all
-  // having chosen the same storage) the maps' shape, then the depths.
+  // having chosen the same storage) the maps' shape, then their texels.
   if (this->Exchange->AnyOf(!ok))
   {
     if (ok)
@@ -1072,37 +1105,65 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLState* state, boo
     }
     return false;
   }
-  if (!this->CombinesDepths())
+  const Combination how = this->MapCombination();
+  if (how == Combination::NONE)
   {
     if (!r.WarnedUncombined)
     {
-      vtkWarningMacro(<< "Only depth maps are combined across processes; these maps hold "
-                         "each process's own casters.");
+      vtkWarningMacro(<< "Maps of values other than light depths are not combined across "
+                         "processes; these maps hold each process's own casters.");
       r.WarnedUncombined = true;
     }
     return true;
   }
-  std::vector<float> depths;
+  return this->CombineTexels(window, how);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::CombineTexels(vtkOpenGLRenderWindow* window, Combination how)
+{
+  Internals& r = *this->Internal;
+  vtkOpenGLState* state = window->GetState();
   const int layers = this->NumberOfShadowMapLayers;
   const int resolution = r.Frame.Resolution;
-  const bool read = r.Maps.ReadDepths(state, layers, depths, r.LastGLError);
+  const bool lightDepths = how == Combination::NEAREST_LIGHT_DEPTHS;
+  std::vector<float> read;
+  const bool readable = lightDepths || r.Maps.ReadTexels(state, layers, read, r.LastGLError);
+  std::vector<float>& texels = lightDepths ? r.LightDepths.GetDepths() : read;
+  const float kind = static_cast<float>(how);
   std::vector<float> shape = { float(resolution), -float(resolution), float(layers),
-    -float(layers), read ? 0.0f : -1.0f };
+    -float(layers), kind, -kind, float(texels.size()), -float(texels.size()),
+    readable ? 0.0f : -1.0f };
   if (!this->Exchange->MinimumOf(shape) || shape[0] != -shape[1] || shape[2] != -shape[3] ||
-    shape[4] != 0.0f)
+    shape[4] != -shape[5] || shape[6] != -shape[7] || shape[8] != 0.0f)
   {
-    if (read)
+    if (readable)
     {
-      r.LastGLError = "the processes' shadow maps differ in size, or one could not read its maps";
+      r.LastGLError = "the processes' shadow maps differ in size or kind, or one could not read its maps";
     }
     return false;
   }
-  if (!this->Exchange->MinimumOf(depths))
+  const bool combined = how == Combination::NEAREST_TWO_SURFACES
+    ? this->Exchange->NearestTwoOf(texels)
+    : this->Exchange->MinimumOf(texels);
+  if (!combined)
   {
     r.LastGLError = "the shadow maps could not be combined across processes";
     return false;
   }
-  return r.Maps.WriteDepths(state, layers, depths, r.LastGLError);
+  if (!lightDepths)
+  {
+    return r.Maps.WriteTexels(state, layers, texels, r.LastGLError);
+  }
+  for (int layer = 0; layer < layers; ++layer)
+  {
+    if (!r.LightDepths.Store(
+          window, r.Maps, layer, r.Storage.StoreFunctions, r.Storage.StoreCode, r.LastGLError))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -1158,6 +1219,12 @@ void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer, bool line
     buffers |= GL_COLOR_BUFFER_BIT;
   }
   state->vtkglClear(buffers);
+  if (this->MapCombination() == Combination::NEAREST_LIGHT_DEPTHS)
+  {
+    // The casters' light depths: far where none draws.
+    const float far[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+    glClearBufferfv(GL_COLOR, 1, far);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1427,6 +1494,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   r.Signature.clear();
   r.MapView.ReleaseGraphicsResources(window);
   r.LinearDepths.ReleaseGraphicsResources(window);
+  r.LightDepths.ReleaseGraphicsResources(window);
   r.Representation->ReleaseGraphicsResources(window);
   if (r.DefaultRepresentation != r.Representation)
   {

@@ -65,6 +65,7 @@
 #include <vector> // For MapSignature
 
 class vtkInformationIntegerKey;
+class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkOpenGLState;
 class vtkProp;
@@ -129,9 +130,15 @@ public:
   ///@{
   /**
    * Parallel rendering: the collectives with which the processes that each
-   * render a piece of the data combine their depth maps (vtkShadowMapExchange).
-   * nullptr (default): one process. Moment and two-surface maps are not
-   * combined (a warning says so).
+   * render a piece of the data combine their maps into the nearest surfaces
+   * over all of them (vtkShadowMapExchange): depth maps and front-and-back-face
+   * maps texel by texel, peeled two-surface maps as the nearest two, maps of
+   * values of the light depth (moments) through the nearest light depth, from
+   * which each process stores its values. With an exchange, the AUTO layer
+   * method of two-surface maps always peels (every process must make its maps
+   * alike) and value maps' casters are not multisampled (the nearest light
+   * depth is combined, not samples). Values that are no light depth are not
+   * combined (a warning says so). nullptr (default): one process.
    */
   void SetExchange(vtkShadowMapExchange* exchange);
   vtkGetObjectMacro(Exchange, vtkShadowMapExchange);
@@ -356,14 +363,28 @@ private:
     std::string& geometryShader, std::string& fragmentShader, bool receives);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void ForgetLayersIfStale();
-  /** With an exchange, depth maps without a second depth are combined. */
-  bool CombinesDepths() const;
+  /** How the processes' maps combine into the nearest surfaces over all of them. */
+  enum class Combination
+  {
+    /** Not at all (values that are no light depth): each keeps its own. */
+    NONE,
+    /** Each texel's values, the smallest (depths; front and back faces' depths). */
+    NEAREST_TEXELS,
+    /** Peeled texels (x, y), the nearest two (vtkShadowMapExchange::NearestTwoOf). */
+    NEAREST_TWO_SURFACES,
+    /** Light depths the casters also write, the smallest; then the values from them. */
+    NEAREST_LIGHT_DEPTHS
+  };
+  /** How the current storage combines; NONE without an exchange. */
+  Combination MapCombination() const;
   /**
    * With an exchange, on every process that updates its maps: agrees with the
-   * others on whether all rendered them (`ok` here), then combines the depth
-   * maps. Without one, returns `ok`.
+   * others on whether all rendered them (`ok` here), then combines the maps
+   * (MapCombination). Without one, returns `ok`.
    */
-  bool CombineAcrossProcesses(vtkOpenGLState* state, bool ok);
+  bool CombineAcrossProcesses(vtkOpenGLRenderWindow* window, bool ok);
+  /** Reads, exchanges and writes the maps' texels as `how` says; false on failure. */
+  bool CombineTexels(vtkOpenGLRenderWindow* window, Combination how);
   bool PostProcessShadowMaps(
     vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered);
   int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,

@@ -1,1 +1,32 @@
 #include "vtkShadowMapExchange.h"
+
+//------------------------------------------------------------------------------
+bool vtkShadowMapExchange::NearestTwoOf(std::vector<float>& pairs)
+{
+  const std::size_t count = pairs.size() / 2;
+  std::vector<float> nearest(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    nearest[i] = pairs[2 * i];
+  }
+  if (!this->MinimumOf(nearest))
+  {
+    return false;
+  }
+  std::vector<float> behind(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const float x = pairs[2 * i];
+    behind[i] = x > nearest[i] ? x : pairs[2 * i + 1];
+  }
+  if (!this->MinimumOf(behind))
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    pairs[2 * i] = nearest[i];
+    pairs[2 * i + 1] = behind[i];
+  }
+  return true;
+}

@@ -40,6 +40,16 @@ public:
    */
   virtual bool MinimumOf(std::vector<float>& values) = 0;
 
+  /**
+   * Called on every process with arrays of the same size: pairs (x, y) of the
+   * nearest depth x and the next one behind it y (or 1, far), such as a peeled
+   * two-surface map's texels. Each pair becomes the nearest two over the
+   * processes, by two MinimumOf calls: x first, then for each process its
+   * nearest depth behind that (its x, or its y where its x is the nearest).
+   * False on failure.
+   */
+  bool NearestTwoOf(std::vector<float>& pairs);
+
 protected:
   vtkShadowMapExchange() = default;
   ~vtkShadowMapExchange() override = default;

@@ -145,7 +145,9 @@ public:
    * averaged into the texel's moments: a caster covering part of a texel
    * contributes that part, which smooths the maps' edges before any blur.
    * Costs the multisample buffers' memory and their resolve per re-rendered
-   * layer; limited to what GL offers. Clamped to [1, 8]; default 1 (off).
+   * layer; limited to what GL offers, and off while a pass combines its maps
+   * across processes (vtkAbstractShadowMapPass::SetExchange). Clamped to
+   * [1, 8]; default 1 (off).
    */
   vtkSetClampMacro(CasterSamples, int, 1, 8);
   vtkGetMacro(CasterSamples, int);

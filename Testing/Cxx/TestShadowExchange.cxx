@@ -1,10 +1,13 @@
-// Image tests: passes that each render a piece of the scene combine their depth
-// maps through a vtkShadowMapExchange (Plugin/Passes), as ParaView's ranks do.
+// Image tests: passes that each render a piece of the scene combine their maps
+// (depths, two surfaces' depths, moments through light depths) through a
+// vtkShadowMapExchange (Plugin/Passes), as ParaView's ranks do.
 // Two "processes" are two test scenes in this process: A holds the sphere, B the
 // ground. Their exchanges stand for the collectives: A's MinimumOf keeps what A
 // sends, B's combines with it, as if both had called it together.
 #include "ShadowTestUtilities.h"
 #include "vtkDepthShadowMapPass.h"
+#include "vtkDualDepthShadowMapPass.h"
+#include "vtkShadowMapRepresentation.h"
 #include "vtkShadowMapExchange.h"
 #include "vtkVarianceShadowMapPass.h"
 
@@ -17,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 namespace
@@ -187,22 +191,111 @@ TEST(ShadowExchange, ACasterOnAnotherProcessShadowsThisOnesGround)
   }
 }
 
+/// Stands for the other processes with what they contribute to each MinimumOf call.
+class ScriptedExchange : public vtkShadowMapExchange
+{
+public:
+  static ScriptedExchange* New();
+  vtkTypeMacro(ScriptedExchange, vtkShadowMapExchange);
+  std::vector<std::vector<float>> Others;
+  std::size_t Call = 0;
+  bool AnyOf(bool local) override { return local; }
+  bool MinimumOf(std::vector<float>& values) override
+  {
+    if (this->Call >= this->Others.size() || this->Others[this->Call].size() != values.size())
+    {
+      return false;
+    }
+    const std::vector<float>& others = this->Others[this->Call++];
+    std::transform(values.begin(), values.end(), others.begin(), values.begin(),
+      [](float mine, float theirs) { return std::min(mine, theirs); });
+    return true;
+  }
+};
+vtkStandardNewMacro(ScriptedExchange);
+
+// NearestTwoOf: this process's texels (x nearest, y next) and another's make
+// the nearest two surfaces of both, whichever process holds them.
+TEST(ShadowExchange, NearestTwoOfKeepsTheNearestTwoSurfacesOfAllProcesses)
+{
+  // Texel by texel: both of this process's surfaces nearest; this one's, then
+  // the other's; the other's, then this one's; both of the other's; this one
+  // alone; neither has any.
+  const std::vector<float> mine = { 0.2f, 0.3f, 0.2f, 0.6f, 0.5f, 0.6f, 0.7f, 0.8f, 0.4f, 1.0f,
+    1.0f, 1.0f };
+  const std::vector<float> theirs = { 0.5f, 0.6f, 0.4f, 0.5f, 0.1f, 0.9f, 0.1f, 0.2f, 1.0f, 1.0f,
+    1.0f, 1.0f };
+  vtkNew<ScriptedExchange> exchange;
+  // What the other process sends: its x, then its nearest behind the nearest of all.
+  std::vector<float> theirNearest;
+  std::vector<float> theirBehind;
+  for (std::size_t i = 0; i < mine.size(); i += 2)
+  {
+    const float nearest = std::min(mine[i], theirs[i]);
+    theirNearest.push_back(theirs[i]);
+    theirBehind.push_back(theirs[i] > nearest ? theirs[i] : theirs[i + 1]);
+  }
+  exchange->Others = { theirNearest, theirBehind };
+  std::vector<float> pairs = mine;
+  ASSERT_TRUE(exchange->NearestTwoOf(pairs));
+  EXPECT_EQ(exchange->Call, 2u);
+  for (std::size_t i = 0; i < mine.size(); i += 2)
+  {
+    std::vector<float> surfaces = { mine[i], mine[i + 1], theirs[i], theirs[i + 1] };
+    std::sort(surfaces.begin(), surfaces.end());
+    EXPECT_EQ(pairs[i], surfaces[0]) << "texel " << i / 2;
+    EXPECT_EQ(pairs[i + 1], surfaces[1]) << "texel " << i / 2;
+  }
+}
+
+// A pass of each storage that combines, by name.
+vtkSmartPointer<vtkAbstractShadowMapPass> MakeCombiningPass(const std::string& name)
+{
+  if (name.rfind("Dual", 0) == 0)
+  {
+    auto dual = vtkSmartPointer<vtkDualDepthShadowMapPass>::New();
+    dual->SetLayerMethod(name == "DualPeeling" ? vtkDualDepthShadowMapPass::DEPTH_PEELING
+        : name == "DualMinimumBlending"         ? vtkDualDepthShadowMapPass::MINIMUM_BLENDING
+                                                : vtkDualDepthShadowMapPass::AUTO);
+    return dual;
+  }
+  if (name == "EVSM4" || name == "MSM16")
+  {
+    auto variance = vtkSmartPointer<vtkVarianceShadowMapPass>::New();
+    if (name == "MSM16")
+    {
+      variance->SetMomentsToMSM();
+      variance->SetStorageToHalfFloat();
+    }
+    return variance;
+  }
+  return vtkSmartPointer<vtkDepthShadowMapPass>::New();
+}
+
+class ShadowExchangeStorage : public ::testing::TestWithParam<std::string>
+{
+};
+
 // The combined maps equal the maps of the whole scene: B's ground shades as the
 // whole scene's ground does wherever the whole scene's sphere does not hide it.
-TEST(ShadowExchange, CombinedMapsShadeLikeTheWholeScenesMaps)
+// Depth maps and front and back faces combine texel by texel, peeled surfaces
+// as the nearest two, moments through the nearest light depth.
+TEST_P(ShadowExchangeStorage, CombinedMapsShadeLikeTheWholeScenesMaps)
 {
   TwoProcesses processes;
-  vtkNew<vtkDepthShadowMapPass> a;
-  vtkNew<vtkDepthShadowMapPass> b;
+  auto a = MakeCombiningPass(GetParam());
+  auto b = MakeCombiningPass(GetParam());
   processes.Use(a, b, true);
+  ErrorCounter messages;
   vtkSmartPointer<vtkImageData> combined = processes.RenderBoth();
+  EXPECT_EQ(messages.Errors() + messages.Warnings(), 0) << messages.Text();
 
   TestScene& whole = processes.Whole;
   vtkSmartPointer<vtkImageData> withSphere = RenderAndCapture(whole.Window);
   whole.Sphere->SetVisibility(false);
   vtkSmartPointer<vtkImageData> withoutSphere = RenderAndCapture(whole.Window);
   whole.Sphere->SetVisibility(true);
-  vtkNew<vtkDepthShadowMapPass> wholePass;
+  auto wholePass = MakeCombiningPass(GetParam());
   ShareBounds(wholePass, whole);
   whole.Renderer->SetPass(wholePass);
   vtkSmartPointer<vtkImageData> reference = RenderAndCapture(whole.Window);
@@ -233,6 +326,9 @@ TEST(ShadowExchange, CombinedMapsShadeLikeTheWholeScenesMaps)
   processes.Release();
 }
 
+INSTANTIATE_TEST_SUITE_P(ShadowExchange, ShadowExchangeStorage,
+  ::testing::Values("Depth", "DualPeeling", "DualMinimumBlending", "DualAuto", "EVSM4", "MSM16"));
+
 // A change on one process re-renders every process's maps: B's own scene did
 // not change, A's sphere moved, and B's shadow follows it.
 TEST(ShadowExchange, AChangeOnAnyProcessReRendersAll)
@@ -255,18 +351,52 @@ TEST(ShadowExchange, AChangeOnAnyProcessReRendersAll)
   processes.Release();
 }
 
-// Moments are not combined: a warning says so, and each process keeps its own.
-TEST(ShadowExchange, MomentMapsAreNotCombinedAndSaySo)
+/// Values that are no light depth: (depth, depth^2) of the window depth.
+class vtkTestWindowMomentsRepresentation : public vtkShadowMapRepresentation
+{
+public:
+  static vtkTestWindowMomentsRepresentation* New();
+  vtkTypeMacro(vtkTestWindowMomentsRepresentation, vtkShadowMapRepresentation);
+  void GetMapStorage(shadowmaps::MapStorage& storage) const override
+  {
+    storage = shadowmaps::MapStorage();
+    storage.Format = shadowmaps::TexelFormat::TwoFloats;
+    storage.StoreCode = "  gl_FragData[0] = vec4(vtkShadowCasterDepth, "
+                        "vtkShadowCasterDepth * vtkShadowCasterDepth, 0.0, 1.0);";
+  }
+  std::string GetReceiverLookupCode() const override
+  {
+    return "uniform sampler2DArray vtkShadowMaps;\n"
+           "float vtkShadowLookup(vec3 mapCoord, int layer)\n"
+           "{\n"
+           "  float nearest = texture(vtkShadowMaps, vec3(mapCoord.xy, float(layer))).x;\n"
+           "  return mapCoord.z <= nearest + 0.002 ? 1.0 : 0.0;\n"
+           "}\n";
+  }
+};
+vtkStandardNewMacro(vtkTestWindowMomentsRepresentation);
+
+// Values the pass cannot combine (not light depths): a warning says so, once
+// per pass, and each process keeps its own casters.
+TEST(ShadowExchange, OtherValuesAreNotCombinedAndSaySo)
 {
   TwoProcesses processes;
-  vtkNew<vtkVarianceShadowMapPass> a;
-  vtkNew<vtkVarianceShadowMapPass> b;
+  vtkNew<vtkDepthShadowMapPass> a;
+  vtkNew<vtkDepthShadowMapPass> b;
+  vtkNew<vtkTestWindowMomentsRepresentation> representationA;
+  vtkNew<vtkTestWindowMomentsRepresentation> representationB;
+  a->SetRepresentation(representationA);
+  b->SetRepresentation(representationB);
   processes.Use(a, b, true);
   ErrorCounter warnings;
   processes.RenderBoth();
-  processes.RenderBoth();
+  vtkSmartPointer<vtkImageData> image = processes.RenderBoth();
   EXPECT_EQ(warnings.Warnings(), 2) << "once per pass: " << warnings.Text();
-  EXPECT_NE(warnings.Text().find("Only depth maps are combined"), std::string::npos);
+  EXPECT_NE(warnings.Text().find("are not combined"), std::string::npos) << warnings.Text();
+  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(SunDirection);
+  const double lit = LuminanceAt(processes.B.Renderer, image, glm::dvec3(-5.0, -4.0, 0.0));
+  EXPECT_GT(LuminanceAt(processes.B.Renderer, image, shadowed), 0.9 * lit)
+    << "B's maps hold its own casters only";
   processes.Release();
 }
 } // namespace
