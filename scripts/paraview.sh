@@ -9,7 +9,8 @@
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 PARAVIEW_BUILD_DIR="${PARAVIEW_BUILD_DIR:-$ROOT/build-paraview}"
-PARAVIEW_PACKAGES=(paraview paraview-dev python3-paraview openmpi-bin)
+# libprotobuf-dev: the headers of the server-manager messages (vtkSIShadowRoleProperty).
+PARAVIEW_PACKAGES=(paraview paraview-dev python3-paraview openmpi-bin libprotobuf-dev)
 VTK_PACKAGES=(libvtk9-dev python3-vtk9)
 PLUGIN="$PARAVIEW_BUILD_DIR/lib/paraview-5.11/plugins/ShadowMaps/ShadowMaps.so"
 

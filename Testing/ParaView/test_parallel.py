@@ -3,7 +3,9 @@ ground, rank 1 the sphere and rank 2 nothing (a programmable source gives each
 rank its piece). The sphere's shadow falls on rank 0's ground only if the ranks'
 depth maps are combined, and rank 2 must still take part. The composited frame
 is compared with the same scene on one rank (which holds both pieces), written
-first by the `serial` run, for the uniform map and for cascades.
+first by the `serial` run, for the uniform map and cascades of depths, and the
+uniform map of dual depths and of moments. The representation's Casts Shadows
+and Receives Shadows reach every rank.
 
   xvfb-run -a pvbatch Testing/ParaView/test_parallel.py PLUGIN OUTDIR serial
   xvfb-run -a mpiexec -np 3 pvbatch Testing/ParaView/test_parallel.py PLUGIN OUTDIR parallel
@@ -17,8 +19,8 @@ from paraview.simple import Delete, LoadPlugin, ProgrammableSource, Render, Show
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
-from shadow_view_testing import (SUN, add_sun, check_same_image, failures,  # noqa: E402
-                                 make_view, render, shadow_probes)
+from shadow_view_testing import (LIT, SHADOWED, SUN, add_sun, check, check_same_image,  # noqa: E402
+                                 failures, luminance_at, make_view, render, shadow_probes)
 
 PLUGIN, MODE = sys.argv[1], sys.argv[3]
 
@@ -59,12 +61,17 @@ if pieces.GetNumberOfInputConnections(0) > 0:
     self.GetOutput().ShallowCopy(pieces.GetOutput())
 """
 
-for views_choice in ("Uniform", "Cascades"):
-    view = make_view("ShadowRenderView", ShadowViews=views_choice)
-    source = ProgrammableSource(OutputDataSetType="vtkPolyData", Script=PIECES)
-    Show(source, view)
+# Every storage combines: depths, two surfaces' depths (peeled), moments (from
+# the nearest light depth); cascades with depths.
+CASES = (("Uniform", "Depth (PCF)"), ("Cascades", "Depth (PCF)"),
+         ("Uniform", "Dual depth (no bias)"), ("Uniform", "Moments (EVSM4)"))
+for views_choice, storage in CASES:
+    view = make_view("ShadowRenderView", ShadowViews=views_choice, ShadowStorage=storage)
+    pieces = ProgrammableSource(OutputDataSetType="vtkPolyData", Script=PIECES)
+    display = Show(pieces, view)
     add_sun(view)
-    name = "ParaViewParallel" + views_choice
+    what = views_choice + " / " + storage
+    name = "ParaViewParallel" + views_choice + ("" if storage == CASES[0][1] else storage.split(" ")[0])
     png = render(view, name + "_" + MODE)  # the first frame compiles shaders
     # Frame cost (printed, not tested): steady frames keep the maps; a frame
     # whose sun moved re-renders them, and on several ranks combines them.
@@ -77,14 +84,26 @@ for views_choice in ("Uniform", "Cascades"):
     sun.Position = SUN
     render(view, name + "_" + MODE)
     if MODE == "parallel":
-        shadow_probes(view, png, views_choice + " on 3 ranks (caster on rank 1, ground on rank 0)")
+        shadow_probes(view, png, what + " on 3 ranks (caster on rank 1, ground on rank 0)")
         serial = os.path.join(OUT, name + "_serial.png")
-        check_same_image(serial, png, views_choice + ": the 3-rank frame equals the 1-rank frame")
+        check_same_image(serial, png, what + ": the 3-rank frame equals the 1-rank frame")
     else:
-        shadow_probes(view, png, views_choice + " on 1 rank")
+        shadow_probes(view, png, what + " on 1 rank")
+    if MODE == "parallel" and (views_choice, storage) == CASES[0]:
+        # The representation's roles reach every rank: the caster's (rank 1)
+        # and the receiver's (rank 0).
+        for role in ("CastsShadows", "ReceivesShadows"):
+            setattr(display, role, 0)
+            off = render(view, name + "_" + role + "Off")
+            check(luminance_at(view, off, SHADOWED) > 0.8 * luminance_at(view, off, LIT),
+                  f"{role} off on 3 ranks: the ground under the sphere is lit")
+            setattr(display, role, 1)
     layers = view.NumberOfCascades if views_choice == "Cascades" else 1
-    mebibytes = 4 * view.ShadowMapResolution ** 2 * layers / 2 ** 20
-    print(f"{views_choice}, {'3 ranks' if MODE == 'parallel' else '1 rank'}: steady frame "
+    # Floats all-reduced per texel: a depth; the nearest depth, then the one
+    # behind it (two reductions); a light depth.
+    floats = 2 if storage.startswith("Dual") else 1
+    mebibytes = 4 * floats * view.ShadowMapResolution ** 2 * layers / 2 ** 20
+    print(f"{what}, {'3 ranks' if MODE == 'parallel' else '1 rank'}: steady frame "
           f"{1000 * median(steady):.0f} ms, frame whose sun moved {1000 * median(moved):.0f} ms "
           f"({layers} map(s) of {view.ShadowMapResolution}^2"
           + (f", {mebibytes:.0f} MiB combined per rank)" if MODE == "parallel" else ")"))

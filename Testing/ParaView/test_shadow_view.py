@@ -3,7 +3,8 @@ lit by a sun. Each choice of views and storage darkens the ground where the
 sphere's shadow falls and keeps it lit elsewhere; the default and cascaded views
 equal their baselines; ParaView's plain render view (no plugin pass) leaves the
 shadow point lit, so the probes can fail; the light kit's key light is the only
-kit light that casts, and only while KeyLightShadows is on.
+kit light that casts, and only while KeyLightShadows is on; a representation's
+Casts Shadows and Receives Shadows turn its part off.
 
   xvfb-run -a pvpython Testing/ParaView/test_shadow_view.py PLUGIN OUTDIR
   (SHADOWMAPS_UPDATE_BASELINES=1 writes the baselines; look at them.)
@@ -13,8 +14,9 @@ import subprocess
 import sys
 
 from paraview import servermanager
-from paraview.simple import (ClearSelection, Delete, ExtractSelection, LoadPlugin,
-                             SelectSurfaceCells, SetActiveSource, SetActiveView)
+from paraview.simple import (ClearSelection, Delete, ExtractSelection, GetDisplayProperties, Hide,
+                             LoadPlugin, SelectSurfaceCells, SetActiveSource, SetActiveView, Show,
+                             Tessellate, Transform, Wavelet)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
@@ -105,6 +107,48 @@ check(selected is not None and selected.GetNumberOfCells() > 0,
       f"({selected.GetNumberOfCells() if selected else 0})")
 ClearSelection(sphere)
 shadow_probes(view, render(view, "ParaViewShadowViewAfterSelection"), "after a selection")
+Delete(view)
+
+# Per representation: a sphere that does not cast leaves the ground lit, a
+# ground that does not receive stays lit under it; both back on, the shadow
+# returns. An unstructured grid's surface (UnstructuredGridRepresentation)
+# takes the roles too.
+view = make_view("ShadowRenderView")
+ground, sphere = show_scene(view)
+sphere_display = GetDisplayProperties(sphere, view)
+ground_display = GetDisplayProperties(ground, view)
+check(sphere_display.CastsShadows == 1 and ground_display.ReceivesShadows == 1,
+      "representations cast and receive shadows by default")
+
+
+def shadow_is_dark(png):
+    return luminance_at(view, png, SHADOWED) < 0.45 * luminance_at(view, png, LIT)
+
+
+sphere_display.CastsShadows = 0
+check(not shadow_is_dark(render(view, "ParaViewShadowViewSphereCastsNot")),
+      "a sphere with Casts Shadows off leaves the ground lit")
+sphere_display.CastsShadows = 1
+ground_display.ReceivesShadows = 0
+check(not shadow_is_dark(render(view, "ParaViewShadowViewGroundReceivesNot")),
+      "a ground with Receives Shadows off stays lit under the sphere")
+ground_display.ReceivesShadows = 1
+shadow_probes(view, render(view, "ParaViewShadowViewRolesBack"), "roles back on")
+Hide(sphere, view)
+grid = Tessellate(Input=sphere)
+grid_display = Show(grid, view)
+check(grid.GetDataInformation().GetDataSetTypeAsString() == "vtkUnstructuredGrid",
+      "the tessellated sphere is an unstructured grid")
+shadow_probes(view, render(view, "ParaViewShadowViewGridCasts"), "an unstructured grid casts")
+grid_display.CastsShadows = 0
+check(not shadow_is_dark(render(view, "ParaViewShadowViewGridCastsNot")),
+      "an unstructured grid with Casts Shadows off leaves the ground lit")
+for kind, source in (("image data", Wavelet()),
+                     ("a structured grid", Transform(Input=Wavelet()))):
+    display = Show(source, view)
+    check(display.CastsShadows == 1 and display.ReceivesShadows == 1,
+          f"{kind}'s representation ({display.GetXMLName()}) has the shadow roles")
+    Hide(source, view)
 Delete(view)
 
 # The light kit: its key light casts, the others do not.

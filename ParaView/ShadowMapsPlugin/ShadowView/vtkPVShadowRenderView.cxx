@@ -2,9 +2,12 @@
 
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkCascadedShadowMapViews.h"
+#include "vtkCompositeRepresentation.h"
 #include "vtkDepthShadowMapPass.h"
 #include "vtkDualDepthShadowMapPass.h"
+#include "vtkGeometryRepresentation.h"
 #include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightKit.h"
@@ -12,6 +15,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
+#include "vtkPVLODActor.h"
 #include "vtkPVShadowMapExchange.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkRenderWindow.h"
@@ -139,7 +143,40 @@ void vtkPVShadowRenderView::Render(bool interactive, bool skip_rendering)
     pass->SetSceneBounds(bounds);
   }
   pass->SetUseSceneBounds(global);
+  this->ApplyShadowRoles();
   this->Superclass::Render(interactive, skip_rendering);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::ApplyShadowRoles()
+{
+  for (int i = 0; i < this->GetNumberOfRepresentations(); ++i)
+  {
+    vtkDataRepresentation* representation = this->GetRepresentation(i);
+    auto* composite = vtkCompositeRepresentation::SafeDownCast(representation);
+    auto* surface = vtkGeometryRepresentation::SafeDownCast(
+      composite ? composite->GetActiveRepresentation() : representation);
+    vtkProp* prop = surface ? surface->GetActor() : nullptr;
+    if (!prop)
+    {
+      continue;
+    }
+    vtkInformation* roles = representation->GetInformation();
+    for (vtkInformationIntegerKey* key :
+      { vtkAbstractShadowMapPass::CASTS_SHADOWS(), vtkAbstractShadowMapPass::RECEIVES_SHADOWS() })
+    {
+      if (!roles->Has(key))
+      {
+        continue;
+      }
+      if (!prop->GetPropertyKeys())
+      {
+        vtkNew<vtkInformation> keys;
+        prop->SetPropertyKeys(keys);
+      }
+      prop->GetPropertyKeys()->Set(key, roles->Get(key));
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

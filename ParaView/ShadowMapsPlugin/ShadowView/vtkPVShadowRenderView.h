@@ -16,12 +16,17 @@
  * moments). Lights: the light kit's key light casts shadows (KeyLightShadows),
  * its fill, back and head lights do not; every light added to the view casts.
  *
+ * Per representation, Casts Shadows and Receives Shadows (properties the plugin
+ * adds to the surface representations, vtkSIShadowRoleProperty) give each
+ * representation's prop the module's keys before every render.
+ *
  * On several ranks (pvbatch, pvserver under MPI) every rank fits its views to
  * the view's global geometry bounds, renders its own casters into its maps, and
- * the depth maps are combined, nearest depth over the ranks
- * (vtkPVShadowMapExchange), so a caster on one rank shadows receivers on
- * another; ranks without geometry still render and take part. Dual-depth and
- * moment maps are not combined (the pass warns).
+ * the maps are combined into the nearest surfaces over the ranks
+ * (vtkPVShadowMapExchange): depths, the two nearest surfaces of dual-depth
+ * maps, the nearest light depth of moment maps (each rank then stores, blurs
+ * and mipmaps its moments), so a caster on one rank shadows receivers on
+ * another; ranks without geometry still render and take part.
  */
 #ifndef vtkPVShadowRenderView_h
 #define vtkPVShadowRenderView_h
@@ -110,7 +115,10 @@ protected:
 
   /** Every rank renders, even one with no geometry: the maps' combination needs all. */
   void Update() override;
-  /** On several ranks, fits the pass's views to the global geometry bounds. */
+  /**
+   * Gives each representation's prop its Casts/Receives Shadows values, and
+   * on several ranks fits the pass's views to the global geometry bounds.
+   */
   void Render(bool interactive, bool skip_rendering) override;
 
 private:
@@ -125,6 +133,11 @@ private:
   void ReleasePass(vtkAbstractShadowMapPass* pass);
   /** Several ranks render pieces of this view's data through one camera. */
   bool CombinesAcrossRanks();
+  /**
+   * Copies the shadow roles vtkSIShadowRoleProperty keeps on each
+   * representation to the prop its active surface representation renders.
+   */
+  void ApplyShadowRoles();
 
   int ShadowViews = UNIFORM;
   int ShadowStorage = DEPTH;
