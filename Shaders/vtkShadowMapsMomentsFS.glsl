@@ -20,9 +20,9 @@ vec2 vtkShadowWarpDepth(float depth)
 
 #if VTK_SHADOW_CHEBYSHEV_BASIS
 // MSM in 16-bit normalized storage. The power moments d, d^2, d^3, d^4 of
-// depths in [0, 1] nearly coincide: what d^4 adds to the lower three spans
-// about 1/128 of [0, 1] (the monic quartic of least maximum there is 2^-7
-// times a Chebyshev polynomial), so a 16-bit d^4 keeps only 9 bits of it.
+// depths in [0, 1] nearly coincide: what d^4 adds to the lower three stays
+// within +-1/128 (the monic quartic of least maximum there is 2^-7 times a
+// Chebyshev polynomial), so a 16-bit d^4 keeps only about 9 bits of it.
 // Shifted Chebyshev polynomials T_k(2d - 1), k = 1..4, moved to [0, 1], are a
 // triangular linear change of basis (averages stay averages, so blur and
 // mipmaps commute with it) whose every coordinate spans all of [0, 1]: the

@@ -28,7 +28,8 @@ void StoreFromLightDepths::Reset(const TextureArray& maps, int layers)
 }
 
 //------------------------------------------------------------------------------
-bool StoreFromLightDepths::Keep(const TextureArray& maps, int layer, std::string& error)
+bool StoreFromLightDepths::Keep(
+  vtkOpenGLState* state, const TextureArray& maps, int layer, std::string& error)
 {
   const std::size_t texels = static_cast<std::size_t>(maps.GetResolution()) * maps.GetResolution();
   if (maps.GetSecondOutput() == 0 || (layer + 1) * texels > this->Depths.size())
@@ -39,7 +40,8 @@ bool StoreFromLightDepths::Keep(const TextureArray& maps, int layer, std::string
   ScopedTextureBinding keep(false);
   ClearGLErrors();
   glBindTexture(GL_TEXTURE_2D, maps.GetSecondOutput());
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  // Through the state: VTK 9.1 caches pixel alignment and skips calls it thinks are made.
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, this->Depths.data() + layer * texels);
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
@@ -70,7 +72,7 @@ bool StoreFromLightDepths::ReadyProgram(
 }
 
 //------------------------------------------------------------------------------
-bool StoreFromLightDepths::UploadLayer(int layer, int resolution)
+bool StoreFromLightDepths::UploadLayer(vtkOpenGLState* state, int layer, int resolution)
 {
   ClearGLErrors();
   if (this->Source == 0 || this->SourceResolution != resolution)
@@ -84,7 +86,7 @@ bool StoreFromLightDepths::UploadLayer(int layer, int resolution)
     this->SourceResolution = resolution;
   }
   glBindTexture(GL_TEXTURE_2D, this->Source);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  state->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   const std::size_t texels = static_cast<std::size_t>(resolution) * resolution;
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, resolution, resolution, GL_RED, GL_FLOAT,
     this->Depths.data() + layer * texels);
@@ -121,7 +123,7 @@ bool StoreFromLightDepths::Store(vtkOpenGLRenderWindow* window, TextureArray& ma
   vtkOpenGLState::ScopedglEnableDisable keepScissor(state, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglActiveTexture keepUnit(state);
   state->vtkglActiveTexture(GL_TEXTURE0 + unit);
-  bool ok = this->UploadLayer(layer, resolution);
+  bool ok = this->UploadLayer(state, layer, resolution);
   if (!ok)
   {
     error = "cannot upload the combined light depths";

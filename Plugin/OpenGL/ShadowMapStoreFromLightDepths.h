@@ -15,6 +15,7 @@
 
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkWindow;
 
 namespace shadowmaps
@@ -34,7 +35,7 @@ public:
 
   /// Copies the light depths `layer`'s casters just wrote to the maps' second
   /// output. False, with `error`, on a GL failure.
-  bool Keep(const TextureArray& maps, int layer, std::string& error);
+  bool Keep(vtkOpenGLState* state, const TextureArray& maps, int layer, std::string& error);
 
   /// Every kept layer's light depths, layer after layer, row after row.
   std::vector<float>& GetDepths() { return this->Depths; }
@@ -52,7 +53,7 @@ private:
   bool ReadyProgram(vtkOpenGLRenderWindow* window, const std::string& storeFunctions,
     const std::string& storeCode);
   /// Uploads `layer`'s depths into Source, made or resized on demand.
-  bool UploadLayer(int layer, int resolution);
+  bool UploadLayer(vtkOpenGLState* state, int layer, int resolution);
 
   std::vector<float> Depths;
   unsigned int Source = 0;

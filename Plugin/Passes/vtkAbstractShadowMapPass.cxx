@@ -817,8 +817,10 @@ void vtkAbstractShadowMapPass::ChooseStorage()
   const bool oneValueMap = !shadowmaps::IsDepth(r.Storage.Format) &&
     r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
   r.Storage.LightDepth = r.Storage.LightDepth && oneValueMap;
-  // Combined maps are rebuilt from each texel's nearest light depth, not its samples.
-  r.Storage.Samples = oneValueMap && !r.Storage.MinimumBlending && !this->Exchange
+  // Combined light-depth maps are rebuilt from each texel's nearest light
+  // depth, not its samples.
+  const bool combinesLightDepths = this->Exchange && r.Storage.LightDepth;
+  r.Storage.Samples = oneValueMap && !r.Storage.MinimumBlending && !combinesLightDepths
     ? std::max(1, std::min(r.Storage.Samples, MaximumSamples()))
     : 1;
   r.Code.Definitions = std::string(r.Storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
@@ -1039,7 +1041,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
           ok = !multisampled || r.Maps.ResolveSamples(state, layer, r.LastGLError);
           ok = ok && (!linearDepths || r.LinearDepths.Render(window, r.Maps, layer, r.LastGLError));
-          ok = ok && (!keepsLightDepths || r.LightDepths.Keep(r.Maps, layer, r.LastGLError));
+          ok = ok && (!keepsLightDepths || r.LightDepths.Keep(state, r.Maps, layer, r.LastGLError));
           if (ok && peeling && !props.empty())
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);

@@ -134,9 +134,10 @@ public:
    * over all of them (vtkShadowMapExchange): depth maps and front-and-back-face
    * maps texel by texel, peeled two-surface maps as the nearest two, maps of
    * values of the light depth (moments) through the nearest light depth, from
-   * which each process stores its values. With an exchange, the AUTO layer
-   * method of two-surface maps always peels (every process must make its maps
-   * alike) and value maps' casters are not multisampled (the nearest light
+   * which each process stores its values. With an exchange, two-surface maps
+   * whose representation leaves the layer method to the pass (AUTO) are
+   * always peeled (every process must make its maps alike), and the casters
+   * of combined light-depth maps are not multisampled (the nearest light
    * depth is combined, not samples). Values that are no light depth are not
    * combined (a warning says so). nullptr (default): one process.
    */

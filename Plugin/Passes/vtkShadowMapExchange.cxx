@@ -9,17 +9,15 @@ bool vtkShadowMapExchange::NearestTwoOf(std::vector<float>& pairs)
   {
     nearest[i] = pairs[2 * i];
   }
-  if (!this->MinimumOf(nearest))
-  {
-    return false;
-  }
+  // Both collectives are made whatever the first gave: every process makes the same calls.
+  const bool nearestCombined = this->MinimumOf(nearest);
   std::vector<float> behind(count);
   for (std::size_t i = 0; i < count; ++i)
   {
     const float x = pairs[2 * i];
     behind[i] = x > nearest[i] ? x : pairs[2 * i + 1];
   }
-  if (!this->MinimumOf(behind))
+  if (!this->MinimumOf(behind) || !nearestCombined)
   {
     return false;
   }

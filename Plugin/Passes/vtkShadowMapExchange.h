@@ -45,8 +45,10 @@ public:
    * nearest depth x and the next one behind it y (or 1, far), such as a peeled
    * two-surface map's texels. Each pair becomes the nearest two over the
    * processes, by two MinimumOf calls: x first, then for each process its
-   * nearest depth behind that (its x, or its y where its x is the nearest).
-   * False on failure.
+   * nearest depth behind that (its x, or its y where its x is the nearest). A
+   * depth several processes hold counts once, as peeling one process's
+   * surfaces would. Both calls are made even when the first fails. False on
+   * failure.
    */
   bool NearestTwoOf(std::vector<float>& pairs);
 

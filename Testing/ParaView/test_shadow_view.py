@@ -143,11 +143,19 @@ shadow_probes(view, render(view, "ParaViewShadowViewGridCasts"), "an unstructure
 grid_display.CastsShadows = 0
 check(not shadow_is_dark(render(view, "ParaViewShadowViewGridCastsNot")),
       "an unstructured grid with Casts Shadows off leaves the ground lit")
-for kind, source in (("image data", Wavelet()),
-                     ("a structured grid", Transform(Input=Wavelet()))):
+# A 2 x 2 x 2 box of image data above the ground, and the same as a structured
+# grid: each casts the shadow, and with Casts Shadows off does not.
+Hide(grid, view)
+box = Wavelet(WholeExtent=[-1, 1, -1, 1, 1, 3])
+for kind, source, proxy in (("image data", box, "UniformGridRepresentation"),
+                            ("a structured grid", Transform(Input=box), "StructuredGridRepresentation")):
     display = Show(source, view)
-    check(display.CastsShadows == 1 and display.ReceivesShadows == 1,
-          f"{kind}'s representation ({display.GetXMLName()}) has the shadow roles")
+    display.Representation = "Surface"
+    check(display.GetXMLName() == proxy, f"{kind} is shown by {proxy} ({display.GetXMLName()})")
+    check(shadow_is_dark(render(view, "ParaViewShadowViewRoles" + proxy)), f"{kind} casts")
+    display.CastsShadows = 0
+    check(not shadow_is_dark(render(view, "ParaViewShadowViewRoles" + proxy + "Off")),
+          f"{kind} with Casts Shadows off leaves the ground lit")
     Hide(source, view)
 Delete(view)
 
