@@ -142,6 +142,11 @@ bool AnyLinearDepthView(const std::vector<ShadowLight>& lights)
   });
 }
 
+bool IsUsableBox(const Aabb& box)
+{
+  return !box.IsEmpty() && std::isfinite(box.Diagonal());
+}
+
 bool IsNonFinite(const LightView& view)
 {
   return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
@@ -615,7 +620,7 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
       continue;
     }
     const Aabb bounds = Aabb::FromBounds(prop->GetBounds());
-    if (bounds.IsEmpty() || !std::isfinite(bounds.Diagonal()))
+    if (!IsUsableBox(bounds))
     {
       continue;
     }
@@ -635,11 +640,16 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   }
 
   const Aabb given = Aabb::FromBounds(this->SceneBounds);
-  if (this->UseSceneBounds && !given.IsEmpty() && std::isfinite(given.Diagonal()))
+  if (this->UseSceneBounds && IsUsableBox(given))
   {
-    // The same on every process of a parallel renderer, whatever piece it holds.
+    // The same on every process of a parallel renderer, whatever piece it
+    // holds; with an exchange, GatherPropBounds gives the fits every
+    // process's props.
     frame.SceneBounds = given;
-    frame.PropBounds.assign(1, given);
+    if (!this->Exchange)
+    {
+      frame.PropBounds.assign(1, given);
+    }
   }
   vtkCamera* camera = renderer->GetActiveCamera();
   frame.CameraView = ToGlm(camera->GetViewTransformMatrix());
@@ -680,9 +690,48 @@ std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRender
 }
 
 //------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::GatherPropBounds()
+{
+  Internals& r = *this->Internal;
+  shadowmaps::ShadowFrame& frame = r.Frame;
+  if (!this->Exchange)
+  {
+    return;
+  }
+  std::vector<double> boxes;
+  for (const Aabb& box : frame.PropBounds)
+  {
+    boxes.insert(boxes.end(),
+      { box.Min.x, box.Max.x, box.Min.y, box.Max.y, box.Min.z, box.Max.z });
+  }
+  if (!this->Exchange->AllBoxes(boxes))
+  {
+    // The fits see the scene as one box, the same on every process.
+    frame.PropBounds.assign(1, frame.SceneBounds);
+    return;
+  }
+  frame.PropBounds.clear();
+  Aabb all;
+  for (std::size_t i = 0; i + 6 <= boxes.size(); i += 6)
+  {
+    const Aabb box = Aabb::FromBounds(boxes.data() + i);
+    if (IsUsableBox(box))
+    {
+      frame.PropBounds.push_back(box);
+      all.Add(box);
+    }
+  }
+  if (!(this->UseSceneBounds && IsUsableBox(Aabb::FromBounds(this->SceneBounds))))
+  {
+    frame.SceneBounds = all;
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
+  this->GatherPropBounds();
   std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
   const bool stale = !(r.MapsValid && signature == r.Signature);
   // Every process asks every frame: another one's casters may have moved.

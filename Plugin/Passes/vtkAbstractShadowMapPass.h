@@ -149,7 +149,11 @@ public:
   /**
    * The bounds the views are fitted to, instead of the visible props': the
    * global bounds of a parallel renderer, so that every process fits the same
-   * views. Used while UseSceneBounds is on (default off).
+   * views. Used while UseSceneBounds is on (default off). Without an
+   * exchange, the fits that follow props (tight cascades, warps) then see
+   * this one box; with one, they see every process's props' boxes
+   * (vtkShadowMapExchange::AllBoxes), whose union is the scene's bounds when
+   * none are given.
    */
   vtkSetVector6Macro(SceneBounds, double);
   vtkGetVector6Macro(SceneBounds, double);
@@ -350,6 +354,12 @@ private:
   void CollectCastersAndCamera(vtkOpenGLRenderer* renderer);
   void CollectNonReceivers(const vtkRenderState* s);
   std::vector<vtkMTimeType> MapSignature(vtkOpenGLRenderer* renderer);
+  /**
+   * With an exchange: the fits' prop bounds become every process's
+   * (vtkShadowMapExchange::AllBoxes), and without given scene bounds, the scene
+   * bounds their union.
+   */
+  void GatherPropBounds();
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   int UsableResolution();
   bool NeedsSecondOutput() const;

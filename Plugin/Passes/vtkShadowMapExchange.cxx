@@ -1,6 +1,12 @@
 #include "vtkShadowMapExchange.h"
 
 //------------------------------------------------------------------------------
+bool vtkShadowMapExchange::AllBoxes(std::vector<double>&)
+{
+  return false;
+}
+
+//------------------------------------------------------------------------------
 bool vtkShadowMapExchange::NearestTwoOf(std::vector<float>& pairs)
 {
   const std::size_t count = pairs.size() / 2;

@@ -1,15 +1,18 @@
 /**
  * @class   vtkShadowMapExchange
- * @brief   What a shadow pass needs from a parallel renderer: two collectives.
+ * @brief   What a shadow pass needs from a parallel renderer: its collectives.
  *
  * Where each process renders its own piece of the data (ParaView's ranks under
  * MPI), a caster on one process must shadow receivers on another. A pass given
  * an exchange (vtkAbstractShadowMapPass::SetExchange) asks it, every frame on
  * every process, whether any process's maps must be re-rendered; if so, every
  * process re-renders all its layers from its own casters and the pass combines
- * the depth layers into the nearest depth over all processes. The views must
- * be the same on every process: give the pass the global bounds
- * (SetSceneBounds). So must the shadowed lights and hardware selections: a
+ * them into the nearest surfaces over all processes: the nearest depth of
+ * depth maps, the two nearest surfaces of two-surface maps (NearestTwoOf), the
+ * nearest light depth of moment maps, from which each process stores, blurs
+ * and mipmaps its moments. The views must be the same on every process: give
+ * the pass the global bounds (SetSceneBounds); the fits then also see every
+ * process's props (AllBoxes). So must the shadowed lights and hardware selections: a
  * frame without shadowed lights, or one a selector renders, makes no
  * collective call, on every process alike. The module knows no
  * communication library; a subclass wraps one (the ParaView plugin's
@@ -51,6 +54,16 @@ public:
    * failure.
    */
   bool NearestTwoOf(std::vector<float>& pairs);
+
+  /**
+   * Called on every process, every frame that has shadowed lights: `boxes`
+   * (six values per box: x, y and z ranges, as vtkProp::GetBounds) becomes
+   * every process's boxes, in process order. The pass gathers its props'
+   * bounds so, for the fits that follow props (tight cascades, warps) to see
+   * every process's props as one process would. The default returns false
+   * (boxes unchanged): the fits then see the scene bounds alone.
+   */
+  virtual bool AllBoxes(std::vector<double>& boxes);
 
 protected:
   vtkShadowMapExchange() = default;

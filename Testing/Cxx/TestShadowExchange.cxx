@@ -1,15 +1,18 @@
 // Image tests: passes that each render a piece of the scene combine their maps
-// (depths, two surfaces' depths, moments through light depths) through a
-// vtkShadowMapExchange (Plugin/Passes), as ParaView's ranks do.
+// (depths, two surfaces' depths, moments through light depths) and fit their
+// views to each other's props through a vtkShadowMapExchange (Plugin/Passes),
+// as ParaView's ranks do.
 // Two "processes" are two test scenes in this process: A holds the sphere, B the
 // ground. Their exchanges stand for the collectives: A's MinimumOf keeps what A
 // sends, B's combines with it, as if both had called it together.
 #include "ShadowTestUtilities.h"
+#include "vtkCascadedShadowMapViews.h"
 #include "vtkDepthShadowMapPass.h"
 #include "vtkDualDepthShadowMapPass.h"
 #include "vtkShadowMapRepresentation.h"
 #include "vtkShadowMapExchange.h"
 #include "vtkVarianceShadowMapPass.h"
+#include "vtkWarpedShadowMapViews.h"
 
 #include "vtkActor.h"
 #include "vtkImageData.h"
@@ -30,11 +33,17 @@ using namespace shadowtest;
 // What process A has sent, call by call; B answers each call with A's.
 struct Wire
 {
+  enum Kind
+  {
+    ANY_OF,
+    MINIMUM_OF,
+    ALL_BOXES
+  };
   struct Call
   {
     bool Flag = false;
     std::vector<float> Values;
-    bool IsAnyOf = true;
+    Kind Made = ANY_OF;
   };
   std::vector<Call> Sent;
   std::size_t Received = 0;
@@ -50,16 +59,19 @@ public:
   Wire* Shared = nullptr;
   bool Sends = true; // A sends what it has; B combines with what A sent
   int Calls = 0;
+  // The other process's props' boxes, known to the test beforehand (the one
+  // direction of the wire cannot give A what B gathers).
+  std::vector<double> OtherBoxes;
 
   bool AnyOf(bool local) override
   {
     ++this->Calls;
     if (this->Sends)
     {
-      this->Shared->Sent.push_back({ local, {}, true });
+      this->Shared->Sent.push_back({ local, {}, Wire::ANY_OF });
       return local;
     }
-    const Wire::Call* call = this->Next(true);
+    const Wire::Call* call = this->Next(Wire::ANY_OF);
     return local || (call && call->Flag);
   }
 
@@ -68,10 +80,10 @@ public:
     ++this->Calls;
     if (this->Sends)
     {
-      this->Shared->Sent.push_back({ false, values, false });
+      this->Shared->Sent.push_back({ false, values, Wire::MINIMUM_OF });
       return true;
     }
-    const Wire::Call* call = this->Next(false);
+    const Wire::Call* call = this->Next(Wire::MINIMUM_OF);
     if (!call || call->Values.size() != values.size())
     {
       this->Shared->Mismatch = true;
@@ -82,11 +94,29 @@ public:
     return true;
   }
 
+  // A's boxes come first, then B's.
+  bool AllBoxes(std::vector<double>& boxes) override
+  {
+    ++this->Calls;
+    if (this->Sends)
+    {
+      this->Shared->Sent.push_back({ false, {}, Wire::ALL_BOXES });
+      boxes.insert(boxes.end(), this->OtherBoxes.begin(), this->OtherBoxes.end());
+      return true;
+    }
+    if (!this->Next(Wire::ALL_BOXES))
+    {
+      return false;
+    }
+    boxes.insert(boxes.begin(), this->OtherBoxes.begin(), this->OtherBoxes.end());
+    return true;
+  }
+
 private:
-  const Wire::Call* Next(bool anyOf)
+  const Wire::Call* Next(Wire::Kind kind)
   {
     Wire& wire = *this->Shared;
-    if (wire.Received >= wire.Sent.size() || wire.Sent[wire.Received].IsAnyOf != anyOf)
+    if (wire.Received >= wire.Sent.size() || wire.Sent[wire.Received].Made != kind)
     {
       wire.Mismatch = true;
       return nullptr;
@@ -131,8 +161,27 @@ struct TwoProcesses
     ExchangeB->Sends = false;
   }
 
+  // The visible props' boxes of a scene, as a pass gathers them.
+  static std::vector<double> PropBoxes(TestScene& scene)
+  {
+    std::vector<double> boxes;
+    vtkPropCollection* props = scene.Renderer->GetViewProps();
+    props->InitTraversal();
+    while (vtkProp* prop = props->GetNextProp())
+    {
+      const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+      if (bounds && bounds[0] <= bounds[1])
+      {
+        boxes.insert(boxes.end(), bounds, bounds + 6);
+      }
+    }
+    return boxes;
+  }
+
   void Use(vtkAbstractShadowMapPass* a, vtkAbstractShadowMapPass* b, bool exchange)
   {
+    ExchangeA->OtherBoxes = PropBoxes(B);
+    ExchangeB->OtherBoxes = PropBoxes(A);
     ShareBounds(a, Whole);
     ShareBounds(b, Whole);
     a->SetExchange(exchange ? ExchangeA.Get() : nullptr);
@@ -181,7 +230,8 @@ TEST(ShadowExchange, ACasterOnAnotherProcessShadowsThisOnesGround)
     if (exchange)
     {
       EXPECT_LT(dark, 0.45 * bright) << "the sphere lives on the other process";
-      EXPECT_EQ(processes.ExchangeB->Calls, 4) << "any changed, any failed, the maps' shape, the depths";
+      EXPECT_EQ(processes.ExchangeB->Calls, 5)
+        << "the props' boxes, any changed, any failed, the maps' shape, the depths";
     }
     else
     {
@@ -261,6 +311,24 @@ vtkSmartPointer<vtkAbstractShadowMapPass> MakeCombiningPass(const std::string& n
                                                 : vtkDualDepthShadowMapPass::AUTO);
     return dual;
   }
+  if (name == "TightCascades" || name == "LiSPSM")
+  {
+    // Fits that follow the props: each process must see the other's.
+    auto depth = vtkSmartPointer<vtkDepthShadowMapPass>::New();
+    if (name == "LiSPSM")
+    {
+      vtkNew<vtkWarpedShadowMapViews> warped;
+      warped->SetWarpModeToLiSPSM();
+      depth->SetViews(warped);
+    }
+    else
+    {
+      vtkNew<vtkCascadedShadowMapViews> cascades;
+      cascades->SetFitMode(vtkCascadedShadowMapViews::TIGHT);
+      depth->SetViews(cascades);
+    }
+    return depth;
+  }
   if (name == "EVSM4" || name == "MSM16")
   {
     auto variance = vtkSmartPointer<vtkVarianceShadowMapPass>::New();
@@ -281,7 +349,8 @@ class ShadowExchangeStorage : public ::testing::TestWithParam<std::string>
 // The combined maps equal the maps of the whole scene: B's ground shades as the
 // whole scene's ground does wherever the whole scene's sphere does not hide it.
 // Depth maps and front and back faces combine texel by texel, peeled surfaces
-// as the nearest two, moments through the nearest light depth.
+// as the nearest two, moments through the nearest light depth; tight cascades
+// and warps fit to both processes' props.
 TEST_P(ShadowExchangeStorage, CombinedMapsShadeLikeTheWholeScenesMaps)
 {
   TwoProcesses processes;
@@ -297,8 +366,8 @@ TEST_P(ShadowExchangeStorage, CombinedMapsShadeLikeTheWholeScenesMaps)
   whole.Sphere->SetVisibility(false);
   vtkSmartPointer<vtkImageData> withoutSphere = RenderAndCapture(whole.Window);
   whole.Sphere->SetVisibility(true);
+  // One process: the fits see its props.
   auto wholePass = MakeCombiningPass(GetParam());
-  ShareBounds(wholePass, whole);
   whole.Renderer->SetPass(wholePass);
   vtkSmartPointer<vtkImageData> reference = RenderAndCapture(whole.Window);
 
@@ -329,7 +398,8 @@ TEST_P(ShadowExchangeStorage, CombinedMapsShadeLikeTheWholeScenesMaps)
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadowExchange, ShadowExchangeStorage,
-  ::testing::Values("Depth", "DualPeeling", "DualMinimumBlending", "DualAuto", "EVSM4", "MSM16"));
+  ::testing::Values("Depth", "DualPeeling", "DualMinimumBlending", "DualAuto", "EVSM4", "MSM16",
+    "TightCascades", "LiSPSM"));
 
 // A change on one process re-renders every process's maps: B's own scene did
 // not change, A's sphere moved, and B's shadow follows it.

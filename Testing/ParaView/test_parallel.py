@@ -2,9 +2,9 @@
 ground, rank 1 the sphere and rank 2 nothing (a programmable source gives each
 rank its piece). The sphere's shadow falls on rank 0's ground only if the ranks'
 depth maps are combined, and rank 2 must still take part. The composited frame
-is compared with the same scene on one rank (which holds both pieces), written
-first by the `serial` run, for the uniform map and cascades of depths, and the
-uniform map of dual depths and of moments. The representation's Casts Shadows
+is compared with the same scene on one rank (both pieces, as two sources),
+written first by the `serial` run, for the uniform map, cascades and LiSPSM of depths,
+and the uniform map of dual depths and of moments. The representation's Casts Shadows
 and Receives Shadows reach every rank.
 
   xvfb-run -a pvbatch Testing/ParaView/test_parallel.py PLUGIN OUTDIR serial
@@ -38,20 +38,20 @@ OUT = testing.OUT = sys.argv[2]
 os.makedirs(OUT, exist_ok=True)
 LoadPlugin(PLUGIN, remote=False, ns=globals())
 
-# Each rank's piece: rank 0 the ground, rank 1 the sphere (one rank: both).
+# A programmable source whose piece on rank GROUND is the ground and on rank
+# SPHERE the sphere (-1: none).
 PIECES = """
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 controller = vtkMultiProcessController.GetGlobalController()
 rank = controller.GetLocalProcessId() if controller else 0
-ranks = controller.GetNumberOfProcesses() if controller else 1
 pieces = vtkAppendPolyData()
-if rank == 0:
+if rank == GROUND:
     ground = vtkPlaneSource()
     ground.SetOrigin(-5, -5, 0); ground.SetPoint1(5, -5, 0); ground.SetPoint2(-5, 5, 0)
     pieces.AddInputConnection(ground.GetOutputPort())
-if rank == 1 or ranks == 1:
+if rank == SPHERE:
     sphere = vtkSphereSource()
     sphere.SetCenter(0, 0, 1.5); sphere.SetRadius(1.0)
     sphere.SetThetaResolution(48); sphere.SetPhiResolution(48)
@@ -61,14 +61,26 @@ if pieces.GetNumberOfInputConnections(0) > 0:
     self.GetOutput().ShallowCopy(pieces.GetOutput())
 """
 
+
+def show_pieces(view):
+    """In parallel one source, the ground on rank 0 and the sphere on rank 1;
+    on one rank the same two pieces as two sources, so that both runs' fits see
+    the ground's and the sphere's boxes. Returns the (parallel) display."""
+    pieces = [(0, 1)] if MODE == "parallel" else [(0, -1), (-1, 0)]
+    displays = [Show(ProgrammableSource(OutputDataSetType="vtkPolyData",
+                                        Script=PIECES.replace("GROUND", str(g)).replace("SPHERE", str(s))),
+                     view) for g, s in pieces]
+    return displays[0]
+
+
 # Every storage combines: depths, two surfaces' depths (peeled), moments (from
-# the nearest light depth); cascades with depths.
-CASES = (("Uniform", "Depth (PCF)"), ("Cascades", "Depth (PCF)"),
+# the nearest light depth); cascades and a warp (whose fit follows every rank's
+# props) with depths.
+CASES = (("Uniform", "Depth (PCF)"), ("Cascades", "Depth (PCF)"), ("LiSPSM", "Depth (PCF)"),
          ("Uniform", "Dual depth (no bias)"), ("Uniform", "Moments (EVSM4)"))
 for views_choice, storage in CASES:
     view = make_view("ShadowRenderView", ShadowViews=views_choice, ShadowStorage=storage)
-    pieces = ProgrammableSource(OutputDataSetType="vtkPolyData", Script=PIECES)
-    display = Show(pieces, view)
+    display = show_pieces(view)
     add_sun(view)
     what = views_choice + " / " + storage
     name = "ParaViewParallel" + views_choice + ("" if storage == CASES[0][1] else storage.split(" ")[0])

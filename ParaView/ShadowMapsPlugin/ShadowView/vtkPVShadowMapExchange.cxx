@@ -1,8 +1,12 @@
 #include "vtkPVShadowMapExchange.h"
 
 #include "vtkCommunicator.h"
+#include "vtkDoubleArray.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkPVShadowMapExchange);
 
@@ -35,4 +39,27 @@ bool vtkPVShadowMapExchange::MinimumOf(std::vector<float>& values)
   this->BytesReduced += static_cast<double>(values.size() * sizeof(float));
   values.swap(smallest);
   return ok != 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVShadowMapExchange::AllBoxes(std::vector<double>& boxes)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() < 2)
+  {
+    return true;
+  }
+  vtkNew<vtkDoubleArray> mine;
+  mine->SetNumberOfComponents(6);
+  mine->SetNumberOfTuples(static_cast<vtkIdType>(boxes.size() / 6));
+  std::copy(boxes.begin(), boxes.begin() + 6 * mine->GetNumberOfTuples(), mine->GetPointer(0));
+  vtkNew<vtkDoubleArray> all;
+  // Empty arrays are sent too: every process takes part.
+  if (!controller->AllGatherV(mine, all))
+  {
+    return false;
+  }
+  const double* values = all->GetPointer(0);
+  boxes.assign(values, values + all->GetNumberOfValues());
+  return true;
 }

@@ -3,7 +3,8 @@
  * @brief   The shadow passes' collectives over ParaView's processes.
  *
  * vtkShadowMapExchange over vtkMultiProcessController's global controller (the
- * MPI ranks of pvbatch or pvserver): AnyOf and MinimumOf are all-reductions.
+ * MPI ranks of pvbatch or pvserver): AnyOf and MinimumOf are all-reductions,
+ * AllBoxes an all-gather.
  */
 #ifndef vtkPVShadowMapExchange_h
 #define vtkPVShadowMapExchange_h
@@ -19,6 +20,7 @@ public:
 
   bool AnyOf(bool local) override;
   bool MinimumOf(std::vector<float>& values) override;
+  bool AllBoxes(std::vector<double>& boxes) override;
 
   /** Bytes each process sent to MinimumOf over its life (the maps' reduction). */
   vtkGetMacro(BytesReduced, double);
