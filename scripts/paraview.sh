@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The ParaView half of the tests (scripts/test.sh runs it after the VTK half):
 # builds the ShadowMaps plugin (ParaView/) against ParaView's own VTK and runs
-# its tests in pvpython and, on three MPI ranks, pvbatch. Debian's
+# its tests in pvpython and, on three MPI ranks, pvbatch and pvserver. Debian's
 # python3-paraview, which pvpython, pvbatch and the plugin's wrapping need,
 # conflicts with python3-vtk9 (and so with libvtk9-dev):
 # this script swaps them in and, whatever happens, back out, leaving the
@@ -43,6 +43,8 @@ with_display pvbatch "$ROOT/Testing/ParaView/test_parallel.py" "$PLUGIN" "$OUTPU
 # A rank that missed a collective would hang the others: time out instead.
 with_display timeout 600 mpiexec --allow-run-as-root --oversubscribe -np 3 \
   pvbatch "$ROOT/Testing/ParaView/test_parallel.py" "$PLUGIN" "$OUTPUT" parallel
+# Client-server: three pvserver ranks render and composite for a pvpython client.
+with_display bash "$ROOT/scripts/paraview_pvserver.sh" "$PLUGIN" "$OUTPUT"
 if [ "${SHADOWMAPS_GUI_SCREENSHOT:-0}" = 1 ]; then
   bash "$ROOT/scripts/paraview_gui_screenshot.sh"
 fi

@@ -5,17 +5,20 @@ depth maps are combined, and rank 2 must still take part. The composited frame
 is compared with the same scene on one rank (both pieces, as two sources),
 written first by the `serial` run, for the uniform map, cascades and LiSPSM of depths,
 and the uniform map of dual depths and of moments. The representation's Casts Shadows
-and Receives Shadows reach every rank.
+and Receives Shadows reach every rank. The same holds with the pieces on three
+pvserver ranks behind a pvpython client (mode pvserver, port in argv[4]).
 
   xvfb-run -a pvbatch Testing/ParaView/test_parallel.py PLUGIN OUTDIR serial
   xvfb-run -a mpiexec -np 3 pvbatch Testing/ParaView/test_parallel.py PLUGIN OUTDIR parallel
+  xvfb-run -a scripts/paraview_pvserver.sh PLUGIN OUTDIR   (pvserver mode: a client of 3 pvserver ranks)
 """
 import os
 import sys
 import time
 from statistics import median
 
-from paraview.simple import Delete, LoadPlugin, ProgrammableSource, Render, Show
+from paraview.simple import (Connect, Delete, GetSettingsProxy, LoadPlugin, ProgrammableSource,
+                             Render, Show)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
@@ -23,6 +26,15 @@ from shadow_view_testing import (LIT, SHADOWED, SUN, add_sun, check, check_same_
                                  failures, luminance_at, make_view, render, shadow_probes)
 
 PLUGIN, MODE = sys.argv[1], sys.argv[3]
+# Pieces on several ranks: pvbatch's, or a pvserver's behind this client.
+SPLIT = MODE in ("parallel", "pvserver")
+RANKS = "3 server ranks" if MODE == "pvserver" else "3 ranks" if SPLIT else "1 rank"
+
+
+def combination_totals(view):
+    """Bytes the first rank all-reduced so far, and seconds it spent doing so."""
+    view.UpdatePropertyInformation()
+    return view.GetPropertyValue("BytesCombined"), view.GetPropertyValue("SecondsCombining")
 
 
 def timed_frames(view, count=5):
@@ -36,6 +48,12 @@ def timed_frames(view, count=5):
 
 OUT = testing.OUT = sys.argv[2]
 os.makedirs(OUT, exist_ok=True)
+if MODE == "pvserver":
+    Connect("localhost", int(sys.argv[4]))
+    LoadPlugin(PLUGIN, remote=True, ns=globals())
+    # Render on the server ranks (each shades its piece, IceT composites),
+    # however small the data, instead of delivering the geometry to the client.
+    GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
 LoadPlugin(PLUGIN, remote=False, ns=globals())
 
 # A programmable source whose piece on rank GROUND is the ground and on rank
@@ -66,7 +84,7 @@ def show_pieces(view):
     """In parallel one source, the ground on rank 0 and the sphere on rank 1;
     on one rank the same two pieces as two sources, so that both runs' fits see
     the ground's and the sphere's boxes. Returns the (parallel) display."""
-    pieces = [(0, 1)] if MODE == "parallel" else [(0, -1), (-1, 0)]
+    pieces = [(0, 1)] if SPLIT else [(0, -1), (-1, 0)]
     displays = [Show(ProgrammableSource(OutputDataSetType="vtkPolyData",
                                         Script=PIECES.replace("GROUND", str(g)).replace("SPHERE", str(s))),
                      view) for g, s in pieces]
@@ -90,35 +108,48 @@ for views_choice, storage in CASES:
     steady = timed_frames(view)
     sun = view.AdditionalLights[0]
     moved = []
+    combined_before = combination_totals(view)
     for step in range(4):
         sun.Position = [SUN[0] + 0.01 * (step + 1), SUN[1], SUN[2]]
         moved += timed_frames(view, 1)
+    combined = [(after - before) / len(moved)
+                for after, before in zip(combination_totals(view), combined_before)]
     sun.Position = SUN
     render(view, name + "_" + MODE)
-    if MODE == "parallel":
-        shadow_probes(view, png, what + " on 3 ranks (caster on rank 1, ground on rank 0)")
+    if MODE == "pvserver":
+        check(view.GetClientSideObject().GetUseDistributedRenderingForRender(),
+              what + ": the server ranks rendered the frame, not the client")
+    if SPLIT:
+        shadow_probes(view, png, f"{what} on {RANKS} (caster on rank 1, ground on rank 0)")
         serial = os.path.join(OUT, name + "_serial.png")
-        check_same_image(serial, png, what + ": the 3-rank frame equals the 1-rank frame")
+        check_same_image(serial, png, f"{what}: the frame of {RANKS} equals the 1-rank frame")
     else:
         shadow_probes(view, png, what + " on 1 rank")
-    if MODE == "parallel" and (views_choice, storage) == CASES[0]:
+    if SPLIT and (views_choice, storage) == CASES[0]:
         # The representation's roles reach every rank: the caster's (rank 1)
         # and the receiver's (rank 0).
         for role in ("CastsShadows", "ReceivesShadows"):
             setattr(display, role, 0)
             off = render(view, name + "_" + role + "Off")
             check(luminance_at(view, off, SHADOWED) > 0.8 * luminance_at(view, off, LIT),
-                  f"{role} off on 3 ranks: the ground under the sphere is lit")
+                  f"{role} off on {RANKS}: the ground under the sphere is lit")
             setattr(display, role, 1)
     layers = view.NumberOfCascades if views_choice == "Cascades" else 1
     # Floats all-reduced per texel: a depth; the nearest depth, then the one
     # behind it (two reductions); a light depth.
     floats = 2 if storage.startswith("Dual") else 1
     mebibytes = 4 * floats * view.ShadowMapResolution ** 2 * layers / 2 ** 20
-    print(f"{what}, {'3 ranks' if MODE == 'parallel' else '1 rank'}: steady frame "
+    print(f"{what}, {RANKS}: steady frame "
           f"{1000 * median(steady):.0f} ms, frame whose sun moved {1000 * median(moved):.0f} ms "
           f"({layers} map(s) of {view.ShadowMapResolution}^2"
-          + (f", {mebibytes:.0f} MiB combined per rank)" if MODE == "parallel" else ")"))
+          + (f", {mebibytes:.0f} MiB combined per rank; measured per frame whose sun moved: "
+             f"{combined[0] / 2 ** 20:.0f} MiB all-reduced in {1000 * combined[1]:.0f} ms)"
+             if MODE == "parallel" else f", {mebibytes:.0f} MiB combined per rank)" if SPLIT else ")"))
+    # (The information properties come from pvbatch's first rank; a pvserver
+    # client reads its own view's, which combines nothing.)
+    if MODE == "parallel":
+        check(abs(combined[0] - mebibytes * 2 ** 20) < 1024,  # and the maps' shape
+              f"{what}: each frame whose sun moved all-reduces the maps once ({mebibytes:.0f} MiB)")
     Delete(view)
 
 

@@ -5,6 +5,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkTimerLog.h"
 
 #include <algorithm>
 
@@ -34,8 +35,10 @@ bool vtkPVShadowMapExchange::MinimumOf(std::vector<float>& values)
     return true;
   }
   std::vector<float> smallest(values.size());
+  const double started = vtkTimerLog::GetUniversalTime();
   const int ok = controller->AllReduce(
     values.data(), smallest.data(), static_cast<vtkIdType>(values.size()), vtkCommunicator::MIN_OP);
+  this->SecondsReducing += vtkTimerLog::GetUniversalTime() - started;
   this->BytesReduced += static_cast<double>(values.size() * sizeof(float));
   values.swap(smallest);
   return ok != 0;

@@ -25,6 +25,9 @@ public:
   /** Bytes each process sent to MinimumOf over its life (the maps' reduction). */
   vtkGetMacro(BytesReduced, double);
 
+  /** Seconds this process spent in MinimumOf over its life (waiting for the others included). */
+  vtkGetMacro(SecondsReducing, double);
+
 protected:
   vtkPVShadowMapExchange() = default;
   ~vtkPVShadowMapExchange() override = default;
@@ -34,6 +37,7 @@ private:
   void operator=(const vtkPVShadowMapExchange&) = delete;
 
   double BytesReduced = 0.0;
+  double SecondsReducing = 0.0;
 };
 
 #endif

@@ -95,6 +95,18 @@ int vtkPVShadowRenderView::GetNumberOfShadowedLights()
 }
 
 //------------------------------------------------------------------------------
+double vtkPVShadowRenderView::GetBytesCombined()
+{
+  return this->Exchange->GetBytesReduced();
+}
+
+//------------------------------------------------------------------------------
+double vtkPVShadowRenderView::GetSecondsCombining()
+{
+  return this->Exchange->GetSecondsReducing();
+}
+
+//------------------------------------------------------------------------------
 void vtkPVShadowRenderView::ReleasePass(vtkAbstractShadowMapPass* pass)
 {
   vtkRenderWindow* window = this->GetRenderWindow();

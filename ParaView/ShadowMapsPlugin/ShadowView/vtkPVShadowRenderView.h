@@ -109,6 +109,16 @@ public:
   /** Lights the last frame rendered shadows of (an information property). */
   int GetNumberOfShadowedLights();
 
+  ///@{
+  /**
+   * What combining the maps across ranks has cost this rank so far: bytes it
+   * all-reduced, and seconds in those reductions (waiting for the other ranks
+   * included). Information properties.
+   */
+  double GetBytesCombined();
+  double GetSecondsCombining();
+  ///@}
+
 protected:
   vtkPVShadowRenderView();
   ~vtkPVShadowRenderView() override;
