@@ -14,14 +14,15 @@ import subprocess
 import sys
 
 from paraview import servermanager
-from paraview.simple import (ClearSelection, Delete, ExtractSelection, GetDisplayProperties, Hide,
-                             LoadPlugin, SelectSurfaceCells, SetActiveSource, SetActiveView, Show,
-                             Tessellate, Transform, Wavelet)
+from paraview.simple import (ClearSelection, ColorBy, Delete, ExtractSelection, GetDisplayProperties,
+                             Hide, LoadPlugin, SelectSurfaceCells, SetActiveSource, SetActiveView, Show,
+                             Sphere, Tessellate, Text, Transform, Wavelet)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
-from shadow_view_testing import (LIT, SHADOWED, check, compare_with_baseline,  # noqa: E402
-                                 failures, luminance_at, make_view, render, shadow_probes, show_scene)
+from shadow_view_testing import (LIT, SHADOWED, check, check_same_image,  # noqa: E402
+                                 compare_with_baseline, failures, luminance_at, make_view, render,
+                                 shadow_probes, show_scene)
 
 PLUGIN = sys.argv[1]
 OUT = testing.OUT = sys.argv[2]
@@ -92,6 +93,65 @@ png = render(view, "ParaViewShadowViewFactor")
 check(luminance_at(view, png, SHADOWED) < 10 and luminance_at(view, png, LIT) > 245,
       "the shadow-factor analysis view shows visibility as grey (0 in the shadow, 1 on the lit ground)")
 Delete(view)
+
+# The filter, the bias and the moments' blur reach the passes: each changes the
+# frame, and the shadow stays.
+view = make_view("ShadowRenderView")
+show_scene(view)
+previous = render(view, "ParaViewShadowViewFilter_default")
+for storage, name, value in (("Depth (PCF)", "ShadowFilter", "Hard"),
+                             ("Depth (PCF)", "ShadowFilter", "Poisson"),
+                             ("Depth (PCF)", "ShadowFilterRadius", 6.0),
+                             ("Depth (PCF)", "ShadowConstantBias", 3000.0),
+                             ("Dual depth (no bias)", "ShadowFilter", "Hard"),
+                             ("Moments (EVSM4)", "MomentsBlurRadius", 0.0),
+                             ("Moments (EVSM4)", "MomentsBlurRadius", 6.0)):
+    what = f"{storage}: {name} {value}"
+    if view.ShadowStorage != storage:
+        view.ShadowStorage = storage
+        previous = render(view, "ParaViewShadowViewFilter_" + storage.split(" ")[0])
+    setattr(view, name, value)
+    png = render(view, f"ParaViewShadowViewFilter_{name}_{value}")
+    check(mean_difference(previous, png) > 0.0, what + " changes the frame")
+    shadow_probes(view, png, what)
+    previous = png
+Delete(view)
+
+# Volumes, translucency, scalar colouring and annotations: with no light that
+# casts (the light kit's key light's shadows off), the shadow view draws exactly
+# what ParaView's plain view draws; with the key light casting, shadows appear
+# and the volume is still drawn.
+def show_rich_scene(view):
+    ground, sphere = show_scene(view, sun=False)
+    sphere_display = GetDisplayProperties(sphere, view)
+    ColorBy(sphere_display, ("POINTS", "Normals", "Z"))
+    glass = Sphere(Center=[-3.0, 2.0, 1.0], Radius=0.8)
+    glass_display = Show(glass, view)
+    glass_display.Opacity = 0.4
+    wavelet = Wavelet(WholeExtent=[2, 5, -5, -2, 0, 3])
+    volume = Show(wavelet, view)
+    volume.Representation = "Volume"
+    ColorBy(volume, ("POINTS", "RTData"))
+    Show(Text(Text="Render View (Shadows)"), view)
+    return wavelet
+
+
+plain = make_view("RenderView")
+show_rich_scene(plain)
+plain_png = render(plain, "ParaViewRichPlain")
+view = make_view("ShadowRenderView", KeyLightShadows=0)
+wavelet = show_rich_scene(view)
+unshadowed = render(view, "ParaViewRichNoShadows")
+check_same_image(plain_png, unshadowed,
+                 "volume, translucency, colouring and text without shadows equal the plain view")
+view.KeyLightShadows = 1
+shadowed = render(view, "ParaViewRichShadows")
+check(mean_difference(unshadowed, shadowed) > 0.0, "the key light's shadows appear among them")
+Hide(wavelet, view)
+without_volume = render(view, "ParaViewRichShadowsNoVolume")
+check(mean_difference(shadowed, without_volume) > 0.0, "the volume is still drawn with shadows")
+Delete(view)
+Delete(plain)
 
 # Selection renders ids through the view: the shadow pass steps aside and the
 # cells of the sphere under the rectangle are selected.

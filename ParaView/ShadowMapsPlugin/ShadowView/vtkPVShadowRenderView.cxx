@@ -95,6 +95,87 @@ int vtkPVShadowRenderView::GetNumberOfShadowedLights()
 }
 
 //------------------------------------------------------------------------------
+vtkDepthShadowMapPass* vtkPVShadowRenderView::DepthPass(int storage)
+{
+  return static_cast<vtkDepthShadowMapPass*>(this->Passes[storage]);
+}
+
+//------------------------------------------------------------------------------
+vtkVarianceShadowMapPass* vtkPVShadowRenderView::MomentsPass()
+{
+  return static_cast<vtkVarianceShadowMapPass*>(this->Passes[MOMENTS]);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowFilter(int filter)
+{
+  filter = Clamped(this, "ShadowFilter", filter, static_cast<int>(vtkDepthShadowMapPass::HARD),
+    static_cast<int>(vtkDepthShadowMapPass::POISSON));
+  for (int storage : { DEPTH, DUAL_DEPTH })
+  {
+    this->DepthPass(storage)->SetFilter(filter);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkPVShadowRenderView::GetShadowFilter()
+{
+  return this->DepthPass(DEPTH)->GetFilter();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowFilterRadius(double texels)
+{
+  texels = Clamped(this, "ShadowFilterRadius", texels, 0.5, 16.0);
+  for (int storage : { DEPTH, DUAL_DEPTH })
+  {
+    this->DepthPass(storage)->SetFilterRadius(texels);
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkPVShadowRenderView::GetShadowFilterRadius()
+{
+  return this->DepthPass(DEPTH)->GetFilterRadius();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowConstantBias(double bias)
+{
+  this->DepthPass(DEPTH)->SetConstantBias(Clamped(this, "ShadowConstantBias", bias, 0.0, 10000.0));
+}
+
+//------------------------------------------------------------------------------
+double vtkPVShadowRenderView::GetShadowConstantBias()
+{
+  return this->DepthPass(DEPTH)->GetConstantBias();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowSlopeScaledBias(double bias)
+{
+  this->DepthPass(DEPTH)->SetSlopeScaledBias(Clamped(this, "ShadowSlopeScaledBias", bias, 0.0, 100.0));
+}
+
+//------------------------------------------------------------------------------
+double vtkPVShadowRenderView::GetShadowSlopeScaledBias()
+{
+  return this->DepthPass(DEPTH)->GetSlopeScaledBias();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetMomentsBlurRadius(double texels)
+{
+  this->MomentsPass()->SetBlurRadius(Clamped(this, "MomentsBlurRadius", texels, 0.0, 16.0));
+}
+
+//------------------------------------------------------------------------------
+double vtkPVShadowRenderView::GetMomentsBlurRadius()
+{
+  return this->MomentsPass()->GetBlurRadius();
+}
+
+//------------------------------------------------------------------------------
 double vtkPVShadowRenderView::GetBytesCombined()
 {
   return this->Exchange->GetBytesReduced();
@@ -319,4 +400,9 @@ void vtkPVShadowRenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCascades: " << this->CascadedViews->GetNumberOfCascades() << "\n";
   os << indent << "ShadowAnalysisView: " << this->ShadowAnalysisView << "\n";
   os << indent << "KeyLightShadows: " << this->KeyLightShadows << "\n";
+  os << indent << "ShadowFilter: " << this->GetShadowFilter() << "\n";
+  os << indent << "ShadowFilterRadius: " << this->GetShadowFilterRadius() << "\n";
+  os << indent << "ShadowConstantBias: " << this->GetShadowConstantBias() << "\n";
+  os << indent << "ShadowSlopeScaledBias: " << this->GetShadowSlopeScaledBias() << "\n";
+  os << indent << "MomentsBlurRadius: " << this->GetMomentsBlurRadius() << "\n";
 }

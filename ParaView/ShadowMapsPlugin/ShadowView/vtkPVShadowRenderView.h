@@ -37,7 +37,9 @@
 class vtkAbstractShadowMapPass;
 class vtkCascadedShadowMapViews;
 class vtkPVDefaultPass;
+class vtkDepthShadowMapPass;
 class vtkPVShadowMapExchange;
+class vtkVarianceShadowMapPass;
 class vtkWarpedShadowMapViews;
 
 class VTKPARAVIEWSHADOWVIEW_EXPORT vtkPVShadowRenderView : public vtkPVRenderView
@@ -98,6 +100,36 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The filter of depth and dual-depth maps (vtkDepthShadowMapPass::FilterType:
+   * 0 hard, 1 2 x 2 PCF (default), 2 N x N PCF, 3 Poisson) and the Poisson
+   * disc's radius in texels ([0.5, 16], default 2). Moment maps are filtered
+   * by their blur (MomentsBlurRadius).
+   */
+  void SetShadowFilter(int filter);
+  int GetShadowFilter();
+  void SetShadowFilterRadius(double texels);
+  double GetShadowFilterRadius();
+  ///@}
+
+  ///@{
+  /**
+   * The depth maps' bias: constant (polygon-offset units, [0, 10000], default
+   * 4) and slope-scaled ([0, 100], default 2). Dual-depth and moment maps need none.
+   */
+  void SetShadowConstantBias(double bias);
+  double GetShadowConstantBias();
+  void SetShadowSlopeScaledBias(double bias);
+  double GetShadowSlopeScaledBias();
+  ///@}
+
+  ///@{
+  /** The moment maps' Gaussian blur, texels of a light's finest view, [0, 16], default 1. */
+  void SetMomentsBlurRadius(double texels);
+  double GetMomentsBlurRadius();
+  ///@}
+
+  ///@{
   /** Whether the light kit's key light casts shadows (default on). */
   void SetKeyLightShadows(bool on);
   vtkGetMacro(KeyLightShadows, bool);
@@ -141,6 +173,9 @@ private:
   void MarkLightKitLights();
   /** Frees a pass's GL objects, if the window ever rendered. */
   void ReleasePass(vtkAbstractShadowMapPass* pass);
+  /** The passes whose maps hold depths (depth and dual depth), which share their filters and bias. */
+  vtkDepthShadowMapPass* DepthPass(int storage);
+  vtkVarianceShadowMapPass* MomentsPass();
   /** Several ranks render pieces of this view's data through one camera. */
   bool CombinesAcrossRanks();
   /**
