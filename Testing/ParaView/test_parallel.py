@@ -105,7 +105,9 @@ for views_choice, storage in CASES:
     png = render(view, name + "_" + MODE)  # the first frame compiles shaders
     # Frame cost (printed, not tested): steady frames keep the maps; a frame
     # whose sun moved re-renders them, and on several ranks combines them.
+    steady_before = combination_totals(view)
     steady = timed_frames(view)
+    steady_bytes = combination_totals(view)[0] - steady_before[0]
     sun = view.AdditionalLights[0]
     moved = []
     combined_before = combination_totals(view)
@@ -148,6 +150,7 @@ for views_choice, storage in CASES:
     # (The information properties come from pvbatch's first rank; a pvserver
     # client reads its own view's, which combines nothing.)
     if MODE == "parallel":
+        check(steady_bytes == 0, f"{what}: steady frames combine nothing ({steady_bytes:.0f} bytes)")
         check(abs(combined[0] - mebibytes * 2 ** 20) < 1024,  # and the maps' shape
               f"{what}: each frame whose sun moved all-reduces the maps once ({mebibytes:.0f} MiB)")
     Delete(view)
