@@ -102,19 +102,24 @@ bool MapBlur::Blur(
     error = "no texture unit is free for the shadow maps' blur";
     return false;
   }
-  vtkOpenGLState* state = window->GetState();
-  state->PushFramebufferBindings();
-  vtkOpenGLState::ScopedglViewport keepViewport(state);
-  vtkOpenGLState::ScopedglEnableDisable keepDepthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable keepBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable keepScissor(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglActiveTexture keepUnit(state);
-  // The renderer's scissor box is the window's, not the map's.
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglViewport(0, 0, maps.GetResolution(), maps.GetResolution());
+  bool ok = false;
+  {
+    const FullMapDrawState keep(window->GetState(), maps.GetResolution());
+    ok = this->DrawBothPasses(window, maps, layer, unit, radius, error);
+  }
+  window->GetTextureUnitManager()->Free(unit);
+  if (!ok && error.empty())
+  {
+    error = "the shadow maps' blur framebuffer is incomplete";
+  }
+  return ok;
+}
 
+//------------------------------------------------------------------------------
+bool MapBlur::DrawBothPasses(vtkOpenGLRenderWindow* window, TextureArray& maps, int layer,
+  int unit, double radius, std::string& error)
+{
+  vtkOpenGLState* state = window->GetState();
   state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->ScratchFramebuffer);
   glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->Scratch, 0, 0);
   const unsigned int output = GL_COLOR_ATTACHMENT0;
@@ -130,12 +135,6 @@ bool MapBlur::Blur(
     this->DrawPass(window, this->Scratch, 0, unit, 0, 1, radius);
   }
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  window->GetTextureUnitManager()->Free(unit);
-  state->PopFramebufferBindings();
-  if (!ok && error.empty())
-  {
-    error = "the shadow maps' blur framebuffer is incomplete";
-  }
   return ok;
 }
 

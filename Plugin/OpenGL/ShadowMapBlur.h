@@ -41,6 +41,9 @@ public:
 
 private:
   bool ReserveScratch(const TextureArray& maps, std::string& error);
+  /// The horizontal pass from `layer` into the scratch layer, then the vertical one back.
+  bool DrawBothPasses(vtkOpenGLRenderWindow* window, TextureArray& maps, int layer, int unit,
+    double radius, std::string& error);
   void DrawPass(vtkOpenGLRenderWindow* window, unsigned int source, int layer, int unit,
     int dx, int dy, double radius);
 

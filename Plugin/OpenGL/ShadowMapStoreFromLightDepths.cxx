@@ -116,33 +116,24 @@ bool StoreFromLightDepths::Store(vtkOpenGLRenderWindow* window, TextureArray& ma
     return false;
   }
   vtkOpenGLState* state = window->GetState();
-  state->PushFramebufferBindings();
-  vtkOpenGLState::ScopedglViewport keepViewport(state);
-  vtkOpenGLState::ScopedglEnableDisable keepDepthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable keepBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable keepScissor(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglActiveTexture keepUnit(state);
-  state->vtkglActiveTexture(GL_TEXTURE0 + unit);
-  bool ok = this->UploadLayer(state, layer, resolution);
-  if (!ok)
+  bool ok = false;
   {
-    error = "cannot upload the combined light depths";
+    const FullMapDrawState keep(state, resolution);
+    state->vtkglActiveTexture(GL_TEXTURE0 + unit);
+    ok = this->UploadLayer(state, layer, resolution);
+    if (!ok)
+    {
+      error = "cannot upload the combined light depths";
+    }
+    ok = ok && maps.BindLayer(state, layer, error);
+    if (ok)
+    {
+      this->Quad->Program->SetUniformi("vtkShadowLightDepths", unit);
+      this->Quad->Render();
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
   }
-  ok = ok && maps.BindLayer(state, layer, error);
-  if (ok)
-  {
-    // Every texel is written as it is: no test against the casters' depths,
-    // no blending, and the map's viewport, not the window's scissor box.
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglViewport(0, 0, resolution, resolution);
-    this->Quad->Program->SetUniformi("vtkShadowLightDepths", unit);
-    this->Quad->Render();
-  }
-  glBindTexture(GL_TEXTURE_2D, 0);
   window->GetTextureUnitManager()->Free(unit);
-  state->PopFramebufferBindings();
   return ok;
 }
 
