@@ -8,11 +8,13 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 PLUGIN="$1"
 OUTPUT="$2"
-PORT="${SHADOWMAPS_PVSERVER_PORT:-11199}"
+# A port of this run's own, so that two runs neither collide nor stop each other's server.
+PORT="${SHADOWMAPS_PVSERVER_PORT:-$((20000 + $$ % 20000))}"
 mkdir -p "$OUTPUT"
 LOG="$OUTPUT/pvserver.log"
+: > "$LOG"
 
-timeout 900 mpiexec --allow-run-as-root --oversubscribe -np 3 \
+timeout -k 10 900 mpiexec --allow-run-as-root --oversubscribe -np 3 \
   pvserver --server-port="$PORT" > "$LOG" 2>&1 &
 SERVER=$!
 stop_server() {
@@ -28,4 +30,11 @@ for _ in $(seq 1 60); do
   sleep 1
 done
 grep -q "Accepting connection" "$LOG" || { echo "pvserver did not start:"; cat "$LOG"; exit 1; }
-timeout 600 pvpython "$ROOT/Testing/ParaView/test_parallel.py" "$PLUGIN" "$OUTPUT" pvserver "$PORT"
+status=0
+timeout -k 10 600 pvpython "$ROOT/Testing/ParaView/test_parallel.py" "$PLUGIN" "$OUTPUT" pvserver \
+  "$PORT" || status=$?
+if [ "$status" -ne 0 ]; then
+  echo "The client failed ($status); the server said:"
+  cat "$LOG"
+fi
+exit "$status"

@@ -162,6 +162,15 @@ void AppendBits(double value, std::vector<vtkMTimeType>& signature)
   signature.push_back(bits);
 }
 
+void AppendBoxBits(const Aabb& box, std::vector<vtkMTimeType>& signature)
+{
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    AppendBits(box.Min[axis], signature);
+    AppendBits(box.Max[axis], signature);
+  }
+}
+
 void AppendMatrixBits(const glm::dmat4& m, std::vector<vtkMTimeType>& signature)
 {
   for (int c = 0; c < 4; ++c)
@@ -334,6 +343,7 @@ struct vtkAbstractShadowMapPass::Internals
   // are forgotten when what every layer depends on changes (LayersKey).
   std::vector<std::vector<vtkMTimeType>> LayerSignatures;
   bool WarnedUncombined = false;
+  bool WarnedUngatheredBounds = false;
   std::vector<vtkMTimeType> LayersKey;
   /// The lights and views the maps were rendered for (reused with the maps).
   std::vector<shadowmaps::ShadowLight> RenderedLights;
@@ -670,12 +680,13 @@ std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRender
     static_cast<vtkMTimeType>(size[1]) };
   AppendMatrixBits(r.Frame.CameraView, signature);
   AppendMatrixBits(r.Frame.CameraProjection, signature);
-  // The fits and the casters' reach follow every prop's bounds, receivers' too.
-  for (int axis = 0; axis < 3; ++axis)
+  // The fits and the casters' reach follow every prop's bounds, receivers'
+  // too (every process's, with an exchange: GatherPropBounds came first).
+  for (const Aabb& box : r.Frame.PropBounds)
   {
-    AppendBits(r.Frame.SceneBounds.Min[axis], signature);
-    AppendBits(r.Frame.SceneBounds.Max[axis], signature);
+    AppendBoxBits(box, signature);
   }
+  AppendBoxBits(r.Frame.SceneBounds, signature);
   for (const auto& light : r.Lights)
   {
     signature.push_back(reinterpret_cast<vtkMTimeType>(light.Light));
@@ -706,8 +717,16 @@ void vtkAbstractShadowMapPass::GatherPropBounds()
   }
   if (!this->Exchange->AllBoxes(boxes))
   {
-    // The fits see the scene as one box, the same on every process.
+    // The fits see the scene as one box: the same on every process only if
+    // the scene bounds were given.
     frame.PropBounds.assign(1, frame.SceneBounds);
+    if (!(this->UseSceneBounds && IsUsableBox(Aabb::FromBounds(this->SceneBounds))) &&
+      !r.WarnedUngatheredBounds)
+    {
+      vtkWarningMacro(<< "The exchange gathers no prop bounds and no scene bounds are given "
+                         "(SetSceneBounds): the processes' views may differ.");
+      r.WarnedUngatheredBounds = true;
+    }
     return;
   }
   frame.PropBounds.clear();

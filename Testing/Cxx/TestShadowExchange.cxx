@@ -16,6 +16,7 @@
 
 #include "vtkActor.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -180,8 +181,6 @@ struct TwoProcesses
 
   void Use(vtkAbstractShadowMapPass* a, vtkAbstractShadowMapPass* b, bool exchange)
   {
-    ExchangeA->OtherBoxes = PropBoxes(B);
-    ExchangeB->OtherBoxes = PropBoxes(A);
     ShareBounds(a, Whole);
     ShareBounds(b, Whole);
     a->SetExchange(exchange ? ExchangeA.Get() : nullptr);
@@ -195,6 +194,8 @@ struct TwoProcesses
   {
     Shared.Sent.clear();
     Shared.Received = 0;
+    ExchangeA->OtherBoxes = PropBoxes(B);
+    ExchangeB->OtherBoxes = PropBoxes(A);
     A.Window->Render();
     B.Window->Render();
     EXPECT_FALSE(Shared.Mismatch) << "the processes called different collectives";
@@ -420,6 +421,29 @@ TEST(ShadowExchange, AChangeOnAnyProcessReRendersAll)
   const glm::dvec3 left = GroundShadowOfSphereCenter(SunDirection);
   EXPECT_LT(LuminanceAt(processes.B.Renderer, image, moved), 0.45 * LuminanceAt(processes.B.Renderer, image, left))
     << "the shadow moved with the sphere, and left its old place";
+  processes.Release();
+}
+
+// A receiver that casts no shadow moves on one process: the fits that follow
+// every process's props change, so every process re-renders its maps, though
+// its own scene, its casters and the given scene bounds stayed the same.
+TEST(ShadowExchange, AReceiverMovingOnAnyProcessReFitsEveryProcess)
+{
+  TwoProcesses processes;
+  auto a = MakeCombiningPass("TightCascades");
+  auto b = MakeCombiningPass("TightCascades");
+  vtkNew<vtkInformation> receiverOnly;
+  receiverOnly->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  processes.A.Box->SetPropertyKeys(receiverOnly);
+  processes.A.Box->SetVisibility(true);
+  processes.Use(a, b, true);
+  processes.RenderBoth();
+  processes.RenderBoth();
+  EXPECT_EQ(b->GetNumberOfRenderedLayers(), 0) << "nothing changed anywhere";
+  processes.A.Box->AddPosition(0.0, 0.0, 0.5);
+  processes.RenderBoth();
+  EXPECT_GT(a->GetNumberOfRenderedLayers(), 0) << "A's receiver moved";
+  EXPECT_GT(b->GetNumberOfRenderedLayers(), 0) << "B fits to A's props too";
   processes.Release();
 }
 
