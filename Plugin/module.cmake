@@ -65,6 +65,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapStoreFromLightDepths.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
+    Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Scene/ShadowMapClosedSurfaces.cxx
     ${shadowmaps_shader_sources}
   NOWRAP_HEADERS
@@ -91,6 +92,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapProgramStamps.h
     Plugin/OpenGL/ShadowMapQuad.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
+    Plugin/Passes/ShadowMapCombination.h
     Plugin/Scene/ShadowMapClosedSurfaces.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)

@@ -216,6 +216,11 @@ glm::dvec3 Aabb::Center() const
   return 0.5 * (this->Min + this->Max);
 }
 
+bool Aabb::IsUsable() const
+{
+  return !this->IsEmpty() && std::isfinite(this->Diagonal());
+}
+
 double Aabb::Diagonal() const
 {
   return this->IsEmpty() ? 0.0 : glm::length(this->Max - this->Min);

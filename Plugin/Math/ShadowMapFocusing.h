@@ -24,6 +24,8 @@ struct Aabb
   glm::dvec3 Max{ -1.0, -1.0, -1.0 };
 
   bool IsEmpty() const;
+  /// Not empty, and of finite size: a box fits can use.
+  bool IsUsable() const;
   void Add(const glm::dvec3& p);
   void Add(const Aabb& other);
   glm::dvec3 Center() const;

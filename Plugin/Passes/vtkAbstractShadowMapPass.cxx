@@ -5,6 +5,7 @@
 #include "ShadowMapCascades.h"
 #include "ShadowMapCasterReach.h"
 #include "ShadowMapCasting.h"
+#include "ShadowMapCombination.h"
 #include "ShadowMapClosedSurfaces.h"
 #include "ShadowMapGlm.h"
 #include "ShadowMapLight.h"
@@ -140,11 +141,6 @@ bool AnyLinearDepthView(const std::vector<ShadowLight>& lights)
     return std::any_of(light.Views.begin(), light.Views.end(),
       [](const LightView& view) { return view.LinearDepth; });
   });
-}
-
-bool IsUsableBox(const Aabb& box)
-{
-  return !box.IsEmpty() && std::isfinite(box.Diagonal());
 }
 
 bool IsNonFinite(const LightView& view)
@@ -630,7 +626,7 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
       continue;
     }
     const Aabb bounds = Aabb::FromBounds(prop->GetBounds());
-    if (!IsUsableBox(bounds))
+    if (!bounds.IsUsable())
     {
       continue;
     }
@@ -650,7 +646,7 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   }
 
   const Aabb given = Aabb::FromBounds(this->SceneBounds);
-  if (this->UseSceneBounds && IsUsableBox(given))
+  if (this->UseSceneBounds && given.IsUsable())
   {
     // The same on every process of a parallel renderer, whatever piece it
     // holds; with an exchange, GatherPropBounds gives the fits every
@@ -704,45 +700,17 @@ std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRender
 void vtkAbstractShadowMapPass::GatherPropBounds()
 {
   Internals& r = *this->Internal;
-  shadowmaps::ShadowFrame& frame = r.Frame;
   if (!this->Exchange)
   {
     return;
   }
-  std::vector<double> boxes;
-  for (const Aabb& box : frame.PropBounds)
+  const bool given = this->UseSceneBounds && Aabb::FromBounds(this->SceneBounds).IsUsable();
+  if (!shadowmaps::GatherPropBounds(this->Exchange, r.Frame, given) && !given &&
+    !r.WarnedUngatheredBounds)
   {
-    boxes.insert(boxes.end(),
-      { box.Min.x, box.Max.x, box.Min.y, box.Max.y, box.Min.z, box.Max.z });
-  }
-  if (!this->Exchange->AllBoxes(boxes))
-  {
-    // The fits see the scene as one box: the same on every process only if
-    // the scene bounds were given.
-    frame.PropBounds.assign(1, frame.SceneBounds);
-    if (!(this->UseSceneBounds && IsUsableBox(Aabb::FromBounds(this->SceneBounds))) &&
-      !r.WarnedUngatheredBounds)
-    {
-      vtkWarningMacro(<< "The exchange gathers no prop bounds and no scene bounds are given "
-                         "(SetSceneBounds): the processes' views may differ.");
-      r.WarnedUngatheredBounds = true;
-    }
-    return;
-  }
-  frame.PropBounds.clear();
-  Aabb all;
-  for (std::size_t i = 0; i + 6 <= boxes.size(); i += 6)
-  {
-    const Aabb box = Aabb::FromBounds(boxes.data() + i);
-    if (IsUsableBox(box))
-    {
-      frame.PropBounds.push_back(box);
-      all.Add(box);
-    }
-  }
-  if (!(this->UseSceneBounds && IsUsableBox(Aabb::FromBounds(this->SceneBounds))))
-  {
-    frame.SceneBounds = all;
+    vtkWarningMacro(<< "The exchange gathers no prop bounds and no scene bounds are given "
+                       "(SetSceneBounds): the processes' views may differ.");
+    r.WarnedUngatheredBounds = true;
   }
 }
 
@@ -817,7 +785,7 @@ bool vtkAbstractShadowMapPass::NeedsSecondOutput() const
   // linear-depth views of depth maps.
   const Internals& r = *this->Internal;
   if (r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling ||
-    this->MapCombination() == Combination::NEAREST_LIGHT_DEPTHS)
+    this->MapCombination() == shadowmaps::Combination::NearestLightDepths)
   {
     return true;
   }
@@ -943,7 +911,7 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
     r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
   const bool values = !shadowmaps::IsDepth(r.Storage.Format);
   r.CasterCode.StoreCode = values ? r.Storage.StoreCode : std::string();
-  if (this->MapCombination() == Combination::NEAREST_LIGHT_DEPTHS)
+  if (this->MapCombination() == shadowmaps::Combination::NearestLightDepths)
   {
     r.CasterCode.StoreCode += "\n    gl_FragData[1] = vec4(vtkShadowCasterDepth);";
   }
@@ -1053,14 +1021,14 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
   this->ForgetLayersIfStale();
-  const Combination combination = this->MapCombination();
-  if (combination != Combination::NONE)
+  const shadowmaps::Combination combination = this->MapCombination();
+  if (combination != shadowmaps::Combination::None)
   {
     // The layers hold the combination of every process's casters, not this
     // one's: all of them are rendered again and combined again.
     r.LayerSignatures.assign(r.LayerSignatures.size(), {});
   }
-  const bool keepsLightDepths = combination == Combination::NEAREST_LIGHT_DEPTHS;
+  const bool keepsLightDepths = combination == shadowmaps::Combination::NearestLightDepths;
   if (keepsLightDepths)
   {
     r.LightDepths.Reset(r.Maps, this->NumberOfShadowMapLayers);
@@ -1137,23 +1105,10 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-vtkAbstractShadowMapPass::Combination vtkAbstractShadowMapPass::MapCombination() const
+shadowmaps::Combination vtkAbstractShadowMapPass::MapCombination() const
 {
-  using shadowmaps::SecondDepthMethod;
-  const shadowmaps::MapStorage& storage = this->Internal->Storage;
-  if (!this->Exchange)
-  {
-    return Combination::NONE;
-  }
-  if (storage.SecondDepth == SecondDepthMethod::Peeling)
-  {
-    return Combination::NEAREST_TWO_SURFACES;
-  }
-  if (shadowmaps::IsDepth(storage.Format) || storage.SecondDepth == SecondDepthMethod::FrontAndBackFaces)
-  {
-    return Combination::NEAREST_TEXELS;
-  }
-  return storage.LightDepth ? Combination::NEAREST_LIGHT_DEPTHS : Combination::NONE;
+  return this->Exchange ? shadowmaps::CombinationOf(this->Internal->Storage)
+                        : shadowmaps::Combination::None;
 }
 
 //------------------------------------------------------------------------------
@@ -1175,8 +1130,8 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* win
     }
     return false;
   }
-  const Combination how = this->MapCombination();
-  if (how == Combination::NONE)
+  const shadowmaps::Combination how = this->MapCombination();
+  if (how == shadowmaps::Combination::None)
   {
     if (!r.WarnedUncombined)
     {
@@ -1186,54 +1141,8 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* win
     }
     return true;
   }
-  return this->CombineTexels(window, how);
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::CombineTexels(vtkOpenGLRenderWindow* window, Combination how)
-{
-  Internals& r = *this->Internal;
-  vtkOpenGLState* state = window->GetState();
-  const int layers = this->NumberOfShadowMapLayers;
-  const int resolution = r.Frame.Resolution;
-  const bool lightDepths = how == Combination::NEAREST_LIGHT_DEPTHS;
-  std::vector<float> read;
-  const bool readable = lightDepths || r.Maps.ReadTexels(state, layers, read, r.LastGLError);
-  std::vector<float>& texels = lightDepths ? r.LightDepths.GetDepths() : read;
-  const float kind = static_cast<float>(how);
-  std::vector<float> shape = { float(resolution), -float(resolution), float(layers),
-    -float(layers), kind, -kind, float(texels.size()), -float(texels.size()),
-    readable ? 0.0f : -1.0f };
-  if (!this->Exchange->MinimumOf(shape) || shape[0] != -shape[1] || shape[2] != -shape[3] ||
-    shape[4] != -shape[5] || shape[6] != -shape[7] || shape[8] != 0.0f)
-  {
-    if (readable)
-    {
-      r.LastGLError = "the processes' shadow maps differ in size or kind, or one could not read its maps";
-    }
-    return false;
-  }
-  const bool combined = how == Combination::NEAREST_TWO_SURFACES
-    ? this->Exchange->NearestTwoOf(texels)
-    : this->Exchange->MinimumOf(texels);
-  if (!combined)
-  {
-    r.LastGLError = "the shadow maps could not be combined across processes";
-    return false;
-  }
-  if (!lightDepths)
-  {
-    return r.Maps.WriteTexels(state, layers, texels, r.LastGLError);
-  }
-  for (int layer = 0; layer < layers; ++layer)
-  {
-    if (!r.LightDepths.Store(
-          window, r.Maps, layer, r.Storage.StoreFunctions, r.Storage.StoreCode, r.LastGLError))
-    {
-      return false;
-    }
-  }
-  return true;
+  return shadowmaps::CombineTexels(this->Exchange, window, how, r.Maps, r.Storage, r.LightDepths,
+    this->NumberOfShadowMapLayers, r.Frame.Resolution, r.LastGLError);
 }
 
 //------------------------------------------------------------------------------
@@ -1289,7 +1198,7 @@ void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer, bool line
     buffers |= GL_COLOR_BUFFER_BIT;
   }
   state->vtkglClear(buffers);
-  if (this->MapCombination() == Combination::NEAREST_LIGHT_DEPTHS)
+  if (this->MapCombination() == shadowmaps::Combination::NearestLightDepths)
   {
     // The casters' light depths: far where none draws.
     const float far[4] = { 1.0f, 1.0f, 1.0f, 1.0f };

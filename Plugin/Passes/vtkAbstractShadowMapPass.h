@@ -76,6 +76,7 @@ class vtkShadowMapViews;
 namespace shadowmaps
 {
 enum class CasterBranch;
+enum class Combination : int;
 struct LightView;
 struct RenderedLayer;
 struct ShadowLight;
@@ -374,28 +375,14 @@ private:
     std::string& geometryShader, std::string& fragmentShader, bool receives);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   void ForgetLayersIfStale();
-  /** How the processes' maps combine into the nearest surfaces over all of them. */
-  enum class Combination
-  {
-    /** Not at all (values that are no light depth): each keeps its own. */
-    NONE,
-    /** Each texel's values, the smallest (depths; front and back faces' depths). */
-    NEAREST_TEXELS,
-    /** Peeled texels (x, y), the nearest two (vtkShadowMapExchange::NearestTwoOf). */
-    NEAREST_TWO_SURFACES,
-    /** Light depths the casters also write, the smallest; then the values from them. */
-    NEAREST_LIGHT_DEPTHS
-  };
-  /** How the current storage combines; NONE without an exchange. */
-  Combination MapCombination() const;
+  /** How the current storage combines across processes; None without an exchange. */
+  shadowmaps::Combination MapCombination() const;
   /**
    * With an exchange, on every process that updates its maps: agrees with the
    * others on whether all rendered them (`ok` here), then combines the maps
-   * (MapCombination). Without one, returns `ok`.
+   * (MapCombination, shadowmaps::CombineTexels). Without one, returns `ok`.
    */
   bool CombineAcrossProcesses(vtkOpenGLRenderWindow* window, bool ok);
-  /** Reads, exchanges and writes the maps' texels as `how` says; false on failure. */
-  bool CombineTexels(vtkOpenGLRenderWindow* window, Combination how);
   bool PostProcessShadowMaps(
     vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered);
   int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,
