@@ -81,9 +81,12 @@ std::string StoreCode(const CasterCode& code)
     default:
       break;
   }
-  return !code.StoreCode.empty() ? code.StoreCode
-    : code.LinearDepth           ? "    gl_FragData[1] = vec4(vtkShadowCasterDepth);"
-                                 : "    gl_FragData[0] = vec4(1.0);";
+  const std::string depthOutput = "    gl_FragData[1] = vec4(vtkShadowCasterDepth);";
+  if (!code.StoreCode.empty())
+  {
+    return code.KeepsLightDepth ? code.StoreCode + "\n" + depthOutput : code.StoreCode;
+  }
+  return code.LinearDepth ? depthOutput : "    gl_FragData[0] = vec4(1.0);";
 }
 
 // The branch: depth (the rasterizer's, or the one the shader wrote) made linear
@@ -148,6 +151,7 @@ std::string CasterCode::Key() const
 {
   std::ostringstream key;
   key << this->Faces << ':' << this->LinearDepth << ':' << this->LightDepth << ':'
+      << this->KeepsLightDepth << ':'
       << static_cast<int>(this->SecondDepth) << ':'
       << std::hash<std::string>{}(this->StoreCode + '\n' + this->StoreFunctions);
   return key.str();

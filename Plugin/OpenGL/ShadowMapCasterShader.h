@@ -40,6 +40,10 @@ struct CasterCode
   /// vtkShadowCasterDepth is the light depth (MapStorage::LightDepth), from
   /// the window position through CasterUniforms::SetLightDepth's uniforms.
   bool LightDepth = false;
+  /// With StoreCode: the light depth is also written to the second output
+  /// (gl_FragData[1]), for the processes' maps to be combined by it
+  /// (shadowmaps::StoreFromLightDepths).
+  bool KeepsLightDepth = false;
   bool LinearDepth = false;
   /// Not None (nor Auto): the branch stores the two nearest surfaces' depths
   /// this way instead of StoreCode, and draws both faces. FrontAndBackFaces

@@ -911,10 +911,8 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
     r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
   const bool values = !shadowmaps::IsDepth(r.Storage.Format);
   r.CasterCode.StoreCode = values ? r.Storage.StoreCode : std::string();
-  if (this->MapCombination() == shadowmaps::Combination::NearestLightDepths)
-  {
-    r.CasterCode.StoreCode += "\n    gl_FragData[1] = vec4(vtkShadowCasterDepth);";
-  }
+  r.CasterCode.KeepsLightDepth =
+    this->MapCombination() == shadowmaps::Combination::NearestLightDepths;
   r.CasterCode.StoreFunctions = values ? r.Storage.StoreFunctions : std::string();
   r.CasterCode.LightDepth = values && r.Storage.LightDepth;
   r.CasterCode.LinearDepth = AnyLinearDepthView(r.Lights);
