@@ -21,6 +21,17 @@ namespace shadowbench
 {
 namespace
 {
+constexpr int MovingFramesCounted = 8;
+
+/// What one of our passes does in moving frames after its first: shader sources
+/// built (0 when casters and receivers keep their programs) and map layers
+/// re-rendered per frame, of the layers in use.
+struct MovingCounts
+{
+  int ShaderBuilds = -1;
+  double LayersPerFrame = -1.0;
+  int Layers = -1;
+};
 
 struct SpeedRow
 {
@@ -29,7 +40,7 @@ struct SpeedRow
   int Resolution = 0;
   std::string Technique;
   Timing Time;
-  int ShaderBuilds = -1; // per moving frame, ours only
+  MovingCounts Counts; // ours only
 };
 
 struct SpeedView
@@ -80,26 +91,41 @@ CameraMotion Orbit(SpeedView& view, double degreesPerFrame)
   };
 }
 
-/// Shader sources one of our passes builds in a moving frame after its first.
-int ShaderBuildsPerMovingFrame(SpeedView& view, const TechniqueInstance& technique, double degrees)
+/// Counts one of our passes' work over `frames` moving frames after its first.
+MovingCounts CountMovingWork(
+  SpeedView& view, const TechniqueInstance& technique, double degrees, int frames)
 {
+  MovingCounts counts;
   if (!technique.Ours)
   {
-    return -1;
+    return counts;
   }
-  // Props the camera culled since the pass switch build theirs when first cast:
-  // one moving frame first.
+  // Props the camera culled since the pass switch build theirs when first drawn:
+  // the orbit once over before counting.
   view.Renderer->SetPass(technique.Pass);
   const CameraMotion orbit = Orbit(view, degrees);
-  orbit(0, 3);
+  for (int frame = 0; frame < frames + 2; ++frame)
+  {
+    orbit(frame, frames + 2);
+    view.Window->Render();
+  }
+  orbit(0, frames + 2);
   view.Window->Render();
-  orbit(1, 3);
+  orbit(1, frames + 2);
   view.Window->Render();
   const int before = technique.Ours->GetNumberOfShaderBuilds();
-  orbit(2, 3);
-  view.Window->Render();
-  orbit(0, 3);
-  return technique.Ours->GetNumberOfShaderBuilds() - before;
+  int layers = 0;
+  for (int frame = 2; frame < frames + 2; ++frame)
+  {
+    orbit(frame, frames + 2);
+    view.Window->Render();
+    layers += technique.Ours->GetNumberOfRenderedLayers();
+  }
+  orbit(0, frames + 2);
+  counts.ShaderBuilds = technique.Ours->GetNumberOfShaderBuilds() - before;
+  counts.LayersPerFrame = double(layers) / double(frames);
+  counts.Layers = technique.Ours->GetNumberOfShadowMapLayers();
+  return counts;
 }
 
 void MeasureCase(SpeedView& view, const std::string& scene, const std::string& setup,
@@ -118,7 +144,7 @@ void MeasureCase(SpeedView& view, const std::string& scene, const std::string& s
   for (size_t t = 0; t < techniques.size(); ++t)
   {
     SpeedRow row{ scene, setup, resolution, names[t], timing[t],
-      ShaderBuildsPerMovingFrame(view, techniques[t], options.OrbitDegrees) };
+      CountMovingWork(view, techniques[t], options.OrbitDegrees, MovingFramesCounted) };
     rows.push_back(row);
   }
   view.Renderer->SetPass(nullptr);
@@ -154,8 +180,9 @@ std::string Ratio(double value, const SpeedRow* reference, double Timing::*which
 void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
 {
   out << "| scene | light | map | technique | first ms | steady ms | moving ms | moving / steady "
-         "| steady / none | moving / none | moving / vtk | shaders per moving frame |\n"
-         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "| steady / none | moving / none | moving / vtk | shaders per moving frame "
+         "| layers per moving frame |\n"
+         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const SpeedRow& row : rows)
   {
     const SpeedRow* none = Reference(rows, row, "none");
@@ -168,20 +195,27 @@ void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
         << Ratio(row.Time.Steady, none, &Timing::Steady) << " | "
         << Ratio(row.Time.Moving, none, &Timing::Moving) << " | "
         << Ratio(row.Time.Moving, vtk, &Timing::Moving) << " | "
-        << (row.ShaderBuilds < 0 ? std::string("") : std::to_string(row.ShaderBuilds)) << " |\n";
+        << (row.Counts.ShaderBuilds < 0 ? std::string("") : std::to_string(row.Counts.ShaderBuilds))
+        << " | "
+        << (row.Counts.Layers < 0 ? std::string("")
+                                  : FormatNumber(row.Counts.LayersPerFrame, 2) + " of " +
+               std::to_string(row.Counts.Layers))
+        << " |\n";
   }
 }
 
 void WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& path)
 {
   std::ofstream csv(path);
-  csv << "scene,setup,resolution,technique,first_s,steady_s,moving_s,shader_builds_per_moving_frame\n";
+  csv << "scene,setup,resolution,technique,first_s,steady_s,moving_s,shader_builds_per_moving_frame,"
+         "layers_per_moving_frame,layers\n";
   csv << std::setprecision(6);
   for (const SpeedRow& row : rows)
   {
     csv << row.Scene << ',' << row.Setup << ',' << row.Resolution << ',' << row.Technique << ','
         << row.Time.First << ',' << row.Time.Steady << ',' << row.Time.Moving << ','
-        << row.ShaderBuilds << '\n';
+        << row.Counts.ShaderBuilds << ',' << row.Counts.LayersPerFrame << ','
+        << row.Counts.Layers << '\n';
   }
 }
 
