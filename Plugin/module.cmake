@@ -66,6 +66,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
+    Plugin/Passes/ShadowMapLayerContent.cxx
     Plugin/Scene/ShadowMapClosedSurfaces.cxx
     ${shadowmaps_shader_sources}
   NOWRAP_HEADERS
@@ -93,6 +94,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapQuad.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
     Plugin/Passes/ShadowMapCombination.h
+    Plugin/Passes/ShadowMapLayerContent.h
     Plugin/Scene/ShadowMapClosedSurfaces.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)

@@ -8,6 +8,7 @@
 #include "ShadowMapCombination.h"
 #include "ShadowMapClosedSurfaces.h"
 #include "ShadowMapGlm.h"
+#include "ShadowMapLayerContent.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapLinearDepthResolve.h"
 #include "ShadowMapReceiverShader.h"
@@ -280,29 +281,33 @@ std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const L
   return casters;
 }
 
-// What a layer's content depends on besides what ForgetLayersIfStale watches:
-// its view, its light's depth (stored by light-depth maps) and the casters in
-// it, with their data.
-std::vector<vtkMTimeType> LayerSignature(
-  const ShadowLight& light, const LightView& view, const std::vector<const Caster*>& casters)
+// What a layer's texels depend on of its view besides what ForgetLayersIfStale
+// watches: its matrices and its light's depth (stored by light-depth maps).
+std::vector<vtkMTimeType> LayerViewBits(const ShadowLight& light, const LightView& view)
 {
-  std::vector<vtkMTimeType> signature;
-  AppendMatrixBits(view.View, signature);
-  AppendMatrixBits(view.Projection, signature);
+  std::vector<vtkMTimeType> bits;
+  AppendMatrixBits(view.View, bits);
+  AppendMatrixBits(view.Projection, bits);
   const shadowmaps::LightDepth& depth = light.Depth;
   for (double value : { depth.Plane.x, depth.Plane.y, depth.Plane.z, depth.Plane.w,
          depth.PerDistance, depth.Origin.x, depth.Origin.y, depth.Origin.z })
   {
-    AppendBits(value, signature);
+    AppendBits(value, bits);
   }
-  signature.push_back(view.OutOfView ? 1 : 0);
-  signature.push_back(view.LinearDepth ? 1 : 0);
+  bits.push_back(view.OutOfView ? 1 : 0);
+  bits.push_back(view.LinearDepth ? 1 : 0);
+  return bits;
+}
+
+std::vector<shadowmaps::CasterStamp> StampsOf(const std::vector<const Caster*>& casters)
+{
+  std::vector<shadowmaps::CasterStamp> stamps;
+  stamps.reserve(casters.size());
   for (const Caster* caster : casters)
   {
-    signature.push_back(reinterpret_cast<vtkMTimeType>(caster->Prop));
-    signature.push_back(caster->MTime);
+    stamps.push_back({ caster->Prop, caster->MTime });
   }
-  return signature;
+  return stamps;
 }
 } // namespace
 
@@ -335,9 +340,9 @@ struct vtkAbstractShadowMapPass::Internals
   // What the maps were last rendered for; empty when they must be re-rendered.
   std::vector<vtkMTimeType> Signature;
   bool MapsValid = false;
-  // Per layer, what it was last rendered for (see LayerSignature); all of them
-  // are forgotten when what every layer depends on changes (LayersKey).
-  std::vector<std::vector<vtkMTimeType>> LayerSignatures;
+  // Per layer, what it was last rendered from; all of them are forgotten when
+  // what every layer depends on changes (LayersKey).
+  std::vector<shadowmaps::LayerContent> LayerContents;
   bool WarnedUncombined = false;
   bool WarnedUngatheredBounds = false;
   std::vector<vtkMTimeType> LayersKey;
@@ -1024,7 +1029,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   {
     // The layers hold the combination of every process's casters, not this
     // one's: all of them are rendered again and combined again.
-    r.LayerSignatures.assign(r.LayerSignatures.size(), {});
+    r.LayerContents.assign(r.LayerContents.size(), {});
   }
   const bool keepsLightDepths = combination == shadowmaps::Combination::NearestLightDepths;
   if (keepsLightDepths)
@@ -1042,6 +1047,10 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     renderer->SetActiveCamera(r.LightCamera);
     this->ReserveTextureUnits(renderer);
     r.Casting = true;
+    std::vector<const Caster*> all;
+    std::transform(r.Casters.begin(), r.Casters.end(), std::back_inserter(all),
+      [](const Caster& caster) { return &caster; });
+    const std::vector<shadowmaps::CasterStamp> current = shadowmaps::SortedByProp(StampsOf(all));
     const std::vector<glm::dvec3> visible = this->ShadowReachCulling
       ? shadowmaps::IntersectFrustumWithBox(
           r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
@@ -1054,8 +1063,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         const std::vector<glm::dvec3> shaded = ShadedBody(r.Frame, light.Views[v], visible);
         const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
           ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
-        std::vector<vtkMTimeType> signature = LayerSignature(light, light.Views[v], casters);
-        if (r.LayerSignatures[layer] == signature)
+        std::vector<vtkMTimeType> viewBits = LayerViewBits(light, light.Views[v]);
+        if (r.LayerContents[layer].Holds(viewBits, StampsOf(casters), current))
         {
           continue;
         }
@@ -1080,7 +1089,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);
           }
-          r.LayerSignatures[layer] = std::move(signature);
+          r.LayerContents[layer] = shadowmaps::LayerContent(std::move(viewBits), StampsOf(casters));
           rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
         }
       }
@@ -1096,7 +1105,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   ok = this->CombineAcrossProcesses(window, ok);
   if (!ok)
   {
-    r.LayerSignatures.clear();
+    r.LayerContents.clear();
     return false;
   }
   return rendered.empty() || this->PostProcessShadowMaps(renderer, rendered);
@@ -1157,9 +1166,9 @@ void vtkAbstractShadowMapPass::ForgetLayersIfStale()
   if (key != r.LayersKey)
   {
     r.LayersKey = key;
-    r.LayerSignatures.clear();
+    r.LayerContents.clear();
   }
-  r.LayerSignatures.resize(static_cast<size_t>(this->NumberOfShadowMapLayers));
+  r.LayerContents.resize(static_cast<size_t>(this->NumberOfShadowMapLayers));
 }
 
 //------------------------------------------------------------------------------

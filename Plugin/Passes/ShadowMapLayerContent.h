@@ -1,0 +1,50 @@
+// What a map layer was rendered from, and whether it still shows what a frame
+// needs, so that a moving camera re-renders only the layers whose view or
+// casters changed. Not a VTK class: it holds no VTK state.
+#ifndef ShadowMapLayerContent_h
+#define ShadowMapLayerContent_h
+
+#include "vtkType.h"
+
+#include <vector>
+
+namespace shadowmaps
+{
+
+/// A caster, by identity, with the modification time of everything its depth
+/// depends on.
+struct CasterStamp
+{
+  const void* Prop = nullptr;
+  vtkMTimeType MTime = 0;
+};
+
+/// `stamps` sorted by prop, for LayerContent.
+std::vector<CasterStamp> SortedByProp(std::vector<CasterStamp> stamps);
+
+/// What a layer was rendered from: its view (the bits of everything about it
+/// that reaches the texels) and the casters drawn into it.
+class LayerContent
+{
+public:
+  /// Never rendered, or to be re-rendered: holds nothing.
+  LayerContent() = default;
+  LayerContent(std::vector<vtkMTimeType> view, std::vector<CasterStamp> drawn);
+
+  /// Whether the layer still shows `view` with the `needed` casters: the same
+  /// view, every needed caster drawn with its current data, and every drawn
+  /// caster still among the frame's casters (`current`, SortedByProp) with the
+  /// data it was drawn with. A caster drawn but no longer needed (the camera
+  /// turned away from where its shadow falls) stays: its depths are still right.
+  bool Holds(const std::vector<vtkMTimeType>& view, const std::vector<CasterStamp>& needed,
+    const std::vector<CasterStamp>& current) const;
+
+private:
+  bool Rendered = false;
+  std::vector<vtkMTimeType> View;
+  std::vector<CasterStamp> Drawn; // SortedByProp
+};
+
+} // namespace shadowmaps
+
+#endif
