@@ -112,15 +112,18 @@ LightView FitCascadeTight(const glm::dmat4& cameraView, const glm::dmat4& subPro
 ///    split depths or field of view leave the map size unchanged;
 ///  - orientation fixed in the world: View = LightLookAt(world origin, lightDirection),
 ///    a pure rotation that depends on the light direction only;
-///  - orthographic x/y half-extent h = r' N / (N - 2 m), N the resolution, m = 4 texels
-///    of margin (at most N / 4): the sphere plus m texels for filter kernels and the
-///    half texel of snapping always lies inside the map. Texel size 2 h / N.
-///  - the sphere centre's light-space x, y are rounded to whole texels, so the world
-///    texel grid is the same for every camera position and orientation;
+///  - the sphere centre's light-space x, y are rounded to steps of s whole texels,
+///    s = max(1, floor(N / 32)), N the resolution, so the world texel grid is the same
+///    for every camera position and orientation, and a camera move changes the map
+///    (and re-renders it) only once the sphere has crossed a thirty-second of it;
+///  - orthographic x/y half-extent h = r' N / (N - 2 m - (s - 1)), m = 4 texels of
+///    margin (at most N / 4): the sphere plus m texels for filter kernels and the half
+///    step of snapping always lies inside the map. Texel size 2 h / N.
 ///  - depth: near from ComputeNearAndFar of the scene box clipped to the map's side
 ///    planes (casters between the sub-frustum and the light stay in the map), far =
-///    min(scene far, far side of the sphere); the sphere's depth range if the scene is
-///    empty or misses the map. TexelConstant = 2 h / N.
+///    min(scene far, far side of the sphere rounded up to an eighth of h); the
+///    sphere's depth range if the scene is empty or misses the map.
+///    TexelConstant = 2 h / N.
 /// Always returns finite, invertible matrices (empty scene, zero light direction,
 /// degenerate projections fall back to unit extents).
 LightView FitCascadeStable(const glm::dmat4& cameraView, const glm::dmat4& subProjection,

@@ -586,14 +586,14 @@ LightView FitSpotToBody(const std::vector<glm::dvec3>& body, const Aabb& sceneBo
 
 LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& scene,
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
-  int resolution, std::vector<glm::dvec3>* litBody)
+  int resolution, std::vector<glm::dvec3>* litBody, bool stable)
 {
   const LightView cone =
-    FitSpot(cameraViewProjection, scene, position, direction, coneAngleDegrees, resolution);
+    FitSpot(cameraViewProjection, scene, position, direction, coneAngleDegrees, resolution, stable);
   std::vector<glm::dvec3> body = SpotFocusBody(cameraViewProjection, scene, cone.ViewProjection());
   const LightView fit = body.empty()
     ? cone
-    : FitSpotToBody(body, scene, position, direction, coneAngleDegrees, resolution);
+    : FitSpotToBody(body, scene, position, direction, coneAngleDegrees, resolution, stable);
   if (litBody)
   {
     *litBody = std::move(body);

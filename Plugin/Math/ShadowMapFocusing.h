@@ -224,10 +224,11 @@ void SnapCropOutward(glm::dvec2& lo, glm::dvec2& hi, double t);
 
 /// FitSpot's cone map cropped to the lit part of B = camera frustum ∩ scene ∩ the
 /// cone (FitSpotToBody); the cone map itself when that part is empty. litBody,
-/// when given, receives its vertices (empty with the cone map).
+/// when given, receives its vertices (empty with the cone map). `stable` as for
+/// FitSpotToBody.
 LightView FitSpotToLitBody(const glm::dmat4& cameraViewProjection, const Aabb& scene,
   const glm::dvec3& position, const glm::dvec3& direction, double coneAngleDegrees,
-  int resolution, std::vector<glm::dvec3>* litBody = nullptr);
+  int resolution, std::vector<glm::dvec3>* litBody = nullptr, bool stable = false);
 
 /// How a map is laid out as tiles, row by row from its window's lower left:
 /// tile (column, row) holds the core [column, column + 1] / Columns x [row,

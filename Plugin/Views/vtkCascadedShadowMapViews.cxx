@@ -21,18 +21,17 @@ constexpr int StableRangeStepsPerOctave = 4;
 
 // The camera's depth range that cascades split: the near and far planes
 // tightened to the visible props; for stable cascades widened to the nearest
-// levels of a fixed grid (still inside the planes), so that the splits do not
-// follow every small change of the visible depth.
+// levels of a fixed grid, so that the splits do not follow every small change
+// of the visible depth. The levels may lie outside the planes: interactors
+// reset the clipping range every frame, and splits kept inside it moved with
+// every camera move (re-rendering every cascade).
 glm::dvec2 SplitRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const std::vector<shadowmaps::Aabb>& props, bool stable)
 {
   glm::dvec2 range = shadowmaps::TightDepthRange(cameraView, cameraProjection, props);
   if (stable)
   {
-    const glm::dvec2 planes = shadowmaps::ProjectionDepthRange(cameraProjection);
-    const glm::dvec2 quantized = shadowmaps::QuantizedDepthRange(range, StableRangeStepsPerOctave);
-    range = { std::max(quantized.x, std::min(planes.x, range.x)),
-      std::min(quantized.y, std::max(planes.y, range.y)) };
+    range = shadowmaps::QuantizedDepthRange(range, StableRangeStepsPerOctave);
   }
   if (!(range.y > range.x) || !std::isfinite(range.y - range.x))
   {
@@ -291,8 +290,9 @@ shadowmaps::LightView vtkCascadedShadowMapViews::FitSpotMap(
       return warped;
     }
   }
+  // Stable cascades' tiles grow outward to a grid, as a uniform spot map does.
   return shadowmaps::FitSpotToLitBody(in.CameraViewProjection(), in.SceneBounds, light.Position,
-    light.Direction, light.ConeAngle, in.Resolution);
+    light.Direction, light.ConeAngle, in.Resolution, nullptr, this->FitMode == STABLE);
 }
 
 //------------------------------------------------------------------------------

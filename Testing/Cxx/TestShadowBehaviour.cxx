@@ -657,24 +657,36 @@ TEST(ShadowBehaviour, OrbitingCameraBuildsNoShaders)
 // (stable fits change in steps: a small move changes none), and the layers kept
 // are what a full re-render would draw: the frame matches, byte for byte, that
 // of a fresh pass rendering every layer.
+namespace
+{
+// Turns the camera about its focal point as an interactor does, and renders.
+void OrbitAndRender(TestScene& scene, double degrees)
+{
+  scene.Renderer->GetActiveCamera()->Azimuth(degrees);
+  scene.Renderer->ResetCameraClippingRange();
+  scene.Window->Render();
+}
+
+// The frame `fresh` renders in place of the renderer's pass, which is then put back.
+std::vector<unsigned char> FreshPassFrame(
+  TestScene& scene, vtkSmartPointer<vtkAbstractShadowMapPass> fresh)
+{
+  vtkRenderPass* kept = scene.Renderer->GetPass();
+  kept->Register(nullptr);
+  scene.Renderer->SetPass(fresh);
+  scene.Window->Render();
+  const std::vector<unsigned char> frame = RgbBytes(CaptureAsRendered(scene.Window));
+  scene.Renderer->SetPass(kept);
+  kept->UnRegister(nullptr);
+  fresh->ReleaseGraphicsResources(scene.Window);
+  return frame;
+}
+} // namespace
+
 TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
 {
-  const auto orbit = [](TestScene& scene, double degrees) {
-    scene.Renderer->GetActiveCamera()->Azimuth(degrees);
-    scene.Renderer->ResetCameraClippingRange();
-    scene.Window->Render();
-  };
-  const auto freshFrame = [&](TestScene& scene, vtkSmartPointer<vtkAbstractShadowMapPass> fresh) {
-    vtkRenderPass* kept = scene.Renderer->GetPass();
-    kept->Register(nullptr);
-    scene.Renderer->SetPass(fresh);
-    scene.Window->Render();
-    const std::vector<unsigned char> frame = RgbBytes(CaptureAsRendered(scene.Window));
-    scene.Renderer->SetPass(kept);
-    kept->UnRegister(nullptr);
-    fresh->ReleaseGraphicsResources(scene.Window);
-    return frame;
-  };
+  const auto orbit = OrbitAndRender;
+  const auto freshFrame = FreshPassFrame;
 
   // A point light's faces fit the scene seen from the light: an orbit keeps them.
   {
@@ -732,6 +744,50 @@ TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
     EXPECT_LT(pass->GetNumberOfRenderedLayers(), pass->GetNumberOfShadowMapLayers());
     const std::vector<unsigned char> kept = RgbBytes(CaptureAsRendered(scene.Window));
     EXPECT_EQ(kept, freshFrame(scene, vtkSmartPointer<vtkCascadedShadowMapPass>::New()));
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
+  }
+}
+
+// An interactor's orbit (0.3 degrees a frame, the clipping range reset each
+// frame) keeps most of the stable cascades' layers and all of a spot's tiles:
+// the cascades' splits follow a fixed grid of depths, their centres move in
+// steps of a thirty-second of the map, and the tiles crop a map that grows outward
+// to a grid. Before, every frame re-rendered every layer. What is kept is what
+// a fresh pass draws, byte for byte.
+TEST(ShadowBehaviour, AnOrbitKeepsMostCascadesAndEverySpotTile)
+{
+  constexpr int Frames = 12;
+  for (const bool spot : { false, true })
+  {
+    TestScene scene;
+    if (spot)
+    {
+      scene.SetSpot(glm::dvec3(2.0, -3.0, 6.0), 40.0);
+    }
+    else
+    {
+      scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
+    }
+    // Closer, so that the view crops the spot's cone.
+    scene.Renderer->GetActiveCamera()->Dolly(2.0);
+    scene.Renderer->ResetCameraClippingRange();
+    vtkNew<vtkCascadedShadowMapPass> pass;
+    scene.Renderer->SetPass(pass);
+    scene.Window->Render();
+    int rendered = 0;
+    for (int frame = 0; frame < Frames; ++frame)
+    {
+      OrbitAndRender(scene, 0.3);
+      rendered += pass->GetNumberOfRenderedLayers();
+    }
+    EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 4) << "spot " << spot;
+    std::cout << "[ measured ] layers re-rendered, spot " << spot << ": " << rendered << "\n";
+    EXPECT_LE(rendered, spot ? 0 : Frames) << "spot " << spot << ": layers re-rendered in "
+                                           << Frames << " frames, of " << 4 * Frames;
+    const std::vector<unsigned char> kept = RgbBytes(CaptureAsRendered(scene.Window));
+    EXPECT_EQ(kept, FreshPassFrame(scene, vtkSmartPointer<vtkCascadedShadowMapPass>::New()))
+      << "spot " << spot;
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
   }

@@ -451,7 +451,12 @@ TEST(ShadowCascades, BlendingChangesOnlyTheBands)
     outside += !inBand;
   }
   EXPECT_GT(changed, 20) << "the band at the probe at depth 10.75 blends two maps";
-  EXPECT_EQ(outside, 0) << "of " << changed << " changed pixels";
+  // Each blended cascade's map also covers its predecessor's band, so its
+  // sphere, and with it where its window snaps, differs from the sharp one's:
+  // a shadow edge may move by a texel (one pixel here since stable cascades move
+  // in steps of a thirty-second of the map). A band in the wrong place changes
+  // hundreds.
+  EXPECT_LE(outside, 2) << "of " << changed << " changed pixels";
 }
 
 // Stable cascades split a quantized depth range: moving the camera a little

@@ -316,6 +316,48 @@ TEST(ShadowMapCascades, StableFitKeepsItsTexelGridWhenTheCameraMoves)
   }
 }
 
+// A camera sliding sideways keeps each cascade's whole map (its matrices,
+// bitwise) until the sphere has moved a thirty-second of the map: the centre moves
+// in steps of that many texels, and the far plane in eighths of the half-width.
+// With one-texel steps an orbiting camera re-rendered every cascade in nearly
+// every frame.
+TEST(ShadowMapCascades, StableFitMovesInStepsOfAThirtySecondOfTheMap)
+{
+  const glm::dvec3 light = glm::normalize(glm::dvec3(0.4, -0.3, -1.0));
+  const std::vector<double> splits = shadowmaps::PracticalSplits(1.0, 100.0, 4, 0.5);
+  const glm::dvec3 eye(3.0, -7.0, 2.0);
+  const glm::dvec3 target(40.0, 20.0, 0.0);
+  const glm::dvec3 side = glm::normalize(glm::cross(target - eye, glm::dvec3(0.0, 0.0, 1.0)));
+  // Scenes deeper than the spheres (the far plane is the sphere's) and not.
+  for (const Aabb& scene : { Ground(), Aabb{ glm::dvec3(-200.0), glm::dvec3(200.0) } })
+  {
+    for (int cascade = 0; cascade < 4; ++cascade)
+    {
+      const glm::dmat4 sub =
+        shadowmaps::SubFrustumProjection(CameraProjection(), splits[cascade], splits[cascade + 1]);
+      const double texel =
+        shadowmaps::FitCascadeStable(LookAt(eye, target), sub, scene, light, Resolution).TexelConstant;
+      // 256 moves of half a texel: 128 texels, two steps of 64 texels at 2048².
+      std::vector<glm::dmat4> distinct;
+      for (int move = 0; move <= 256; ++move)
+      {
+        const glm::dvec3 offset = side * (0.5 * move * texel);
+        const LightView fit =
+          shadowmaps::FitCascadeStable(LookAt(eye + offset, target + offset), sub, scene, light, Resolution);
+        ASSERT_EQ(fit.TexelConstant, texel);
+        if (distinct.empty() || fit.Projection != distinct.back())
+        {
+          distinct.push_back(fit.Projection);
+        }
+      }
+      // Each axis crosses at most two steps, the far plane at most two eighths;
+      // with one-texel steps there were 257 maps.
+      EXPECT_GE(distinct.size(), 1u);
+      EXPECT_LE(distinct.size(), 7u) << "cascade " << cascade;
+    }
+  }
+}
+
 TEST(ShadowMapCascades, StableFitContainsItsSubFrustumForAnyCamera)
 {
   const std::vector<double> splits = shadowmaps::PracticalSplits(0.5, 300.0, 4, 0.75);
