@@ -432,7 +432,7 @@ LightView FitCascadeStable(const glm::dmat4& cameraView, const glm::dmat4& subPr
   const double cy = std::floor(c.y / cell + 0.5) * cell;
 
   // Depth: the scene inside the map's side planes, bounded behind by the sphere.
-  const double sphereNear = -c.z - half;
+  const double sphereNear = -SnapUp(c.z + half, half / 8.0);
   const double sphereFar = SnapUp(-c.z + half, half / 8.0);
   double zNear = sphereNear;
   double zFar = sphereFar;

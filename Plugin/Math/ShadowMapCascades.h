@@ -6,7 +6,8 @@
 //    is cut along its depth into m sub-frusta with one equally sized map each; the
 //    logarithmic split C_i = z_n (z_f/z_n)^(i/m), the uniform split
 //    C_i = z_n + (z_f - z_n) i/m, and the practical blend of the two; stable fitting
-//    (a map of constant size in a fixed orientation, moved in whole texels).
+//    (a map of constant size in a fixed orientation, moved in whole texels; here in
+//    steps of a thirty-second of the map, so that a moving camera keeps it longer).
 //  - 004 (Microsoft, "Common techniques to improve shadow depth maps"): near/far from
 //    the scene box clipped to the light frustum's side planes (ComputeNearAndFar),
 //    which keeps casters outside a cascade's sub-frustum in its map; moving the light
@@ -117,12 +118,13 @@ LightView FitCascadeTight(const glm::dmat4& cameraView, const glm::dmat4& subPro
 ///    for every camera position and orientation, and a camera move changes the map
 ///    (and re-renders it) only once the sphere has crossed a thirty-second of it;
 ///  - orthographic x/y half-extent h = r' N / (N - 2 m - (s - 1)), m = 4 texels of
-///    margin (at most N / 4): the sphere plus m texels for filter kernels and the half
-///    step of snapping always lies inside the map. Texel size 2 h / N.
+///    margin (at most N / 4): the sphere, half a step of snapping and m - 1/2 texels
+///    for filter kernels always lie inside the map. Texel size 2 h / N.
 ///  - depth: near from ComputeNearAndFar of the scene box clipped to the map's side
 ///    planes (casters between the sub-frustum and the light stay in the map), far =
 ///    min(scene far, far side of the sphere rounded up to an eighth of h); the
-///    sphere's depth range if the scene is empty or misses the map.
+///    sphere's depth range, rounded out to eighths of h, if the scene is empty or
+///    misses the map.
 ///    TexelConstant = 2 h / N.
 /// Always returns finite, invertible matrices (empty scene, zero light direction,
 /// degenerate projections fall back to unit extents).

@@ -1,6 +1,7 @@
 #include "ShadowMapLayerContent.h"
 
 #include <algorithm>
+#include <cassert>
 #include <functional>
 
 namespace shadowmaps
@@ -36,6 +37,7 @@ LayerContent::LayerContent(std::vector<vtkMTimeType> view, std::vector<CasterSta
 bool LayerContent::Holds(const std::vector<vtkMTimeType>& view,
   const std::vector<CasterStamp>& needed, const std::vector<CasterStamp>& current) const
 {
+  assert(std::is_sorted(current.begin(), current.end(), PropBefore));
   if (!this->Rendered || view != this->View)
   {
     return false;

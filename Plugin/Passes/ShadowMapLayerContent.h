@@ -35,7 +35,9 @@ public:
   /// view, every needed caster drawn with its current data, and every drawn
   /// caster still among the frame's casters (`current`, SortedByProp) with the
   /// data it was drawn with. A caster drawn but no longer needed (the camera
-  /// turned away from where its shadow falls) stays: its depths are still right.
+  /// turned away from where its shadow falls) stays: its depths are still right,
+  /// and lie where no receiver in view looks them up (coarse mip levels of a
+  /// filtered map may still average them in, as they would had it been needed).
   bool Holds(const std::vector<vtkMTimeType>& view, const std::vector<CasterStamp>& needed,
     const std::vector<CasterStamp>& current) const;
 

@@ -282,10 +282,14 @@ std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const L
 }
 
 // What a layer's texels depend on of its view besides what ForgetLayersIfStale
-// watches: its matrices and its light's depth (stored by light-depth maps).
-std::vector<vtkMTimeType> LayerViewBits(const ShadowLight& light, const LightView& view)
+// watches: its matrices, its light's depth (stored by light-depth maps) and the
+// scale of its post-processing (a cascade's blur follows the first cascade's
+// texels, which may change while this one's matrices stay).
+std::vector<vtkMTimeType> LayerViewBits(const ShadowLight& light, std::size_t index)
 {
+  const LightView& view = light.Views[index];
   std::vector<vtkMTimeType> bits;
+  AppendBits(shadowmaps::FilterScale(light, index), bits);
   AppendMatrixBits(view.View, bits);
   AppendMatrixBits(view.Projection, bits);
   const shadowmaps::LightDepth& depth = light.Depth;
@@ -1063,7 +1067,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         const std::vector<glm::dvec3> shaded = ShadedBody(r.Frame, light.Views[v], visible);
         const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
           ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
-        std::vector<vtkMTimeType> viewBits = LayerViewBits(light, light.Views[v]);
+        std::vector<vtkMTimeType> viewBits = LayerViewBits(light, v);
         if (r.LayerContents[layer].Holds(viewBits, StampsOf(casters), current))
         {
           continue;

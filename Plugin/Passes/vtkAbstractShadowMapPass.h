@@ -267,8 +267,9 @@ public:
 
   /**
    * Map layers rendered in the last frame: 0 when nothing the maps depend on
-   * changed; after a camera move, only the views whose matrices or casters
-   * changed (a stable cascade that did not move keeps its layer).
+   * changed; after a camera move, only the views whose matrices changed, that
+   * now need a caster they did not draw, or one of whose casters changed (a
+   * stable cascade that did not move keeps its layer).
    */
   vtkGetMacro(NumberOfRenderedLayers, int);
 

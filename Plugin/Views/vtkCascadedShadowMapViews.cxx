@@ -19,25 +19,36 @@ constexpr int MaximumCascades = 8;
 // Stable cascades round the visible depth range out to levels 2^(1/4) apart.
 constexpr int StableRangeStepsPerOctave = 4;
 
-// The camera's depth range that cascades split: the near and far planes
-// tightened to the visible props; for stable cascades widened to the nearest
-// levels of a fixed grid, so that the splits do not follow every small change
-// of the visible depth. The levels may lie outside the planes: interactors
-// reset the clipping range every frame, and splits kept inside it moved with
-// every camera move (re-rendering every cascade).
-glm::dvec2 SplitRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
-  const std::vector<shadowmaps::Aabb>& props, bool stable)
+// A depth range {near, far} made usable: far beyond near, both finite.
+glm::dvec2 UsableRange(glm::dvec2 range)
 {
-  glm::dvec2 range = shadowmaps::TightDepthRange(cameraView, cameraProjection, props);
-  if (stable)
-  {
-    range = shadowmaps::QuantizedDepthRange(range, StableRangeStepsPerOctave);
-  }
   if (!(range.y > range.x) || !std::isfinite(range.y - range.x))
   {
     range = { std::max(range.x, 0.0), std::max(range.x, 0.0) + 1.0 };
   }
   return range;
+}
+
+// The depths of what the camera sees (its near and far planes tightened to the
+// visible props), and the range cascades split: the same, or for stable
+// cascades widened to the nearest levels of a fixed grid, so that the splits
+// do not follow every small change of the visible depth. The levels may lie
+// outside the planes: interactors reset the clipping range every frame, and
+// splits kept inside it moved with every camera move (re-rendering every
+// cascade).
+struct DepthRanges
+{
+  glm::dvec2 Visible;
+  glm::dvec2 Split;
+};
+DepthRanges SplitRange(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<shadowmaps::Aabb>& props, bool stable)
+{
+  const glm::dvec2 visible =
+    UsableRange(shadowmaps::TightDepthRange(cameraView, cameraProjection, props));
+  return { visible,
+    stable ? UsableRange(shadowmaps::QuantizedDepthRange(visible, StableRangeStepsPerOctave))
+           : visible };
 }
 
 // One cascade's view of a directional light.
@@ -137,25 +148,33 @@ void vtkCascadedShadowMapViews::SetMaximumShadowDistance(double distance)
 std::vector<double> vtkCascadedShadowMapViews::ComputeSplits(
   const shadowmaps::ShadowFrame& in, double fade[2])
 {
-  glm::dvec2 range =
+  const DepthRanges ranges =
     SplitRange(in.CameraView, in.CameraProjection, in.PropBounds, this->FitMode == STABLE);
+  glm::dvec2 range = ranges.Split;
   std::string problem;
   fade[0] = fade[1] = 0.0;
-  if (this->MaximumShadowDistance > 0.0)
+  // Decided on what is visible: the rounded range must not make shadows fade
+  // (or stop) in view, nor switch a fade on and off as it steps.
+  const double maximum = this->MaximumShadowDistance;
+  if (maximum > 0.0)
   {
-    if (this->MaximumShadowDistance <= range.x)
+    if (maximum <= ranges.Visible.x)
     {
       problem = "MaximumShadowDistance is not beyond the nearest visible depth; shadows end there.";
       range.y = range.x * (1.0 + 1e-6) + 1e-9;
     }
-    else if (this->MaximumShadowDistance < range.y)
+    else if (maximum < ranges.Visible.y)
     {
-      range.y = this->MaximumShadowDistance;
+      range.y = maximum;
       if (this->FadeFraction > 0.0)
       {
         fade[0] = range.y * (1.0 - this->FadeFraction);
         fade[1] = range.y;
       }
+    }
+    else
+    {
+      range.y = std::min(range.y, maximum);
     }
   }
 

@@ -6,8 +6,9 @@
  * NumberOfCascades partitions (survey 003 §4.3.1, PSSM's practical scheme, or
  * explicit split depths), each with its own map, one layer of a 2D texture
  * array. A cascade is fitted either STABLE (default: a sphere around its
- * sub-frustum in a light frame fixed in the world, moved in whole texels, so
- * that shadow edges do not shimmer as the camera moves; seed 004) or TIGHT
+ * sub-frustum in a light frame fixed in the world, moved in steps of whole
+ * texels, so that shadow edges do not shimmer and a small camera move keeps the
+ * map; seed 004) or TIGHT
  * (sub-frustum ∩ scene, the sharpest texels). Each cascade's depth range reaches
  * the casters between its sub-frustum and the light. Optionally each cascade is
  * warped with LiSPSM or GMNPR (vtkWarpedShadowMapPass's warps).
@@ -121,9 +122,10 @@ public:
 
   ///@{
   /**
-   * STABLE (default) or TIGHT cascade fitting. Stable cascades also split a
-   * depth range rounded out to levels 2^(1/4) apart (inside the camera's
-   * planes), so that small camera moves do not move the splits.
+   * STABLE (default) or TIGHT cascade fitting. Stable cascades also split the
+   * visible depth range rounded out to levels 2^(1/4) apart (possibly beyond
+   * the camera's planes, which interactors reset every frame), so that small
+   * camera moves do not move the splits.
    */
   vtkSetClampMacro(FitMode, int, STABLE, TIGHT);
   vtkGetMacro(FitMode, int);

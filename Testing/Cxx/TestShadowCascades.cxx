@@ -452,10 +452,9 @@ TEST(ShadowCascades, BlendingChangesOnlyTheBands)
   }
   EXPECT_GT(changed, 20) << "the band at the probe at depth 10.75 blends two maps";
   // Each blended cascade's map also covers its predecessor's band, so its
-  // sphere, and with it where its window snaps, differs from the sharp one's:
-  // a shadow edge may move by a texel (one pixel here since stable cascades move
-  // in steps of a thirty-second of the map). A band in the wrong place changes
-  // hundreds.
+  // sphere, texels and window differ from the sharp one's: a shadow edge may
+  // move by a texel (one pixel here since stable cascades move in steps of a
+  // thirty-second of the map). A band in the wrong place changes a hundred.
   EXPECT_LE(outside, 2) << "of " << changed << " changed pixels";
 }
 

@@ -352,7 +352,7 @@ TEST(ShadowMapCascades, StableFitMovesInStepsOfAThirtySecondOfTheMap)
       }
       // Each axis crosses at most two steps, the far plane at most two eighths;
       // with one-texel steps there were 257 maps.
-      EXPECT_GE(distinct.size(), 1u);
+      EXPECT_GE(distinct.size(), 2u) << "128 texels cross a 64-texel step";
       EXPECT_LE(distinct.size(), 7u) << "cascade " << cascade;
     }
   }
