@@ -668,6 +668,19 @@ void OrbitAndRender(TestScene& scene, double degrees)
   scene.Window->Render();
 }
 
+// The scene lit by the tests' oblique sun, or by a spot above it.
+void LightBySunOrSpot(TestScene& scene, bool spot)
+{
+  if (spot)
+  {
+    scene.SetSpot(glm::dvec3(2.0, -3.0, 6.0), 40.0);
+  }
+  else
+  {
+    scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
+  }
+}
+
 // The frame `fresh` renders in place of the renderer's pass, which is then put back.
 std::vector<unsigned char> FreshPassFrame(
   TestScene& scene, vtkSmartPointer<vtkAbstractShadowMapPass> fresh)
@@ -713,14 +726,7 @@ TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
   for (const bool spot : { false, true })
   {
     TestScene scene;
-    if (spot)
-    {
-      scene.SetSpot(glm::dvec3(2.0, -3.0, 6.0), 40.0);
-    }
-    else
-    {
-      scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
-    }
+    LightBySunOrSpot(scene, spot);
     vtkNew<vtkWarpedShadowMapPass> pass;
     scene.Renderer->SetPass(pass);
     scene.Window->Render();
@@ -776,14 +782,7 @@ TEST(ShadowBehaviour, AnOrbitKeepsMostCascadesAndEverySpotTile)
     for (const bool spot : { false, true })
     {
       TestScene scene;
-      if (spot)
-      {
-        scene.SetSpot(glm::dvec3(2.0, -3.0, 6.0), 40.0);
-      }
-      else
-      {
-        scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
-      }
+      LightBySunOrSpot(scene, spot);
       // Closer, so that the view crops the spot's cone.
       scene.Renderer->GetActiveCamera()->Dolly(2.0);
       scene.Renderer->ResetCameraClippingRange();
