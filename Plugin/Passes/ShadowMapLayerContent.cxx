@@ -28,8 +28,7 @@ std::vector<CasterStamp> SortedByProp(std::vector<CasterStamp> stamps)
 }
 
 LayerContent::LayerContent(std::vector<vtkMTimeType> view, std::vector<CasterStamp> drawn)
-  : Rendered(true)
-  , View(std::move(view))
+  : View(std::move(view))
   , Drawn(SortedByProp(std::move(drawn)))
 {
 }
@@ -38,7 +37,7 @@ bool LayerContent::Holds(const std::vector<vtkMTimeType>& view,
   const std::vector<CasterStamp>& needed, const std::vector<CasterStamp>& current) const
 {
   assert(std::is_sorted(current.begin(), current.end(), PropBefore));
-  if (!this->Rendered || view != this->View)
+  if (this->View.empty() || view != this->View)
   {
     return false;
   }

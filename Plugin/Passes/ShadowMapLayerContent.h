@@ -29,6 +29,7 @@ class LayerContent
 public:
   /// Never rendered, or to be re-rendered: holds nothing.
   LayerContent() = default;
+  /// `view` must not be empty.
   LayerContent(std::vector<vtkMTimeType> view, std::vector<CasterStamp> drawn);
 
   /// Whether the layer still shows `view` with the `needed` casters: the same
@@ -42,8 +43,7 @@ public:
     const std::vector<CasterStamp>& current) const;
 
 private:
-  bool Rendered = false;
-  std::vector<vtkMTimeType> View;
+  std::vector<vtkMTimeType> View; // empty: never rendered
   std::vector<CasterStamp> Drawn; // SortedByProp
 };
 

@@ -303,13 +303,18 @@ std::vector<vtkMTimeType> LayerViewBits(const ShadowLight& light, std::size_t in
   return bits;
 }
 
+shadowmaps::CasterStamp StampOf(const Caster& caster)
+{
+  return { caster.Prop, caster.MTime };
+}
+
 std::vector<shadowmaps::CasterStamp> StampsOf(const std::vector<const Caster*>& casters)
 {
   std::vector<shadowmaps::CasterStamp> stamps;
   stamps.reserve(casters.size());
   for (const Caster* caster : casters)
   {
-    stamps.push_back({ caster->Prop, caster->MTime });
+    stamps.push_back(StampOf(*caster));
   }
   return stamps;
 }
@@ -1051,10 +1056,10 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     renderer->SetActiveCamera(r.LightCamera);
     this->ReserveTextureUnits(renderer);
     r.Casting = true;
-    std::vector<const Caster*> all;
-    std::transform(r.Casters.begin(), r.Casters.end(), std::back_inserter(all),
-      [](const Caster& caster) { return &caster; });
-    const std::vector<shadowmaps::CasterStamp> current = shadowmaps::SortedByProp(StampsOf(all));
+    std::vector<shadowmaps::CasterStamp> frameCasters;
+    std::transform(r.Casters.begin(), r.Casters.end(), std::back_inserter(frameCasters), StampOf);
+    const std::vector<shadowmaps::CasterStamp> current =
+      shadowmaps::SortedByProp(std::move(frameCasters));
     const std::vector<glm::dvec3> visible = this->ShadowReachCulling
       ? shadowmaps::IntersectFrustumWithBox(
           r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
@@ -1068,7 +1073,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
           ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
         std::vector<vtkMTimeType> viewBits = LayerViewBits(light, v);
-        if (r.LayerContents[layer].Holds(viewBits, StampsOf(casters), current))
+        std::vector<shadowmaps::CasterStamp> stamps = StampsOf(casters);
+        if (r.LayerContents[layer].Holds(viewBits, stamps, current))
         {
           continue;
         }
@@ -1093,7 +1099,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);
           }
-          r.LayerContents[layer] = shadowmaps::LayerContent(std::move(viewBits), StampsOf(casters));
+          r.LayerContents[layer] =
+            shadowmaps::LayerContent(std::move(viewBits), std::move(stamps));
           rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
         }
       }
