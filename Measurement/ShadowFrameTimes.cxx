@@ -7,9 +7,23 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <numeric>
 
 namespace shadowbench
 {
+
+//------------------------------------------------------------------------------
+MovingCameraRenders::MovingCameraRenders(vtkRenderWindow* window, bool interactive)
+  : Window(window)
+{
+  this->Window->SetDesiredUpdateRate(interactive ? 15.0 : 0.0001);
+}
+
+//------------------------------------------------------------------------------
+MovingCameraRenders::~MovingCameraRenders()
+{
+  this->Window->SetDesiredUpdateRate(0.0001);
+}
 
 //------------------------------------------------------------------------------
 double TimedRender(vtkRenderWindow* window)
@@ -33,7 +47,8 @@ double Median(std::vector<double> values)
 
 //------------------------------------------------------------------------------
 std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* renderer,
-  const std::vector<vtkRenderPass*>& passes, int frames, const CameraMotion& motion)
+  const std::vector<vtkRenderPass*>& passes, int frames, const CameraMotion& motion,
+  bool interactiveMoving)
 {
   constexpr int Rounds = 3;
   constexpr int WarmUpFrames = 2;
@@ -60,6 +75,7 @@ std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* rend
       {
         steady[p].push_back(TimedRender(window));
       }
+      const MovingCameraRenders drag(window, interactiveMoving);
       for (int i = 0; i < frames; ++i)
       {
         motion(round * frames + i + 1, motionFrames);
@@ -71,6 +87,9 @@ std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* rend
   {
     timing[p].Steady = Median(steady[p]);
     timing[p].Moving = Median(moving[p]);
+    timing[p].MovingMean = moving[p].empty()
+      ? std::numeric_limits<double>::quiet_NaN()
+      : std::accumulate(moving[p].begin(), moving[p].end(), 0.0) / moving[p].size();
   }
   motion(0, motionFrames);
   return timing;

@@ -21,8 +21,27 @@ struct Timing
   double First = 0.0;
   /// Median of frames with nothing changed.
   double Steady = 0.0;
-  /// Median of frames with the camera moved a little before each.
+  /// Median of frames with the camera moved a little before each, rendered
+  /// as an interactor renders a drag (MovingCameraRenders).
   double Moving = 0.0;
+  /// Their mean: kept maps make most moving frames cheap and some dear.
+  double MovingMean = 0.0;
+};
+
+/// Renders of a moving camera, while the object lives: `interactive`, as a
+/// user's drag (the window's desired update rate at vtkRenderWindowInteractor's
+/// default DesiredUpdateRate, 15, as vtkInteractorStyle sets it), else as a
+/// scripted animation (at its StillUpdateRate, 0.0001). The still rate after.
+class MovingCameraRenders
+{
+public:
+  explicit MovingCameraRenders(vtkRenderWindow* window, bool interactive = true);
+  ~MovingCameraRenders();
+  MovingCameraRenders(const MovingCameraRenders&) = delete;
+  MovingCameraRenders& operator=(const MovingCameraRenders&) = delete;
+
+private:
+  vtkRenderWindow* Window;
 };
 
 /// Sets the camera for moving frame `frame` of `frames` (frame 0: the start).
@@ -38,9 +57,11 @@ double Median(std::vector<double> values);
 /// so that a slow patch of the machine affects all passes alike: per round and
 /// pass a first frame at the start of the motion, two warm-up frames (switching
 /// passes rebuilds the mappers' shaders), `frames` steady frames, then
-/// `frames` moving frames. Leaves the camera at the start of the motion.
+/// `frames` moving frames (MovingCameraRenders, interactive when `interactiveMoving`).
+/// Leaves the camera at the start of the motion.
 std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* renderer,
-  const std::vector<vtkRenderPass*>& passes, int frames, const CameraMotion& motion);
+  const std::vector<vtkRenderPass*>& passes, int frames, const CameraMotion& motion,
+  bool interactiveMoving = true);
 
 } // namespace shadowbench
 

@@ -48,6 +48,7 @@ struct Options
   bool help = false;
   shadowbench::Options bench = shadowbench::DefaultOptions();
   shadowsweep::Options sweep;
+  bool interactiveMoving = true; // speed: moving frames rendered as a drag
   std::string scene = "default";
   std::string light = "sun";
   double azimuth = 60.0;
@@ -131,6 +132,10 @@ void PrintUsage(std::ostream& out)
          "  --setups LIST            [perpendicular,spot]\n"
          "  --techniques LIST        [uniform,lispsm,csm] (none and vtk always measured)\n"
          "  --size WxH               [960x540]\n"
+         "  --moving interactive|still\n"
+         "                           moving frames rendered as a user's drag (the window's\n"
+         "                           desired update rate at an interactor's 15) or as a\n"
+         "                           scripted animation (the still rate) [interactive]\n"
          "  --out DIR                [./speed]\n"
          "\n"
          "options of sweep:\n"
@@ -435,6 +440,16 @@ std::string ParseTimedFrames(const std::string& value, Options& options)
   return {};
 }
 
+std::string ParseMoving(const std::string& value, Options& options)
+{
+  if (value != "interactive" && value != "still")
+  {
+    return "moving '" + value + "' is neither interactive nor still";
+  }
+  options.interactiveMoving = value == "interactive";
+  return {};
+}
+
 std::string ParseOutputDirectory(const std::string& value, Options& options)
 {
   if (value.empty())
@@ -580,6 +595,7 @@ const std::map<std::string, OptionParser>& SpeedOptionParsers()
     speed.erase("--flicker-frames");
     speed.erase("--flicker-setups");
     speed["--scenes"] = ParseSpeedScenes;
+    speed["--moving"] = ParseMoving;
     return speed;
   }();
   return parsers;
@@ -608,6 +624,7 @@ shadowbench::SpeedOptions SpeedOptionsOf(const Options& options)
   speed.Width = options.bench.Width;
   speed.Height = options.bench.Height;
   speed.TimedFrames = options.bench.TimedFrames;
+  speed.InteractiveMoving = options.interactiveMoving;
   speed.OutputDirectory = options.bench.OutputDirectory;
   return speed;
 }

@@ -53,6 +53,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapCasterReach.cxx
     Plugin/Math/ShadowMapCrop.cxx
     Plugin/Math/ShadowMapFocusing.cxx
+    Plugin/Math/ShadowMapKeptViews.cxx
     Plugin/Math/ShadowMapLightDepth.cxx
     Plugin/Math/ShadowMapPerspective.cxx
     Plugin/Math/ShadowMapTrapezoid.cxx
@@ -81,6 +82,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapCascades.h
     Plugin/Math/ShadowMapCasterReach.h
     Plugin/Math/ShadowMapCrop.h
+    Plugin/Math/ShadowMapKeptViews.h
     Plugin/Math/ShadowMapPerspective.h
     Plugin/Math/ShadowMapTrapezoid.h
     Plugin/Math/ShadowMapWarping.h

@@ -355,8 +355,12 @@ struct vtkAbstractShadowMapPass::Internals
   bool WarnedUncombined = false;
   bool WarnedUngatheredBounds = false;
   std::vector<vtkMTimeType> LayersKey;
-  /// The lights and views the maps were rendered for (reused with the maps).
+  /// The lights and views the maps were rendered for (reused with the maps),
+  /// and what else their fits depended on but the camera.
   std::vector<shadowmaps::ShadowLight> RenderedLights;
+  vtkMTimeType RenderedPassTime = 0;
+  int RenderedResolution = 0;
+  Aabb RenderedSceneBounds;
 
   // The receivers' shader code and uniforms of the current maps.
   shadowmaps::ReceiverCode Code;
@@ -676,6 +680,8 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   frame.CameraProjection =
     ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
   frame.FilterReachTexels = r.Representation->GetFilterReachTexels();
+  frame.Interactive =
+    renderer->GetRenderWindow()->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
 }
 
 //------------------------------------------------------------------------------
@@ -697,6 +703,8 @@ std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRender
     AppendBoxBits(box, signature);
   }
   AppendBoxBits(r.Frame.SceneBounds, signature);
+  // A still render after interactive ones fits anew what they may have kept.
+  signature.push_back(r.Frame.Interactive ? 1 : 0);
   for (const auto& light : r.Lights)
   {
     signature.push_back(reinterpret_cast<vtkMTimeType>(light.Light));
@@ -785,6 +793,9 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   }
   r.Uniforms.Pack(r.Lights, r.Frame.CameraView);
   r.RenderedLights = r.Lights;
+  r.RenderedPassTime = this->GetMTime();
+  r.RenderedResolution = r.Frame.Resolution;
+  r.RenderedSceneBounds = r.Frame.SceneBounds;
   r.Signature = std::move(signature);
   r.MapsValid = true;
   r.WarnedGLError.clear();
@@ -828,6 +839,7 @@ bool vtkAbstractShadowMapPass::FitViews()
   Internals& r = *this->Internal;
   for (ShadowLight& light : r.Lights)
   {
+    light.LastViews = this->LastViewsOf(light);
     r.Views->FitLight(r.Frame, light);
     light.Depth = light.Kind == LightKind::Directional
       ? shadowmaps::DirectionalLightDepth(light.Direction, r.Frame.SceneBounds)
@@ -836,6 +848,30 @@ bool vtkAbstractShadowMapPass::FitViews()
   this->DropLightsWithoutUsableViews();
   this->AssignLayers();
   return !r.Lights.empty();
+}
+
+//------------------------------------------------------------------------------
+std::vector<LightView> vtkAbstractShadowMapPass::LastViewsOf(const ShadowLight& light)
+{
+  const Internals& r = *this->Internal;
+  const Aabb& bounds = r.Frame.SceneBounds;
+  const bool onlyTheCameraMoved = r.RenderedPassTime == this->GetMTime() &&
+    r.RenderedResolution == r.Frame.Resolution && r.RenderedSceneBounds.Min == bounds.Min &&
+    r.RenderedSceneBounds.Max == bounds.Max;
+  if (!onlyTheCameraMoved)
+  {
+    return {};
+  }
+  for (const ShadowLight& rendered : r.RenderedLights)
+  {
+    if (rendered.Light == light.Light && rendered.Kind == light.Kind &&
+      rendered.Position == light.Position && rendered.Direction == light.Direction &&
+      rendered.ConeAngle == light.ConeAngle)
+    {
+      return rendered.Views;
+    }
+  }
+  return {};
 }
 
 //------------------------------------------------------------------------------
@@ -1368,6 +1404,7 @@ void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
   Internals& r = *this->Internal;
   r.Maps.Release();
   r.MapsValid = false;
+  r.RenderedLights.clear();
   this->NumberOfShadowMapLayers = 0;
   if (error != r.WarnedGLError)
   {
@@ -1488,6 +1525,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   Internals& r = *this->Internal;
   r.Maps.Release();
   r.MapsValid = false;
+  r.RenderedLights.clear();
   r.Signature.clear();
   r.MapView.ReleaseGraphicsResources(window);
   r.LinearDepths.ReleaseGraphicsResources(window);
@@ -1525,6 +1563,7 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CasterFaces: " << this->CasterFaces << "\n";
   os << indent << "NormalOffset: " << this->NormalOffset << "\n";
   os << indent << "ShadowReachCulling: " << this->ShadowReachCulling << "\n";
+  os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "AnalysisView: " << this->AnalysisView << "\n";
   os << indent << "AnalysisLight: " << this->AnalysisLight << "\n";
   os << indent << "NumberOfShadowedLights: " << this->NumberOfShadowedLights << "\n";

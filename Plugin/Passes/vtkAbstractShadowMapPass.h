@@ -206,6 +206,22 @@ public:
 
   ///@{
   /**
+   * A render is interactive when its render window's DesiredUpdateRate is at
+   * least this (as for vtkSmartVolumeMapper): VTK's interactor styles set the
+   * interactor's DesiredUpdateRate (15) while the user drags and its
+   * StillUpdateRate (0.0001) for the render that ends the drag; ParaView sets
+   * 5 and 0.002. In interactive renders, views that follow the camera (warped
+   * maps) may keep a light's last views while they still serve, so that its
+   * maps are re-rendered only every few frames; still renders always fit
+   * anew. VTK_DOUBLE_MAX makes every render a still one. Clamped to
+   * [0, VTK_DOUBLE_MAX]; default 1.
+   */
+  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveUpdateRate, double);
+  ///@}
+
+  ///@{
+  /**
    * Receiver offset along its normal, in shadow-map texels (scaled by the
    * world-space size of a texel at the receiver). Clamped to [0, 10]; default 1.
    */
@@ -332,6 +348,7 @@ protected:
   int CasterFaces = BOTH_FACES;
   double NormalOffset = 1.0;
   bool ShadowReachCulling = true;
+  double InteractiveUpdateRate = 1.0;
   int AnalysisView = NO_ANALYSIS;
   int AnalysisLight = 0;
 
@@ -366,6 +383,8 @@ private:
   int UsableResolution();
   bool NeedsSecondOutput() const;
   bool FitViews();
+  /** The views `light` was last rendered with, if only the camera moved since (ShadowLight::LastViews). */
+  std::vector<shadowmaps::LightView> LastViewsOf(const shadowmaps::ShadowLight& light);
   void DropLightsWithoutUsableViews();
   void AssignLayers();
   void ChooseStorage();

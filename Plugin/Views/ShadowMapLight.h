@@ -95,6 +95,11 @@ struct ShadowLight
   /// light, whatever this frame's fit: a fit turning uniform as the camera
   /// moves must not rebuild the receivers' shaders.
   int PossibleFeatures = 0;
+  /// Set by the pass before the fit: the views the light's maps were last
+  /// rendered with, when only the camera has changed since (the same light,
+  /// scene bounds, settings and resolution); empty otherwise. A strategy may
+  /// give them again in interactive frames (ShadowFrame::Interactive).
+  std::vector<LightView> LastViews;
 };
 
 /// Cascade blend-band start meaning "no band".
@@ -158,6 +163,11 @@ struct ShadowFrame
   /// texels (vtkShadowMapRepresentation::GetFilterReachTexels): tiles keep a
   /// border that wide.
   double FilterReachTexels = 1.0;
+  /// The user is moving the camera (the render window's desired update rate
+  /// is at least the pass's InteractiveUpdateRate): a strategy whose views
+  /// follow the camera may keep a light's LastViews while they still serve,
+  /// and re-render its maps only every few frames. Still frames fit anew.
+  bool Interactive = false;
 
   glm::dmat4 CameraViewProjection() const { return this->CameraProjection * this->CameraView; }
 };

@@ -1,6 +1,7 @@
 #include "vtkWarpedShadowMapViews.h"
 
 #include "ShadowMapCascades.h"
+#include "ShadowMapKeptViews.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapPerspective.h"
 #include "ShadowMapTrapezoid.h"
@@ -20,6 +21,13 @@ using shadowmaps::ShadowLight;
 
 namespace
 {
+// A view fitted again in an interactive frame is fitted to a camera whose eye
+// is moved back by this share of the nearest visible prop's depth and whose
+// sides are turned out by this many degrees (or by a half or a quarter of
+// both, when its texels would be too coarse): it then holds several frames of
+// an orbit (docs/BENCHMARKS.md, "Warped maps that keep their layers").
+constexpr double WidenedBackwardPerNearDepth = 0.1;
+constexpr double WidenedTurnDegrees = 1.0;
 
 // Distance along the view axis from the camera's near plane to the farthest
 // point of the focus body B (0 when B is empty).
@@ -145,6 +153,60 @@ LightView vtkWarpedShadowMapViews::FitSpotLight(
 }
 
 //------------------------------------------------------------------------------
+LightView vtkWarpedShadowMapViews::FitWarpedView(const ShadowFrame& frame, const ShadowLight& light) const
+{
+  if (light.Kind == shadowmaps::LightKind::Spot)
+  {
+    return this->FitSpotLight(frame, light);
+  }
+  LightView view = this->FitDirectionalLight(frame, light);
+  // A warped map's TexelConstant bounds the coarsest texel over B; as a normal
+  // offset near the viewer it would be many texels too large.
+  view.TexelSizeFromGradient = view.Perspective;
+  return view;
+}
+
+//------------------------------------------------------------------------------
+LightView vtkWarpedShadowMapViews::InteractiveView(
+  const ShadowFrame& frame, const ShadowLight& light, const LightView& fresh) const
+{
+  shadowmaps::LightRays rays;
+  rays.Positional = light.Kind != shadowmaps::LightKind::Directional;
+  rays.Position = light.Position;
+  rays.Direction = light.Direction;
+  rays.ConeAngleDegrees = light.ConeAngle;
+  const auto serves = [&](const LightView& view, double texelRatio) {
+    return shadowmaps::KeptViewServes(view, fresh, frame.CameraViewProjection(), frame.SceneBounds,
+      rays, frame.Resolution, texelRatio);
+  };
+  if (light.LastViews.size() == 1 && serves(light.LastViews.front(), this->InteractiveTexelRatio))
+  {
+    return light.LastViews.front();
+  }
+  // A view that holds what slightly moved cameras see lasts a few frames: the
+  // widest whose texels stay within half the ratio's margin, so that the
+  // camera's next moves do not take them beyond it at once.
+  const double widenedRatio = 1.0 + 0.5 * (this->InteractiveTexelRatio - 1.0);
+  const double nearest =
+    shadowmaps::TightDepthRange(frame.CameraView, frame.CameraProjection, frame.PropBounds, 0.01).x;
+  for (const double share : { 1.0, 0.5, 0.25 })
+  {
+    const shadowmaps::Camera widened =
+      shadowmaps::WidenedCamera({ frame.CameraView, frame.CameraProjection },
+        share * WidenedBackwardPerNearDepth * nearest, share * WidenedTurnDegrees);
+    ShadowFrame wider = frame;
+    wider.CameraView = widened.View;
+    wider.CameraProjection = widened.Projection;
+    const LightView view = this->FitWarpedView(wider, light);
+    if (shadowmaps::IsFinite(view.ViewProjection()) && serves(view, widenedRatio))
+    {
+      return view;
+    }
+  }
+  return fresh;
+}
+
+//------------------------------------------------------------------------------
 void vtkWarpedShadowMapViews::FitLight(const ShadowFrame& frame, ShadowLight& light)
 {
   const bool mayWarp = this->WarpMode != UNIFORM && !shadowmaps::NeedsCubeFaces(light);
@@ -157,18 +219,15 @@ void vtkWarpedShadowMapViews::FitLight(const ShadowFrame& frame, ShadowLight& li
     vtkShadowMapViews::FitUniformViews(frame, light);
     return;
   }
-  const bool spot = light.Kind == shadowmaps::LightKind::Spot;
-  LightView view = spot ? this->FitSpotLight(frame, light) : this->FitDirectionalLight(frame, light);
+  LightView view = this->FitWarpedView(frame, light);
   if (!shadowmaps::IsFinite(view.ViewProjection()))
   {
     vtkShadowMapViews::FitUniformViews(frame, light);
     return;
   }
-  if (!spot)
+  if (frame.Interactive && this->InteractiveTexelRatio > 1.0)
   {
-    // A warped map's TexelConstant bounds the coarsest texel over B; as a normal
-    // offset near the viewer it would be many texels too large.
-    view.TexelSizeFromGradient = view.Perspective;
+    view = this->InteractiveView(frame, light, view);
   }
   light.Layout = shadowmaps::ViewLayout::Single;
   light.Views = { view };
@@ -184,4 +243,5 @@ void vtkWarpedShadowMapViews::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PSMSlideBack: " << this->PSMSlideBack << "\n";
   os << indent << "TSMFocusDistance: " << this->TSMFocusDistance << "\n";
   os << indent << "TSMFocusFraction: " << this->TSMFocusFraction << "\n";
+  os << indent << "InteractiveTexelRatio: " << this->InteractiveTexelRatio << "\n";
 }

@@ -125,6 +125,21 @@ public:
   vtkGetMacro(TSMFocusFraction, double);
   ///@}
 
+  ///@{
+  /**
+   * In interactive renders (vtkAbstractShadowMapPass::InteractiveUpdateRate)
+   * a warped map follows the camera only every few frames: the light keeps
+   * the view it was last rendered with while that view holds what the frame's
+   * own fit would hold and its texels across the light are at most this many
+   * times the fit's, at every vertex of the visible part of the scene it
+   * holds; else it is fitted again to a slightly wider camera. Still renders
+   * always get the frame's own fit. 1 fits every render anew. Clamped to
+   * [1, 16]; default 1.5.
+   */
+  vtkSetClampMacro(InteractiveTexelRatio, double, 1.0, 16.0);
+  vtkGetMacro(InteractiveTexelRatio, double);
+  ///@}
+
   VTK_WRAPEXCLUDE void FitLight(
     const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) override;
 
@@ -139,6 +154,15 @@ protected:
     const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
   shadowmaps::LightView FitSpotLight(
     const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
+  /** The frame's own warped view of a directional or spot light. */
+  shadowmaps::LightView FitWarpedView(
+    const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
+  /**
+   * In an interactive frame: the light's last view if it still serves as
+   * `fresh` would, else the fit of a wider camera if that serves, else `fresh`.
+   */
+  shadowmaps::LightView InteractiveView(const shadowmaps::ShadowFrame& frame,
+    const shadowmaps::ShadowLight& light, const shadowmaps::LightView& fresh) const;
   /** LiSPSM and GMNPR settings (free parameter, falloff). */
   shadowmaps::WarpOptions LightSpaceWarpOptions() const;
 
@@ -148,6 +172,7 @@ protected:
   double PSMSlideBack = -1.0;
   double TSMFocusDistance = 0.0;
   double TSMFocusFraction = 0.8;
+  double InteractiveTexelRatio = 1.5;
 
 private:
   vtkWarpedShadowMapViews(const vtkWarpedShadowMapViews&) = delete;

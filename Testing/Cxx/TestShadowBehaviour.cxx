@@ -812,6 +812,100 @@ TEST(ShadowBehaviour, AnOrbitKeepsMostCascadesAndEverySpotTile)
 
 namespace
 {
+// The share of pixels whose colour differs by more than a few levels.
+double ShareOfDifferentPixels(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  if (a.size() != b.size() || a.empty())
+  {
+    return 1.0;
+  }
+  std::size_t different = 0;
+  for (std::size_t i = 0; i + 2 < a.size(); i += 3)
+  {
+    for (std::size_t c = i; c < i + 3; ++c)
+    {
+      if (std::abs(int(a[c]) - int(b[c])) > 8)
+      {
+        ++different;
+        break;
+      }
+    }
+  }
+  return double(different) / double(a.size() / 3);
+}
+
+vtkSmartPointer<vtkWarpedShadowMapPass> WarpedPass(int mode)
+{
+  auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+  pass->SetWarpMode(mode);
+  return pass;
+}
+} // namespace
+
+// While the user drags the camera (the window's desired update rate at the
+// interactor's), warped maps follow it only every few frames, with the shadows
+// of a fresh fit; the still render that ends the drag is a fresh pass's.
+TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
+{
+  constexpr int Frames = 12;
+  for (const int mode : { vtkWarpedShadowMapPass::LISPSM, vtkWarpedShadowMapPass::TSM,
+         vtkWarpedShadowMapPass::PSM, vtkWarpedShadowMapPass::GMNPR })
+  {
+    for (const bool spot : { false, true })
+    {
+      std::ostringstream name;
+      name << "mode " << mode << ", spot " << spot;
+      TestScene scene;
+      LightBySunOrSpot(scene, spot);
+      scene.Renderer->GetActiveCamera()->Dolly(2.0);
+      scene.Renderer->ResetCameraClippingRange();
+      vtkSmartPointer<vtkWarpedShadowMapPass> pass = WarpedPass(mode);
+      scene.Renderer->SetPass(pass);
+      scene.Window->Render();
+      const int builds = pass->GetNumberOfShaderBuilds();
+      int rendered = 0;
+      scene.Window->SetDesiredUpdateRate(15.0);
+      for (int frame = 0; frame < Frames; ++frame)
+      {
+        OrbitAndRender(scene, 0.3);
+        rendered += pass->GetNumberOfRenderedLayers();
+      }
+      std::cout << "[ measured ] " << name.str() << ": layers re-rendered in " << Frames
+                << " interactive frames: " << rendered << "\n";
+      EXPECT_LE(rendered, Frames / 3) << name.str();
+      EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds) << name.str();
+      const std::vector<unsigned char> interactive = RgbBytes(CaptureAsRendered(scene.Window));
+      scene.Window->SetDesiredUpdateRate(0.0001);
+      const std::vector<unsigned char> fresh = FreshPassFrame(scene, WarpedPass(mode));
+      const double different = ShareOfDifferentPixels(interactive, fresh);
+      std::cout << "[ measured ] " << name.str() << ": pixels unlike a fresh pass's "
+                << different << "\n";
+      EXPECT_LT(different, 0.01) << name.str() << ": the kept map's shadows are a fresh fit's";
+      scene.Window->Render();
+      EXPECT_EQ(RgbBytes(CaptureAsRendered(scene.Window)), fresh) << name.str() << ": the still frame";
+
+      // A jump the kept map cannot hold is re-rendered at once.
+      scene.Window->SetDesiredUpdateRate(15.0);
+      OrbitAndRender(scene, 60.0);
+      EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 1) << name.str() << ": a jump";
+      // Every render is a still one above any update rate.
+      pass->SetInteractiveUpdateRate(VTK_DOUBLE_MAX);
+      OrbitAndRender(scene, 0.3);
+      rendered = 0;
+      for (int frame = 0; frame < 4; ++frame)
+      {
+        OrbitAndRender(scene, 0.3);
+        rendered += pass->GetNumberOfRenderedLayers();
+      }
+      EXPECT_EQ(rendered, 4) << name.str() << ": still renders follow the camera";
+      scene.Renderer->SetPass(nullptr);
+      pass->ReleaseGraphicsResources(scene.Window);
+    }
+  }
+}
+
+namespace
+{
 /// Keeps the fragment shaders the mappers build with it.
 class vtkShaderRecordingWarpedPass : public vtkWarpedShadowMapPass
 {

@@ -1,0 +1,162 @@
+#include "ShadowMapKeptViews.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowmaps
+{
+namespace
+{
+// Relative slack of the clip-space comparisons: a view compared with itself
+// holds its own boundary.
+constexpr double ClipTolerance = 1e-6;
+
+template <class... PlaneSets>
+std::vector<Plane> Joined(const PlaneSets&... sets)
+{
+  std::vector<Plane> planes;
+  (planes.insert(planes.end(), sets.begin(), sets.end()), ...);
+  return planes;
+}
+
+// The world plane where clip `row` equals `value` times clip w, facing where it
+// is larger (sign 1) or smaller (sign -1).
+Plane ClipPlane(const glm::dmat4& viewProjection, int row, double value, double sign)
+{
+  const glm::dmat4 t = glm::transpose(viewProjection); // t[i] is row i
+  const glm::dvec4 plane = sign * (t[row] - value * t[3]);
+  const double length = glm::length(glm::dvec3(plane));
+  return { glm::dvec3(plane) / length, plane.w / length };
+}
+
+bool InsideMapBeforeFar(const glm::dmat4& viewProjection, const glm::dvec3& p)
+{
+  const glm::dvec4 c = viewProjection * glm::dvec4(p, 1.0);
+  const double slack = ClipTolerance * std::abs(c.w);
+  return c.w > 0.0 && std::abs(c.x) <= c.w + slack && std::abs(c.y) <= c.w + slack &&
+    c.z <= c.w + slack;
+}
+
+bool BeyondNear(const glm::dmat4& viewProjection, const glm::dvec3& p)
+{
+  const glm::dvec4 c = viewProjection * glm::dvec4(p, 1.0);
+  return c.w > 0.0 && c.z >= -c.w - ClipTolerance * c.w;
+}
+
+// The rectangle of the points' map coordinates, as the four planes of the
+// light rays through its sides.
+std::array<Plane, 4> FootprintPlanes(const glm::dmat4& viewProjection, const std::vector<glm::dvec3>& points)
+{
+  glm::dvec2 lo(1.0);
+  glm::dvec2 hi(-1.0);
+  for (const auto& p : points)
+  {
+    const glm::dvec3 ndc = ProjectPoint(viewProjection, p);
+    lo = glm::min(lo, glm::dvec2(ndc));
+    hi = glm::max(hi, glm::dvec2(ndc));
+  }
+  return { ClipPlane(viewProjection, 0, lo.x, 1.0), ClipPlane(viewProjection, 0, hi.x, -1.0),
+    ClipPlane(viewProjection, 1, lo.y, 1.0), ClipPlane(viewProjection, 1, hi.y, -1.0) };
+}
+
+// The side planes of a spot's square cone frustum; none for other lights.
+std::vector<Plane> LitPlanes(const LightRays& rays)
+{
+  if (!rays.Positional || !(rays.ConeAngleDegrees < 90.0))
+  {
+    return {};
+  }
+  const glm::dmat4 cone =
+    glm::perspective(glm::radians(2.0 * rays.ConeAngleDegrees), 1.0, 1.0, 2.0) *
+    LightLookAt(rays.Position, SafeDirection(rays.Direction));
+  const auto planes = FrustumPlanes(cone);
+  return { planes.begin(), planes.begin() + 4 };
+}
+
+glm::dvec3 RayAt(const LightRays& rays, const glm::dvec3& p)
+{
+  return SafeDirection(rays.Positional ? p - rays.Position : rays.Direction);
+}
+
+double TexelRatio(const LightView& kept, const LightView& fresh, const glm::dvec3& p,
+  const LightRays& rays, double step, int resolution)
+{
+  const glm::dvec3 ray = RayAt(rays, p);
+  const glm::dvec3 helper = std::abs(ray.z) < 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(1.0, 0.0, 0.0);
+  const glm::dvec3 u = glm::normalize(glm::cross(ray, helper));
+  const glm::dvec3 v = glm::cross(ray, u);
+  const double keptTexel = TexelAcrossLight(kept.ViewProjection(), p, u, v, step, resolution);
+  const double freshTexel = TexelAcrossLight(fresh.ViewProjection(), p, u, v, step, resolution);
+  return freshTexel > 0.0 ? keptTexel / freshTexel : 1.0;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+bool KeptViewServes(const LightView& kept, const LightView& fresh,
+  const glm::dmat4& cameraViewProjection, const Aabb& scene, const LightRays& rays, int resolution,
+  double maximumTexelRatio)
+{
+  const double scale = std::max(scene.Diagonal(), 1e-300);
+  const glm::dmat4 keptClip = kept.ViewProjection();
+  const auto camera = FrustumPlanes(cameraViewProjection);
+  const auto held = FrustumPlanes(fresh.ViewProjection());
+  const auto box = BoxPlanes(scene);
+  const std::vector<Plane> lit = LitPlanes(rays);
+  const std::vector<glm::dvec3> body = ConvexPolytopeVertices(Joined(camera, held, box, lit), scale);
+  if (body.empty())
+  {
+    return true;
+  }
+  for (const auto& p : body)
+  {
+    if (!InsideMapBeforeFar(keptClip, p))
+    {
+      return false;
+    }
+  }
+  const auto footprint = FootprintPlanes(keptClip, body);
+  for (const auto& p : ConvexPolytopeVertices(Joined(held, box, lit, footprint), scale))
+  {
+    if (!BeyondNear(keptClip, p))
+    {
+      return false;
+    }
+  }
+  const double step = scale * 1e-5;
+  return std::all_of(body.begin(), body.end(), [&](const glm::dvec3& p) {
+    return TexelRatio(kept, fresh, p, rays, step, resolution) <= maximumTexelRatio;
+  });
+}
+
+//------------------------------------------------------------------------------
+Camera WidenedCamera(const Camera& camera, double backward, double degrees)
+{
+  const glm::dmat4& p = camera.Projection;
+  const bool perspective = p[2][3] != 0.0 && p[3][3] == 0.0;
+  if (!perspective || !(backward > 0.0) || !(degrees > 0.0) || !std::isfinite(backward))
+  {
+    return camera;
+  }
+  // The sides' slopes (x / depth at depth 1) of a glm::frustum-style matrix.
+  const double left = (p[2][0] - 1.0) / p[0][0];
+  const double right = (p[2][0] + 1.0) / p[0][0];
+  const double bottom = (p[2][1] - 1.0) / p[1][1];
+  const double top = (p[2][1] + 1.0) / p[1][1];
+  const double turn = glm::radians(std::min(degrees, 30.0));
+  const auto outward = [turn](double slope, double sign) {
+    return std::tan(std::max(-1.5, std::min(1.5, std::atan(slope) + sign * turn)));
+  };
+  const glm::dvec2 planes = ProjectionDepthRange(p);
+  const double zNear = planes.x + backward;
+  const double zFar = planes.y + backward;
+  Camera widened;
+  widened.View = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -backward)) * camera.View;
+  widened.Projection = glm::frustum(outward(left, -1.0) * zNear, outward(right, 1.0) * zNear,
+    outward(bottom, -1.0) * zNear, outward(top, 1.0) * zNear, zNear, zFar);
+  return widened;
+}
+} // namespace shadowmaps
