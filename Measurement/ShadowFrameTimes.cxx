@@ -15,6 +15,7 @@ namespace shadowbench
 //------------------------------------------------------------------------------
 MovingCameraRenders::MovingCameraRenders(vtkRenderWindow* window, bool interactive)
   : Window(window)
+  , RateBefore(window->GetDesiredUpdateRate())
 {
   this->Window->SetDesiredUpdateRate(interactive ? 15.0 : 0.0001);
 }
@@ -22,7 +23,7 @@ MovingCameraRenders::MovingCameraRenders(vtkRenderWindow* window, bool interacti
 //------------------------------------------------------------------------------
 MovingCameraRenders::~MovingCameraRenders()
 {
-  this->Window->SetDesiredUpdateRate(0.0001);
+  this->Window->SetDesiredUpdateRate(this->RateBefore);
 }
 
 //------------------------------------------------------------------------------

@@ -31,7 +31,7 @@ struct Timing
 /// Renders of a moving camera, while the object lives: `interactive`, as a
 /// user's drag (the window's desired update rate at vtkRenderWindowInteractor's
 /// default DesiredUpdateRate, 15, as vtkInteractorStyle sets it), else as a
-/// scripted animation (at its StillUpdateRate, 0.0001). The still rate after.
+/// scripted animation (at its StillUpdateRate, 0.0001); after, the rate it had.
 class MovingCameraRenders
 {
 public:
@@ -42,6 +42,7 @@ public:
 
 private:
   vtkRenderWindow* Window;
+  double RateBefore;
 };
 
 /// Sets the camera for moving frame `frame` of `frames` (frame 0: the start).

@@ -28,8 +28,8 @@ struct SpeedOptions
   int TimedFrames = 8;
   /// Moving frames orbit the camera by this many degrees each.
   double OrbitDegrees = 0.3;
-  /// Moving frames are rendered as a user's drag (InteractiveRenders), or at
-  /// the still rate as a scripted animation is.
+  /// Moving frames are rendered as a user's drag, or at the still rate as a
+  /// scripted animation is (MovingCameraRenders).
   bool InteractiveMoving = true;
   std::string OutputDirectory = "speed";
 };

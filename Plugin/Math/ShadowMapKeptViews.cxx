@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -14,6 +15,10 @@ namespace
 // Relative slack of the clip-space comparisons: a view compared with itself
 // holds its own boundary.
 constexpr double ClipTolerance = 1e-6;
+// Receivers look a map up beyond where they are (filter taps, normal offset):
+// a kept view keeps the room the fresh fit leaves at its sides, up to this
+// many texels (the warped fits leave 4, TSM none).
+constexpr double SideRoomTexels = 3.0;
 
 template <class... PlaneSets>
 std::vector<Plane> Joined(const PlaneSets&... sets)
@@ -33,18 +38,31 @@ Plane ClipPlane(const glm::dmat4& viewProjection, int row, double value, double 
   return { glm::dvec3(plane) / length, plane.w / length };
 }
 
-bool InsideMapBeforeFar(const glm::dmat4& viewProjection, const glm::dvec3& p)
+// How far inside its map's sides `p` lies, in NDC units; -infinity behind the map.
+double SideRoom(const glm::dmat4& viewProjection, const glm::dvec3& p)
 {
   const glm::dvec4 c = viewProjection * glm::dvec4(p, 1.0);
-  const double slack = ClipTolerance * std::abs(c.w);
-  return c.w > 0.0 && std::abs(c.x) <= c.w + slack && std::abs(c.y) <= c.w + slack &&
-    c.z <= c.w + slack;
+  return c.w > 0.0 ? 1.0 - std::max(std::abs(c.x), std::abs(c.y)) / c.w
+                   : -std::numeric_limits<double>::infinity();
 }
 
+bool BeforeFar(const glm::dmat4& viewProjection, const glm::dvec3& p)
+{
+  const glm::dvec4 c = viewProjection * glm::dvec4(p, 1.0);
+  return c.w > 0.0 && c.z <= c.w + ClipTolerance * c.w;
+}
+
+// Stricter than the casters need (they are drawn with depth clamping), which
+// only costs a refit; linear-depth views store what the casters compute.
 bool BeyondNear(const glm::dmat4& viewProjection, const glm::dvec3& p)
 {
   const glm::dvec4 c = viewProjection * glm::dvec4(p, 1.0);
   return c.w > 0.0 && c.z >= -c.w - ClipTolerance * c.w;
+}
+
+bool AllFinite(std::initializer_list<const glm::dmat4*> matrices)
+{
+  return std::all_of(matrices.begin(), matrices.end(), [](const glm::dmat4* m) { return IsFinite(*m); });
 }
 
 // The rectangle of the points' map coordinates, as the four planes of the
@@ -91,6 +109,10 @@ double TexelRatio(const LightView& kept, const LightView& fresh, const glm::dvec
   const glm::dvec3 v = glm::cross(ray, u);
   const double keptTexel = TexelAcrossLight(kept.ViewProjection(), p, u, v, step, resolution);
   const double freshTexel = TexelAcrossLight(fresh.ViewProjection(), p, u, v, step, resolution);
+  if (!(keptTexel > 0.0))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
   return freshTexel > 0.0 ? keptTexel / freshTexel : 1.0;
 }
 } // namespace
@@ -100,20 +122,29 @@ bool KeptViewServes(const LightView& kept, const LightView& fresh,
   const glm::dmat4& cameraViewProjection, const Aabb& scene, const LightRays& rays, int resolution,
   double maximumTexelRatio)
 {
-  const double scale = std::max(scene.Diagonal(), 1e-300);
   const glm::dmat4 keptClip = kept.ViewProjection();
+  const glm::dmat4 freshClip = fresh.ViewProjection();
+  const double scale = scene.Diagonal();
+  if (!AllFinite({ &keptClip, &freshClip, &cameraViewProjection }) || !(scale > 0.0) ||
+    !std::isfinite(scale))
+  {
+    return false;
+  }
   const auto camera = FrustumPlanes(cameraViewProjection);
-  const auto held = FrustumPlanes(fresh.ViewProjection());
+  const auto held = FrustumPlanes(freshClip);
   const auto box = BoxPlanes(scene);
   const std::vector<Plane> lit = LitPlanes(rays);
   const std::vector<glm::dvec3> body = ConvexPolytopeVertices(Joined(camera, held, box, lit), scale);
+  // Nothing to compare by (or planes that meet nowhere): the fresh fit.
   if (body.empty())
   {
-    return true;
+    return false;
   }
+  const double sideRoom = 2.0 * SideRoomTexels / std::max(resolution, 1);
   for (const auto& p : body)
   {
-    if (!InsideMapBeforeFar(keptClip, p))
+    const double needed = std::min(SideRoom(freshClip, p), sideRoom) - ClipTolerance;
+    if (!(SideRoom(keptClip, p) >= needed) || !BeforeFar(keptClip, p))
     {
       return false;
     }
@@ -135,20 +166,27 @@ bool KeptViewServes(const LightView& kept, const LightView& fresh,
 //------------------------------------------------------------------------------
 Camera WidenedCamera(const Camera& camera, double backward, double degrees)
 {
-  const glm::dmat4& p = camera.Projection;
-  const bool perspective = p[2][3] != 0.0 && p[3][3] == 0.0;
-  if (!perspective || !(backward > 0.0) || !(degrees > 0.0) || !std::isfinite(backward))
+  // A glm::frustum-style matrix (VTK's cameras make them too, up to a scale);
+  // stereo and sheared projections are left alone.
+  const double w = -camera.Projection[2][3];
+  const glm::dmat4 p = camera.Projection / (w > 0.0 ? w : 1.0);
+  const bool frustum = w > 0.0 && p[3][3] == 0.0 && p[3][0] == 0.0 && p[3][1] == 0.0 &&
+    p[0][0] > 0.0 && p[1][1] > 0.0 && IsFinite(p);
+  if (!frustum || !(backward > 0.0) || !(degrees > 0.0) || !std::isfinite(backward))
   {
     return camera;
   }
-  // The sides' slopes (x / depth at depth 1) of a glm::frustum-style matrix.
+  // The sides' slopes (x / depth at depth 1).
   const double left = (p[2][0] - 1.0) / p[0][0];
   const double right = (p[2][0] + 1.0) / p[0][0];
   const double bottom = (p[2][1] - 1.0) / p[1][1];
   const double top = (p[2][1] + 1.0) / p[1][1];
   const double turn = glm::radians(std::min(degrees, 30.0));
   const auto outward = [turn](double slope, double sign) {
-    return std::tan(std::max(-1.5, std::min(1.5, std::atan(slope) + sign * turn)));
+    const double angle = std::atan(slope);
+    const double turned = angle + sign * turn;
+    return std::tan(sign > 0.0 ? std::max(angle, std::min(1.5, turned))
+                               : std::min(angle, std::max(-1.5, turned)));
   };
   const glm::dvec2 planes = ProjectionDepthRange(p);
   const double zNear = planes.x + backward;

@@ -32,13 +32,17 @@ struct LightRays
 /// frame's own fit) would:
 /// - it holds every point of the visible, lit scene that `fresh` holds (the
 ///   vertices of the camera frustum ∩ `scene` ∩ a spot's cone frustum ∩
-///   fresh's frustum) inside its map and before its far plane;
+///   fresh's frustum) inside its map, as far from its sides as fresh holds
+///   them (up to 3 texels: receivers look a map up beyond where they are), and
+///   before its far plane;
 /// - its near plane keeps every caster that `fresh` keeps on the light rays
 ///   through those points (fresh's frustum ∩ `scene` ∩ a spot's cone frustum
 ///   ∩ the rays through their footprint in kept's map);
 /// - its texels across the light are at most `maximumTexelRatio` times
-///   fresh's at each of those points.
-/// True when fresh holds nothing of the visible scene.
+///   fresh's at each of those points (for warped maps a bound at the body's
+///   vertices, where the texels are largest and smallest, not a proof).
+/// False when fresh holds nothing of the visible scene (there is nothing to
+/// compare by) and for non-finite input.
 bool KeptViewServes(const LightView& kept, const LightView& fresh,
   const glm::dmat4& cameraViewProjection, const Aabb& scene, const LightRays& rays, int resolution,
   double maximumTexelRatio);
@@ -55,8 +59,9 @@ struct Camera
 /// were in the world. It holds the frusta of cameras turned by up to `degrees`
 /// and moved sideways by up to `backward` times the tangent of its sides'
 /// half angles (KeptViewServes decides exactly whether a view still serves).
-/// Parallel projections and a non-positive `backward` or `degrees` come back
-/// unchanged.
+/// The turn is capped at 30 degrees and no side turns past 86 degrees from the
+/// axis. Parallel, stereo and sheared projections and a non-positive
+/// `backward` or `degrees` come back unchanged.
 Camera WidenedCamera(const Camera& camera, double backward, double degrees);
 } // namespace shadowmaps
 

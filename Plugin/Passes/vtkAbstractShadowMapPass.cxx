@@ -680,7 +680,7 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   frame.CameraProjection =
     ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
   frame.FilterReachTexels = r.Representation->GetFilterReachTexels();
-  frame.Interactive =
+  frame.Interactive = this->InteractiveUpdateRate < VTK_DOUBLE_MAX &&
     renderer->GetRenderWindow()->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
 }
 
@@ -741,6 +741,12 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   this->GatherPropBounds();
+  if (this->Exchange)
+  {
+    // The processes must fit the same views: interactive only if every one's
+    // window is (a plain MPI program raises one rank's update rate).
+    r.Frame.Interactive = !this->Exchange->AnyOf(!r.Frame.Interactive);
+  }
   std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
   const bool stale = !(r.MapsValid && signature == r.Signature);
   // Every process asks every frame: another one's casters may have moved.
@@ -841,6 +847,7 @@ bool vtkAbstractShadowMapPass::FitViews()
   {
     light.LastViews = this->LastViewsOf(light);
     r.Views->FitLight(r.Frame, light);
+    light.LastViews.clear();
     light.Depth = light.Kind == LightKind::Directional
       ? shadowmaps::DirectionalLightDepth(light.Direction, r.Frame.SceneBounds)
       : shadowmaps::PositionalLightDepth(light.Position, r.Frame.SceneBounds);

@@ -213,8 +213,10 @@ public:
    * 5 and 0.002. In interactive renders, views that follow the camera (warped
    * maps) may keep a light's last views while they still serve, so that its
    * maps are re-rendered only every few frames; still renders always fit
-   * anew. VTK_DOUBLE_MAX makes every render a still one. Clamped to
-   * [0, VTK_DOUBLE_MAX]; default 1.
+   * anew. VTK_DOUBLE_MAX makes every render a still one, 0 every render an
+   * interactive one (whose images then depend on the camera's path). With an
+   * exchange, a render is interactive only if it is on every process.
+   * Clamped to [0, VTK_DOUBLE_MAX]; default 1.
    */
   vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveUpdateRate, double);

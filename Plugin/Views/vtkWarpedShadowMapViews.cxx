@@ -194,6 +194,10 @@ LightView vtkWarpedShadowMapViews::InteractiveView(
     const shadowmaps::Camera widened =
       shadowmaps::WidenedCamera({ frame.CameraView, frame.CameraProjection },
         share * WidenedBackwardPerNearDepth * nearest, share * WidenedTurnDegrees);
+    if (widened.Projection == frame.CameraProjection)
+    {
+      break; // a parallel projection, or no visible depth to widen by
+    }
     ShadowFrame wider = frame;
     wider.CameraView = widened.View;
     wider.CameraProjection = widened.Projection;

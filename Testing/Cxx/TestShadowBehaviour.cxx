@@ -870,6 +870,12 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
         OrbitAndRender(scene, 0.3);
         rendered += pass->GetNumberOfRenderedLayers();
       }
+      // The frame compared with a fresh pass's below is one that kept its map.
+      for (int extra = 0; extra < 4 && pass->GetNumberOfRenderedLayers() != 0; ++extra)
+      {
+        OrbitAndRender(scene, 0.3);
+      }
+      ASSERT_EQ(pass->GetNumberOfRenderedLayers(), 0) << name.str() << ": a frame that kept its map";
       std::cout << "[ measured ] " << name.str() << ": layers re-rendered in " << Frames
                 << " interactive frames: " << rendered << "\n";
       EXPECT_LE(rendered, Frames / 3) << name.str();
@@ -880,7 +886,7 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
       const double different = ShareOfDifferentPixels(interactive, fresh);
       std::cout << "[ measured ] " << name.str() << ": pixels unlike a fresh pass's "
                 << different << "\n";
-      EXPECT_LT(different, 0.01) << name.str() << ": the kept map's shadows are a fresh fit's";
+      EXPECT_LT(different, 0.002) << name.str() << ": the kept map's shadows are a fresh fit's";
       scene.Window->Render();
       EXPECT_EQ(RgbBytes(CaptureAsRendered(scene.Window)), fresh) << name.str() << ": the still frame";
 

@@ -170,21 +170,93 @@ TEST(ShadowMapKeptViews, ParallelCamerasAndNoSlackAreNotWidened)
   EXPECT_EQ(shadowmaps::WidenedCamera(perspective, 1.0, 0.0).Projection, perspective.Projection);
 }
 
-TEST(ShadowMapKeptViews, ASpotFitServesItsOwnFrameAndNotAWiderCone)
+TEST(ShadowMapKeptViews, ASpotFitServesItsOwnFrameAndNotANarrowerCone)
 {
   const Camera camera = OrbitingCamera(0.0);
   LightRays rays;
   rays.Positional = true;
   rays.Position = glm::dvec3(-20.0, -40.0, 30.0);
-  const glm::dvec3 direction = glm::dvec3(0.0, 0.0, 0.0) - rays.Position;
+  rays.Direction = glm::dvec3(0.0, 0.0, 0.0) - rays.Position;
+  rays.ConeAngleDegrees = 40.0;
   const auto fit = [&](double cone) {
     return shadowmaps::FitSpotWarped(camera.View, camera.Projection, Scene, rays.Position,
-      direction, cone, Resolution, DirectionalWarp::LiSPSM);
+      rays.Direction, cone, Resolution, DirectionalWarp::LiSPSM);
   };
   const LightView fresh = fit(40.0);
   ASSERT_TRUE(fresh.Perspective);
   const glm::dmat4 clip = camera.Projection * camera.View;
   EXPECT_TRUE(shadowmaps::KeptViewServes(fresh, fresh, clip, Scene, rays, Resolution, 1.5));
-  // A view of a narrower cone misses part of what the fresh view holds.
+  // A view of a narrower cone misses part of what the light shines on.
   EXPECT_FALSE(shadowmaps::KeptViewServes(fit(20.0), fresh, clip, Scene, rays, Resolution, 1.5));
+}
+
+// What a spot does not light needs no map: a view of the lit part serves the
+// fit of a light whose frustum reaches beyond its cone.
+TEST(ShadowMapKeptViews, ASpotViewNeedNotHoldWhatTheConeLeavesDark)
+{
+  const Camera camera = OrbitingCamera(0.0);
+  LightRays rays;
+  rays.Positional = true;
+  rays.Position = glm::dvec3(-20.0, -40.0, 30.0);
+  rays.Direction = glm::dvec3(0.0, 0.0, 0.0) - rays.Position;
+  const glm::dmat4 clip = camera.Projection * camera.View;
+  const auto fit = [&](double cone) {
+    return shadowmaps::FitSpotWarped(camera.View, camera.Projection, Scene, rays.Position,
+      rays.Direction, cone, Resolution, DirectionalWarp::LiSPSM);
+  };
+  rays.ConeAngleDegrees = 20.0;
+  EXPECT_TRUE(shadowmaps::KeptViewServes(fit(20.0), fit(40.0), clip, Scene, rays, Resolution, 4.0))
+    << "the 40 degree fit beyond a 20 degree cone holds only dark points";
+  rays.ConeAngleDegrees = 90.0;
+  EXPECT_FALSE(shadowmaps::KeptViewServes(fit(20.0), fit(40.0), clip, Scene, rays, Resolution, 4.0))
+    << "unbounded, the same points must be held";
+}
+
+TEST(ShadowMapKeptViews, NonFiniteInputDoesNotServe)
+{
+  const Camera camera = OrbitingCamera(0.0);
+  const LightView fit = LiSPSMFit(camera);
+  glm::dmat4 broken = camera.Projection * camera.View;
+  broken[0][0] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(shadowmaps::KeptViewServes(fit, fit, broken, Scene, SunRays(), Resolution, 1.5));
+  // A camera that sees none of the scene leaves nothing to compare by.
+  const Camera away = { glm::lookAt(glm::dvec3(0.0, -200.0, 3.0), glm::dvec3(0.0, -300.0, 3.0),
+                          glm::dvec3(0.0, 0.0, 1.0)),
+    camera.Projection };
+  EXPECT_FALSE(shadowmaps::KeptViewServes(
+    fit, LiSPSMFit(away), away.Projection * away.View, Scene, SunRays(), Resolution, 1.5));
+}
+
+TEST(ShadowMapKeptViews, AViewMustKeepTheRoomAtItsSidesThatTheFitLeaves)
+{
+  const Camera camera = OrbitingCamera(0.0);
+  const LightView fit = LiSPSMFit(camera);
+  // The fit leaves about 4 texels at its sides, of which a kept view keeps 3:
+  // pushed out by half a texel it still does, by 2 not.
+  for (const double texels : { 0.5, 2.0 })
+  {
+    LightView squeezed = fit;
+    const double scale = 1.0 + 2.0 * texels / Resolution;
+    squeezed.Projection = glm::scale(glm::dmat4(1.0), glm::dvec3(scale, scale, 1.0)) * fit.Projection;
+    EXPECT_EQ(Serves(squeezed, camera), texels < 1.0) << texels << " texels";
+  }
+}
+
+TEST(ShadowMapKeptViews, StereoAndShearedProjectionsAreNotWidened)
+{
+  Camera sheared = OrbitingCamera(0.0);
+  sheared.Projection[3][0] = 0.1;
+  EXPECT_EQ(shadowmaps::WidenedCamera(sheared, 1.0, 2.0).Projection, sheared.Projection);
+  // A projection scaled as a whole is the same frustum.
+  Camera scaled = OrbitingCamera(0.0);
+  scaled.Projection *= 2.0;
+  const Camera widened = shadowmaps::WidenedCamera(scaled, 1.0, 2.0);
+  const Camera reference = shadowmaps::WidenedCamera(OrbitingCamera(0.0), 1.0, 2.0);
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      EXPECT_NEAR(widened.Projection[c][r], reference.Projection[c][r], 1e-9) << c << " " << r;
+    }
+  }
 }
