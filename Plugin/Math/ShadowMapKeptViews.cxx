@@ -17,8 +17,10 @@ namespace
 constexpr double ClipTolerance = 1e-6;
 // Receivers look a map up beyond where they are (filter taps, normal offset):
 // a kept view keeps the room the fresh fit leaves at its sides, up to this
-// many texels (the warped fits leave 4, TSM none).
+// many texels (the warped fits leave 4, TSM none), less half a texel (a
+// trapezoid's sides pass a hair from the body's corners, differently in each).
 constexpr double SideRoomTexels = 3.0;
+constexpr double SideRoomSlackTexels = 0.5;
 
 template <class... PlaneSets>
 std::vector<Plane> Joined(const PlaneSets&... sets)
@@ -140,10 +142,12 @@ bool KeptViewServes(const LightView& kept, const LightView& fresh,
   {
     return false;
   }
-  const double sideRoom = 2.0 * SideRoomTexels / std::max(resolution, 1);
+  const double texel = 2.0 / std::max(resolution, 1); // in NDC units
   for (const auto& p : body)
   {
-    const double needed = std::min(SideRoom(freshClip, p), sideRoom) - ClipTolerance;
+    const double needed = std::max(
+      std::min(SideRoom(freshClip, p), SideRoomTexels * texel) - SideRoomSlackTexels * texel,
+      -ClipTolerance);
     if (!(SideRoom(keptClip, p) >= needed) || !BeforeFar(keptClip, p))
     {
       return false;

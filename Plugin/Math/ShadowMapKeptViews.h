@@ -32,9 +32,9 @@ struct LightRays
 /// frame's own fit) would:
 /// - it holds every point of the visible, lit scene that `fresh` holds (the
 ///   vertices of the camera frustum ∩ `scene` ∩ a spot's cone frustum ∩
-///   fresh's frustum) inside its map, as far from its sides as fresh holds
-///   them (up to 3 texels: receivers look a map up beyond where they are), and
-///   before its far plane;
+///   fresh's frustum) inside its map, about as far from its sides as fresh
+///   holds them (up to 3 texels, less half a texel: receivers look a map up
+///   beyond where they are), and before its far plane;
 /// - its near plane keeps every caster that `fresh` keeps on the light rays
 ///   through those points (fresh's frustum ∩ `scene` ∩ a spot's cone frustum
 ///   ∩ the rays through their footprint in kept's map);
