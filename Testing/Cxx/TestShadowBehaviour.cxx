@@ -681,6 +681,17 @@ void LightBySunOrSpot(TestScene& scene, bool spot)
   }
 }
 
+// The scene lit by the sun or the spot, the camera closer (so that the view
+// crops the spot's cone), rendered once with `pass`.
+void RenderCloserWith(TestScene& scene, bool spot, vtkAbstractShadowMapPass* pass)
+{
+  LightBySunOrSpot(scene, spot);
+  scene.Renderer->GetActiveCamera()->Dolly(2.0);
+  scene.Renderer->ResetCameraClippingRange();
+  scene.Renderer->SetPass(pass);
+  scene.Window->Render();
+}
+
 // The frame `fresh` renders in place of the renderer's pass, which is then put back.
 std::vector<unsigned char> FreshPassFrame(
   TestScene& scene, vtkSmartPointer<vtkAbstractShadowMapPass> fresh)
@@ -782,13 +793,8 @@ TEST(ShadowBehaviour, AnOrbitKeepsMostCascadesAndEverySpotTile)
     for (const bool spot : { false, true })
     {
       TestScene scene;
-      LightBySunOrSpot(scene, spot);
-      // Closer, so that the view crops the spot's cone.
-      scene.Renderer->GetActiveCamera()->Dolly(2.0);
-      scene.Renderer->ResetCameraClippingRange();
       vtkSmartPointer<vtkAbstractShadowMapPass> pass = cascadedPass(moments);
-      scene.Renderer->SetPass(pass);
-      scene.Window->Render();
+      RenderCloserWith(scene, spot, pass);
       int rendered = 0;
       for (int frame = 0; frame < Frames; ++frame)
       {
@@ -856,12 +862,8 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
       std::ostringstream name;
       name << "mode " << mode << ", spot " << spot;
       TestScene scene;
-      LightBySunOrSpot(scene, spot);
-      scene.Renderer->GetActiveCamera()->Dolly(2.0);
-      scene.Renderer->ResetCameraClippingRange();
       vtkSmartPointer<vtkWarpedShadowMapPass> pass = WarpedPass(mode);
-      scene.Renderer->SetPass(pass);
-      scene.Window->Render();
+      RenderCloserWith(scene, spot, pass);
       const int builds = pass->GetNumberOfShaderBuilds();
       int rendered = 0;
       scene.Window->SetDesiredUpdateRate(15.0);

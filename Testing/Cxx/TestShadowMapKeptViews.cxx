@@ -55,6 +55,24 @@ bool Serves(const LightView& kept, const Camera& camera, double ratio = 1.5)
     Scene, SunRays(), Resolution, ratio);
 }
 
+// A spot above the scene, aimed at its centre, and its LiSPSM fit of any cone.
+LightRays SpotRays(double coneAngleDegrees)
+{
+  LightRays rays;
+  rays.Positional = true;
+  rays.Position = glm::dvec3(-20.0, -40.0, 30.0);
+  rays.Direction = glm::dvec3(0.0, 0.0, 0.0) - rays.Position;
+  rays.ConeAngleDegrees = coneAngleDegrees;
+  return rays;
+}
+
+LightView SpotFit(const Camera& camera, double coneAngleDegrees)
+{
+  const LightRays rays = SpotRays(coneAngleDegrees);
+  return shadowmaps::FitSpotWarped(camera.View, camera.Projection, Scene, rays.Position,
+    rays.Direction, coneAngleDegrees, Resolution, DirectionalWarp::LiSPSM);
+}
+
 // `view` with its clip z remapped so that [lo, hi] of the old range becomes [-1, 1].
 LightView WithDepthRange(LightView view, double lo, double hi)
 {
@@ -173,21 +191,14 @@ TEST(ShadowMapKeptViews, ParallelCamerasAndNoSlackAreNotWidened)
 TEST(ShadowMapKeptViews, ASpotFitServesItsOwnFrameAndNotANarrowerCone)
 {
   const Camera camera = OrbitingCamera(0.0);
-  LightRays rays;
-  rays.Positional = true;
-  rays.Position = glm::dvec3(-20.0, -40.0, 30.0);
-  rays.Direction = glm::dvec3(0.0, 0.0, 0.0) - rays.Position;
-  rays.ConeAngleDegrees = 40.0;
-  const auto fit = [&](double cone) {
-    return shadowmaps::FitSpotWarped(camera.View, camera.Projection, Scene, rays.Position,
-      rays.Direction, cone, Resolution, DirectionalWarp::LiSPSM);
-  };
-  const LightView fresh = fit(40.0);
+  const LightView fresh = SpotFit(camera, 40.0);
   ASSERT_TRUE(fresh.Perspective);
   const glm::dmat4 clip = camera.Projection * camera.View;
+  const LightRays rays = SpotRays(40.0);
   EXPECT_TRUE(shadowmaps::KeptViewServes(fresh, fresh, clip, Scene, rays, Resolution, 1.5));
   // A view of a narrower cone misses part of what the light shines on.
-  EXPECT_FALSE(shadowmaps::KeptViewServes(fit(20.0), fresh, clip, Scene, rays, Resolution, 1.5));
+  EXPECT_FALSE(
+    shadowmaps::KeptViewServes(SpotFit(camera, 20.0), fresh, clip, Scene, rays, Resolution, 1.5));
 }
 
 // What a spot does not light needs no map: a view of the lit part serves the
@@ -195,20 +206,12 @@ TEST(ShadowMapKeptViews, ASpotFitServesItsOwnFrameAndNotANarrowerCone)
 TEST(ShadowMapKeptViews, ASpotViewNeedNotHoldWhatTheConeLeavesDark)
 {
   const Camera camera = OrbitingCamera(0.0);
-  LightRays rays;
-  rays.Positional = true;
-  rays.Position = glm::dvec3(-20.0, -40.0, 30.0);
-  rays.Direction = glm::dvec3(0.0, 0.0, 0.0) - rays.Position;
   const glm::dmat4 clip = camera.Projection * camera.View;
-  const auto fit = [&](double cone) {
-    return shadowmaps::FitSpotWarped(camera.View, camera.Projection, Scene, rays.Position,
-      rays.Direction, cone, Resolution, DirectionalWarp::LiSPSM);
-  };
-  rays.ConeAngleDegrees = 20.0;
-  EXPECT_TRUE(shadowmaps::KeptViewServes(fit(20.0), fit(40.0), clip, Scene, rays, Resolution, 4.0))
+  const LightView lit = SpotFit(camera, 20.0);
+  const LightView wider = SpotFit(camera, 40.0);
+  EXPECT_TRUE(shadowmaps::KeptViewServes(lit, wider, clip, Scene, SpotRays(20.0), Resolution, 4.0))
     << "the 40 degree fit beyond a 20 degree cone holds only dark points";
-  rays.ConeAngleDegrees = 90.0;
-  EXPECT_FALSE(shadowmaps::KeptViewServes(fit(20.0), fit(40.0), clip, Scene, rays, Resolution, 4.0))
+  EXPECT_FALSE(shadowmaps::KeptViewServes(lit, wider, clip, Scene, SpotRays(90.0), Resolution, 4.0))
     << "unbounded, the same points must be held";
 }
 
