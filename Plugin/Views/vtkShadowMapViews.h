@@ -39,7 +39,10 @@ public:
    * Fits the views of `light` for `frame`: sets its Layout, Views (one per map
    * layer), PossibleFeatures and what the layout needs (Tiles, CascadeDepths,
    * CoverageBlendFraction, Fade). Views may come out non-finite on a
-   * degenerate frame; the pass then drops the light for the frame.
+   * degenerate frame; the pass then drops the light for the frame. In
+   * interactive frames (frame.Interactive) a strategy whose views follow the
+   * camera may give light.LastViews again while they serve; still frames must
+   * get the frame's own fit.
    */
   VTK_WRAPEXCLUDE virtual void FitLight(
     const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) = 0;

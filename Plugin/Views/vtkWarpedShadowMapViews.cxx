@@ -9,6 +9,8 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 #include <cmath>
 
 #include <glm/gtc/matrix_access.hpp>
@@ -187,6 +189,16 @@ LightView vtkWarpedShadowMapViews::InteractiveView(
   // widest whose texels stay within half the ratio's margin, so that the
   // camera's next moves do not take them beyond it at once.
   const double widenedRatio = 1.0 + 0.5 * (this->InteractiveTexelRatio - 1.0);
+  const LightView widened = this->FitForNearbyCameras(frame, light, [&](const LightView& view) {
+    return serves(view, widenedRatio);
+  });
+  return shadowmaps::IsFinite(widened.ViewProjection()) ? widened : fresh;
+}
+
+//------------------------------------------------------------------------------
+LightView vtkWarpedShadowMapViews::FitForNearbyCameras(const ShadowFrame& frame,
+  const ShadowLight& light, const std::function<bool(const LightView&)>& accept) const
+{
   const double nearest =
     shadowmaps::TightDepthRange(frame.CameraView, frame.CameraProjection, frame.PropBounds, 0.01).x;
   for (const double share : { 1.0, 0.5, 0.25 })
@@ -202,12 +214,14 @@ LightView vtkWarpedShadowMapViews::InteractiveView(
     wider.CameraView = widened.View;
     wider.CameraProjection = widened.Projection;
     const LightView view = this->FitWarpedView(wider, light);
-    if (shadowmaps::IsFinite(view.ViewProjection()) && serves(view, widenedRatio))
+    if (shadowmaps::IsFinite(view.ViewProjection()) && accept(view))
     {
       return view;
     }
   }
-  return fresh;
+  LightView none;
+  none.Projection = glm::dmat4(std::numeric_limits<double>::quiet_NaN());
+  return none;
 }
 
 //------------------------------------------------------------------------------

@@ -45,6 +45,8 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapViews.h"
 
+#include <functional> // For FitForNearbyCameras
+
 namespace shadowmaps
 {
 enum class DirectionalWarp;
@@ -163,6 +165,13 @@ protected:
    */
   shadowmaps::LightView InteractiveView(const shadowmaps::ShadowFrame& frame,
     const shadowmaps::ShadowLight& light, const shadowmaps::LightView& fresh) const;
+  /**
+   * The fit of the widest of a few widened cameras (shadowmaps::WidenedCamera)
+   * that `accept` takes; a non-finite view when none is taken.
+   */
+  shadowmaps::LightView FitForNearbyCameras(const shadowmaps::ShadowFrame& frame,
+    const shadowmaps::ShadowLight& light,
+    const std::function<bool(const shadowmaps::LightView&)>& accept) const;
   /** LiSPSM and GMNPR settings (free parameter, falloff). */
   shadowmaps::WarpOptions LightSpaceWarpOptions() const;
 
