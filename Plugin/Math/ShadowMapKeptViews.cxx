@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <vector>
 
@@ -16,9 +17,10 @@ namespace
 // holds its own boundary.
 constexpr double ClipTolerance = 1e-6;
 // Receivers look a map up beyond where they are (filter taps, normal offset):
-// a kept view keeps the room the fresh fit leaves at its sides, up to this
-// many texels (the warped fits leave 4, TSM none), less half a texel (a
-// trapezoid's sides pass a hair from the body's corners, differently in each).
+// a kept view keeps the room the fresh fit leaves at its sides, up to the
+// receivers' reach and at least this many texels (the warped fits leave 4, TSM
+// none), less half a texel (a trapezoid's sides pass a hair from the body's
+// corners, differently in each).
 constexpr double SideRoomTexels = 3.0;
 constexpr double SideRoomSlackTexels = 0.5;
 
@@ -122,7 +124,7 @@ double TexelRatio(const LightView& kept, const LightView& fresh, const glm::dvec
 //------------------------------------------------------------------------------
 bool KeptViewServes(const LightView& kept, const LightView& fresh,
   const glm::dmat4& cameraViewProjection, const Aabb& scene, const LightRays& rays, int resolution,
-  double maximumTexelRatio)
+  double maximumTexelRatio, double reachTexels)
 {
   const glm::dmat4 keptClip = kept.ViewProjection();
   const glm::dmat4 freshClip = fresh.ViewProjection();
@@ -146,7 +148,8 @@ bool KeptViewServes(const LightView& kept, const LightView& fresh,
   for (const auto& p : body)
   {
     const double needed = std::max(
-      std::min(SideRoom(freshClip, p), SideRoomTexels * texel) - SideRoomSlackTexels * texel,
+      std::min(SideRoom(freshClip, p), std::max(SideRoomTexels, reachTexels) * texel) -
+        SideRoomSlackTexels * texel,
       -ClipTolerance);
     if (!(SideRoom(keptClip, p) >= needed) || !BeforeFar(keptClip, p))
     {

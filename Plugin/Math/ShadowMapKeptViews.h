@@ -33,8 +33,9 @@ struct LightRays
 /// - it holds every point of the visible, lit scene that `fresh` holds (the
 ///   vertices of the camera frustum ∩ `scene` ∩ a spot's cone frustum ∩
 ///   fresh's frustum) inside its map, about as far from its sides as fresh
-///   holds them (up to 3 texels, less half a texel: receivers look a map up
-///   beyond where they are), and before its far plane;
+///   holds them (up to the receivers' `reachTexels` and at least 3 texels,
+///   less half a texel: receivers look a map up beyond where they are; checked
+///   at the vertices), and before its far plane;
 /// - its near plane keeps every caster that `fresh` keeps on the light rays
 ///   through those points (fresh's frustum ∩ `scene` ∩ a spot's cone frustum
 ///   ∩ the rays through their footprint in kept's map);
@@ -45,7 +46,7 @@ struct LightRays
 /// compare by) and for non-finite input.
 bool KeptViewServes(const LightView& kept, const LightView& fresh,
   const glm::dmat4& cameraViewProjection, const Aabb& scene, const LightRays& rays, int resolution,
-  double maximumTexelRatio);
+  double maximumTexelRatio, double reachTexels = 3.0);
 
 /// A camera as its view and projection matrices.
 struct Camera

@@ -9,9 +9,9 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
-#include <cmath>
 
 #include <glm/gtc/matrix_access.hpp>
 
@@ -26,8 +26,8 @@ namespace
 // A view fitted again in an interactive frame is fitted to a camera whose eye
 // is moved back by this share of the nearest visible prop's depth and whose
 // sides are turned out by this many degrees (or by a half or a quarter of
-// both, when its texels would be too coarse): it then holds several frames of
-// an orbit (docs/BENCHMARKS.md, "Warped maps that keep their layers").
+// both, when that fit would not serve): it then holds several frames of an
+// orbit (docs/BENCHMARKS.md, "Warped maps that keep their layers").
 constexpr double WidenedBackwardPerNearDepth = 0.1;
 constexpr double WidenedTurnDegrees = 1.0;
 
@@ -178,8 +178,9 @@ LightView vtkWarpedShadowMapViews::InteractiveView(
   rays.Direction = light.Direction;
   rays.ConeAngleDegrees = light.ConeAngle;
   const auto serves = [&](const LightView& view, double texelRatio) {
+    // The filter's taps, and about a texel of normal offset.
     return shadowmaps::KeptViewServes(view, fresh, frame.CameraViewProjection(), frame.SceneBounds,
-      rays, frame.Resolution, texelRatio);
+      rays, frame.Resolution, texelRatio, frame.FilterReachTexels + 1.0);
   };
   if (light.LastViews.size() == 1 && serves(light.LastViews.front(), this->InteractiveTexelRatio))
   {

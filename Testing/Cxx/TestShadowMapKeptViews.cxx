@@ -243,6 +243,13 @@ TEST(ShadowMapKeptViews, AViewMustKeepTheRoomAtItsSidesThatTheFitLeaves)
     squeezed.Projection = glm::scale(glm::dmat4(1.0), glm::dvec3(scale, scale, 1.0)) * fit.Projection;
     EXPECT_EQ(Serves(squeezed, camera), texels < 1.0) << texels << " texels";
   }
+  // Receivers that reach 6 texels need all the room the fit leaves.
+  LightView squeezed = fit;
+  const double scale = 1.0 + 2.0 * 0.75 / Resolution;
+  squeezed.Projection = glm::scale(glm::dmat4(1.0), glm::dvec3(scale, scale, 1.0)) * fit.Projection;
+  const glm::dmat4 clip = camera.Projection * camera.View;
+  EXPECT_TRUE(shadowmaps::KeptViewServes(squeezed, fit, clip, Scene, SunRays(), Resolution, 1.5, 3.0));
+  EXPECT_FALSE(shadowmaps::KeptViewServes(squeezed, fit, clip, Scene, SunRays(), Resolution, 1.5, 6.0));
 }
 
 TEST(ShadowMapKeptViews, StereoAndShearedProjectionsAreNotWidened)
