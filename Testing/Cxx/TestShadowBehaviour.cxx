@@ -488,8 +488,9 @@ class DegenerateScenesPerPass : public ::testing::TestWithParam<std::string>
 {
 public:
   // The warped pass (the focused uniform map and its warps), the dual-depth
-  // pass, whose receivers measure the map along the light ray, and the
-  // variance pass, whose light depth spans the scene.
+  // pass, whose receivers measure the map along the light ray, the variance
+  // pass, whose light depth spans the scene, and LiSPSM and TSM in interactive
+  // renders, which keep and widen their views.
   vtkSmartPointer<vtkAbstractShadowMapPass> MakePass() const
   {
     if (GetParam() == "DualDepth")
@@ -500,7 +501,34 @@ public:
     {
       return vtkSmartPointer<vtkVarianceShadowMapPass>::New();
     }
-    return vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    auto warped = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    if (GetParam() == "LiSPSMInteractive")
+    {
+      warped->SetWarpModeToLiSPSM();
+    }
+    else if (GetParam() == "TSMInteractive")
+    {
+      warped->SetWarpModeToTSM();
+    }
+    return warped;
+  }
+
+  // The frame of `scene`; interactive passes render it after two interactive
+  // frames a little before it on an orbit.
+  vtkSmartPointer<vtkImageData> Render(TestScene& scene) const
+  {
+    const bool interactive = GetParam().find("Interactive") != std::string::npos;
+    scene.Window->SetDesiredUpdateRate(interactive ? 15.0 : 0.0001);
+    if (interactive)
+    {
+      scene.Renderer->GetActiveCamera()->Azimuth(-0.6);
+      for (int frame = 0; frame < 2; ++frame)
+      {
+        scene.Window->Render();
+        scene.Renderer->GetActiveCamera()->Azimuth(0.3);
+      }
+    }
+    return RenderAndCapture(scene.Window);
   }
 };
 
@@ -513,7 +541,7 @@ TEST_P(DegenerateScenesPerPass, RenderWithoutErrors)
     empty.SetSun(SunDirection);
     auto pass = MakePass();
     empty.Renderer->SetPass(pass);
-    RenderAndCapture(empty.Window);
+    this->Render(empty);
   }
   {
     TestScene flat;
@@ -522,7 +550,7 @@ TEST_P(DegenerateScenesPerPass, RenderWithoutErrors)
     flat.SetSun(SunDirection);
     auto pass = MakePass();
     flat.Renderer->SetPass(pass);
-    auto image = RenderAndCapture(flat.Window);
+    auto image = this->Render(flat);
     EXPECT_GT(LuminanceAt(flat.Renderer, image, { 0, 0, 0 }), LitAbove) << "flat scene";
   }
   for (double scale : { 1e-4, 1e5 })
@@ -539,7 +567,7 @@ TEST_P(DegenerateScenesPerPass, RenderWithoutErrors)
     scaled.SetSun(SunDirection);
     auto pass = MakePass();
     scaled.Renderer->SetPass(pass);
-    auto image = RenderAndCapture(scaled.Window);
+    auto image = this->Render(scaled);
     EXPECT_LT(LuminanceAt(scaled.Renderer, image, GroundShadowOfSphereCenter(SunDirection) * scale),
       ShadowedBelow)
       << scale;
@@ -556,7 +584,7 @@ TEST_P(DegenerateScenesPerPass, RenderWithoutErrors)
     along.SetSun({ 0.0, 0.0, -1.0 });
     auto pass = MakePass();
     along.Renderer->SetPass(pass);
-    auto image = RenderAndCapture(along.Window);
+    auto image = this->Render(along);
     EXPECT_GT(LuminanceAt(along.Renderer, image, { -5, -4, 0 }), LitAbove);
     // Straight down, the sphere hides its own shadow; the box's top is lit.
     EXPECT_GT(LuminanceAt(along.Renderer, image, { 4.0, 2.0, 1.5 }), 60.0);
@@ -565,7 +593,7 @@ TEST_P(DegenerateScenesPerPass, RenderWithoutErrors)
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadowBehaviour, DegenerateScenesPerPass,
-  ::testing::Values("Warped", "DualDepth", "Variance"),
+  ::testing::Values("Warped", "DualDepth", "Variance", "LiSPSMInteractive", "TSMInteractive"),
   [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // Rendering is deterministic: the same frame twice, whether the maps are reused,
