@@ -1,5 +1,7 @@
 #include "ShadowMapKeptViews.h"
 
+#include "ShadowMapPerspective.h" // For WorldTexelSize
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -99,20 +101,13 @@ std::vector<Plane> LitPlanes(const LightRays& rays)
   return { planes.begin(), planes.begin() + 4 };
 }
 
-glm::dvec3 RayAt(const LightRays& rays, const glm::dvec3& p)
-{
-  return SafeDirection(rays.Positional ? p - rays.Position : rays.Direction);
-}
-
 double TexelRatio(const LightView& kept, const LightView& fresh, const glm::dvec3& p,
   const LightRays& rays, double step, int resolution)
 {
-  const glm::dvec3 ray = RayAt(rays, p);
-  const glm::dvec3 helper = std::abs(ray.z) < 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(1.0, 0.0, 0.0);
-  const glm::dvec3 u = glm::normalize(glm::cross(ray, helper));
-  const glm::dvec3 v = glm::cross(ray, u);
-  const double keptTexel = TexelAcrossLight(kept.ViewProjection(), p, u, v, step, resolution);
-  const double freshTexel = TexelAcrossLight(fresh.ViewProjection(), p, u, v, step, resolution);
+  const glm::dvec4 towardLight =
+    rays.Positional ? glm::dvec4(rays.Position, 1.0) : glm::dvec4(-rays.Direction, 0.0);
+  const double keptTexel = WorldTexelSize(kept, p, towardLight, step, resolution);
+  const double freshTexel = WorldTexelSize(fresh, p, towardLight, step, resolution);
   if (!(keptTexel > 0.0))
   {
     return std::numeric_limits<double>::infinity();
