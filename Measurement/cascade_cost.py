@@ -7,7 +7,10 @@ selection varied) against no shadows and the uniform map: a ground and 50 boxes,
 
 With --cpu, the frames are timed in this process's CPU time over 8 rounds; with
 LP_NUM_THREADS=0 llvmpipe then rasterises in this thread, and the ratios vary
-less from run to run than wall-clock ones on a shared machine.
+less from run to run than wall-clock ones on a shared machine. With
+--variants=none,csm4,csm1 (say) only those are timed: to alternate builds of
+the module within minutes, run each build's copy of build/lib in turn through
+LD_LIBRARY_PATH and PYTHONPATH.
 """
 import statistics
 import sys
@@ -37,6 +40,12 @@ def uni():
 variants = {"none": lambda: None, "uniform": uni, "csm4": csm, "csm4-noblend": lambda: csm(4, 0.0),
             "csm4-noblend-nofade": lambda: csm(4, 0.0, 0.0), "csm1": lambda: csm(1), "csm2": lambda: csm(2),
             "csm4-coverage": lambda: csm(4, sel=1)}
+chosen = next((a.split("=", 1)[1].split(",") for a in sys.argv if a.startswith("--variants=")), None)
+if chosen is not None:
+    unknown = [k for k in chosen if k not in variants]
+    if unknown:
+        sys.exit(f"unknown variants {unknown}; known: {','.join(variants)}")
+    variants = {k: variants[k] for k in chosen}
 passes = {k: f() for k, f in variants.items()}
 st = {k: [] for k in passes}
 for rnd in range(rounds):
@@ -44,5 +53,6 @@ for rnd in range(rounds):
         r.SetPass(q); r.ResetCameraClippingRange(); w.Render(); w.Render()
         for f in range(6):
             st[k].append(frame_time(w))
+base = statistics.median(st["none"]) if "none" in st else float("nan")
 for k in passes:
-    print(f"{k:22s} steady {1000*statistics.median(st[k]):6.1f} ms  x none {statistics.median(st[k])/statistics.median(st['none']):.2f}")
+    print(f"{k:22s} steady {1000*statistics.median(st[k]):6.1f} ms  x none {statistics.median(st[k])/base:.2f}")

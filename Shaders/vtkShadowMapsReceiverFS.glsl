@@ -434,7 +434,8 @@ float vtkShadowVisibility(
   int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, viewLayout, count, features);
   float visibility = vtkShadowViewVisibility(positionVC, normalVC, light, firstView, view, features);
   float depth = -positionVC.z;
-  if (viewLayout == VTK_SHADOW_LAYOUT_CASCADES)
+  if (viewLayout == VTK_SHADOW_LAYOUT_CASCADES &&
+    vtkShadowHas(features, VTK_SHADOW_FEATURE_CASCADE_BLENDS))
   {
     float weight =
       vtkShadowBlendIntoNext(positionVC, normalVC, light, firstView, view, depth, features);

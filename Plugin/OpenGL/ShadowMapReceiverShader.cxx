@@ -80,6 +80,7 @@ std::string ReceiverShaderConstants()
     { "VTK_SHADOW_FEATURE_DISTANT_TEXELS", DistantTexels },
     { "VTK_SHADOW_FEATURE_LINEAR_DEPTHS", LinearDepths },
     { "VTK_SHADOW_FEATURE_CROPPED_VIEWS", CroppedViews },
+    { "VTK_SHADOW_FEATURE_CASCADE_BLENDS", CascadeBlends },
   };
   std::ostringstream defines;
   for (const auto& constant : constants)

@@ -53,7 +53,9 @@ enum ReceiverFeature : int
   /// Not a need but a promise of the views strategy: every view of the light is
   /// its first followed by a crop (ShadowMapCrop.h), as unwarped cascades and
   /// tiles are. Receivers then transform by the first view only.
-  CroppedViews = 8
+  CroppedViews = 8,
+  /// Cascades with a blend band: receivers in it look up two cascades.
+  CascadeBlends = 16
 };
 
 /// Cones wider than this (half angle, degrees) are rendered as six cube faces:
@@ -126,6 +128,14 @@ inline int ReceiverFeatures(const ShadowLight& light)
   {
     features |= (view.TexelSizeFromGradient ? GradientTexels : 0) |
       (view.TexelPerUnitDistance != 0.0 ? DistantTexels : 0) | (view.LinearDepth ? LinearDepths : 0);
+  }
+  for (const glm::dvec3& cascade : light.CascadeDepths)
+  {
+    features |= cascade.z < NoBlendBand ? CascadeBlends : 0;
+  }
+  if (light.Layout == ViewLayout::Cascades && light.CoverageBlendFraction > 0.0)
+  {
+    features |= CascadeBlends;
   }
   return features;
 }

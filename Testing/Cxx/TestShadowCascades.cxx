@@ -730,7 +730,7 @@ namespace
 // CroppedViews being a crop of its first (ShadowMapCrop): fitted through the
 // strategy itself, for every setting that makes the promise, and not made where
 // the views are not crops (warped cascades, cube faces).
-TEST(ShadowCascades, CroppedViewsPromiseHoldsForEveryFitThatMakesIt)
+shadowmaps::ShadowFrame StreetLevelFrame()
 {
   shadowmaps::ShadowFrame frame;
   frame.CameraView = glm::lookAt(glm::dvec3(0.0, -40.0, 9.0), glm::dvec3(0.0, 0.0, 0.0),
@@ -739,6 +739,12 @@ TEST(ShadowCascades, CroppedViewsPromiseHoldsForEveryFitThatMakesIt)
   frame.SceneBounds = { glm::dvec3(-60.0, -60.0, 0.0), glm::dvec3(60.0, 60.0, 12.0) };
   frame.PropBounds = { frame.SceneBounds };
   frame.Resolution = 1024;
+  return frame;
+}
+
+TEST(ShadowCascades, CroppedViewsPromiseHoldsForEveryFitThatMakesIt)
+{
+  const shadowmaps::ShadowFrame frame = StreetLevelFrame();
 
   struct Setting
   {
@@ -795,6 +801,49 @@ TEST(ShadowCascades, CroppedViewsPromiseHoldsForEveryFitThatMakesIt)
     {
       EXPECT_GT(largest, 1e-3) << setting.Name << ": warped cascades are not crops";
     }
+  }
+}
+
+// Receivers look up a second cascade only for lights that have a blend band
+// (ReceiverFeature CascadeBlends); without one the second lookup, which
+// software rasterisers run at every pixel, is compiled out.
+TEST(ShadowCascades, OnlyCascadesWithABlendBandCompileTheSecondLookup)
+{
+  const shadowmaps::ShadowFrame frame = StreetLevelFrame();
+  struct Setting
+  {
+    const char* Name;
+    int Cascades;
+    double BlendFraction;
+    int Selection;
+    shadowmaps::LightKind Kind;
+    bool Blends;
+  };
+  const int byDepth = vtkCascadedShadowMapViews::BY_DEPTH;
+  const int byCoverage = vtkCascadedShadowMapViews::BY_COVERAGE;
+  const auto sun = shadowmaps::LightKind::Directional;
+  const Setting settings[] = {
+    { "four cascades by depth", 4, 0.1, byDepth, sun, true },
+    { "four cascades by coverage", 4, 0.1, byCoverage, sun, true },
+    { "no band, by depth", 4, 0.0, byDepth, sun, false },
+    { "no band, by coverage", 4, 0.0, byCoverage, sun, false },
+    { "one cascade", 1, 0.1, byDepth, sun, false },
+    { "spot tiles", 4, 0.1, byDepth, shadowmaps::LightKind::Spot, false },
+  };
+  for (const Setting& setting : settings)
+  {
+    vtkNew<vtkCascadedShadowMapViews> views;
+    views->SetNumberOfCascades(setting.Cascades);
+    views->SetBlendFraction(setting.BlendFraction);
+    views->SetSelection(setting.Selection);
+    shadowmaps::ShadowLight light;
+    light.Kind = setting.Kind;
+    light.ConeAngle = 35.0;
+    light.Position = glm::dvec3(10.0, -15.0, 30.0);
+    light.Direction = glm::normalize(glm::dvec3(-0.3, 0.4, -1.0));
+    views->FitLight(frame, light);
+    const bool blends = (shadowmaps::ReceiverFeatures(light) & shadowmaps::CascadeBlends) != 0;
+    EXPECT_EQ(blends, setting.Blends) << setting.Name;
   }
 }
 } // namespace
