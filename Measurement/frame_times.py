@@ -9,10 +9,8 @@ it also prints the shader sources built and the map layers rendered per moving f
 """
 import statistics, time
 from vtkmodules.vtkRenderingCore import vtkLight
-from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkRenderPassCollection, vtkSequencePass,
-    vtkShadowMapPass)
 import vtkshadowmaps
-from timing_scene import add_ground_and_boxes, add_sun, window
+from timing_scene import add_ground_and_boxes, add_sun, vtk_shadow_map_pass, window
 r, w = window(480, 270)
 add_ground_and_boxes(r, 20, 50)
 add_sun(r)
@@ -20,10 +18,7 @@ for x, y in [(-10, -10), (10, -10), (-10, 10), (10, 10)]:
     l = vtkLight(); l.SetPositional(True); l.SetConeAngle(90); l.SetPosition(x, y, 6); l.SetFocalPoint(x, y, 0)
     l.SetIntensity(0.3); r.AddLight(l)
 cam = r.GetActiveCamera(); cam.SetPosition(0, -40, 20); cam.SetFocalPoint(0, 0, 0); cam.SetViewUp(0, 0, 1)
-def vtk_pass():
-    s = vtkShadowMapPass(); c = vtkRenderPassCollection(); c.AddItem(s.GetShadowMapBakerPass()); c.AddItem(s)
-    q = vtkSequencePass(); q.SetPasses(c); cp = vtkCameraPass(); cp.SetDelegatePass(q); return cp
-makers = {"none": lambda: None, "vtk": vtk_pass, "warped": vtkshadowmaps.vtkWarpedShadowMapPass,
+makers = {"none": lambda: None, "vtk": vtk_shadow_map_pass, "warped": vtkshadowmaps.vtkWarpedShadowMapPass,
           "cascaded": vtkshadowmaps.vtkCascadedShadowMapPass}
 passes = {k: f() for k, f in makers.items()}
 times = {k: ([], []) for k in makers}

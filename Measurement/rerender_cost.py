@@ -12,9 +12,7 @@ Medians of 3 interleaved rounds of 5 frames.
 import statistics, sys
 import vtkshadowmaps
 from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkRenderPassCollection,
-                                            vtkSequencePass, vtkShadowMapPass)
-from timing_scene import add, add_ground_and_boxes, add_sun, timed_render, window
+from timing_scene import add, add_ground_and_boxes, add_sun, timed_render, vtk_shadow_map_pass, window
 
 resolution, points, change = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
 r, w = window(960, 540)
@@ -32,16 +30,7 @@ def ours(mode):
     return p
 
 
-def vtk_pass():
-    shadows = vtkShadowMapPass(); shadows.GetShadowMapBakerPass().SetResolution(resolution)
-    passes = vtkRenderPassCollection()
-    passes.AddItem(shadows.GetShadowMapBakerPass()); passes.AddItem(shadows)
-    sequence = vtkSequencePass(); sequence.SetPasses(passes)
-    camera = vtkCameraPass(); camera.SetDelegatePass(sequence)
-    return camera
-
-
-passes = {"none": None, "vtk": vtk_pass(), "uniform": ours("Uniform"), "lispsm": ours("LiSPSM")}
+passes = {"none": None, "vtk": vtk_shadow_map_pass(resolution), "uniform": ours("Uniform"), "lispsm": ours("LiSPSM")}
 changed = {k: [] for k in passes}; steady = {k: [] for k in passes}
 for round in range(3):
     for k, q in passes.items():

@@ -1,8 +1,10 @@
 """The scene and the timed frame of the Python timing scripts (frame_times.py,
-cascade_cost.py, moving_cost.py): an off-screen window, a ground, rows of boxes,
-a sun, and one frame timed to the GL's completion."""
+cascade_cost.py, moving_cost.py, rerender_cost.py, drag_cost.py): an off-screen
+window, a ground, rows of boxes, a sun, VTK's shadow pass, and one frame timed to
+the GL's completion."""
 import time
-import vtkmodules.vtkRenderingOpenGL2  # noqa
+from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkRenderPassCollection, vtkSequencePass,
+                                            vtkShadowMapPass)
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource
 from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
 
@@ -37,3 +39,16 @@ def timed_render(w):
     """Seconds of one frame, the GL finished."""
     t = time.perf_counter(); w.Render(); w.WaitForCompletion()
     return time.perf_counter() - t
+
+
+def vtk_shadow_map_pass(resolution=None):
+    """VTK's vtkShadowMapPass as its documentation assembles it: the baker, then the
+    shadow pass, in a sequence under a camera pass."""
+    shadows = vtkShadowMapPass()
+    if resolution is not None:
+        shadows.GetShadowMapBakerPass().SetResolution(resolution)
+    passes = vtkRenderPassCollection()
+    passes.AddItem(shadows.GetShadowMapBakerPass()); passes.AddItem(shadows)
+    sequence = vtkSequencePass(); sequence.SetPasses(passes)
+    camera = vtkCameraPass(); camera.SetDelegatePass(sequence)
+    return camera

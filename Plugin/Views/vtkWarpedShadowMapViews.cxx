@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -24,12 +25,18 @@ using shadowmaps::ShadowLight;
 namespace
 {
 // A view fitted again in an interactive frame is fitted to a camera whose eye
-// is moved back by this share of the nearest visible prop's depth and whose
-// sides are turned out by this many degrees (or by a half or a quarter of
-// both, when that fit would not serve): it then holds several frames of an
-// orbit (docs/BENCHMARKS.md, "Warped maps that keep their layers").
+// is moved back by a share of WidenedBackwardPerNearDepth times the nearest
+// visible prop's depth and whose sides are turned out by the same share of
+// WidenedTurnDegrees: the widest share whose fit serves. It then holds several
+// frames of a drag (docs/BENCHMARKS.md, "Warped maps that keep their layers").
 constexpr double WidenedBackwardPerNearDepth = 0.1;
 constexpr double WidenedTurnDegrees = 1.0;
+constexpr std::array<double, 5> WidenedShares{ 4.0, 2.0, 1.0, 0.5, 0.25 };
+// A widened view's texels may be coarser than the fresh fit's by this share of
+// InteractiveTexelRatio's margin over 1; the rest is left for the camera's next
+// moves, so that the view is not refitted at once (in the drags measured, the
+// side room ended most kept views, not their texels).
+constexpr double WidenedShareOfTexelMargin = 0.75;
 
 // Distance along the view axis from the camera's near plane to the farthest
 // point of the focus body B (0 when B is empty).
@@ -186,10 +193,9 @@ LightView vtkWarpedShadowMapViews::InteractiveView(
   {
     return light.LastViews.front();
   }
-  // A view that holds what slightly moved cameras see lasts a few frames: the
-  // widest whose texels stay within half the ratio's margin, so that the
-  // camera's next moves do not take them beyond it at once.
-  const double widenedRatio = 1.0 + 0.5 * (this->InteractiveTexelRatio - 1.0);
+  // A view that holds what slightly moved cameras see lasts a few frames.
+  const double widenedRatio =
+    1.0 + WidenedShareOfTexelMargin * (this->InteractiveTexelRatio - 1.0);
   const LightView widened = this->FitForNearbyCameras(frame, light, [&](const LightView& view) {
     return serves(view, widenedRatio);
   });
@@ -202,7 +208,7 @@ LightView vtkWarpedShadowMapViews::FitForNearbyCameras(const ShadowFrame& frame,
 {
   const double nearest =
     shadowmaps::TightDepthRange(frame.CameraView, frame.CameraProjection, frame.PropBounds, 0.01).x;
-  for (const double share : { 1.0, 0.5, 0.25 })
+  for (const double share : WidenedShares)
   {
     const shadowmaps::Camera widened =
       shadowmaps::WidenedCamera({ frame.CameraView, frame.CameraProjection },

@@ -134,7 +134,8 @@ public:
    * the view it was last rendered with while that view holds what the frame's
    * own fit would hold and its texels across the light are at most this many
    * times the fit's, at every vertex of the visible part of the scene it
-   * holds; else it is fitted again to a slightly wider camera. Still renders
+   * holds; else it is fitted again to the widest of a few wider cameras whose
+   * texels stay within three quarters of this ratio's margin. Still renders
    * always get the frame's own fit. 1 fits every render anew. Clamped to
    * [1, 16]; default 1.5.
    */

@@ -940,6 +940,36 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
   }
 }
 
+// A faster drag (a degree a frame) still keeps most warped maps: a refit
+// fits the widest of several widened cameras whose texels stay within the
+// widened ratio, so that it lasts several frames.
+TEST(ShadowBehaviour, AFastDragStillKeepsMostWarpedMaps)
+{
+  constexpr int Frames = 24;
+  // Refits measured at 47f7b23, before the wider widenings: LiSPSM 6, TSM 4 (its texels drift
+  // faster, so its widest acceptable widening is narrower); now 2 and 4.
+  const std::pair<int, int> mostRefits[] = { { vtkWarpedShadowMapPass::LISPSM, 3 },
+    { vtkWarpedShadowMapPass::TSM, 6 } };
+  for (const auto& [mode, most] : mostRefits)
+  {
+    TestScene scene;
+    vtkSmartPointer<vtkWarpedShadowMapPass> pass = WarpedPass(mode);
+    RenderCloserWith(scene, false, pass);
+    scene.Window->SetDesiredUpdateRate(15.0);
+    int rendered = 0;
+    for (int frame = 0; frame < Frames; ++frame)
+    {
+      OrbitAndRender(scene, 1.0);
+      rendered += pass->GetNumberOfRenderedLayers();
+    }
+    std::cout << "[ measured ] mode " << mode << ": layers re-rendered in " << Frames
+              << " frames of a degree: " << rendered << "\n";
+    EXPECT_LE(rendered, most) << "mode " << mode;
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
+  }
+}
+
 namespace
 {
 /// Keeps the fragment shaders the mappers build with it.
