@@ -1,5 +1,5 @@
 """The scene and the timed frame of the Python timing scripts (frame_times.py,
-cascade_cost.py, moving_cost.py, rerender_cost.py, drag_cost.py): an off-screen
+cascade_cost.py, moving_cost.py, rerender_cost.py, drag_cost.py, reach_culling.py): an off-screen
 window, a ground, rows of boxes, a sun, VTK's shadow pass, and one frame timed to
 the GL's completion."""
 import time

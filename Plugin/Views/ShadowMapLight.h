@@ -129,13 +129,13 @@ inline int ReceiverFeatures(const ShadowLight& light)
     features |= (view.TexelSizeFromGradient ? GradientTexels : 0) |
       (view.TexelPerUnitDistance != 0.0 ? DistantTexels : 0) | (view.LinearDepth ? LinearDepths : 0);
   }
-  for (const glm::dvec3& cascade : light.CascadeDepths)
+  if (light.Layout == ViewLayout::Cascades && light.Views.size() > 1)
   {
-    features |= cascade.z < NoBlendBand ? CascadeBlends : 0;
-  }
-  if (light.Layout == ViewLayout::Cascades && light.CoverageBlendFraction > 0.0)
-  {
-    features |= CascadeBlends;
+    for (const glm::dvec3& cascade : light.CascadeDepths)
+    {
+      features |= cascade.z < NoBlendBand ? CascadeBlends : 0;
+    }
+    features |= light.CoverageBlendFraction > 0.0 ? CascadeBlends : 0;
   }
   return features;
 }

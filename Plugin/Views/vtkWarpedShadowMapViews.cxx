@@ -25,10 +25,10 @@ using shadowmaps::ShadowLight;
 namespace
 {
 // A view fitted again in an interactive frame is fitted to a camera whose eye
-// is moved back by a share of WidenedBackwardPerNearDepth times the nearest
-// visible prop's depth and whose sides are turned out by the same share of
-// WidenedTurnDegrees: the widest share whose fit serves. It then holds several
-// frames of a drag (docs/BENCHMARKS.md, "Warped maps that keep their layers").
+// is moved back by WidenedBackwardPerNearDepth times the nearest visible prop's
+// depth and whose sides are turned out by WidenedTurnDegrees, both multiplied
+// by the largest of WidenedShares whose fit serves. It then holds several
+// frames of a drag (docs/BENCHMARKS.md, "Wider refits").
 constexpr double WidenedBackwardPerNearDepth = 0.1;
 constexpr double WidenedTurnDegrees = 1.0;
 constexpr std::array<double, 5> WidenedShares{ 4.0, 2.0, 1.0, 0.5, 0.25 };

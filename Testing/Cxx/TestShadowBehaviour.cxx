@@ -946,10 +946,11 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
 TEST(ShadowBehaviour, AFastDragStillKeepsMostWarpedMaps)
 {
   constexpr int Frames = 24;
-  // Refits measured at 47f7b23, before the wider widenings: LiSPSM 6, TSM 4 (its texels drift
-  // faster, so its widest acceptable widening is narrower); now 2 and 4.
+  // Refits measured at 47f7b23, before the wider widenings: LiSPSM 6, TSM 4;
+  // now 2 and 4. TSM's texels drift faster, so its widest acceptable widening
+  // is narrower and its bound only guards against regressions.
   const std::pair<int, int> mostRefits[] = { { vtkWarpedShadowMapPass::LISPSM, 3 },
-    { vtkWarpedShadowMapPass::TSM, 6 } };
+    { vtkWarpedShadowMapPass::TSM, 5 } };
   for (const auto& [mode, most] : mostRefits)
   {
     TestScene scene;

@@ -726,10 +726,7 @@ TEST_P(ReachCulling, KeepsTheShadowOfACasterOutsideTheView)
 
 namespace
 {
-// The receivers' shader relies on every view of a light whose strategy promises
-// CroppedViews being a crop of its first (ShadowMapCrop): fitted through the
-// strategy itself, for every setting that makes the promise, and not made where
-// the views are not crops (warped cascades, cube faces).
+// A camera at street level over a 120 x 120 scene, 16:9, and 1024² maps.
 shadowmaps::ShadowFrame StreetLevelFrame()
 {
   shadowmaps::ShadowFrame frame;
@@ -742,6 +739,21 @@ shadowmaps::ShadowFrame StreetLevelFrame()
   return frame;
 }
 
+// An oblique light over StreetLevelFrame's scene: a sun, or a spot of `cone`.
+shadowmaps::ShadowLight StreetLevelLight(shadowmaps::LightKind kind, double cone)
+{
+  shadowmaps::ShadowLight light;
+  light.Kind = kind;
+  light.ConeAngle = cone;
+  light.Position = glm::dvec3(10.0, -15.0, 30.0);
+  light.Direction = glm::normalize(glm::dvec3(-0.3, 0.4, -1.0));
+  return light;
+}
+
+// The receivers' shader relies on every view of a light whose strategy promises
+// CroppedViews being a crop of its first (ShadowMapCrop): fitted through the
+// strategy itself, for every setting that makes the promise, and not made where
+// the views are not crops (warped cascades, cube faces).
 TEST(ShadowCascades, CroppedViewsPromiseHoldsForEveryFitThatMakesIt)
 {
   const shadowmaps::ShadowFrame frame = StreetLevelFrame();
@@ -777,11 +789,7 @@ TEST(ShadowCascades, CroppedViewsPromiseHoldsForEveryFitThatMakesIt)
     views->SetNumberOfCascades(4);
     views->SetFitMode(setting.FitMode);
     views->SetCascadeWarp(setting.Warp);
-    shadowmaps::ShadowLight light;
-    light.Kind = setting.Kind;
-    light.ConeAngle = setting.Cone;
-    light.Position = glm::dvec3(10.0, -15.0, 30.0);
-    light.Direction = glm::normalize(glm::dvec3(-0.3, 0.4, -1.0));
+    shadowmaps::ShadowLight light = StreetLevelLight(setting.Kind, setting.Cone);
     views->FitLight(frame, light);
     const bool promised = (shadowmaps::ReceiverFeatures(light) & shadowmaps::CroppedViews) != 0;
     EXPECT_EQ(promised, setting.Promised) << setting.Name;
@@ -828,6 +836,7 @@ TEST(ShadowCascades, OnlyCascadesWithABlendBandCompileTheSecondLookup)
     { "no band, by depth", 4, 0.0, byDepth, sun, false },
     { "no band, by coverage", 4, 0.0, byCoverage, sun, false },
     { "one cascade", 1, 0.1, byDepth, sun, false },
+    { "one cascade, by coverage", 1, 0.1, byCoverage, sun, false },
     { "spot tiles", 4, 0.1, byDepth, shadowmaps::LightKind::Spot, false },
   };
   for (const Setting& setting : settings)
@@ -836,11 +845,7 @@ TEST(ShadowCascades, OnlyCascadesWithABlendBandCompileTheSecondLookup)
     views->SetNumberOfCascades(setting.Cascades);
     views->SetBlendFraction(setting.BlendFraction);
     views->SetSelection(setting.Selection);
-    shadowmaps::ShadowLight light;
-    light.Kind = setting.Kind;
-    light.ConeAngle = 35.0;
-    light.Position = glm::dvec3(10.0, -15.0, 30.0);
-    light.Direction = glm::normalize(glm::dvec3(-0.3, 0.4, -1.0));
+    shadowmaps::ShadowLight light = StreetLevelLight(setting.Kind, 35.0);
     views->FitLight(frame, light);
     const bool blends = (shadowmaps::ReceiverFeatures(light) & shadowmaps::CascadeBlends) != 0;
     EXPECT_EQ(blends, setting.Blends) << setting.Name;
