@@ -96,10 +96,19 @@ bool vtkShadowHas(int features, int feature)
   return (features & feature) != 0;
 }
 
+// Cropped views (VTK_SHADOW_FEATURE_CROPPED_VIEWS) are their light's first
+// view followed by this crop of `view`, applied to homogeneous map coordinates.
+// They read the first view's matrix, indexed by a literal, and only the crop by
+// the view that varies from fragment to fragment: software rasterisers gather
+// per fragment whatever such a view indexes.
+vec4 vtkShadowCrop(vec4 mapPoint, int view)
+{
+  return vec4(mapPoint.xyz * vtkShadowViews[view].CropScale +
+      mapPoint.w * vtkShadowViews[view].CropOffset,
+    mapPoint.w);
+}
+
 // The matrix of map `view` of a light whose views start at layer firstView.
-// Cropped views read their light's first matrix, indexed by a literal, and only
-// a scale and an offset by the view that varies from fragment to fragment:
-// software rasterisers gather per fragment whatever such a view indexes.
 mat4 vtkShadowMapMatrix(int firstView, int view, int features)
 {
   if (!vtkShadowHas(features, VTK_SHADOW_FEATURE_CROPPED_VIEWS))
@@ -107,13 +116,22 @@ mat4 vtkShadowMapMatrix(int firstView, int view, int features)
     return vtkShadowViews[view].ViewToMap;
   }
   mat4 m = vtkShadowViews[firstView].ViewToMap;
-  vec3 scale = vtkShadowViews[view].CropScale;
-  vec3 offset = vtkShadowViews[view].CropOffset;
   for (int column = 0; column < 4; ++column)
   {
-    m[column].xyz = m[column].xyz * scale + m[column].w * offset;
+    m[column] = vtkShadowCrop(m[column], view);
   }
   return m;
+}
+
+// The map's clip coordinates of a VC point: vtkShadowMapMatrix(...) * point,
+// without building a cropped view's matrix.
+vec4 vtkShadowMapTransform(int firstView, int view, vec3 positionVC, int features)
+{
+  if (!vtkShadowHas(features, VTK_SHADOW_FEATURE_CROPPED_VIEWS))
+  {
+    return vtkShadowViews[view].ViewToMap * vec4(positionVC, 1.0);
+  }
+  return vtkShadowCrop(vtkShadowViews[firstView].ViewToMap * vec4(positionVC, 1.0), view);
 }
 
 vec4 vtkShadowMapClip(
@@ -240,7 +258,7 @@ vec4 vtkShadowMapClip(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
 {
   vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
-  return vtkShadowMapMatrix(firstView, view, features) * vec4(biased, 1.0);
+  return vtkShadowMapTransform(firstView, view, biased, features);
 }
 
 // Texture coordinates and depth of the receiver in map `view`.
@@ -384,7 +402,7 @@ float vtkShadowViewVisibility(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
 {
   vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
-  vec4 clip = vtkShadowMapMatrix(firstView, view, features) * vec4(biased, 1.0);
+  vec4 clip = vtkShadowMapTransform(firstView, view, biased, features);
   if (!vtkShadowInsideMap(clip, view, features))
   {
     return 1.0;
