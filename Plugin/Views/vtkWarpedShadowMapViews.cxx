@@ -12,7 +12,6 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <limits>
 
 #include <glm/gtc/matrix_access.hpp>
 
@@ -196,14 +195,12 @@ LightView vtkWarpedShadowMapViews::InteractiveView(
   // A view that holds what slightly moved cameras see lasts a few frames.
   const double widenedRatio =
     1.0 + WidenedShareOfTexelMargin * (this->InteractiveTexelRatio - 1.0);
-  const LightView widened = this->FitForNearbyCameras(frame, light, [&](const LightView& view) {
-    return serves(view, widenedRatio);
-  });
-  return shadowmaps::IsFinite(widened.ViewProjection()) ? widened : fresh;
+  const auto accept = [&](const LightView& view) { return serves(view, widenedRatio); };
+  return this->FitForNearbyCameras(frame, light, accept).value_or(fresh);
 }
 
 //------------------------------------------------------------------------------
-LightView vtkWarpedShadowMapViews::FitForNearbyCameras(const ShadowFrame& frame,
+std::optional<LightView> vtkWarpedShadowMapViews::FitForNearbyCameras(const ShadowFrame& frame,
   const ShadowLight& light, const std::function<bool(const LightView&)>& accept) const
 {
   const double nearest =
@@ -226,9 +223,7 @@ LightView vtkWarpedShadowMapViews::FitForNearbyCameras(const ShadowFrame& frame,
       return view;
     }
   }
-  LightView none;
-  none.Projection = glm::dmat4(std::numeric_limits<double>::quiet_NaN());
-  return none;
+  return std::nullopt;
 }
 
 //------------------------------------------------------------------------------

@@ -46,6 +46,7 @@
 #include "vtkShadowMapViews.h"
 
 #include <functional> // For FitForNearbyCameras
+#include <optional>   // For FitForNearbyCameras
 
 namespace shadowmaps
 {
@@ -168,9 +169,9 @@ protected:
     const shadowmaps::ShadowLight& light, const shadowmaps::LightView& fresh) const;
   /**
    * The fit of the widest of a few widened cameras (shadowmaps::WidenedCamera)
-   * that `accept` takes; a non-finite view when none is taken.
+   * that `accept` takes; none when none is taken.
    */
-  shadowmaps::LightView FitForNearbyCameras(const shadowmaps::ShadowFrame& frame,
+  std::optional<shadowmaps::LightView> FitForNearbyCameras(const shadowmaps::ShadowFrame& frame,
     const shadowmaps::ShadowLight& light,
     const std::function<bool(const shadowmaps::LightView&)>& accept) const;
   /** LiSPSM and GMNPR settings (free parameter, falloff). */
