@@ -452,6 +452,18 @@ vtkShadowMapViews* vtkAbstractShadowMapPass::GetViews()
 }
 
 //------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SetInteractiveTexelRatio(double ratio)
+{
+  this->GetViews()->SetInteractiveTexelRatio(ratio);
+}
+
+//------------------------------------------------------------------------------
+double vtkAbstractShadowMapPass::GetInteractiveTexelRatio()
+{
+  return this->GetViews()->GetInteractiveTexelRatio();
+}
+
+//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::SetRepresentation(vtkShadowMapRepresentation* representation)
 {
   vtkShadowMapRepresentation* chosen =

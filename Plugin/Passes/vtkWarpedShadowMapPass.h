@@ -84,15 +84,6 @@ public:
   double GetTSMFocusFraction() { return this->Warped->GetTSMFocusFraction(); }
   ///@}
 
-  ///@{
-  /**
-   * vtkWarpedShadowMapViews' InteractiveTexelRatio, [1, 16], default 1.5: how much
-   * coarser a map kept while the user drags the camera may get (1: none kept).
-   */
-  void SetInteractiveTexelRatio(double ratio) { this->Warped->SetInteractiveTexelRatio(ratio); }
-  double GetInteractiveTexelRatio() { return this->Warped->GetInteractiveTexelRatio(); }
-  ///@}
-
 protected:
   vtkWarpedShadowMapPass();
   ~vtkWarpedShadowMapPass() override;

@@ -255,10 +255,16 @@ void vtkCascadedShadowMapViews::FitCascades(const shadowmaps::ShadowFrame& frame
   for (int c = 0; c < cascades; ++c)
   {
     const glm::dvec2 depths = shadowmaps::CascadeDepthRange(splits, c, this->BlendFraction);
-    const glm::dmat4 sub =
+    shadowmaps::ShadowFrame sub = frame;
+    sub.CameraProjection =
       shadowmaps::SubFrustumProjection(frame.CameraProjection, depths.x, depths.y);
-    light.Views.push_back(FitCascade(frame.CameraView, sub, frame.SceneBounds, frame.Resolution,
-      light.Direction, this->FitMode, this->CascadeWarp));
+    const ViewFit fit = [&](const shadowmaps::ShadowFrame& in) {
+      return FitCascade(in.CameraView, in.CameraProjection, in.SceneBounds, in.Resolution,
+        light.Direction, this->FitMode, this->CascadeWarp);
+    };
+    const bool hasLastViews = static_cast<int>(light.LastViews.size()) == cascades;
+    light.Views.push_back(
+      this->InteractiveView(sub, light, fit(sub), hasLastViews ? &light.LastViews[c] : nullptr, fit));
     const bool blends = this->BlendFraction > 0.0 && c + 1 < cascades;
     light.CascadeDepths.emplace_back(splits[c], splits[c + 1],
       blends ? shadowmaps::BlendBandStart(splits, c, this->BlendFraction) : shadowmaps::NoBlendBand);

@@ -1,10 +1,79 @@
 #include "vtkShadowMapViews.h"
 
+#include "ShadowMapCascades.h" // For TightDepthRange
+#include "ShadowMapKeptViews.h"
 #include "ShadowMapLight.h"
 
+#include <array>
+#include <optional>
+
+using shadowmaps::LightView;
+using shadowmaps::ShadowFrame;
+using shadowmaps::ShadowLight;
+
+namespace
+{
+// A view fitted again in an interactive frame is fitted to a camera whose eye
+// is moved back by WidenedBackwardPerNearDepth times the nearest visible prop's
+// depth and whose sides are turned out by WidenedTurnDegrees, both multiplied
+// by the largest of WidenedShares whose fit serves. It then holds several
+// frames of a drag (docs/BENCHMARKS.md, "Wider refits").
+constexpr double WidenedBackwardPerNearDepth = 0.1;
+constexpr double WidenedTurnDegrees = 1.0;
+constexpr std::array<double, 5> WidenedShares{ 4.0, 2.0, 1.0, 0.5, 0.25 };
+// A widened view's texels may be coarser than the fresh fit's by this share of
+// InteractiveTexelRatio's margin over 1; the rest is left for the camera's next
+// moves, so that the view is not refitted at once (in the drags measured, the
+// side room ended most kept views, not their texels).
+constexpr double WidenedShareOfTexelMargin = 0.75;
+
+// Whether `view` serves `frame` as `fresh`, the frame's own fit, would: over
+// the visible scene of frame's camera, with texels at most `texelRatio` times
+// fresh's.
+bool ServesAsFreshFit(const ShadowFrame& frame, const ShadowLight& light, const LightView& view,
+  const LightView& fresh, double texelRatio)
+{
+  shadowmaps::LightRays rays;
+  rays.Positional = light.Kind != shadowmaps::LightKind::Directional;
+  rays.Position = light.Position;
+  rays.Direction = light.Direction;
+  rays.ConeAngleDegrees = light.ConeAngle;
+  // The filter's taps, and about a texel of normal offset.
+  return shadowmaps::KeptViewServes(view, fresh, frame.CameraViewProjection(), frame.SceneBounds,
+    rays, frame.Resolution, texelRatio, frame.FilterReachTexels + 1.0);
+}
+
+// The fit by `fit` of the widest of a few widened cameras that `accept` takes.
+std::optional<LightView> FitForNearbyCameras(const ShadowFrame& frame,
+  const std::function<LightView(const ShadowFrame&)>& fit,
+  const std::function<bool(const LightView&)>& accept)
+{
+  const double nearest =
+    shadowmaps::TightDepthRange(frame.CameraView, frame.CameraProjection, frame.PropBounds, 0.01).x;
+  for (const double share : WidenedShares)
+  {
+    const shadowmaps::Camera widened =
+      shadowmaps::WidenedCamera({ frame.CameraView, frame.CameraProjection },
+        share * WidenedBackwardPerNearDepth * nearest, share * WidenedTurnDegrees);
+    if (widened.Projection == frame.CameraProjection)
+    {
+      break; // a parallel projection, or no visible depth to widen by
+    }
+    ShadowFrame wider = frame;
+    wider.CameraView = widened.View;
+    wider.CameraProjection = widened.Projection;
+    const LightView view = fit(wider);
+    if (shadowmaps::IsFinite(view.ViewProjection()) && accept(view))
+    {
+      return view;
+    }
+  }
+  return std::nullopt;
+}
+} // namespace
+
 //------------------------------------------------------------------------------
-void vtkShadowMapViews::FitUniformViews(
-  const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light)
+void vtkShadowMapViews::FitUniformViews(const ShadowFrame& frame, ShadowLight& light)
 {
   light.Views.clear();
   if (shadowmaps::NeedsCubeFaces(light))
@@ -27,7 +96,29 @@ void vtkShadowMapViews::FitUniformViews(
 }
 
 //------------------------------------------------------------------------------
+LightView vtkShadowMapViews::InteractiveView(const ShadowFrame& frame, const ShadowLight& light,
+  const LightView& fresh, const LightView* last, const ViewFit& fit) const
+{
+  if (!frame.Interactive || !(this->InteractiveTexelRatio > 1.0))
+  {
+    return fresh;
+  }
+  const auto serves = [&](const LightView& view, double texelRatio) {
+    return ServesAsFreshFit(frame, light, view, fresh, texelRatio);
+  };
+  if (last && serves(*last, this->InteractiveTexelRatio))
+  {
+    return *last;
+  }
+  const double widenedRatio =
+    1.0 + WidenedShareOfTexelMargin * (this->InteractiveTexelRatio - 1.0);
+  const auto accept = [&](const LightView& view) { return serves(view, widenedRatio); };
+  return FitForNearbyCameras(frame, fit, accept).value_or(fresh);
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowMapViews::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "InteractiveTexelRatio: " << this->InteractiveTexelRatio << "\n";
 }

@@ -15,6 +15,12 @@
  * lights and spots wider than one map holds the uniform cube faces
  * (FitUniformViews). A change of a strategy's parameters re-renders the maps of
  * every pass that uses it.
+ *
+ * While the user drags the camera (vtkAbstractShadowMapPass's
+ * InteractiveUpdateRate), the warped and cascaded strategies give a light the
+ * views it was last rendered with again while they still serve the frame
+ * (InteractiveView), so that its maps are re-rendered only every few frames;
+ * InteractiveTexelRatio bounds how much coarser such a view may be.
  */
 #ifndef vtkShadowMapViews_h
 #define vtkShadowMapViews_h
@@ -23,8 +29,11 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkWrappingHints.h"             // For VTK_WRAPEXCLUDE
 
+#include <functional> // For ViewFit
+
 namespace shadowmaps
 {
+struct LightView;
 struct ShadowFrame;
 struct ShadowLight;
 }
@@ -51,9 +60,41 @@ public:
   VTK_WRAPEXCLUDE static void FitUniformViews(
     const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light);
 
+  ///@{
+  /**
+   * In interactive renders (vtkAbstractShadowMapPass::InteractiveUpdateRate)
+   * the warped and cascaded strategies keep a view the light was last rendered
+   * with while it holds what the frame's own fit of that view would hold, and
+   * its texels across the light are at most this many times the fit's at every
+   * vertex of the visible part of the scene it holds (a view that must be
+   * fitted again is fitted to a slightly wider camera, so that it lasts several
+   * frames). Still renders always get the frame's own fit. 1 fits every render
+   * anew. Clamped to [1, 16]; default 1.5.
+   */
+  vtkSetClampMacro(InteractiveTexelRatio, double, 1.0, 16.0);
+  vtkGetMacro(InteractiveTexelRatio, double);
+  ///@}
+
 protected:
   vtkShadowMapViews() = default;
   ~vtkShadowMapViews() override = default;
+
+  /** Fits a view of a light to a frame (for a cascade: to its sub-frustum). */
+  using ViewFit = std::function<shadowmaps::LightView(const shadowmaps::ShadowFrame&)>;
+
+  /**
+   * The view to render in `frame` for `fresh`, the frame's own fit by `fit`:
+   * fresh in still frames and when InteractiveTexelRatio is 1. In interactive
+   * frames, `last` (the view the light was last rendered with, if any) while
+   * it still serves as fresh would; else the fit of the widest of a few
+   * widened cameras whose texels stay within three quarters of the ratio's
+   * margin, so that it lasts several frames; else fresh.
+   */
+  shadowmaps::LightView InteractiveView(const shadowmaps::ShadowFrame& frame,
+    const shadowmaps::ShadowLight& light, const shadowmaps::LightView& fresh,
+    const shadowmaps::LightView* last, const ViewFit& fit) const;
+
+  double InteractiveTexelRatio = 1.5;
 
 private:
   vtkShadowMapViews(const vtkShadowMapViews&) = delete;

@@ -1,7 +1,6 @@
 #include "vtkWarpedShadowMapViews.h"
 
 #include "ShadowMapCascades.h"
-#include "ShadowMapKeptViews.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapPerspective.h"
 #include "ShadowMapTrapezoid.h"
@@ -9,9 +8,7 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <functional>
 
 #include <glm/gtc/matrix_access.hpp>
 
@@ -23,20 +20,6 @@ using shadowmaps::ShadowLight;
 
 namespace
 {
-// A view fitted again in an interactive frame is fitted to a camera whose eye
-// is moved back by WidenedBackwardPerNearDepth times the nearest visible prop's
-// depth and whose sides are turned out by WidenedTurnDegrees, both multiplied
-// by the largest of WidenedShares whose fit serves. It then holds several
-// frames of a drag (docs/BENCHMARKS.md, "Wider refits").
-constexpr double WidenedBackwardPerNearDepth = 0.1;
-constexpr double WidenedTurnDegrees = 1.0;
-constexpr std::array<double, 5> WidenedShares{ 4.0, 2.0, 1.0, 0.5, 0.25 };
-// A widened view's texels may be coarser than the fresh fit's by this share of
-// InteractiveTexelRatio's margin over 1; the rest is left for the camera's next
-// moves, so that the view is not refitted at once (in the drags measured, the
-// side room ended most kept views, not their texels).
-constexpr double WidenedShareOfTexelMargin = 0.75;
-
 // Distance along the view axis from the camera's near plane to the farthest
 // point of the focus body B (0 when B is empty).
 double FocusBodyDepth(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
@@ -175,58 +158,6 @@ LightView vtkWarpedShadowMapViews::FitWarpedView(const ShadowFrame& frame, const
 }
 
 //------------------------------------------------------------------------------
-LightView vtkWarpedShadowMapViews::InteractiveView(
-  const ShadowFrame& frame, const ShadowLight& light, const LightView& fresh) const
-{
-  shadowmaps::LightRays rays;
-  rays.Positional = light.Kind != shadowmaps::LightKind::Directional;
-  rays.Position = light.Position;
-  rays.Direction = light.Direction;
-  rays.ConeAngleDegrees = light.ConeAngle;
-  const auto serves = [&](const LightView& view, double texelRatio) {
-    // The filter's taps, and about a texel of normal offset.
-    return shadowmaps::KeptViewServes(view, fresh, frame.CameraViewProjection(), frame.SceneBounds,
-      rays, frame.Resolution, texelRatio, frame.FilterReachTexels + 1.0);
-  };
-  if (light.LastViews.size() == 1 && serves(light.LastViews.front(), this->InteractiveTexelRatio))
-  {
-    return light.LastViews.front();
-  }
-  // A view that holds what slightly moved cameras see lasts a few frames.
-  const double widenedRatio =
-    1.0 + WidenedShareOfTexelMargin * (this->InteractiveTexelRatio - 1.0);
-  const auto accept = [&](const LightView& view) { return serves(view, widenedRatio); };
-  return this->FitForNearbyCameras(frame, light, accept).value_or(fresh);
-}
-
-//------------------------------------------------------------------------------
-std::optional<LightView> vtkWarpedShadowMapViews::FitForNearbyCameras(const ShadowFrame& frame,
-  const ShadowLight& light, const std::function<bool(const LightView&)>& accept) const
-{
-  const double nearest =
-    shadowmaps::TightDepthRange(frame.CameraView, frame.CameraProjection, frame.PropBounds, 0.01).x;
-  for (const double share : WidenedShares)
-  {
-    const shadowmaps::Camera widened =
-      shadowmaps::WidenedCamera({ frame.CameraView, frame.CameraProjection },
-        share * WidenedBackwardPerNearDepth * nearest, share * WidenedTurnDegrees);
-    if (widened.Projection == frame.CameraProjection)
-    {
-      break; // a parallel projection, or no visible depth to widen by
-    }
-    ShadowFrame wider = frame;
-    wider.CameraView = widened.View;
-    wider.CameraProjection = widened.Projection;
-    const LightView view = this->FitWarpedView(wider, light);
-    if (shadowmaps::IsFinite(view.ViewProjection()) && accept(view))
-    {
-      return view;
-    }
-  }
-  return std::nullopt;
-}
-
-//------------------------------------------------------------------------------
 void vtkWarpedShadowMapViews::FitLight(const ShadowFrame& frame, ShadowLight& light)
 {
   const bool mayWarp = this->WarpMode != UNIFORM && !shadowmaps::NeedsCubeFaces(light);
@@ -245,10 +176,9 @@ void vtkWarpedShadowMapViews::FitLight(const ShadowFrame& frame, ShadowLight& li
     vtkShadowMapViews::FitUniformViews(frame, light);
     return;
   }
-  if (frame.Interactive && this->InteractiveTexelRatio > 1.0)
-  {
-    view = this->InteractiveView(frame, light, view);
-  }
+  const LightView* last = light.LastViews.size() == 1 ? &light.LastViews.front() : nullptr;
+  view = this->InteractiveView(frame, light, view, last,
+    [&](const ShadowFrame& wider) { return this->FitWarpedView(wider, light); });
   light.Layout = shadowmaps::ViewLayout::Single;
   light.Views = { view };
 }
@@ -263,5 +193,4 @@ void vtkWarpedShadowMapViews::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PSMSlideBack: " << this->PSMSlideBack << "\n";
   os << indent << "TSMFocusDistance: " << this->TSMFocusDistance << "\n";
   os << indent << "TSMFocusFraction: " << this->TSMFocusFraction << "\n";
-  os << indent << "InteractiveTexelRatio: " << this->InteractiveTexelRatio << "\n";
 }

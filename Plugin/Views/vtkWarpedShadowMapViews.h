@@ -45,9 +45,6 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapViews.h"
 
-#include <functional> // For FitForNearbyCameras
-#include <optional>   // For FitForNearbyCameras
-
 namespace shadowmaps
 {
 enum class DirectionalWarp;
@@ -128,22 +125,6 @@ public:
   vtkGetMacro(TSMFocusFraction, double);
   ///@}
 
-  ///@{
-  /**
-   * In interactive renders (vtkAbstractShadowMapPass::InteractiveUpdateRate)
-   * a warped map follows the camera only every few frames: the light keeps
-   * the view it was last rendered with while that view holds what the frame's
-   * own fit would hold and its texels across the light are at most this many
-   * times the fit's, at every vertex of the visible part of the scene it
-   * holds; else it is fitted again to the widest of a few wider cameras whose
-   * texels stay within three quarters of this ratio's margin. Still renders
-   * always get the frame's own fit. 1 fits every render anew. Clamped to
-   * [1, 16]; default 1.5.
-   */
-  vtkSetClampMacro(InteractiveTexelRatio, double, 1.0, 16.0);
-  vtkGetMacro(InteractiveTexelRatio, double);
-  ///@}
-
   VTK_WRAPEXCLUDE void FitLight(
     const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) override;
 
@@ -161,19 +142,6 @@ protected:
   /** The frame's own warped view of a directional or spot light. */
   shadowmaps::LightView FitWarpedView(
     const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
-  /**
-   * In an interactive frame: the light's last view if it still serves as
-   * `fresh` would, else the fit of a wider camera if that serves, else `fresh`.
-   */
-  shadowmaps::LightView InteractiveView(const shadowmaps::ShadowFrame& frame,
-    const shadowmaps::ShadowLight& light, const shadowmaps::LightView& fresh) const;
-  /**
-   * The fit of the widest of a few widened cameras (shadowmaps::WidenedCamera)
-   * that `accept` takes; none when none is taken.
-   */
-  std::optional<shadowmaps::LightView> FitForNearbyCameras(const shadowmaps::ShadowFrame& frame,
-    const shadowmaps::ShadowLight& light,
-    const std::function<bool(const shadowmaps::LightView&)>& accept) const;
   /** LiSPSM and GMNPR settings (free parameter, falloff). */
   shadowmaps::WarpOptions LightSpaceWarpOptions() const;
 
@@ -183,7 +151,6 @@ protected:
   double PSMSlideBack = -1.0;
   double TSMFocusDistance = 0.0;
   double TSMFocusFraction = 0.8;
-  double InteractiveTexelRatio = 1.5;
 
 private:
   vtkWarpedShadowMapViews(const vtkWarpedShadowMapViews&) = delete;
