@@ -1,5 +1,5 @@
-// Keeping a light's last view while the camera moves. A warped view follows the
-// camera, so every moving frame would re-render its map; in interactive frames
+// Keeping a light's last view while the camera moves. A warped view or a cascade
+// follows the camera, so most moving frames would re-render its map; in interactive frames
 // (vtkAbstractShadowMapPass::InteractiveUpdateRate) the views strategy may keep
 // the view it last gave while that view still serves the frame as the fresh
 // fit would, and when it must fit again it fits a slightly wider camera so

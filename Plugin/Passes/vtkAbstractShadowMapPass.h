@@ -211,9 +211,10 @@ public:
    * interactor's DesiredUpdateRate (15) while the user drags and its
    * StillUpdateRate (0.0001) for the render that ends the drag; ParaView sets
    * 5 and 0.002. In interactive renders, views that follow the camera (warped
-   * maps, cascades) may keep a light's last views while they still serve, so
-   * that its maps are re-rendered only every few frames
-   * (InteractiveTexelRatio); still renders always fit anew. VTK_DOUBLE_MAX makes every render a still one, 0 every render an
+   * maps, directional lights' cascades) may keep a light's last views while
+   * they still serve, so that its maps are re-rendered only every few frames
+   * (InteractiveTexelRatio); still renders always fit anew. VTK_DOUBLE_MAX
+   * makes every render a still one, 0 every render an
    * interactive one (whose images then depend on the camera's path). With an
    * exchange, a render is interactive only if it is on every process.
    * Clamped to [0, VTK_DOUBLE_MAX]; default 1.
@@ -224,7 +225,8 @@ public:
 
   ///@{
   /**
-   * The views' InteractiveTexelRatio (vtkShadowMapViews), [1, 16], default
+   * InteractiveTexelRatio (vtkShadowMapViews) of the views the pass uses now
+   * (GetViews(); a views object set later keeps its own), [1, 16], default
    * 1.5: how much coarser a view kept while the user drags the camera may get
    * (1: none kept).
    */

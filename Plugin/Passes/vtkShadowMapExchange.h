@@ -5,8 +5,8 @@
  * Where each process renders its own piece of the data (ParaView's ranks under
  * MPI), a caster on one process must shadow receivers on another. A pass given
  * an exchange (vtkAbstractShadowMapPass::SetExchange) asks it, every frame on
- * every process, whether every process renders interactively (warped views
- * may then keep their last view, on all of them or none) and whether any
+ * every process, whether every process renders interactively (warped maps
+ * and cascades may then keep their last views, on all of them or none) and whether any
  * process's maps must be re-rendered; if so, every
  * process re-renders all its layers from its own casters and the pass combines
  * them into the nearest surfaces over all processes: the nearest depth of

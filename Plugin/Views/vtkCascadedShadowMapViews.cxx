@@ -262,9 +262,11 @@ void vtkCascadedShadowMapViews::FitCascades(const shadowmaps::ShadowFrame& frame
       return FitCascade(in.CameraView, in.CameraProjection, in.SceneBounds, in.Resolution,
         light.Direction, this->FitMode, this->CascadeWarp);
     };
+    // A stable cascade's texel size must depend on its depth range alone: it
+    // is not fitted to a widened camera.
     const bool hasLastViews = static_cast<int>(light.LastViews.size()) == cascades;
-    light.Views.push_back(
-      this->InteractiveView(sub, light, fit(sub), hasLastViews ? &light.LastViews[c] : nullptr, fit));
+    light.Views.push_back(this->InteractiveView(sub, light, fit(sub),
+      hasLastViews ? &light.LastViews[c] : nullptr, this->FitMode == STABLE ? ViewFit() : fit));
     const bool blends = this->BlendFraction > 0.0 && c + 1 < cascades;
     light.CascadeDepths.emplace_back(splits[c], splits[c + 1],
       blends ? shadowmaps::BlendBandStart(splits, c, this->BlendFraction) : shadowmaps::NoBlendBand);

@@ -9,7 +9,9 @@
  * sub-frustum in a light frame fixed in the world, moved in steps of whole
  * texels, so that shadow edges do not shimmer and a small camera move keeps the
  * map; seed 004) or TIGHT
- * (sub-frustum ∩ scene, the sharpest texels). Each cascade's depth range reaches
+ * (sub-frustum ∩ scene, the sharpest texels). While the user drags the camera, a
+ * cascade keeps its last view while that still serves its sub-frustum
+ * (vtkShadowMapViews::InteractiveTexelRatio). Each cascade's depth range reaches
  * the casters between its sub-frustum and the light. Optionally each cascade is
  * warped with LiSPSM or GMNPR (vtkWarpedShadowMapPass's warps).
  *

@@ -110,6 +110,10 @@ LightView vtkShadowMapViews::InteractiveView(const ShadowFrame& frame, const Sha
   {
     return *last;
   }
+  if (!fit)
+  {
+    return fresh;
+  }
   const double widenedRatio =
     1.0 + WidenedShareOfTexelMargin * (this->InteractiveTexelRatio - 1.0);
   const auto accept = [&](const LightView& view) { return serves(view, widenedRatio); };

@@ -17,10 +17,12 @@
  * every pass that uses it.
  *
  * While the user drags the camera (vtkAbstractShadowMapPass's
- * InteractiveUpdateRate), the warped and cascaded strategies give a light the
- * views it was last rendered with again while they still serve the frame
- * (InteractiveView), so that its maps are re-rendered only every few frames;
- * InteractiveTexelRatio bounds how much coarser such a view may be.
+ * InteractiveUpdateRate), the warped maps and the cascades of directional
+ * lights give a light the views it was last rendered with again while they
+ * still serve the frame (InteractiveView), so that its maps are re-rendered
+ * only every few frames; InteractiveTexelRatio bounds how much coarser such a
+ * view may be. vtkUniformShadowMapViews keeps none (its focused maps snap
+ * outward to a grid instead).
  */
 #ifndef vtkShadowMapViews_h
 #define vtkShadowMapViews_h
@@ -63,13 +65,16 @@ public:
   ///@{
   /**
    * In interactive renders (vtkAbstractShadowMapPass::InteractiveUpdateRate)
-   * the warped and cascaded strategies keep a view the light was last rendered
-   * with while it holds what the frame's own fit of that view would hold, and
-   * its texels across the light are at most this many times the fit's at every
-   * vertex of the visible part of the scene it holds (a view that must be
-   * fitted again is fitted to a slightly wider camera, so that it lasts several
-   * frames). Still renders always get the frame's own fit. 1 fits every render
-   * anew. Clamped to [1, 16]; default 1.5.
+   * warped maps and directional lights' cascades keep a view the light was
+   * last rendered with while it holds what the frame's own fit of that view
+   * would hold, and its texels across the light are at most this many times
+   * the fit's at every vertex of the visible part of the scene it holds. A
+   * warped map or tight cascade that must be fitted again is fitted to a
+   * slightly wider camera, so that it lasts several frames; a stable cascade
+   * gets the frame's own fit, whose texel size depends on its depth range
+   * alone. Still renders always get the frame's own fit. 1 fits every render
+   * anew. No effect on vtkUniformShadowMapViews. Clamped to [1, 16]; default
+   * 1.5.
    */
   vtkSetClampMacro(InteractiveTexelRatio, double, 1.0, 16.0);
   vtkGetMacro(InteractiveTexelRatio, double);
@@ -86,9 +91,10 @@ protected:
    * The view to render in `frame` for `fresh`, the frame's own fit by `fit`:
    * fresh in still frames and when InteractiveTexelRatio is 1. In interactive
    * frames, `last` (the view the light was last rendered with, if any) while
-   * it still serves as fresh would; else the fit of the widest of a few
-   * widened cameras whose texels stay within three quarters of the ratio's
-   * margin, so that it lasts several frames; else fresh.
+   * it still serves as fresh would; else, unless `fit` is empty, the fit of
+   * the widest of a few widened cameras whose texels stay within three
+   * quarters of the ratio's margin, so that it lasts several frames; else
+   * fresh.
    */
   shadowmaps::LightView InteractiveView(const shadowmaps::ShadowFrame& frame,
     const shadowmaps::ShadowLight& light, const shadowmaps::LightView& fresh,

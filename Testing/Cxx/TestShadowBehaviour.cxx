@@ -24,7 +24,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 using namespace shadowtest;
@@ -974,12 +974,21 @@ TEST(ShadowBehaviour, AFastDragStillKeepsMostWarpedMaps)
 
 namespace
 {
-// A cascaded pass fitted by `fitMode`, LiSPSM-warped cascades when `warped`.
-vtkSmartPointer<vtkCascadedShadowMapPass> CascadedPass(int fitMode, bool warped)
+// How the cascades of a test's cascaded pass are fitted and selected.
+struct CascadeSetting
+{
+  int FitMode;
+  bool Warped; // LiSPSM-warped cascades
+  int Selection;
+  const char* Name;
+};
+
+vtkSmartPointer<vtkCascadedShadowMapPass> CascadedPass(const CascadeSetting& setting)
 {
   auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
-  pass->SetFitMode(fitMode);
-  if (warped)
+  pass->SetFitMode(setting.FitMode);
+  pass->SetSelection(setting.Selection);
+  if (setting.Warped)
   {
     pass->SetCascadeWarpToLiSPSM();
   }
@@ -1014,23 +1023,29 @@ TEST(ShadowBehaviour, ADragKeepsCascadesAndTheStillFrameIsFresh)
 {
   constexpr int Frames = 24;
   constexpr double Degrees = 1.0;
-  // Measured at this test's commit: still 23, 96, 96; dragged 0, 22, 49.
-  const std::tuple<int, bool, const char*, int> settings[] = {
-    { vtkCascadedShadowMapPass::STABLE, false, "stable", 2 },
-    { vtkCascadedShadowMapPass::TIGHT, false, "tight", Frames + 4 },
-    { vtkCascadedShadowMapPass::TIGHT, true, "tight, LiSPSM-warped", 2 * Frames + 4 },
+  using Pass = vtkCascadedShadowMapPass;
+  // Measured at this test's commit, layers re-rendered still / dragged:
+  // 23 / 0, 22 / 0, 96 / 22, 96 / 49.
+  const std::pair<CascadeSetting, int> settings[] = {
+    { { Pass::STABLE, false, Pass::BY_DEPTH, "stable" }, 2 },
+    { { Pass::STABLE, false, Pass::BY_COVERAGE, "stable, selected by coverage" }, 2 },
+    { { Pass::TIGHT, false, Pass::BY_DEPTH, "tight" }, Frames + 4 },
+    { { Pass::TIGHT, true, Pass::BY_DEPTH, "tight, LiSPSM-warped" }, 3 * Frames },
   };
-  for (const auto& [fitMode, warped, name, most] : settings)
+  for (const auto& [setting, most] : settings)
   {
+    const char* name = setting.Name;
     TestScene scene;
-    vtkSmartPointer<vtkCascadedShadowMapPass> pass = CascadedPass(fitMode, warped);
+    vtkSmartPointer<vtkCascadedShadowMapPass> pass = CascadedPass(setting);
     RenderCloserWith(scene, false, pass);
     const int still = LayersRenderedInAnOrbit(scene, pass, Frames, Degrees, false);
+    const int builds = pass->GetNumberOfShaderBuilds();
     const int dragged = LayersRenderedInAnOrbit(scene, pass, Frames, Degrees, true);
     std::cout << "[ measured ] " << name << ": layers re-rendered in " << Frames
               << " frames of a degree, still " << still << ", dragged " << dragged << "\n";
     EXPECT_LE(dragged, most) << name;
     EXPECT_GE(still, 2 * Frames / 3) << name << ": the orbit moves the cascades";
+    EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds) << name;
 
     for (int extra = 0; extra < 8 && pass->GetNumberOfRenderedLayers() > 1; ++extra)
     {
@@ -1039,18 +1054,23 @@ TEST(ShadowBehaviour, ADragKeepsCascadesAndTheStillFrameIsFresh)
     ASSERT_LE(pass->GetNumberOfRenderedLayers(), 1) << name << ": a frame that kept cascades";
     const std::vector<unsigned char> interactive = RgbBytes(CaptureAsRendered(scene.Window));
     scene.Window->SetDesiredUpdateRate(0.0001);
-    const std::vector<unsigned char> fresh = FreshPassFrame(scene, CascadedPass(fitMode, warped));
+    const std::vector<unsigned char> fresh = FreshPassFrame(scene, CascadedPass(setting));
     const double different = ShareOfDifferentPixels(interactive, fresh);
     std::cout << "[ measured ] " << name << ": pixels unlike a fresh pass's " << different << "\n";
     EXPECT_LT(different, 0.002) << name << ": the kept maps' shadows are a fresh fit's";
     scene.Window->Render();
     EXPECT_EQ(RgbBytes(CaptureAsRendered(scene.Window)), fresh) << name << ": the still frame";
 
+    // A jump the kept cascades cannot hold re-renders them at once.
+    scene.Window->SetDesiredUpdateRate(15.0);
+    OrbitAndRender(scene, 60.0);
+    EXPECT_EQ(pass->GetNumberOfRenderedLayers(), pass->GetNumberOfShadowMapLayers())
+      << name << ": a jump";
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
 
     TestScene again;
-    vtkSmartPointer<vtkCascadedShadowMapPass> fitsAnew = CascadedPass(fitMode, warped);
+    vtkSmartPointer<vtkCascadedShadowMapPass> fitsAnew = CascadedPass(setting);
     fitsAnew->SetInteractiveTexelRatio(1.0);
     RenderCloserWith(again, false, fitsAnew);
     EXPECT_EQ(LayersRenderedInAnOrbit(again, fitsAnew, Frames, Degrees, true), still)
