@@ -252,16 +252,16 @@ void vtkCascadedShadowMapViews::FitCascades(const shadowmaps::ShadowFrame& frame
   light.Views.clear();
   light.CascadeDepths.clear();
   const int cascades = static_cast<int>(splits.size()) - 1;
+  const ViewFit fit = [&](const shadowmaps::ShadowFrame& in) {
+    return FitCascade(in.CameraView, in.CameraProjection, in.SceneBounds, in.Resolution,
+      light.Direction, this->FitMode, this->CascadeWarp);
+  };
   for (int c = 0; c < cascades; ++c)
   {
     const glm::dvec2 depths = shadowmaps::CascadeDepthRange(splits, c, this->BlendFraction);
     shadowmaps::ShadowFrame sub = frame;
     sub.CameraProjection =
       shadowmaps::SubFrustumProjection(frame.CameraProjection, depths.x, depths.y);
-    const ViewFit fit = [&](const shadowmaps::ShadowFrame& in) {
-      return FitCascade(in.CameraView, in.CameraProjection, in.SceneBounds, in.Resolution,
-        light.Direction, this->FitMode, this->CascadeWarp);
-    };
     // A stable cascade's texel size must depend on its depth range alone: it
     // is not fitted to a widened camera.
     const bool hasLastViews = static_cast<int>(light.LastViews.size()) == cascades;
