@@ -100,14 +100,19 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
   {
     return counts;
   }
-  // Props the camera culled since the pass switch build theirs when first drawn:
-  // the orbit once over before counting.
+  // A prop first drawn since the pass switch builds its program then: the orbit
+  // once over before counting, still and as counted (a drag's maps may take in
+  // casters that still frames' maps cull).
   view.Renderer->SetPass(technique.Pass);
   const CameraMotion orbit = Orbit(view, degrees);
-  for (int frame = 0; frame < frames + 2; ++frame)
+  for (const bool drag : { false, interactive })
   {
-    orbit(frame, frames + 2);
-    view.Window->Render();
+    const MovingCameraRenders warmUp(view.Window, drag);
+    for (int frame = 0; frame < frames + 2; ++frame)
+    {
+      orbit(frame, frames + 2);
+      view.Window->Render();
+    }
   }
   orbit(0, frames + 2);
   view.Window->Render();
