@@ -282,14 +282,19 @@ std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const L
 }
 
 // What a layer's texels depend on of its view besides what ForgetLayersIfStale
-// watches: its matrices, its light's depth (stored by light-depth maps) and the
-// scale of its post-processing (a cascade's blur follows the first cascade's
-// texels, which may change while this one's matrices stay).
-std::vector<vtkMTimeType> LayerViewBits(const ShadowLight& light, std::size_t index)
+// watches: its matrices, its light's depth (stored by light-depth maps) and,
+// where the representation's post-processing follows it, its FilterScale (a
+// cascade's blur follows the first cascade's texels, which may change while
+// this one's matrices stay).
+std::vector<vtkMTimeType> LayerViewBits(
+  const ShadowLight& light, std::size_t index, bool postProcessingFollowsFilterScale)
 {
   const LightView& view = light.Views[index];
   std::vector<vtkMTimeType> bits;
-  AppendBits(shadowmaps::FilterScale(light, index), bits);
+  if (postProcessingFollowsFilterScale)
+  {
+    AppendBits(shadowmaps::FilterScale(light, index), bits);
+  }
   AppendMatrixBits(view.View, bits);
   AppendMatrixBits(view.Projection, bits);
   const shadowmaps::LightDepth& depth = light.Depth;
@@ -1127,7 +1132,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         const std::vector<glm::dvec3> shaded = ShadedBody(r.Frame, light.Views[v], visible);
         const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
           ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
-        std::vector<vtkMTimeType> viewBits = LayerViewBits(light, v);
+        std::vector<vtkMTimeType> viewBits =
+          LayerViewBits(light, v, r.Representation->GetPostProcessingFollowsFilterScale());
         std::vector<shadowmaps::CasterStamp> stamps = StampsOf(casters);
         if (r.LayerContents[layer].Holds(viewBits, stamps, current))
         {

@@ -38,6 +38,12 @@ bool vtkShadowMapRepresentation::PostProcessMaps(
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowMapRepresentation::GetPostProcessingFollowsFilterScale() const
+{
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow*) {}
 
 //------------------------------------------------------------------------------

@@ -138,6 +138,14 @@ public:
   VTK_WRAPEXCLUDE virtual bool PostProcessMaps(vtkOpenGLRenderer* renderer,
     shadowmaps::TextureArray& maps, const std::vector<shadowmaps::RenderedLayer>& layers);
 
+  /**
+   * Whether what PostProcessMaps leaves in a layer depends on the layer's
+   * RenderedLayer::FilterScale (a blur of one world size in every cascade): the
+   * pass then re-renders a layer whose FilterScale changed although its own
+   * view did not (a tight cascade's first cascade fitted again). Default false.
+   */
+  virtual bool GetPostProcessingFollowsFilterScale() const;
+
   ///@{
   /**
    * Receiver resources: ActivateReceiverResources before the scene is drawn

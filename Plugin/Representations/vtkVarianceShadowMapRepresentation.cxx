@@ -242,6 +242,12 @@ bool vtkVarianceShadowMapRepresentation::PostProcessMaps(vtkOpenGLRenderer* rend
 }
 
 //------------------------------------------------------------------------------
+bool vtkVarianceShadowMapRepresentation::GetPostProcessingFollowsFilterScale() const
+{
+  return this->BlurRadius > 0.0;
+}
+
+//------------------------------------------------------------------------------
 void vtkVarianceShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* program)
 {
   program->SetUniformf("vtkShadowLightBleeding", static_cast<float>(this->LightBleedingReduction));

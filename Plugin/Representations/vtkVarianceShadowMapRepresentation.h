@@ -212,6 +212,8 @@ public:
   double GetFilterReachTexels() const override;
   VTK_WRAPEXCLUDE bool PostProcessMaps(vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps,
     const std::vector<shadowmaps::RenderedLayer>& layers) override;
+  /** True while BlurRadius > 0: the blur keeps one world size in every cascade. */
+  bool GetPostProcessingFollowsFilterScale() const override;
   VTK_WRAPEXCLUDE void SetReceiverUniforms(vtkShaderProgram* program) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
