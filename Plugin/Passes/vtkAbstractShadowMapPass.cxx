@@ -1124,13 +1124,18 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
       ? shadowmaps::IntersectFrustumWithBox(
           r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
       : std::vector<glm::dvec3>();
+    // While the user drags, views are kept as the camera turns
+    // (vtkShadowMapViews::InteractiveView); a layer re-rendered then takes every
+    // caster in its view, so that casters the camera brings into reach later in
+    // the drag are already drawn.
+    const bool keepsViews = r.Frame.Interactive && this->GetInteractiveTexelRatio() > 1.0;
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
       {
         const int layer = light.FirstLayer + static_cast<int>(v);
         const std::vector<glm::dvec3> shaded = ShadedBody(r.Frame, light.Views[v], visible);
-        const std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
+        std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
           ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
         std::vector<vtkMTimeType> viewBits =
           LayerViewBits(light, v, r.Representation->GetPostProcessingFollowsFilterScale());
@@ -1138,6 +1143,11 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         if (r.LayerContents[layer].Holds(viewBits, stamps, current))
         {
           continue;
+        }
+        if (keepsViews && !shaded.empty())
+        {
+          casters = CastersInView(r.Casters, light.Views[v], {}, 0.0);
+          stamps = StampsOf(casters);
         }
         const bool linearDepths =
           light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Storage.Format);
