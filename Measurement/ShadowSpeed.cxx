@@ -105,14 +105,18 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
   // casters that still frames' maps cull).
   view.Renderer->SetPass(technique.Pass);
   const CameraMotion orbit = Orbit(view, degrees);
-  for (const bool drag : { false, interactive })
-  {
-    const MovingCameraRenders warmUp(view.Window, drag);
+  const auto orbitOnce = [&](bool drag) {
+    const MovingCameraRenders renders(view.Window, drag);
     for (int frame = 0; frame < frames + 2; ++frame)
     {
       orbit(frame, frames + 2);
       view.Window->Render();
     }
+  };
+  orbitOnce(false);
+  if (interactive)
+  {
+    orbitOnce(true);
   }
   orbit(0, frames + 2);
   view.Window->Render();

@@ -35,10 +35,12 @@ public:
   /// Whether the layer still shows `view` with the `needed` casters: the same
   /// view, every needed caster drawn with its current data, and every drawn
   /// caster still among the frame's casters (`current`, SortedByProp) with the
-  /// data it was drawn with. A caster drawn but no longer needed (the camera
-  /// turned away from where its shadow falls) stays: its depths are still right,
-  /// and lie where no receiver in view looks them up (coarse mip levels of a
-  /// filtered map may still average them in, as they would had it been needed).
+  /// data it was drawn with. A caster drawn but not needed (the camera turned
+  /// away from where its shadow falls, or a layer re-rendered in a drag took
+  /// every caster in its view) stays: its depths are still right, and lie where
+  /// no receiver in view looks them up (coarse mip levels of a filtered map may
+  /// still average them in, as they would had it been needed; drags add none
+  /// to mipmapped maps). A drawn caster whose data changed re-renders the layer.
   bool Holds(const std::vector<vtkMTimeType>& view, const std::vector<CasterStamp>& needed,
     const std::vector<CasterStamp>& current) const;
 

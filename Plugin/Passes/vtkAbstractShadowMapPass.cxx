@@ -228,8 +228,6 @@ std::vector<glm::dvec3> ShadedBody(const shadowmaps::ShadowFrame& frame, const L
   return shadowmaps::IntersectFrustumWithBox(slice * frame.CameraView, frame.SceneBounds);
 }
 
-// The casters inside the view whose shadows may reach `visible`, the focus
-// body (empty: no culling by it).
 // The world-space size of the coarsest texel of `view` over `body` (the one the
 // receivers' normal offset is scaled by); infinite when it varies beyond a
 // formula (warped maps), which turns the culling off.
@@ -259,25 +257,35 @@ double ReachMargin(const ShadowLight& light, size_t index, const std::vector<glm
   return filterReachTexels * std::max(texel, first) + (normalOffsetTexels + 1.0) * texel;
 }
 
-std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const LightView& view,
-  const std::vector<glm::dvec3>& visible, double margin)
+// The casters inside the view's frustum.
+std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const LightView& view)
 {
   std::vector<const Caster*> casters;
   if (view.OutOfView)
   {
     return casters;
   }
-  const glm::dmat4 viewProjection = view.ViewProjection();
-  const auto planes = shadowmaps::FrustumPlanes(viewProjection);
-  const shadowmaps::ShadowReach reach = shadowmaps::ReachOfBody(viewProjection, visible, margin);
+  const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
   for (const auto& caster : all)
   {
-    if (FrustumMeetsBox(planes, caster.Bounds) &&
-      shadowmaps::MayShadowInto(reach, viewProjection, caster.Bounds))
+    if (FrustumMeetsBox(planes, caster.Bounds))
     {
       casters.push_back(&caster);
     }
   }
+  return casters;
+}
+
+// Those of `inView` whose shadows may reach `visible`, the focus body (empty:
+// no culling by it), looked up up to `margin` beyond it.
+std::vector<const Caster*> CastersReaching(const std::vector<const Caster*>& inView,
+  const LightView& view, const std::vector<glm::dvec3>& visible, double margin)
+{
+  const glm::dmat4 viewProjection = view.ViewProjection();
+  const shadowmaps::ShadowReach reach = shadowmaps::ReachOfBody(viewProjection, visible, margin);
+  std::vector<const Caster*> casters;
+  std::copy_if(inView.begin(), inView.end(), std::back_inserter(casters),
+    [&](const Caster* caster) { return shadowmaps::MayShadowInto(reach, viewProjection, caster->Bounds); });
   return casters;
 }
 
@@ -1124,31 +1132,32 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
       ? shadowmaps::IntersectFrustumWithBox(
           r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
       : std::vector<glm::dvec3>();
-    // While the user drags, views are kept as the camera turns
-    // (vtkShadowMapViews::InteractiveView); a layer re-rendered then takes every
-    // caster in its view, so that casters the camera brings into reach later in
-    // the drag are already drawn.
-    const bool keepsViews = r.Frame.Interactive && this->GetInteractiveTexelRatio() > 1.0;
+    // While the user drags, views stay put as the camera turns (kept by
+    // vtkShadowMapViews::InteractiveView, or snapped to a grid): a layer
+    // re-rendered then takes every caster in its view, so that casters the
+    // camera brings into reach later in the drag are already drawn. Not where
+    // InteractiveTexelRatio 1 asks drags to render as still frames do, where
+    // every layer is combined anew each frame, or where coarse mip levels would
+    // average the extra casters into what receivers see.
+    const bool drawsAllInView = r.Frame.Interactive && this->GetInteractiveTexelRatio() > 1.0 &&
+      combination == shadowmaps::Combination::None && !r.Storage.Mipmaps;
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
       {
         const int layer = light.FirstLayer + static_cast<int>(v);
         const std::vector<glm::dvec3> shaded = ShadedBody(r.Frame, light.Views[v], visible);
-        std::vector<const Caster*> casters = CastersInView(r.Casters, light.Views[v], shaded,
+        const std::vector<const Caster*> inView = CastersInView(r.Casters, light.Views[v]);
+        const std::vector<const Caster*> needed = CastersReaching(inView, light.Views[v], shaded,
           ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
         std::vector<vtkMTimeType> viewBits =
           LayerViewBits(light, v, r.Representation->GetPostProcessingFollowsFilterScale());
-        std::vector<shadowmaps::CasterStamp> stamps = StampsOf(casters);
-        if (r.LayerContents[layer].Holds(viewBits, stamps, current))
+        if (r.LayerContents[layer].Holds(viewBits, StampsOf(needed), current))
         {
           continue;
         }
-        if (keepsViews && !shaded.empty())
-        {
-          casters = CastersInView(r.Casters, light.Views[v], {}, 0.0);
-          stamps = StampsOf(casters);
-        }
+        const std::vector<const Caster*>& casters = drawsAllInView ? inView : needed;
+        std::vector<shadowmaps::CasterStamp> stamps = StampsOf(casters);
         const bool linearDepths =
           light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Storage.Format);
         const bool peeling = r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;

@@ -197,7 +197,9 @@ public:
    * Whether a view's casters are culled to those whose shadows can reach what
    * the camera sees (the casters' footprints in the view against the focus
    * body's: Plugin/Math/ShadowMapCasterReach.h); the view's frustum culls
-   * either way. Default on.
+   * either way. A layer re-rendered while the user drags takes every caster in
+   * its view (but for mipmapped maps), so that casters the turning camera
+   * brings into reach do not re-render it. Default on.
    */
   vtkSetMacro(ShadowReachCulling, bool);
   vtkGetMacro(ShadowReachCulling, bool);

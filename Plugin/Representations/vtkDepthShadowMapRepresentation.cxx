@@ -83,6 +83,12 @@ bool vtkDepthShadowMapRepresentation::GetLinearFiltering() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkDepthShadowMapRepresentation::GetPostProcessingFollowsFilterScale() const
+{
+  return false;
+}
+
+//------------------------------------------------------------------------------
 shadowmaps::DepthOffset vtkDepthShadowMapRepresentation::GetCasterDepthOffset() const
 {
   shadowmaps::DepthOffset offset;

@@ -107,6 +107,8 @@ public:
   std::string GetReceiverDefinitions() const override;
   double GetFilterReachTexels() const override;
   bool GetLinearFiltering() const override;
+  /** False: depth maps are not post-processed. */
+  bool GetPostProcessingFollowsFilterScale() const override;
   VTK_WRAPEXCLUDE shadowmaps::DepthOffset GetCasterDepthOffset() const override;
   VTK_WRAPEXCLUDE void ActivateReceiverResources(vtkOpenGLRenderWindow* window) override;
   VTK_WRAPEXCLUDE void SetReceiverUniforms(vtkShaderProgram* program) override;

@@ -40,7 +40,7 @@ bool vtkShadowMapRepresentation::PostProcessMaps(
 //------------------------------------------------------------------------------
 bool vtkShadowMapRepresentation::GetPostProcessingFollowsFilterScale() const
 {
-  return false;
+  return true;
 }
 
 //------------------------------------------------------------------------------

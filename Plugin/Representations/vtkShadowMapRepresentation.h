@@ -142,7 +142,8 @@ public:
    * Whether what PostProcessMaps leaves in a layer depends on the layer's
    * RenderedLayer::FilterScale (a blur of one world size in every cascade): the
    * pass then re-renders a layer whose FilterScale changed although its own
-   * view did not (a tight cascade's first cascade fitted again). Default false.
+   * view did not (a tight cascade's first cascade fitted again). Default true,
+   * the safe answer for a representation that post-processes its layers.
    */
   virtual bool GetPostProcessingFollowsFilterScale() const;
 

@@ -346,14 +346,35 @@ TEST(ShadowCascades, ADragKeepsLayersAsCastersComeIntoReach)
   // cascades whose reach took in new casters, and the finest cascade is
   // fitted again three times.
   EXPECT_LE(rendered, 2 * pass->GetNumberOfShadowMapLayers());
+  const int layers = pass->GetNumberOfShadowMapLayers();
+  const auto freshFrame = [&scene]() {
+    auto fresh = MakeProbedPass();
+    vtkSmartPointer<vtkRenderPass> kept = scene.Renderer->GetPass();
+    scene.Renderer->SetPass(fresh);
+    const auto frame = RgbBytes(RenderAndCapture(scene.Window));
+    scene.Renderer->SetPass(kept);
+    fresh->ReleaseGraphicsResources(scene.Window);
+    return frame;
+  };
+
   scene.Window->SetDesiredUpdateRate(0.0001);
   const auto stillFrame = RgbBytes(RenderAndCapture(scene.Window));
-  auto fresh = MakeProbedPass();
-  scene.Renderer->SetPass(fresh);
-  EXPECT_EQ(stillFrame, RgbBytes(RenderAndCapture(scene.Window)));
+  EXPECT_LT(pass->GetNumberOfRenderedLayers(), layers) << "the still frame kept dragged layers";
+  EXPECT_EQ(stillFrame, freshFrame());
+
+  // Every layer re-rendered in a drag with the camera still, then kept by the
+  // still frame: the casters beyond the reach change no pixel.
+  scene.Window->Render();
+  scene.Window->SetDesiredUpdateRate(15.0);
+  scene.Ground->Modified();
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfRenderedLayers(), layers) << "the ground is in every cascade";
+  scene.Window->SetDesiredUpdateRate(0.0001);
+  const auto keptFrame = RgbBytes(RenderAndCapture(scene.Window));
+  EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 0);
+  EXPECT_EQ(keptFrame, freshFrame());
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
-  fresh->ReleaseGraphicsResources(scene.Window);
 }
 
 TEST(ShadowCascades, BadInputClampsWithWarningsAndRenders)
