@@ -284,8 +284,9 @@ std::vector<const Caster*> CastersReaching(const std::vector<const Caster*>& inV
   const glm::dmat4 viewProjection = view.ViewProjection();
   const shadowmaps::ShadowReach reach = shadowmaps::ReachOfBody(viewProjection, visible, margin);
   std::vector<const Caster*> casters;
-  std::copy_if(inView.begin(), inView.end(), std::back_inserter(casters),
-    [&](const Caster* caster) { return shadowmaps::MayShadowInto(reach, viewProjection, caster->Bounds); });
+  std::copy_if(inView.begin(), inView.end(), std::back_inserter(casters), [&](const Caster* c) {
+    return shadowmaps::MayShadowInto(reach, viewProjection, c->Bounds);
+  });
   return casters;
 }
 
