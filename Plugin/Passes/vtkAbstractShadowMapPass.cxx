@@ -1140,7 +1140,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     // InteractiveTexelRatio 1 asks drags to render as still frames do, where
     // every layer is combined anew each frame, or where coarse mip levels would
     // average the extra casters into what receivers see.
-    const bool drawsAllInView = r.Frame.Interactive && this->GetInteractiveTexelRatio() > 1.0 &&
+    const bool drawsAllInView = this->GetViews()->MayKeepViews(r.Frame) &&
       combination == shadowmaps::Combination::None && !r.Storage.Mipmaps;
     for (const ShadowLight& light : r.Lights)
     {

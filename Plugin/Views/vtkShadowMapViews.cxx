@@ -96,10 +96,16 @@ void vtkShadowMapViews::FitUniformViews(const ShadowFrame& frame, ShadowLight& l
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowMapViews::MayKeepViews(const ShadowFrame& frame) const
+{
+  return frame.Interactive && this->InteractiveTexelRatio > 1.0;
+}
+
+//------------------------------------------------------------------------------
 LightView vtkShadowMapViews::InteractiveView(const ShadowFrame& frame, const ShadowLight& light,
   const LightView& fresh, const LightView* last, const ViewFit& fit) const
 {
-  if (!frame.Interactive || !(this->InteractiveTexelRatio > 1.0))
+  if (!this->MayKeepViews(frame))
   {
     return fresh;
   }

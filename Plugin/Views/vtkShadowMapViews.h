@@ -80,6 +80,12 @@ public:
   vtkGetMacro(InteractiveTexelRatio, double);
   ///@}
 
+  /**
+   * Whether views may be kept in `frame` (InteractiveView): an interactive
+   * frame, with InteractiveTexelRatio above 1.
+   */
+  VTK_WRAPEXCLUDE bool MayKeepViews(const shadowmaps::ShadowFrame& frame) const;
+
 protected:
   vtkShadowMapViews() = default;
   ~vtkShadowMapViews() override = default;

@@ -1,5 +1,6 @@
 #include "ShadowTestUtilities.h"
 
+#include "vtkAbstractShadowMapPass.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
@@ -178,6 +179,21 @@ vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window)
 vtkSmartPointer<vtkImageData> CaptureAsRendered(vtkRenderWindow* window)
 {
   return Capture(window, false);
+}
+
+//------------------------------------------------------------------------------
+std::vector<unsigned char> FreshPassFrame(
+  TestScene& scene, vtkSmartPointer<vtkAbstractShadowMapPass> fresh)
+{
+  vtkRenderPass* kept = scene.Renderer->GetPass();
+  kept->Register(nullptr);
+  scene.Renderer->SetPass(fresh);
+  scene.Window->Render();
+  const std::vector<unsigned char> frame = RgbBytes(CaptureAsRendered(scene.Window));
+  scene.Renderer->SetPass(kept);
+  kept->UnRegister(nullptr);
+  fresh->ReleaseGraphicsResources(scene.Window);
+  return frame;
 }
 
 namespace

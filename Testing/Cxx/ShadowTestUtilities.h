@@ -15,6 +15,7 @@
 
 #include <glm/glm.hpp>
 
+class vtkAbstractShadowMapPass;
 class vtkActor;
 class vtkAlgorithm;
 class vtkImageData;
@@ -63,6 +64,11 @@ std::vector<unsigned char> RgbBytes(vtkImageData* image);
 
 /// The frame last rendered, as RGB, without rendering again.
 vtkSmartPointer<vtkImageData> CaptureAsRendered(vtkRenderWindow* window);
+
+/// The RGB bytes of the frame `fresh` renders in place of the renderer's pass,
+/// which is then put back; `fresh` releases its graphics resources.
+std::vector<unsigned char> FreshPassFrame(
+  TestScene& scene, vtkSmartPointer<vtkAbstractShadowMapPass> fresh);
 
 /// Mean luminance (0-255) of a 3 x 3 block around the pixel where `world` is seen.
 double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);

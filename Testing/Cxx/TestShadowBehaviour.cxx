@@ -721,21 +721,6 @@ void RenderCloserWith(TestScene& scene, bool spot, vtkAbstractShadowMapPass* pas
   scene.Renderer->SetPass(pass);
   scene.Window->Render();
 }
-
-// The frame `fresh` renders in place of the renderer's pass, which is then put back.
-std::vector<unsigned char> FreshPassFrame(
-  TestScene& scene, vtkSmartPointer<vtkAbstractShadowMapPass> fresh)
-{
-  vtkRenderPass* kept = scene.Renderer->GetPass();
-  kept->Register(nullptr);
-  scene.Renderer->SetPass(fresh);
-  scene.Window->Render();
-  const std::vector<unsigned char> frame = RgbBytes(CaptureAsRendered(scene.Window));
-  scene.Renderer->SetPass(kept);
-  kept->UnRegister(nullptr);
-  fresh->ReleaseGraphicsResources(scene.Window);
-  return frame;
-}
 } // namespace
 
 TEST(ShadowBehaviour, LayersReRenderOnlyWhereTheirViewOrCastersChanged)
