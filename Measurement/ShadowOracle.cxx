@@ -10,7 +10,7 @@
 #include <vtkCompositeDataDisplayAttributes.h>
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
-#include <vtkCompositePolyDataMapper2.h>
+#include "ShadowMapVTKCompat.h"
 #include <vtkDataArray.h>
 #include <vtkDataObjectTree.h>
 #include <vtkDataObjectTreeIterator.h>
@@ -32,7 +32,7 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
-#include <embree3/rtcore.h>
+#include "ShadowOracleEmbree.h"
 
 #include <glm/glm.hpp>
 
@@ -184,7 +184,7 @@ Mesh WorldMesh(vtkPolyData* polyData, vtkMatrix4x4* matrix)
 
 using PolyDataList = std::vector<vtkSmartPointer<vtkPolyData>>;
 
-// vtkCompositePolyDataMapper2 lets a block inherit its parent's visibility and
+// The composite mapper lets a block inherit its parent's visibility and
 // opacity unless it has its own.
 void CollectVisibleLeaves(vtkDataObject* object, vtkCompositeDataDisplayAttributes* attributes,
   bool visible, double opacity, PolyDataList& leaves)
@@ -219,7 +219,7 @@ void CollectVisibleLeaves(vtkDataObject* object, vtkCompositeDataDisplayAttribut
   }
 }
 
-PolyDataList CompositeGeometry(vtkCompositePolyDataMapper2* mapper)
+PolyDataList CompositeGeometry(vtkShadowCompositeMapper* mapper)
 {
   mapper->Update();
   PolyDataList leaves;
@@ -372,7 +372,7 @@ PolyDataList GlyphGeometry(vtkGlyph3DMapper* mapper)
 
 PolyDataList MapperGeometry(vtkMapper* mapper)
 {
-  if (auto* composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper))
+  if (auto* composite = vtkShadowCompositeMapper::SafeDownCast(mapper))
   {
     return CompositeGeometry(composite);
   }
@@ -735,9 +735,7 @@ struct Oracle::Impl
     rayHit.ray.tnear = near;
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    rtcIntersect1(this->Scene.get(), &context, &rayHit);
+    shadoworacle::IntersectNearest(this->Scene.get(), rayHit);
     return rayHit;
   }
 
@@ -755,9 +753,7 @@ struct Oracle::Impl
   bool Occluded(const Ray& ray) const
   {
     RTCRay shadowRay = ToEmbree(ray);
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    rtcOccluded1(this->Scene.get(), &context, &shadowRay);
+    shadoworacle::TestOcclusion(this->Scene.get(), shadowRay);
     return shadowRay.tfar < 0.0f; // Embree sets -inf on a hit
   }
 

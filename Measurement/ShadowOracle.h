@@ -72,7 +72,7 @@ public:
    * translucent) vtkActors that cast shadows (no vtkAbstractShadowMapPass::
    * CASTS_SHADOWS() key in their property keys, or a non-zero one), each
    * placed by actor->GetMatrix(). Mappers: vtkPolyDataMapper (its input after
-   * Update), vtkCompositePolyDataMapper2 (every polydata leaf whose block is
+   * Update), the composite polydata mapper (every polydata leaf whose block is
    * visible and opaque) and vtkGlyph3DMapper (the same glyphs built by
    * vtkGlyph3D; configurations vtkGlyph3D cannot reproduce are skipped with a
    * warning on std::cerr, as are other mappers and non-actor props).

@@ -14,7 +14,7 @@
 #include <vtkRenderPass.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtk_glew.h>
+#include "ShadowMapVTKCompat.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>

@@ -1,9 +1,10 @@
 # Declares ShadowMaps::RenderingShadowMaps (included from the root CMakeLists.txt
 # when vtk_module_build() visits the module directory). The folders of Plugin/
-# are its layers: Math (pure functions of the fits), Scene (what the passes read
-# of the casters' data), Views and Representations (the two strategies of a
-# pass), OpenGL (GL objects and the shader code injected into mappers) and
-# Passes (the vtkRenderPass subclasses that coordinate them).
+# are its layers: Compat (what differs between VTK versions), Math (pure
+# functions of the fits), Scene (what the passes read of the casters' data),
+# Views and Representations (the two strategies of a pass), OpenGL (GL objects
+# and the shader code injected into mappers) and Passes (the vtkRenderPass
+# subclasses that coordinate them).
 set(shadowmaps_shaders
   vtkShadowMapsAnalysisFS
   vtkShadowMapsBlurFS
@@ -29,7 +30,7 @@ foreach (shader IN LISTS shadowmaps_shaders)
   list(APPEND shadowmaps_shader_headers "${header}")
 endforeach ()
 
-set(shadowmaps_folders Math OpenGL Passes Representations Scene Views)
+set(shadowmaps_folders Compat Math OpenGL Passes Representations Scene Views)
 
 vtk_module_add_module(ShadowMaps::RenderingShadowMaps
   CLASSES
@@ -79,6 +80,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapTextureArray.h
     Plugin/Views/ShadowMapLight.h
   PRIVATE_HEADERS
+    Plugin/Compat/ShadowMapVTKCompat.h
     Plugin/Math/ShadowMapCascades.h
     Plugin/Math/ShadowMapCasterReach.h
     Plugin/Math/ShadowMapCrop.h

@@ -11,7 +11,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsAnalysisFS.h"
 #include "vtkShadowMapsViewFS.h"
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 namespace shadowmaps
 {

@@ -7,7 +7,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsBlurFS.h"
 #include "vtkTextureUnitManager.h"
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 #include <cmath>
 

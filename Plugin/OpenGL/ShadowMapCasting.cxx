@@ -6,7 +6,7 @@
 #include "ShadowMapTrapezoid.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 #include <algorithm>
 #include <cmath>

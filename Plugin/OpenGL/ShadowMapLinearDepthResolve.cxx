@@ -9,7 +9,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsLinearDepthResolveFS.h"
 #include "vtkTextureUnitManager.h"
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 namespace shadowmaps
 {

@@ -9,7 +9,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 #include <memory>
 

@@ -7,6 +7,7 @@
 #include "vtkShadowMapsReceiverFS.h"
 
 #include <algorithm>
+#include <cctype>
 #include <functional>
 #include <sstream>
 
@@ -40,6 +41,20 @@ int InjectShadowFactor(std::string& fragmentShader, int shaderIndex, int lightIn
     }
   }
   return replaced;
+}
+
+// Whether the shader names `name` as a whole word (lightColor1, not lightColor12).
+bool NamesWord(const std::string& shader, const std::string& name)
+{
+  for (size_t at = shader.find(name); at != std::string::npos; at = shader.find(name, at + 1))
+  {
+    const size_t end = at + name.size();
+    if (end == shader.size() || !(std::isalnum(static_cast<unsigned char>(shader[end])) || shader[end] == '_'))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 const char* const UniformFlowMarker = "//VTK::ShadowMaps::UniformFlow";
@@ -113,12 +128,13 @@ void ReceiverShader::MarkInjectionPoints(std::string& fragmentShader)
 }
 
 //------------------------------------------------------------------------------
-void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
+int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
   int layers, const ReceiverCode& code, bool receives, bool facetDerivatives)
 {
   // The receiver's position is taken in the fragment shader, not the vertex
   // shader, because impostor mappers compute their true surface per fragment.
   std::ostringstream impl;
+  int unpatched = 0;
   for (int k = 0; receives && k < static_cast<int>(lights.size()); ++k)
   {
     if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, k) > 0)
@@ -126,11 +142,15 @@ void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shado
       impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor("
            << ReceiverCallArguments(lights[k], k) << ");\n";
     }
+    else if (NamesWord(fragmentShader, "lightColor" + std::to_string(lights[k].ShaderIndex)))
+    {
+      ++unpatched; // the mapper lights with it, in code this module does not know
+    }
   }
   if (impl.tellp() <= 0)
   {
     ClearMarkers(fragmentShader);
-    return;
+    return unpatched;
   }
   if (!code.AnalysisStatement.empty())
   {
@@ -155,6 +175,7 @@ void ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shado
     "  vtkShadowSetReceiverPlane(vtkShadowNormalVC);\n"
     "#endif\n" +
       impl.str());
+  return unpatched;
 }
 
 //------------------------------------------------------------------------------

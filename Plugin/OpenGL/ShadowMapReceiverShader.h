@@ -56,7 +56,10 @@ public:
   /// the surface's until the lighting (not an impostor's), so its screen
   /// derivatives, taken where VTK keeps control flow uniform, give the facet
   /// (vtkShadowSetReceiverPlane); otherwise the shading normal stands in.
-  static void Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
+  /// Returns how many receiving lights the shader lights with (it names their
+  /// lightColor) in code none of the patterns found: a VTK whose mapper
+  /// changed its lighting code; those lights cast no shadow on the prop.
+  static int Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
     int layers, const ReceiverCode& code, bool receives, bool facetDerivatives);
 
   /// A key of everything Inject's result depends on but the shader it patches.

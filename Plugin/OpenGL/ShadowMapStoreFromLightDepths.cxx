@@ -7,7 +7,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureUnitManager.h"
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 #include <algorithm>
 

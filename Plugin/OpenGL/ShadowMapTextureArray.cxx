@@ -1,7 +1,7 @@
 #include "ShadowMapTextureArray.h"
 
 #include "vtkOpenGLState.h"
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 #include <algorithm>
 #include <sstream>

@@ -45,7 +45,7 @@
 #include "vtkVolume.h"
 
 #include <glm/gtc/matrix_transform.hpp>
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 #include <algorithm>
 #include <array>
@@ -1496,8 +1496,15 @@ shadowmaps::CasterBranch vtkAbstractShadowMapPass::InjectShadowCode(std::string&
   {
     shadowmaps::CasterShader::RouteCameraParallel(*stage);
   }
-  shadowmaps::ReceiverShader::Inject(fragmentShader, r.Lights, this->NumberOfShadowMapLayers,
-    r.Code, receives, branch == shadowmaps::CasterBranch::DepthOnly);
+  const int unpatched = shadowmaps::ReceiverShader::Inject(fragmentShader, r.Lights,
+    this->NumberOfShadowMapLayers, r.Code, receives, branch == shadowmaps::CasterBranch::DepthOnly);
+  if (unpatched > 0 && this->NumberOfUnpatchedReceiverLights == 0)
+  {
+    vtkWarningMacro(<< "This VTK's mapper lights " << unpatched
+                    << " shadowed light(s) in shader code this pass does not know how to patch: "
+                       "they cast no shadow on that prop (reported once).");
+  }
+  this->NumberOfUnpatchedReceiverLights += unpatched;
   return branch;
 }
 
@@ -1618,5 +1625,6 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCasterDraws: " << this->NumberOfCasterDraws << "\n";
   os << indent << "NumberOfRenderedLayers: " << this->NumberOfRenderedLayers << "\n";
   os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";
+  os << indent << "NumberOfUnpatchedReceiverLights: " << this->NumberOfUnpatchedReceiverLights << "\n";
   os << indent << "NumberOfCasterPassesPerLayer: " << this->NumberOfCasterPassesPerLayer << "\n";
 }

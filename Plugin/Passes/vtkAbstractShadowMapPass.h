@@ -324,6 +324,14 @@ public:
   ///@}
 
   /**
+   * Lights in receivers' shaders built so far that the mapper lit in code the
+   * pass could not patch (a VTK version whose lighting code it does not know):
+   * those lights cast no shadow on those props, and the pass warns once. 0 on
+   * every VTK this module is tested with.
+   */
+  vtkGetMacro(NumberOfUnpatchedReceiverLights, int);
+
+  /**
    * Caster passes per map layer in the last map update: 2 when the
    * representation stores two surfaces' depths made by depth peeling (chosen,
    * or picked by SecondDepthMethod::Auto because a caster is open), else 1.
@@ -377,6 +385,7 @@ protected:
   int NumberOfShaderBuilds = 0;
   int NumberOfDepthOnlyCasterShaders = 0;
   int NumberOfOwnFragmentCasterShaders = 0;
+  int NumberOfUnpatchedReceiverLights = 0;
   int NumberOfCasterPassesPerLayer = 1;
 
 private:

@@ -9,7 +9,7 @@
 
 #include "vtkActor.h"
 #include "vtkCellArray.h"
-#include "vtkCompositePolyDataMapper2.h"
+#include "ShadowMapVTKCompat.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkOpenGLSphereMapper.h"
@@ -294,7 +294,7 @@ TEST(ShadowDefects, CompositeGlyphAndImpostorMappers)
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetNumberOfBlocks(1);
   blocks->SetBlock(0, blockSphere->GetOutput());
-  vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+  vtkNew<vtkShadowCompositeMapper> compositeMapper;
   compositeMapper->SetInputDataObject(blocks);
   vtkNew<vtkActor> composite;
   composite->SetMapper(compositeMapper);

@@ -10,7 +10,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataDisplayAttributes.h"
-#include "vtkCompositePolyDataMapper2.h"
+#include "ShadowMapVTKCompat.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -591,7 +591,7 @@ TEST(ShadowOracle, BuildTakesCompositeBlocksGlyphsAndTransformsOnly)
   blocks->SetBlock(1, cube->GetOutput());
   vtkNew<vtkCompositeDataDisplayAttributes> attributes;
   attributes->SetBlockVisibility(cube->GetOutput(), false);
-  vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+  vtkNew<vtkShadowCompositeMapper> compositeMapper;
   compositeMapper->SetInputDataObject(blocks);
   compositeMapper->SetCompositeDataDisplayAttributes(attributes);
   vtkNew<vtkActor> compositeActor;

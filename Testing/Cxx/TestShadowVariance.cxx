@@ -13,7 +13,7 @@
 #include "vtkImageData.h"
 #include "vtkShaderProgram.h"
 #include "vtkSphereSource.h"
-#include "vtk_glew.h"
+#include "ShadowMapVTKCompat.h"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,9 @@
 #include "ShadowTestUtilities.h"
 
 #include "vtkImageData.h"
-#include "vtkRegressionTestImage.h"
+#include "vtkNew.h"
 #include "vtkRenderPass.h"
+#include "vtkTesting.h"
 
 #include <iostream>
 #include <string>
@@ -17,9 +18,9 @@ namespace shadowregression
 {
 /// Renders `scene` through `pass` and returns the test's exit code: failure
 /// when a VTK error was reported, the ground at `shadowed` is not dark, the
-/// ground at `lit` is not lit, the frame differs from
-/// Testing/Data/Baseline/<name>.png by more than 1/255 anywhere, or VTK's
-/// vtkRegressionTestImageThreshold (given the same baseline with -V) fails.
+/// ground at `lit` is not lit, the frame differs from its baseline
+/// (shadowtest::BaselinePath) by more than 1/255 anywhere, or VTK's own
+/// regression test against the same baseline fails.
 inline int RenderAndCheck(int argc, char* argv[], shadowtest::TestScene& scene, vtkRenderPass* pass,
   const std::string& name, const glm::dvec3& shadowed, const glm::dvec3& lit)
 {
@@ -40,11 +41,20 @@ inline int RenderAndCheck(int argc, char* argv[], shadowtest::TestScene& scene, 
     std::cerr << name << ": " << difference << "\n";
     ok = false;
   }
-  // VTK's comparison (its own, tolerant metric) on the same frame and baseline.
-  const int vtkResult = vtkRegressionTestImageThreshold(scene.Window.Get(), 0.05);
+  // VTK's comparison (its own, tolerant metric) on the same frame and baseline:
+  // vtkRegressionTestImageThreshold's, with the baseline of this VTK version
+  // in place of the -V argument's.
+  vtkNew<vtkTesting> testing;
+  for (int i = 0; i < argc; ++i)
+  {
+    testing->AddArgument(argv[i]);
+  }
+  testing->SetValidImageFileName(shadowtest::BaselinePath(name).c_str());
+  testing->SetRenderWindow(scene.Window);
+  const int vtkResult = testing->RegressionTest(0.05);
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
-  return ok && vtkResult == vtkRegressionTester::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ok && vtkResult == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 } // namespace shadowregression
 

@@ -1,0 +1,31 @@
+// What differs between the VTK versions the module builds against (9.1 to 9.6)
+// at the level of C++ headers, so that no other file names a VTK version; the
+// CMake side is CMake/ShadowMapsVTKCompat.cmake.
+//
+// - The OpenGL loader: VTK 9.4 replaced GLEW (vtk_glew.h, VTK::glew) with glad
+//   (vtk_glad.h, VTK::glad). Both declare the GL core API the module calls.
+// - The composite polydata mapper (used by the oracle and the tests, not the
+//   module): VTK 9.3 rewrote vtkCompositePolyDataMapper (RenderingCore) to do
+//   what vtkCompositePolyDataMapper2 (RenderingOpenGL2) did, deprecated the
+//   latter and 9.5 removed it. vtkShadowCompositeMapper names whichever draws
+//   composite data with per-block display attributes.
+#ifndef ShadowMapVTKCompat_h
+#define ShadowMapVTKCompat_h
+
+#include "vtkVersionMacros.h"
+
+#if __has_include("vtk_glad.h")
+#include "vtk_glad.h" // IWYU pragma: export
+#else
+#include "vtk_glew.h" // IWYU pragma: export
+#endif
+
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositePolyDataMapper.h" // IWYU pragma: export
+using vtkShadowCompositeMapper = vtkCompositePolyDataMapper;
+#else
+#include "vtkCompositePolyDataMapper2.h" // IWYU pragma: export
+using vtkShadowCompositeMapper = vtkCompositePolyDataMapper2;
+#endif
+
+#endif
