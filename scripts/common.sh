@@ -2,7 +2,15 @@
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
+# SHADOWMAPS_STACK: host (the machine's own Debian 12), trixie or sid
+# (scripts/stacks.sh); scripts/test.sh without it tests all three.
+STACK="${SHADOWMAPS_STACK:-host}"
+if [ "$STACK" = host ]; then
+  BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
+else
+  BUILD_DIR="${BUILD_DIR:-$ROOT/build-$STACK}"
+fi
+source "$ROOT/scripts/stacks.sh"
 
 PACKAGES=(
   cmake ninja-build g++ pkg-config git
@@ -36,10 +44,20 @@ install_missing_packages() {
 
 configure_and_build() {
   # Debian's VTK Python bindings belong to /usr/bin/python3; another python3 on
-  # PATH may lack them.
+  # PATH may lack them. VTK_DIR=... builds against a VTK of one's own.
   cmake -S "$ROOT" -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DPython3_EXECUTABLE=/usr/bin/python3
+    -DPython3_EXECUTABLE=/usr/bin/python3 ${VTK_DIR:+"-DVTK_DIR=$VTK_DIR"}
   cmake --build "$BUILD_DIR"
+}
+
+# Re-runs the calling script inside the root of SHADOWMAPS_STACK (trixie or
+# sid), made first if missing or stale; returns on the host stack.
+#   run_in_stack_if_asked "$0" "$@"
+run_in_stack_if_asked() {
+  [ "$STACK" = host ] || [ "${SHADOWMAPS_IN_STACK:-0}" = 1 ] && return 0
+  ensure_stack "$STACK" || { stack_unavailable "$STACK"; exit "$STACK_UNAVAILABLE"; }
+  in_stack "$STACK" bash "$@"
+  exit $?
 }
 
 # Debian's VTK is X-only. -noreset: Xvfb otherwise resets whenever its last

@@ -36,6 +36,7 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkDualDepthPeelingPass.h"
 #include "vtkShadowMapExchange.h"
 #include "vtkShadowMapRepresentation.h"
 #include "vtkShadowMapViews.h"
@@ -354,6 +355,32 @@ struct vtkAbstractShadowMapPass::Internals
   vtkNew<vtkCamera> LightCamera;
   vtkNew<vtkMatrix4x4> LightProjection;
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
+  vtkNew<vtkDualDepthPeelingPass> DepthPeeling;
+  vtkSmartPointer<vtkRenderPass> BlendedTranslucency;
+
+  // The default delegate draws translucent geometry as the renderer does
+  // without a pass: depth-peeled when the renderer asks for it
+  // (UseDepthPeeling, with its peel count and occlusion ratio), else blended
+  // in one draw.
+  void FollowRendererTranslucency(vtkRenderer* renderer)
+  {
+    if (!this->BlendedTranslucency)
+    {
+      this->BlendedTranslucency = this->DefaultDelegate->GetTranslucentPass();
+      this->DepthPeeling->SetTranslucentPass(this->BlendedTranslucency);
+    }
+    vtkRenderPass* wanted = this->BlendedTranslucency;
+    if (renderer->GetUseDepthPeeling())
+    {
+      this->DepthPeeling->SetMaximumNumberOfPeels(renderer->GetMaximumNumberOfPeels());
+      this->DepthPeeling->SetOcclusionRatio(renderer->GetOcclusionRatio());
+      wanted = this->DepthPeeling;
+    }
+    if (this->DefaultDelegate->GetTranslucentPass() != wanted)
+    {
+      this->DefaultDelegate->SetTranslucentPass(wanted);
+    }
+  }
   shadowmaps::MapView MapView;
   shadowmaps::LinearDepthResolve LinearDepths;
   // Light depths of value maps, while the processes' maps are combined.
@@ -519,6 +546,10 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   Internals& r = *this->Internal;
   this->NumberOfRenderedLayers = 0;
   r.Active = false;
+  if (renderer && !this->DelegatePass)
+  {
+    r.FollowRendererTranslucency(renderer);
+  }
   if (renderer && renderer->GetSelector())
   {
     // A hardware selection pass: ids, not light. The maps stay as they are.
@@ -1591,6 +1622,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   r.CastSinceSceneDraw.clear();
   r.OpaquePass->ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
+  r.DepthPeeling->ReleaseGraphicsResources(window);
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(window);

@@ -12,12 +12,15 @@
 
 It replaces ``plotter.enable_shadows()`` (VTK's vtkShadowMapPass) and keeps
 PyVista's own chain of render passes: the shadow pass takes the place of the
-vtkRenderStepsPass inside PyVista's camera pass, so anti-aliasing (SSAA,
-FXAA), SSAO, eye-dome lighting, depth of field and depth peeling all still
-apply to the shadowed image. Tested with PyVista 0.44 and 0.49.
+vtkRenderStepsPass inside PyVista's camera pass (and draws the scene with a
+steps pass of its own, which peels translucent geometry when the renderer
+asks for depth peeling), so anti-aliasing (SSAA, FXAA), SSAO, eye-dome
+lighting, depth of field and depth peeling all still apply to the shadowed
+image. Tested with PyVista 0.44 and 0.49.
 """
 
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
 from . import vtkRenderingShadowMaps as _module
 
@@ -95,7 +98,6 @@ def enable_shadows(plotter, technique="cascaded", **settings):
         raise RuntimeError(
             "PyVista's pass collection does not hold the one vtkRenderStepsPass expected")
     collection.RemoveItem(steps[0])
-    shadow_pass.SetDelegatePass(steps[0])
     collection.AddItem(shadow_pass)
     # PyVista keeps its chain of passes on the renderer while it has a shadow
     # pass, and releases that pass's GL objects when the renderer closes.
@@ -113,7 +115,7 @@ def disable_shadows(plotter):
         return
     collection = passes._pass_collection
     collection.RemoveItem(shadow_pass)
-    collection.AddItem(shadow_pass.GetDelegatePass())
+    collection.AddItem(vtkRenderStepsPass())  # as PyVista makes its chain
     render_window = renderer.GetRenderWindow()
     if render_window is not None:
         shadow_pass.ReleaseGraphicsResources(render_window)

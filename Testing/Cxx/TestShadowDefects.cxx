@@ -190,6 +190,49 @@ TEST(ShadowDefects, TranslucentGeometryKept)
   EXPECT_GT(rgb[1], 20) << "and what is behind it still shows through";
 }
 
+// A renderer that asks for depth peeling gets it with the pass as without one:
+// the pass's own steps pass peels overlapping translucent layers.
+TEST(ShadowDefects, DepthPeelingStillPeels)
+{
+  auto frame = [](bool peel, bool shadows) {
+    TestScene scene;
+    scene.SetSun(SunDirection);
+    const glm::dvec3 colors[] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    for (int i = 0; i < 3; ++i)
+    {
+      vtkNew<vtkSphereSource> ball;
+      ball->SetCenter(-3.0 + 0.6 * i, -3.0, 1.0 + 0.4 * i);
+      ball->SetRadius(1.2);
+      auto actor = AddSourceActor(scene.Renderer, ball);
+      actor->GetProperty()->SetColor(colors[i].x, colors[i].y, colors[i].z);
+      actor->GetProperty()->SetOpacity(0.5);
+    }
+    scene.Renderer->SetUseDepthPeeling(peel);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    if (shadows)
+    {
+      scene.Renderer->SetPass(pass);
+    }
+    auto image = RenderAndCapture(scene.Window);
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
+    return RgbBytes(image);
+  };
+  auto changed = [](const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
+    int count = 0;
+    for (size_t i = 0; i + 2 < a.size(); i += 3)
+    {
+      count += std::abs(a[i] - b[i]) + std::abs(a[i + 1] - b[i + 1]) + std::abs(a[i + 2] - b[i + 2]) > 6;
+    }
+    return count;
+  };
+  const int withoutPass = changed(frame(false, false), frame(true, false));
+  const int withPass = changed(frame(false, true), frame(true, true));
+  EXPECT_GT(withoutPass, 100);
+  EXPECT_GT(withPass, withoutPass / 2) << withPass << " pixels peeled with the pass, "
+                                       << withoutPass << " without";
+}
+
 // Defect 6: empty texels are far, not occluders, whatever the background.
 TEST(ShadowDefects, BackgroundIsNotAnOccluder)
 {

@@ -124,11 +124,38 @@ def with_pyvista_passes():
             # 255 on trixie and sid): only its place in the chain is checked.
             plotter.close()
             continue
-        if name != "depth peeling":  # an opaque scene: nothing for it to change
+        if name != "depth peeling":  # see translucent_layers_are_peeled
             check(not np.array_equal(image, alone), f"{name}: changes the frame")
         check(shadowed(under, open_ground),
               f"{name}: under the sphere {under:.0f}, open ground {open_ground:.0f}")
         plotter.close()
+
+
+def translucent_frame(peel, shadows):
+    plotter = pv.Plotter(off_screen=True, window_size=SIZE)
+    for i, color in enumerate(["red", "green", "blue"]):
+        plotter.add_mesh(pv.Sphere(center=(0.4 * i, 0, 0.3 * i)), color=color, opacity=0.5)
+    plotter.add_mesh(pv.Plane(i_size=10, j_size=10, center=(0, 0, -1)))
+    if peel:
+        plotter.enable_depth_peeling()
+    if shadows:
+        enable_shadows(plotter, "uniform")
+    image = plotter.screenshot(return_img=True).astype(int)
+    plotter.close()
+    return image
+
+
+def changed_pixels(a, b):
+    return int((np.abs(a - b).max(axis=2) > 2).sum())
+
+
+def translucent_layers_are_peeled():
+    """Depth peeling changes overlapping translucent spheres with the shadows
+    as it does without them (the pass's own steps pass follows the flag)."""
+    plain = changed_pixels(translucent_frame(False, False), translucent_frame(True, False))
+    ours = changed_pixels(translucent_frame(False, True), translucent_frame(True, True))
+    check(plain > 100 and ours > 0.5 * plain,
+          f"depth peeling changes {ours} pixels with the shadows, {plain} without")
 
 
 def replaces_vtk_shadows():
@@ -177,6 +204,7 @@ os.makedirs(OUTPUT, exist_ok=True)
 print(f"PyVista {pv.__version__}")
 every_technique()
 with_pyvista_passes()
+translucent_layers_are_peeled()
 replaces_vtk_shadows()
 toggles()
 print(f"{len(failures)} failed")

@@ -1,0 +1,159 @@
+# The Debian stacks the module is built and tested on besides the machine's own
+# (sourced by scripts/common.sh). Each is a debootstrap root from Debian's
+# registry, cached outside the clone and made again when missing or stale:
+#
+#   host     the machine itself: Debian 12, VTK 9.1, ParaView 5.11
+#   trixie   Debian 13: VTK 9.3, ParaView 5.13, PyVista 0.44
+#   sid      Debian unstable: VTK 9.6, ParaView 6.1, PyVista 0.49
+#
+# A root holds the packages of every step that runs in it (build, tests,
+# ParaView, PyVista); the repository is bind-mounted at its own path inside, so
+# a stack's build folder (build-<stack>) works from either side.
+
+STACK_CACHE="${SHADOWMAPS_STACK_CACHE:-/var/cache/vtkshadowmaps/stacks}"
+STACK_MIRROR="${SHADOWMAPS_STACK_MIRROR:-http://deb.debian.org/debian}"
+# A root older than this is made again (its suite has moved on).
+STACK_MAX_AGE_DAYS="${SHADOWMAPS_STACK_MAX_AGE_DAYS:-30}"
+# The exit status of a step that failed because Debian's archive could not
+# serve a root (not the project's failure).
+STACK_UNAVAILABLE=75
+
+# The packages inside a root: the module's build and tests, then the ParaView
+# plugin's and PyVista's. In trixie, as on the host, python3-paraview conflicts
+# with python3-vtk9, so scripts/paraview.sh swaps them there too.
+stack_packages() {
+  local packages=(
+    cmake ninja-build g++ pkg-config git ca-certificates
+    libvtk9-dev python3-vtk9 python3-dev
+    libglm-dev libopenimageio-dev openimageio-tools python3-imath
+    libgtest-dev libembree-dev assimp-testmodels
+    xvfb xauth libgl1-mesa-dri
+    paraview paraview-dev openmpi-bin libprotobuf-dev
+    python3-pyvista)
+  [ "$1" = sid ] && packages+=(python3-paraview)
+  printf '%s\n' "${packages[@]}"
+}
+
+stack_root() { echo "$STACK_CACHE/$1"; }
+
+# What a root was made from: a root whose stamp differs is stale.
+stack_stamp() {
+  { echo "suite $1"; echo "mirror $STACK_MIRROR"; stack_packages "$1"; } | sha256sum | cut -c1-16
+}
+
+stack_is_fresh() {
+  local root
+  root="$(stack_root "$1")"
+  [ -f "$root/.shadowmaps-stamp" ] &&
+    [ "$(cat "$root/.shadowmaps-stamp")" = "$(stack_stamp "$1")" ] &&
+    [ -z "$(find "$root/.shadowmaps-stamp" -mtime +"$STACK_MAX_AGE_DAYS")" ]
+}
+
+# Makes the root of a stack unless a fresh one is cached. Returns
+# STACK_UNAVAILABLE when Debian's archive cannot serve it.
+ensure_stack() {
+  local name="$1" root building
+  root="$(stack_root "$name")"
+  stack_is_fresh "$name" && return 0
+  command -v debootstrap >/dev/null || install_missing_packages debootstrap
+  building="$root.building"
+  SECONDS=0
+  echo "Making the $name root in $root (debootstrap, then $(stack_packages "$name" | wc -l) packages)"
+  rm -rf "$building"
+  mkdir -p "$STACK_CACHE"
+  if ! debootstrap --variant=minbase "$name" "$building" "$STACK_MIRROR" > "$building.log" 2>&1; then
+    tail -20 "$building.log"
+    return "$STACK_UNAVAILABLE"
+  fi
+  # sid's snapshot has an expired Release file; apt inside the root (here and
+  # in scripts/paraview.sh) must accept it.
+  echo 'Acquire::Check-Valid-Until "false";' > "$building/etc/apt/apt.conf.d/99shadowmaps-snapshot"
+  local status=0
+  { chroot_with_mounts "$building" apt-get update -qq &&
+    chroot_with_mounts "$building" env DEBIAN_FRONTEND=noninteractive apt-get \
+      -y -qq --no-install-recommends install $(stack_packages "$name"); } >> "$building.log" 2>&1 ||
+    status=$?
+  if [ "$status" -ne 0 ]; then
+    tail -20 "$building.log"
+    return "$STACK_UNAVAILABLE"
+  fi
+  stack_stamp "$name" > "$building/.shadowmaps-stamp"
+  rm -rf "$root"
+  mv "$building" "$root"
+  echo "Made the $name root in $SECONDS s"
+}
+
+# Runs a command chrooted into a root, with /proc, /sys (MPI's transports and
+# hwloc read it), /dev, a fresh /tmp and the repository (at its own path)
+# mounted in a mount namespace of its own: the mounts end with the command, and
+# two commands in one root do not unmount each other's.
+#   chroot_with_mounts ROOT COMMAND...
+chroot_with_mounts() {
+  local root="$1"
+  shift
+  mkdir -p "$root$ROOT"
+  unshare --mount --propagation private bash -c '
+    root="$1" repository="$2"
+    shift 2
+    mount -t proc proc "$root/proc" &&
+      mount --rbind /sys "$root/sys" &&
+      mount --rbind /dev "$root/dev" &&
+      mount -t tmpfs tmpfs "$root/tmp" &&
+      mount --bind "$repository" "$root$repository" || exit 1
+    exec chroot "$root" "$@"' chroot_with_mounts "$root" "$ROOT" "$@"
+}
+
+# Runs a command inside a stack's root, in the repository, as the same script
+# would run on the host: in_stack sid bash scripts/test_stack.sh
+in_stack() {
+  local name="$1"
+  shift
+  chroot_with_mounts "$(stack_root "$name")" \
+    env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+    HOME=/root LANG=C.UTF-8 CI="${CI:-}" SHADOWMAPS_STACK="$name" SHADOWMAPS_IN_STACK=1 \
+    SHADOWMAPS_UPDATE_BASELINES="${SHADOWMAPS_UPDATE_BASELINES:-}" \
+    SHADOWMAPS_SKIP_PARAVIEW="${SHADOWMAPS_SKIP_PARAVIEW:-}" \
+    bash -c 'cd "$0" && exec "$@"' "$ROOT" "$@"
+}
+
+# Where each stack's tests leave their row of the matrix (scripts/test_stack.sh).
+MATRIX_DIR="${SHADOWMAPS_MATRIX_DIR:-$ROOT/build-matrix}"
+
+stack_unavailable() {
+  cat <<MESSAGE >&2
+
+!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!
+!!! STACK $1 UNAVAILABLE: Debian's archive could not serve its root (see
+!!! $(stack_root "$1").building.log). This is not a failure of the project's;
+!!! its tests did not run on $1.
+!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!
+
+MESSAGE
+}
+
+# Prints the matrix of the given stacks and a closing "N passed, N failed"
+# line; fails when a stack failed a test or left no row.
+print_matrix() {
+  local stack row passed=0 failed=0 status=0
+  local name vtk paraview pyvista stack_passed stack_failed notes
+  echo
+  printf '%-8s %-8s %-10s %-8s %7s %7s  %s\n' stack VTK ParaView PyVista passed failed notes
+  for stack in "$@"; do
+    row="$MATRIX_DIR/$stack.row"
+    if [ ! -f "$row" ]; then
+      printf '%-8s %-8s %-10s %-8s %7s %7s  %s\n' "$stack" - - - 0 1 "no result"
+      failed=$((failed + 1))
+      status=1
+      continue
+    fi
+    IFS=$'\t' read -r name vtk paraview pyvista stack_passed stack_failed notes < "$row"
+    printf '%-8s %-8s %-10s %-8s %7s %7s  %s\n' "$name" "$vtk" "$paraview" "$pyvista" \
+      "$stack_passed" "$stack_failed" "$notes"
+    passed=$((passed + stack_passed))
+    failed=$((failed + stack_failed))
+    [ "$stack_failed" -eq 0 ] || status=1
+  done
+  echo
+  echo "matrix: $passed passed, $failed failed"
+  return "$status"
+}
