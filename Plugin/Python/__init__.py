@@ -1,5 +1,41 @@
-"""Shadow-map render passes for VTK: ``renderer.SetPass(vtkshadowmaps.vtkWarpedShadowMapPass())``."""
+"""Shadow-map render passes for VTK: ``renderer.SetPass(vtkshadowmaps.vtkWarpedShadowMapPass())``,
+or by a technique's name: ``renderer.SetPass(vtkshadowmaps.make_pass("cascaded"))``."""
 # The base classes live in VTK's own modules; load them before ours.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 from .vtkRenderingShadowMaps import *  # noqa: F401,F403
+from .vtkRenderingShadowMaps import (vtkCascadedShadowMapPass, vtkDepthShadowMapPass,
+                                     vtkDualDepthShadowMapPass, vtkVarianceShadowMapPass,
+                                     vtkWarpedShadowMapPass)
+
+# A technique's name -> (the pass's class, its warp mode or None).
+TECHNIQUES = {
+    "uniform": (vtkWarpedShadowMapPass, "Uniform"),
+    "psm": (vtkWarpedShadowMapPass, "PSM"),
+    "lispsm": (vtkWarpedShadowMapPass, "LiSPSM"),
+    "tsm": (vtkWarpedShadowMapPass, "TSM"),
+    "gmnpr": (vtkWarpedShadowMapPass, "GMNPR"),
+    "cascaded": (vtkCascadedShadowMapPass, None),
+    "depth": (vtkDepthShadowMapPass, None),
+    "dual-depth": (vtkDualDepthShadowMapPass, None),
+    "variance": (vtkVarianceShadowMapPass, None),
+}
+
+
+def make_pass(technique="cascaded", **settings):
+    """The shadow pass of a technique (a key of TECHNIQUES), its settings given
+    as snake_case names of its setters: ``resolution=2048`` calls
+    ``SetResolution(2048)``."""
+    if technique not in TECHNIQUES:
+        raise ValueError(
+            f"unknown shadow technique {technique!r}; one of {', '.join(TECHNIQUES)}")
+    pass_class, warp_mode = TECHNIQUES[technique]
+    shadow_pass = pass_class()
+    if warp_mode is not None:
+        getattr(shadow_pass, "SetWarpModeTo" + warp_mode)()
+    for name, value in settings.items():
+        setter = "Set" + "".join(word[:1].upper() + word[1:] for word in name.split("_"))
+        if not hasattr(shadow_pass, setter):
+            raise ValueError(f"{pass_class.__name__} has no {setter} (from {name!r})")
+        getattr(shadow_pass, setter)(value)
+    return shadow_pass

@@ -22,39 +22,8 @@ image. Tested with PyVista 0.44 and 0.49.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
+from . import TECHNIQUES, make_pass  # noqa: F401 (TECHNIQUES: the names enable_shadows takes)
 from . import vtkRenderingShadowMaps as _module
-
-# A technique's name -> (the pass's class, its warp mode or None).
-TECHNIQUES = {
-    "uniform": (_module.vtkWarpedShadowMapPass, "Uniform"),
-    "psm": (_module.vtkWarpedShadowMapPass, "PSM"),
-    "lispsm": (_module.vtkWarpedShadowMapPass, "LiSPSM"),
-    "tsm": (_module.vtkWarpedShadowMapPass, "TSM"),
-    "gmnpr": (_module.vtkWarpedShadowMapPass, "GMNPR"),
-    "cascaded": (_module.vtkCascadedShadowMapPass, None),
-    "depth": (_module.vtkDepthShadowMapPass, None),
-    "dual-depth": (_module.vtkDualDepthShadowMapPass, None),
-    "variance": (_module.vtkVarianceShadowMapPass, None),
-}
-
-
-def make_pass(technique="cascaded", **settings):
-    """The shadow pass of a technique (a key of TECHNIQUES), its settings given
-    as snake_case names of its setters: ``resolution=2048`` calls
-    ``SetResolution(2048)``."""
-    if technique not in TECHNIQUES:
-        raise ValueError(
-            f"unknown shadow technique {technique!r}; one of {', '.join(TECHNIQUES)}")
-    pass_class, warp_mode = TECHNIQUES[technique]
-    shadow_pass = pass_class()
-    if warp_mode is not None:
-        getattr(shadow_pass, "SetWarpModeTo" + warp_mode)()
-    for name, value in settings.items():
-        setter = "Set" + "".join(word[:1].upper() + word[1:] for word in name.split("_"))
-        if not hasattr(shadow_pass, setter):
-            raise ValueError(f"{pass_class.__name__} has no {setter} (from {name!r})")
-        getattr(shadow_pass, setter)(value)
-    return shadow_pass
 
 
 def _render_passes(plotter):

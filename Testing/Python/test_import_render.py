@@ -126,8 +126,50 @@ def main(output_dir):
           f"sphere top {sphere_top:.1f}")
     assert under < 80 and open_ground > 120 and sphere_top > 120
     assert variance.GetMoments() == vtkshadowmaps.vtkVarianceShadowMapPass.MSM
+    every_technique_light_and_shading(renderer, window, grab, sphere, light)
     print(f"imported {vtkshadowmaps.__file__}")
-    print("4 passed, 0 failed")
+    print("5 passed, 0 failed")
+
+
+LAMP = (-1.0, 0.5, 6.0)
+# Where the sphere's centre (0, 0, 1.5) casts its shadow from the lamp.
+UNDER_THE_SPHERE_FROM_LAMP = (1.0 / 3.0, -0.5 / 3.0, 0.0)
+
+
+def every_technique_light_and_shading(renderer, window, grab, sphere, light):
+    """vtkshadowmaps.make_pass's every technique shades its shadow with a sun,
+    a spot and a point light, on Phong and on PBR surfaces."""
+    actors = renderer.GetActors()
+    failures = []
+    for pbr in (False, True):
+        actors.InitTraversal()
+        for _ in range(actors.GetNumberOfItems()):
+            prop = actors.GetNextActor().GetProperty()
+            if pbr:
+                prop.SetInterpolationToPBR()
+                prop.SetRoughness(0.8)
+                prop.SetMetallic(0.0)
+            else:
+                prop.SetInterpolationToGouraud()
+        for kind in ("sun", "spot", "point"):
+            light.SetPositional(kind != "sun")
+            light.SetPosition(*((0, 0, 1) if kind == "sun" else LAMP))
+            light.SetConeAngle(45.0 if kind == "spot" else 180.0)
+            shadowed = UNDER_THE_SPHERE if kind == "sun" else UNDER_THE_SPHERE_FROM_LAMP
+            for technique in vtkshadowmaps.TECHNIQUES:
+                shadow_pass = vtkshadowmaps.make_pass(technique)
+                _, (under, open_ground) = render_with(
+                    renderer, window, grab, shadow_pass, shadowed, OPEN_GROUND)
+                renderer.SetPass(None)
+                shadow_pass.ReleaseGraphicsResources(window)
+                if not (open_ground > 60 and under < 0.5 * open_ground):
+                    failures.append(f"{technique}, {kind}, {'PBR' if pbr else 'Phong'}: "
+                                    f"under the sphere {under:.0f}, open ground {open_ground:.0f}")
+    light.SetPositional(False)
+    light.SetPosition(0, 0, 1)
+    count = 2 * 3 * len(vtkshadowmaps.TECHNIQUES)
+    print(f"{count - len(failures)} of {count} technique x light x shading cases shade their shadow")
+    assert not failures, "\n".join(failures)
 
 
 if __name__ == "__main__":
