@@ -46,8 +46,8 @@ configure_and_build() {
   # Debian's VTK Python bindings belong to /usr/bin/python3; another python3 on
   # PATH may lack them. VTK_DIR=... builds against a VTK of one's own.
   cmake -S "$ROOT" -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DPython3_EXECUTABLE=/usr/bin/python3 ${VTK_DIR:+"-DVTK_DIR=$VTK_DIR"}
-  cmake --build "$BUILD_DIR"
+    -DPython3_EXECUTABLE=/usr/bin/python3 ${VTK_DIR:+"-DVTK_DIR=$VTK_DIR"} &&
+    cmake --build "$BUILD_DIR"
 }
 
 # Re-runs the calling script inside the root of SHADOWMAPS_STACK (trixie or
@@ -55,8 +55,12 @@ configure_and_build() {
 #   run_in_stack_if_asked "$0" "$@"
 run_in_stack_if_asked() {
   [ "$STACK" = host ] || [ "${SHADOWMAPS_IN_STACK:-0}" = 1 ] && return 0
-  ensure_stack "$STACK" || { stack_unavailable "$STACK"; exit "$STACK_UNAVAILABLE"; }
-  in_stack "$STACK" bash "$@"
+  local status=0
+  ensure_stack "$STACK" || status=$?
+  [ "$status" -ne "$STACK_UNAVAILABLE" ] || stack_unavailable "$STACK"
+  [ "$status" -eq 0 ] || exit "$status"
+  # The repository is at its own path in the root.
+  in_stack "$STACK" bash "$ROOT/scripts/$(basename "$1")" "${@:2}"
   exit $?
 }
 

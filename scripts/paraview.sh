@@ -40,11 +40,16 @@ packages_paraview_removes() {
 # missing name to the installed file (nothing is linked where they agree, as
 # in Debian 12).
 link_paraview_python_modules() {
-  local file installed linked=0
+  local configs file candidate installed linked=0
+  mapfile -t configs < <(find /usr/lib/*/cmake/paraview-* -name '*-targets-*.cmake' 2>/dev/null)
+  [ "${#configs[@]}" -gt 0 ] || return 0
   for file in $(sed -n 's|.*"${_IMPORT_PREFIX}\(/lib/python3/dist-packages/[^"]*\.so\)".*|/usr\1|p' \
-    $(find /usr/lib/*/cmake/paraview-* -name '*-targets-*.cmake') 2>/dev/null | sort -u); do
+    "${configs[@]}" | sort -u); do
     [ -e "$file" ] && continue
-    installed="$(ls "${file%.so}".cpython-*.so 2>/dev/null | head -1)"
+    installed=""
+    for candidate in "${file%.so}".cpython-*.so; do
+      [ -e "$candidate" ] && { installed="$candidate"; break; }
+    done
     [ -n "$installed" ] || continue
     as_root ln -s "$(basename "$installed")" "$file"
     linked=$((linked + 1))

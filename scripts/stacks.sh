@@ -50,9 +50,20 @@ stack_is_fresh() {
 }
 
 # Makes the root of a stack unless a fresh one is cached. Returns
-# STACK_UNAVAILABLE when Debian's archive cannot serve it.
+# STACK_UNAVAILABLE only when Debian's archive could not serve it (debootstrap
+# or apt could not fetch); any other failure (no such stack, not root, a
+# package the list names wrongly) returns 1, a failure of the project's. A
+# stale root whose remaking the archive refuses is used as it is, with a warning.
 ensure_stack() {
-  local name="$1" root building
+  local name="$1" root building status=0
+  case "$name" in
+    trixie | sid) ;;
+    *) echo "No stack '$name': host, trixie or sid" >&2; return 1 ;;
+  esac
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "The $name stack needs root (debootstrap, chroot and mount namespaces)" >&2
+    return 1
+  fi
   root="$(stack_root "$name")"
   stack_is_fresh "$name" && return 0
   command -v debootstrap >/dev/null || install_missing_packages debootstrap
@@ -61,26 +72,38 @@ ensure_stack() {
   echo "Making the $name root in $root (debootstrap, then $(stack_packages "$name" | wc -l) packages)"
   rm -rf "$building"
   mkdir -p "$STACK_CACHE"
-  if ! debootstrap --variant=minbase "$name" "$building" "$STACK_MIRROR" > "$building.log" 2>&1; then
-    tail -20 "$building.log"
-    return "$STACK_UNAVAILABLE"
-  fi
-  # sid's snapshot has an expired Release file; apt inside the root (here and
-  # in scripts/paraview.sh) must accept it.
-  echo 'Acquire::Check-Valid-Until "false";' > "$building/etc/apt/apt.conf.d/99shadowmaps-snapshot"
-  local status=0
-  { chroot_with_mounts "$building" apt-get update -qq &&
-    chroot_with_mounts "$building" env DEBIAN_FRONTEND=noninteractive apt-get \
-      -y -qq --no-install-recommends install $(stack_packages "$name"); } >> "$building.log" 2>&1 ||
-    status=$?
+  make_stack_root "$name" "$building" > "$building.log" 2>&1 || status=$?
   if [ "$status" -ne 0 ]; then
     tail -20 "$building.log"
-    return "$STACK_UNAVAILABLE"
+    if [ "$status" -eq "$STACK_UNAVAILABLE" ] && [ -f "$root/.shadowmaps-stamp" ]; then
+      echo "WARNING: the $name root could not be made again; using the one from" \
+        "$(date -r "$root/.shadowmaps-stamp" +%F)" >&2
+      return 0
+    fi
+    return "$status"
   fi
   stack_stamp "$name" > "$building/.shadowmaps-stamp"
   rm -rf "$root"
   mv "$building" "$root"
   echo "Made the $name root in $SECONDS s"
+}
+
+# debootstrap, then the stack's packages. Fetch failures are the archive's
+# (STACK_UNAVAILABLE); a package apt does not know is the project's (1).
+make_stack_root() {
+  local name="$1" building="$2" output
+  debootstrap --variant=minbase "$name" "$building" "$STACK_MIRROR" || return "$STACK_UNAVAILABLE"
+  # sid's snapshot has an expired Release file; apt inside the root (here and
+  # in scripts/paraview.sh) must accept it.
+  echo 'Acquire::Check-Valid-Until "false";' > "$building/etc/apt/apt.conf.d/99shadowmaps-snapshot"
+  chroot_with_mounts "$building" apt-get update -qq || return "$STACK_UNAVAILABLE"
+  output="$(chroot_with_mounts "$building" env DEBIAN_FRONTEND=noninteractive apt-get \
+    -y -qq --no-install-recommends install $(stack_packages "$name") 2>&1)" && return 0
+  echo "$output"
+  if grep -q "Unable to locate package\|has no installation candidate\|unmet dependencies" <<< "$output"; then
+    return 1
+  fi
+  return "$STACK_UNAVAILABLE"
 }
 
 # Runs a command chrooted into a root, with /proc, /sys (MPI's transports and
@@ -91,14 +114,15 @@ ensure_stack() {
 chroot_with_mounts() {
   local root="$1"
   shift
-  mkdir -p "$root$ROOT"
   unshare --mount --propagation private bash -c '
     root="$1" repository="$2"
     shift 2
+    # The repository may lie under /tmp: its mount point is made on the tmpfs.
     mount -t proc proc "$root/proc" &&
       mount --rbind /sys "$root/sys" &&
       mount --rbind /dev "$root/dev" &&
       mount -t tmpfs tmpfs "$root/tmp" &&
+      mkdir -p "$root$repository" &&
       mount --bind "$repository" "$root$repository" || exit 1
     exec chroot "$root" "$@"' chroot_with_mounts "$root" "$ROOT" "$@"
 }
@@ -113,6 +137,7 @@ in_stack() {
     HOME=/root LANG=C.UTF-8 CI="${CI:-}" SHADOWMAPS_STACK="$name" SHADOWMAPS_IN_STACK=1 \
     SHADOWMAPS_UPDATE_BASELINES="${SHADOWMAPS_UPDATE_BASELINES:-}" \
     SHADOWMAPS_SKIP_PARAVIEW="${SHADOWMAPS_SKIP_PARAVIEW:-}" \
+    SHADOWMAPS_MATRIX_DIR="$MATRIX_DIR" \
     bash -c 'cd "$0" && exec "$@"' "$ROOT" "$@"
 }
 
