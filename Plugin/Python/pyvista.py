@@ -55,7 +55,9 @@ def _current_shadow_pass(passes):
 def enable_shadows(plotter, technique="cascaded", **settings):
     """Turns on this module's shadows in the plotter's active renderer (or in
     the renderer given as ``plotter``) and returns the pass. Replaces VTK's
-    shadows (``plotter.enable_shadows()``) and an earlier call's pass."""
+    shadows (``plotter.enable_shadows()``) and an earlier call's pass. To go
+    back to VTK's shadows, call disable_shadows first: PyVista's
+    enable_shadows() sees a shadow pass in place and does nothing."""
     renderer, passes = _render_passes(plotter)
     disable_shadows(plotter)
     if passes._shadow_map_pass is not None:
