@@ -69,7 +69,11 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
+    Plugin/Passes/ShadowMapRendererUse.cxx
+    Plugin/Passes/ShadowMapUpdates.cxx
     Plugin/Scene/ShadowMapClosedSurfaces.cxx
+    Plugin/Scene/ShadowMapCasterVersion.cxx
+    Plugin/Scene/ShadowMapPropParts.cxx
     ${shadowmaps_shader_sources}
   NOWRAP_HEADERS
     # What a downstream views or representation class needs: plain C++ and
@@ -99,7 +103,11 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapReceiverShader.h
     Plugin/Passes/ShadowMapCombination.h
     Plugin/Passes/ShadowMapLayerContent.h
+    Plugin/Passes/ShadowMapRendererUse.h
+    Plugin/Passes/ShadowMapUpdates.h
     Plugin/Scene/ShadowMapClosedSurfaces.h
+    Plugin/Scene/ShadowMapCasterVersion.h
+    Plugin/Scene/ShadowMapPropParts.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)
   vtk_module_include(ShadowMaps::RenderingShadowMaps

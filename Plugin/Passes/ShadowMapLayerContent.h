@@ -11,12 +11,12 @@
 namespace shadowmaps
 {
 
-/// A caster, by identity, with the modification time of everything its depth
-/// depends on.
+/// A caster, by identity, with the version of everything its depth depends on
+/// (shadowmaps::CasterVersion).
 struct CasterStamp
 {
   const void* Prop = nullptr;
-  vtkMTimeType MTime = 0;
+  vtkMTimeType Version = 0;
 };
 
 /// `stamps` sorted by prop, for LayerContent.

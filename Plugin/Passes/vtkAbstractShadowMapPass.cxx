@@ -4,6 +4,7 @@
 #include "ShadowMapCasterShader.h"
 #include "ShadowMapCascades.h"
 #include "ShadowMapCasterReach.h"
+#include "ShadowMapCasterVersion.h"
 #include "ShadowMapCasting.h"
 #include "ShadowMapCombination.h"
 #include "ShadowMapClosedSurfaces.h"
@@ -11,12 +12,16 @@
 #include "ShadowMapLayerContent.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapLinearDepthResolve.h"
+#include "ShadowMapPropParts.h"
 #include "ShadowMapReceiverShader.h"
+#include "ShadowMapRendererUse.h"
 #include "ShadowMapStoreFromLightDepths.h"
 #include "ShadowMapTextureArray.h"
+#include "ShadowMapUpdates.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkDataObject.h"
 #include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
@@ -44,6 +49,7 @@
 #include "vtkTextureUnitManager.h"
 #include "vtkShaderProgram.h"
 #include "vtkVolume.h"
+#include "vtkWeakPointer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include "ShadowMapVTKCompat.h"
@@ -54,12 +60,16 @@
 #include <cstring>
 #include <iterator>
 #include <limits>
+#include <map>
+#include <memory>
+#include <unordered_map>
 #include <unordered_set>
 
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, CASTS_SHADOWS, Integer);
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, RECEIVES_SHADOWS, Integer);
 
 using shadowmaps::Aabb;
+using shadowmaps::Caster;
 using shadowmaps::ToGlm;
 using shadowmaps::ToVtk;
 using shadowmaps::LightKind;
@@ -86,20 +96,6 @@ bool HasRenderPass(vtkInformation* info, vtkObjectBase* pass)
     }
   }
   return false;
-}
-
-bool FrustumMeetsBox(const std::array<shadowmaps::Plane, 6>& planes, const Aabb& box)
-{
-  for (const auto& plane : planes)
-  {
-    const glm::dvec3 farthest(plane.Normal.x >= 0.0 ? box.Max.x : box.Min.x,
-      plane.Normal.y >= 0.0 ? box.Max.y : box.Min.y, plane.Normal.z >= 0.0 ? box.Max.z : box.Min.z);
-    if (plane.Distance(farthest) < 0.0)
-    {
-      return false;
-    }
-  }
-  return true;
 }
 
 // Views out of view hold no shadows, whatever their precision. Depth maps that
@@ -150,63 +146,6 @@ bool IsNonFinite(const LightView& view)
   return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
 }
 
-// The bits of a matrix, so that the signature follows the camera's values
-// rather than its identity or MTime (image-processing passes hand their
-// delegate a fresh copy of the camera every frame).
-void AppendBits(double value, std::vector<vtkMTimeType>& signature)
-{
-  vtkMTimeType bits = 0;
-  std::memcpy(&bits, &value, sizeof(double));
-  signature.push_back(bits);
-}
-
-void AppendBoxBits(const Aabb& box, std::vector<vtkMTimeType>& signature)
-{
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    AppendBits(box.Min[axis], signature);
-    AppendBits(box.Max[axis], signature);
-  }
-}
-
-void AppendMatrixBits(const glm::dmat4& m, std::vector<vtkMTimeType>& signature)
-{
-  for (int c = 0; c < 4; ++c)
-  {
-    for (int r = 0; r < 4; ++r)
-    {
-      AppendBits(m[c][r], signature);
-    }
-  }
-}
-
-// Modification time of everything a caster's depth depends on, including its
-// mapper's input after bringing the pipeline up to date (composite inputs too).
-vtkMTimeType CasterMTime(vtkProp* prop)
-{
-  vtkMTimeType time = prop->GetRedrawMTime();
-  auto* actor = vtkActor::SafeDownCast(prop);
-  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-  if (mapper && mapper->GetNumberOfInputPorts() > 0 && mapper->GetNumberOfInputConnections(0) > 0)
-  {
-    mapper->GetInputAlgorithm()->Update();
-    if (vtkDataObject* input = mapper->GetInputDataObject(0, 0))
-    {
-      time = std::max(time, input->GetMTime());
-    }
-  }
-  return time;
-}
-
-// A prop that renders into the maps, with its world bounds and the
-// modification time of everything its depth depends on.
-struct Caster
-{
-  vtkProp* Prop = nullptr;
-  Aabb Bounds;
-  vtkMTimeType MTime = 0;
-};
-
 // Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
 // depth map; as casters they would only re-render the maps on every transfer
 // function edit.
@@ -215,125 +154,30 @@ bool DrawsIntoDepthMaps(vtkProp* prop)
   return prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop);
 }
 
-// The part of `visible` (the focus body; empty when culling is off) whose
-// receivers `view` shades: a cascade's slice of it.
-std::vector<glm::dvec3> ShadedBody(const shadowmaps::ShadowFrame& frame, const LightView& view,
-  const std::vector<glm::dvec3>& visible)
-{
-  const glm::dvec2 depths = view.ShadedDepths;
-  if (visible.empty() || !std::isfinite(depths.y))
-  {
-    return visible;
-  }
-  const glm::dmat4 slice = shadowmaps::SubFrustumProjection(frame.CameraProjection, depths.x, depths.y);
-  return shadowmaps::IntersectFrustumWithBox(slice * frame.CameraView, frame.SceneBounds);
-}
-
-// The world-space size of the coarsest texel of `view` over `body` (the one the
-// receivers' normal offset is scaled by); infinite when it varies beyond a
-// formula (warped maps), which turns the culling off.
-double CoarsestTexel(const ShadowLight& light, const LightView& view, const std::vector<glm::dvec3>& body)
-{
-  if (view.TexelSizeFromGradient)
-  {
-    return std::numeric_limits<double>::infinity();
-  }
-  double farthest = 0.0;
-  for (const auto& p : body)
-  {
-    farthest = std::max(farthest, glm::length(p - light.Position));
-  }
-  return view.TexelConstant + view.TexelPerUnitDistance * farthest;
-}
-
-// How far beyond where they are the receivers of view `index` of `light` look
-// its map up, in world units: the filter's taps (sized by the light's first
-// view in cascades, whose kernels keep their world size), the normal offset,
-// and a texel for rounding.
-double ReachMargin(const ShadowLight& light, size_t index, const std::vector<glm::dvec3>& body,
-  double filterReachTexels, double normalOffsetTexels)
-{
-  const double texel = CoarsestTexel(light, light.Views[index], body);
-  const double first = CoarsestTexel(light, light.Views.front(), body);
-  return filterReachTexels * std::max(texel, first) + (normalOffsetTexels + 1.0) * texel;
-}
-
-// The casters inside the view's frustum.
-std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const LightView& view)
-{
-  std::vector<const Caster*> casters;
-  if (view.OutOfView)
-  {
-    return casters;
-  }
-  const auto planes = shadowmaps::FrustumPlanes(view.ViewProjection());
-  for (const auto& caster : all)
-  {
-    if (FrustumMeetsBox(planes, caster.Bounds))
-    {
-      casters.push_back(&caster);
-    }
-  }
-  return casters;
-}
-
-// Those of `inView` whose shadows may reach `visible`, the focus body (empty:
-// no culling by it), looked up up to `margin` beyond it.
-std::vector<const Caster*> CastersReaching(const std::vector<const Caster*>& inView,
-  const LightView& view, const std::vector<glm::dvec3>& visible, double margin)
-{
-  const glm::dmat4 viewProjection = view.ViewProjection();
-  const shadowmaps::ShadowReach reach = shadowmaps::ReachOfBody(viewProjection, visible, margin);
-  std::vector<const Caster*> casters;
-  std::copy_if(inView.begin(), inView.end(), std::back_inserter(casters), [&](const Caster* c) {
-    return shadowmaps::MayShadowInto(reach, viewProjection, c->Bounds);
-  });
-  return casters;
-}
-
-// What a layer's texels depend on of its view besides what ForgetLayersIfStale
-// watches: its matrices, its light's depth (stored by light-depth maps) and,
-// where the representation's post-processing follows it, its FilterScale (a
-// cascade's blur follows the first cascade's texels, which may change while
-// this one's matrices stay).
-std::vector<vtkMTimeType> LayerViewBits(
-  const ShadowLight& light, std::size_t index, bool postProcessingFollowsFilterScale)
-{
-  const LightView& view = light.Views[index];
-  std::vector<vtkMTimeType> bits;
-  if (postProcessingFollowsFilterScale)
-  {
-    AppendBits(shadowmaps::FilterScale(light, index), bits);
-  }
-  AppendMatrixBits(view.View, bits);
-  AppendMatrixBits(view.Projection, bits);
-  const shadowmaps::LightDepth& depth = light.Depth;
-  for (double value : { depth.Plane.x, depth.Plane.y, depth.Plane.z, depth.Plane.w,
-         depth.PerDistance, depth.Origin.x, depth.Origin.y, depth.Origin.z })
-  {
-    AppendBits(value, bits);
-  }
-  bits.push_back(view.OutOfView ? 1 : 0);
-  bits.push_back(view.LinearDepth ? 1 : 0);
-  return bits;
-}
-
-shadowmaps::CasterStamp StampOf(const Caster& caster)
-{
-  return { caster.Prop, caster.MTime };
-}
-
-std::vector<shadowmaps::CasterStamp> StampsOf(const std::vector<const Caster*>& casters)
-{
-  std::vector<shadowmaps::CasterStamp> stamps;
-  stamps.reserve(casters.size());
-  for (const Caster* caster : casters)
-  {
-    stamps.push_back(StampOf(*caster));
-  }
-  return stamps;
-}
 } // namespace
+
+// One renderer's (one eye's) maps, what renders them, their receivers'
+// uniforms, and what the maps were last rendered for.
+struct RendererMaps
+{
+  shadowmaps::TextureArray Maps;
+  shadowmaps::MapStorage Storage;
+  shadowmaps::ReceiverUniforms Uniforms;
+  shadowmaps::LinearDepthResolve LinearDepths;
+  // Light depths of value maps, while the processes' maps are combined.
+  shadowmaps::StoreFromLightDepths LightDepths;
+  shadowmaps::MapUpdates Updates;
+  int Layers = 0;
+
+  void ReleaseGraphicsResources(vtkWindow* window)
+  {
+    this->Maps.Release();
+    this->LinearDepths.ReleaseGraphicsResources(window);
+    this->LightDepths.ReleaseGraphicsResources(window);
+    this->Updates.Invalidate();
+    this->Layers = 0;
+  }
+};
 
 struct vtkAbstractShadowMapPass::Internals
 {
@@ -382,39 +226,29 @@ struct vtkAbstractShadowMapPass::Internals
     }
   }
   shadowmaps::MapView MapView;
-  shadowmaps::LinearDepthResolve LinearDepths;
-  // Light depths of value maps, while the processes' maps are combined.
-  shadowmaps::StoreFromLightDepths LightDepths;
   shadowmaps::ClosedCasters ClosedCasters;
-
-  // What the maps were last rendered for; empty when they must be re-rendered.
-  std::vector<vtkMTimeType> Signature;
-  bool MapsValid = false;
-  // Per layer, what it was last rendered from; all of them are forgotten when
-  // what every layer depends on changes (LayersKey).
-  std::vector<shadowmaps::LayerContent> LayerContents;
   bool WarnedUncombined = false;
   bool WarnedUngatheredBounds = false;
-  std::vector<vtkMTimeType> LayersKey;
-  /// The lights and views the maps were rendered for (reused with the maps),
-  /// and what else their fits depended on but the camera.
-  std::vector<shadowmaps::ShadowLight> RenderedLights;
-  vtkMTimeType RenderedPassTime = 0;
-  int RenderedResolution = 0;
-  Aabb RenderedSceneBounds;
 
-  // The receivers' shader code and uniforms of the current maps.
+  // The maps of each renderer (and eye) that draws through the pass, and what
+  // they were rendered for; Current is the one of the frame being rendered.
+  std::map<std::pair<vtkRenderer*, int>, std::unique_ptr<RendererMaps>> PerRenderer;
+  RendererMaps* Current = nullptr;
+
+  // The receivers' shader code, the same for every renderer's maps.
   shadowmaps::ReceiverCode Code;
-  shadowmaps::ReceiverUniforms Uniforms;
   // The casters' branch of the same shaders and its uniforms.
   shadowmaps::CasterCode CasterCode;
   shadowmaps::CasterUniforms CasterUniforms;
   shadowmaps::ProgramStamps CasterPrograms;
   // Programs the casters drew with since the scene last did.
   std::unordered_set<vtkShaderProgram*> CastSinceSceneDraw;
+  // The maps each program last shaded with: programs are shared by renderers.
+  std::unordered_map<vtkShaderProgram*, RendererMaps*> ProgramsLastDrawnFor;
   // The shaders depend on these; GetShaderStageMTime() follows them.
   std::string ShaderKey;
-  std::vector<vtkProp*> NonReceivers;
+  // Whether each prop received shadows when it last drew through the pass.
+  std::unordered_map<vtkProp*, std::pair<vtkWeakPointer<vtkProp>, bool>> Receives;
   vtkTimeStamp ShaderKeyTime;
   int MapUnit = -1;
   // Depth peeling's first-pass depths, while casting.
@@ -423,6 +257,14 @@ struct vtkAbstractShadowMapPass::Internals
   bool ShaderCodeCompiles = true;
   // The props whose render passes this pass joined in this frame.
   std::vector<vtkProp*> Joined;
+
+  // The window whose context holds the pass's GL objects, while it holds any,
+  // and the renderers that draw through the pass: what a renderer stops
+  // drawing with (the pass replaced or taken off) is released at once.
+  vtkWeakPointer<vtkRenderWindow> Context;
+  unsigned long ContextDeleteObserver = 0;
+  bool HoldsGraphicsResources = false;
+  std::unique_ptr<shadowmaps::RendererUse> Use;
 
   bool Active = false;
   bool Casting = false;
@@ -444,11 +286,14 @@ vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
   this->Internal->Views = defaultViews;
   this->Internal->Representation = defaultRepresentation;
   this->Internal->ShaderKeyTime.Modified();
+  this->Internal->Use = std::make_unique<shadowmaps::RendererUse>(
+    [this](vtkRenderer* renderer) { this->ReleaseMapsOf(renderer); });
 }
 
 //------------------------------------------------------------------------------
 vtkAbstractShadowMapPass::~vtkAbstractShadowMapPass()
 {
+  this->ForgetContext();
   this->SetDelegatePass(nullptr);
   this->SetExchange(nullptr);
 }
@@ -532,7 +377,12 @@ vtkMTimeType vtkAbstractShadowMapPass::GetMTime()
 //------------------------------------------------------------------------------
 size_t vtkAbstractShadowMapPass::GetShadowMapMemory() const
 {
-  return this->Internal->Maps.GetMemoryBytes();
+  size_t bytes = 0;
+  for (const auto& maps : this->Internal->PerRenderer)
+  {
+    bytes += maps.second->Maps.GetMemoryBytes();
+  }
+  return bytes;
 }
 
 //------------------------------------------------------------------------------
@@ -546,6 +396,11 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   Internals& r = *this->Internal;
   this->NumberOfRenderedLayers = 0;
   r.Active = false;
+  if (renderer)
+  {
+    this->UseContextOf(renderer);
+    this->SelectRendererMaps(renderer);
+  }
   if (renderer && !this->DelegatePass)
   {
     r.FollowRendererTranslucency(renderer);
@@ -582,6 +437,101 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   }
   this->LeaveRenderPasses();
   vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::UseContextOf(vtkOpenGLRenderer* renderer)
+{
+  Internals& r = *this->Internal;
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  if (r.Context != window)
+  {
+    // Moved to another window: what the old context holds is freed there.
+    this->ForgetContext();
+    window->MakeCurrent();
+    r.Context = window;
+    // Freed while the window can still make its context current: after its
+    // DeleteEvent it is being destroyed.
+    r.ContextDeleteObserver =
+      window->AddObserver(vtkCommand::DeleteEvent, this, &vtkAbstractShadowMapPass::ForgetContext);
+  }
+  r.HoldsGraphicsResources = true;
+  r.Use->Drawn(renderer);
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SelectRendererMaps(vtkOpenGLRenderer* renderer)
+{
+  // Each renderer, and each eye of a stereo camera, keeps maps of its own:
+  // views sharing one set would fit and render it anew for each other.
+  Internals& r = *this->Internal;
+  const int eye =
+    renderer->GetRenderWindow()->GetStereoRender() && !renderer->GetActiveCamera()->GetLeftEye()
+    ? 1
+    : 0;
+  std::unique_ptr<RendererMaps>& maps = r.PerRenderer[{ renderer, eye }];
+  if (!maps)
+  {
+    maps = std::make_unique<RendererMaps>();
+  }
+  r.Current = maps.get();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
+{
+  Internals& r = *this->Internal;
+  if (r.Context)
+  {
+    r.Context->MakeCurrent();
+  }
+  const bool current = r.Context && r.Context->IsCurrent();
+  for (auto it = r.PerRenderer.begin(); it != r.PerRenderer.end();)
+  {
+    if (it->first.first != renderer)
+    {
+      ++it;
+      continue;
+    }
+    if (current)
+    {
+      it->second->ReleaseGraphicsResources(r.Context);
+    }
+    r.Current = r.Current == it->second.get() ? nullptr : r.Current;
+    for (auto& program : r.ProgramsLastDrawnFor)
+    {
+      program.second = program.second == it->second.get() ? nullptr : program.second;
+    }
+    it = r.PerRenderer.erase(it);
+  }
+  if (r.PerRenderer.empty() && current)
+  {
+    // No renderer draws through the pass any more: it holds nothing.
+    this->ReleaseGraphicsResources(r.Context);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ForgetContext()
+{
+  Internals& r = *this->Internal;
+  if (!r.Context)
+  {
+    return;
+  }
+  // A window finalized since released what its renderers' passes held; one
+  // whose context cannot be made current holds nothing this pass can free.
+  if (r.HoldsGraphicsResources)
+  {
+    r.Context->MakeCurrent();
+    if (r.Context->IsCurrent())
+    {
+      this->ReleaseGraphicsResources(r.Context);
+    }
+  }
+  r.HoldsGraphicsResources = false;
+  r.Context->RemoveObserver(r.ContextDeleteObserver);
+  r.Context = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -630,7 +580,7 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
     return false;
   }
   this->CollectCastersAndCamera(renderer);
-  this->CollectNonReceivers(s);
+  this->RebuildShadersOfChangedReceivers(s);
   const bool ready = this->UpdateShadowMaps(renderer);
   // Lights whose views were not finite are gone by now.
   this->NumberOfShadowedLights = static_cast<int>(this->Internal->Lights.size());
@@ -716,7 +666,7 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
     }
     if (IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()) && DrawsIntoDepthMaps(prop))
     {
-      r.Casters.push_back({ prop, bounds, CasterMTime(prop) });
+      r.Casters.push_back({ prop, bounds, shadowmaps::CasterVersion(prop) });
     }
   }
 
@@ -745,36 +695,14 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
 std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRenderer* renderer)
 {
   const Internals& r = *this->Internal;
-  int size[2];
+  shadowmaps::MapInputs inputs;
   int origin[2];
-  renderer->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
-  std::vector<vtkMTimeType> signature = { this->GetMTime(), renderer->GetLights()->GetMTime(),
-    renderer->GetViewProps()->GetMTime(), static_cast<vtkMTimeType>(size[0]),
-    static_cast<vtkMTimeType>(size[1]) };
-  AppendMatrixBits(r.Frame.CameraView, signature);
-  AppendMatrixBits(r.Frame.CameraProjection, signature);
-  // The fits and the casters' reach follow every prop's bounds, receivers'
-  // too (every process's, with an exchange: GatherPropBounds came first).
-  for (const Aabb& box : r.Frame.PropBounds)
-  {
-    AppendBoxBits(box, signature);
-  }
-  AppendBoxBits(r.Frame.SceneBounds, signature);
-  // A still render after interactive ones fits anew what they may have kept.
-  signature.push_back(r.Frame.Interactive ? 1 : 0);
-  for (const auto& light : r.Lights)
-  {
-    signature.push_back(reinterpret_cast<vtkMTimeType>(light.Light));
-    signature.push_back(light.Light->GetMTime());
-  }
-  for (const auto& caster : r.Casters)
-  {
-    signature.push_back(reinterpret_cast<vtkMTimeType>(caster.Prop));
-    signature.push_back(caster.MTime);
-  }
-  return signature;
+  renderer->GetTiledSizeAndOrigin(&inputs.ViewportWidth, &inputs.ViewportHeight, origin, origin + 1);
+  inputs.PassTime = this->GetMTime();
+  inputs.LightsTime = renderer->GetLights()->GetMTime();
+  inputs.PropsTime = renderer->GetViewProps()->GetMTime();
+  return shadowmaps::MapUpdates::Signature(inputs, r.Frame, r.Lights, r.Casters);
 }
-
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::GatherPropBounds()
 {
@@ -805,16 +733,15 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     r.Frame.Interactive = !this->Exchange->AnyOf(!r.Frame.Interactive);
   }
   std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
-  const bool stale = !(r.MapsValid && signature == r.Signature);
+  const bool stale = !r.Current->Updates.Current(signature);
   // Every process asks every frame: another one's casters may have moved.
   if (!(this->Exchange ? this->Exchange->AnyOf(stale) : stale))
   {
     // CollectLights rebuilt the lights without views; the maps hold these.
-    r.Lights = r.RenderedLights;
+    r.Lights = r.Current->Updates.GetRenderedLights();
+    this->NumberOfShadowMapLayers = r.Current->Layers;
     return true;
   }
-  r.Signature.clear();
-  r.MapsValid = false;
 
   r.Frame.Resolution = this->UsableResolution();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
@@ -834,8 +761,8 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   std::string error;
-  if (!r.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Storage.Format,
-        r.Storage.Mipmaps, error))
+  if (!r.Current->Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Current->Storage.Format,
+        r.Current->Storage.Mipmaps, error))
   {
     this->CombineAcrossProcesses(window, false);
     this->ReportGLFailure(error);
@@ -848,19 +775,16 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   }
   if (!this->NeedsSecondOutput())
   {
-    r.Maps.ReleaseSecondOutput();
+    r.Current->Maps.ReleaseSecondOutput();
   }
-  if (r.Storage.Samples <= 1)
+  if (r.Current->Storage.Samples <= 1)
   {
-    r.Maps.ReleaseSamples();
+    r.Current->Maps.ReleaseSamples();
   }
-  r.Uniforms.Pack(r.Lights, r.Frame.CameraView);
-  r.RenderedLights = r.Lights;
-  r.RenderedPassTime = this->GetMTime();
-  r.RenderedResolution = r.Frame.Resolution;
-  r.RenderedSceneBounds = r.Frame.SceneBounds;
-  r.Signature = std::move(signature);
-  r.MapsValid = true;
+  r.Current->Uniforms.Pack(r.Lights, r.Frame.CameraView);
+  r.Current->Updates.Finish(
+    r.Lights, std::move(signature), this->GetMTime(), r.Frame.Resolution, r.Frame.SceneBounds);
+  r.Current->Layers = this->NumberOfShadowMapLayers;
   r.WarnedGLError.clear();
   ++this->NumberOfShadowMapUpdates;
   return true;
@@ -872,12 +796,12 @@ bool vtkAbstractShadowMapPass::NeedsSecondOutput() const
   // Peeled two-surface maps, value maps whose light depths are combined, and
   // linear-depth views of depth maps.
   const Internals& r = *this->Internal;
-  if (r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling ||
+  if (r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling ||
     this->MapCombination() == shadowmaps::Combination::NearestLightDepths)
   {
     return true;
   }
-  return shadowmaps::IsDepth(r.Storage.Format) && AnyLinearDepthView(r.Lights);
+  return shadowmaps::IsDepth(r.Current->Storage.Format) && AnyLinearDepthView(r.Lights);
 }
 
 //------------------------------------------------------------------------------
@@ -902,7 +826,8 @@ bool vtkAbstractShadowMapPass::FitViews()
   Internals& r = *this->Internal;
   for (ShadowLight& light : r.Lights)
   {
-    light.LastViews = this->LastViewsOf(light);
+    light.LastViews = r.Current->Updates.KeptViews(
+      light, this->GetMTime(), r.Frame.Resolution, r.Frame.SceneBounds);
     r.Views->FitLight(r.Frame, light);
     light.LastViews.clear();
     light.Depth = light.Kind == LightKind::Directional
@@ -912,30 +837,6 @@ bool vtkAbstractShadowMapPass::FitViews()
   this->DropLightsWithoutUsableViews();
   this->AssignLayers();
   return !r.Lights.empty();
-}
-
-//------------------------------------------------------------------------------
-std::vector<LightView> vtkAbstractShadowMapPass::LastViewsOf(const ShadowLight& light)
-{
-  const Internals& r = *this->Internal;
-  const Aabb& bounds = r.Frame.SceneBounds;
-  const bool onlyTheCameraMoved = r.RenderedPassTime == this->GetMTime() &&
-    r.RenderedResolution == r.Frame.Resolution && r.RenderedSceneBounds.Min == bounds.Min &&
-    r.RenderedSceneBounds.Max == bounds.Max;
-  if (!onlyTheCameraMoved)
-  {
-    return {};
-  }
-  for (const ShadowLight& rendered : r.RenderedLights)
-  {
-    if (rendered.Light == light.Light && rendered.Kind == light.Kind &&
-      rendered.Position == light.Position && rendered.Direction == light.Direction &&
-      rendered.ConeAngle == light.ConeAngle)
-    {
-      return rendered.Views;
-    }
-  }
-  return {};
 }
 
 //------------------------------------------------------------------------------
@@ -954,26 +855,26 @@ void vtkAbstractShadowMapPass::AssignLayers()
 void vtkAbstractShadowMapPass::ChooseStorage()
 {
   Internals& r = *this->Internal;
-  r.Representation->GetMapStorage(r.Storage);
+  r.Representation->GetMapStorage(r.Current->Storage);
   this->ChooseSecondDepthMethod();
   const bool thirtyTwoBitNow =
-    r.Maps.GetResolution() != 0 && r.Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
-  if (r.Storage.Format == shadowmaps::TexelFormat::Depth &&
+    r.Current->Maps.GetResolution() != 0 && r.Current->Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
+  if (r.Current->Storage.Format == shadowmaps::TexelFormat::Depth &&
     SixteenBitDepthSuffices(r.Lights, thirtyTwoBitNow))
   {
-    r.Storage.Format = shadowmaps::TexelFormat::Depth16;
+    r.Current->Storage.Format = shadowmaps::TexelFormat::Depth16;
   }
   // Depth maps store the views' own depths; two-surface maps compare them.
-  const bool oneValueMap = !shadowmaps::IsDepth(r.Storage.Format) &&
-    r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
-  r.Storage.LightDepth = r.Storage.LightDepth && oneValueMap;
+  const bool oneValueMap = !shadowmaps::IsDepth(r.Current->Storage.Format) &&
+    r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
+  r.Current->Storage.LightDepth = r.Current->Storage.LightDepth && oneValueMap;
   // Combined light-depth maps are rebuilt from each texel's nearest light
   // depth, not its samples.
-  const bool combinesLightDepths = this->Exchange && r.Storage.LightDepth;
-  r.Storage.Samples = oneValueMap && !r.Storage.MinimumBlending && !combinesLightDepths
-    ? std::max(1, std::min(r.Storage.Samples, MaximumSamples()))
+  const bool combinesLightDepths = this->Exchange && r.Current->Storage.LightDepth;
+  r.Current->Storage.Samples = oneValueMap && !r.Current->Storage.MinimumBlending && !combinesLightDepths
+    ? std::max(1, std::min(r.Current->Storage.Samples, MaximumSamples()))
     : 1;
-  r.Code.Definitions = std::string(r.Storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
+  r.Code.Definitions = std::string(r.Current->Storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
     r.Representation->GetReceiverDefinitions();
   r.Code.Lookup = r.Representation->GetReceiverLookupCode();
 }
@@ -983,7 +884,7 @@ void vtkAbstractShadowMapPass::ChooseSecondDepthMethod()
 {
   using shadowmaps::SecondDepthMethod;
   Internals& r = *this->Internal;
-  shadowmaps::MapStorage& storage = r.Storage;
+  shadowmaps::MapStorage& storage = r.Current->Storage;
   if (storage.Format != shadowmaps::TexelFormat::TwoFloats)
   {
     storage.SecondDepth = SecondDepthMethod::None;
@@ -993,7 +894,7 @@ void vtkAbstractShadowMapPass::ChooseSecondDepthMethod()
     std::vector<std::pair<vtkProp*, vtkMTimeType>> casters;
     for (const Caster& caster : r.Casters)
     {
-      casters.emplace_back(caster.Prop, caster.MTime);
+      casters.emplace_back(caster.Prop, caster.Version);
     }
     // Processes that combine their maps must make them the same way, and
     // peeling is right whatever each one's casters are.
@@ -1019,16 +920,16 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
   shadowmaps::AddAnalysisReceiverCode(
     recolours ? this->AnalysisView : 0, this->AnalysisLight, r.Lights, r.Code);
   r.Code.Rehash();
-  r.CasterCode.SecondDepth = r.Storage.SecondDepth;
+  r.CasterCode.SecondDepth = r.Current->Storage.SecondDepth;
   // Two surfaces' depths need both faces of the casters.
   r.CasterCode.Faces =
-    r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
-  const bool values = !shadowmaps::IsDepth(r.Storage.Format);
-  r.CasterCode.StoreCode = values ? r.Storage.StoreCode : std::string();
+    r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
+  const bool values = !shadowmaps::IsDepth(r.Current->Storage.Format);
+  r.CasterCode.StoreCode = values ? r.Current->Storage.StoreCode : std::string();
   r.CasterCode.KeepsLightDepth =
     this->MapCombination() == shadowmaps::Combination::NearestLightDepths;
-  r.CasterCode.StoreFunctions = values ? r.Storage.StoreFunctions : std::string();
-  r.CasterCode.LightDepth = values && r.Storage.LightDepth;
+  r.CasterCode.StoreFunctions = values ? r.Current->Storage.StoreFunctions : std::string();
+  r.CasterCode.LightDepth = values && r.Current->Storage.LightDepth;
   r.CasterCode.LinearDepth = AnyLinearDepthView(r.Lights);
   std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code) +
     '|' + r.CasterCode.Key();
@@ -1132,34 +1033,32 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
-  this->ForgetLayersIfStale();
   const shadowmaps::Combination combination = this->MapCombination();
-  if (combination != shadowmaps::Combination::None)
-  {
-    // The layers hold the combination of every process's casters, not this
-    // one's: all of them are rendered again and combined again.
-    r.LayerContents.assign(r.LayerContents.size(), {});
-  }
+  // What every layer depends on besides its view and casters: the parameters
+  // of the pass and its strategies (the bias, the caster faces and store code
+  // among them), the storage, and how a second depth is made (AUTO may change
+  // it when some other layer's casters change). Layers that hold every
+  // process's casters combined are all rendered and combined again.
+  r.Current->Updates.BeginUpdate({ this->GetMTime(), r.Current->Maps.GetAllocations(),
+                                   static_cast<vtkMTimeType>(r.Frame.Resolution),
+                                   static_cast<vtkMTimeType>(r.Current->Storage.SecondDepth) },
+    this->NumberOfShadowMapLayers, combination != shadowmaps::Combination::None, r.Casters);
   const bool keepsLightDepths = combination == shadowmaps::Combination::NearestLightDepths;
   if (keepsLightDepths)
   {
-    r.LightDepths.Reset(r.Maps, this->NumberOfShadowMapLayers);
+    r.Current->LightDepths.Reset(r.Current->Maps, this->NumberOfShadowMapLayers);
   }
   int draws = 0;
   std::vector<shadowmaps::RenderedLayer> rendered;
   bool ok = true;
   {
     const shadowmaps::CasterGLState casterState(state,
-      !shadowmaps::IsDepth(r.Storage.Format) && r.Storage.MinimumBlending);
+      !shadowmaps::IsDepth(r.Current->Storage.Format) && r.Current->Storage.MinimumBlending);
     vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
     r.SceneCameraParallel = userCamera->GetParallelProjection() != 0;
     renderer->SetActiveCamera(r.LightCamera);
     this->ReserveTextureUnits(renderer);
     r.Casting = true;
-    std::vector<shadowmaps::CasterStamp> frameCasters;
-    std::transform(r.Casters.begin(), r.Casters.end(), std::back_inserter(frameCasters), StampOf);
-    const std::vector<shadowmaps::CasterStamp> current =
-      shadowmaps::SortedByProp(std::move(frameCasters));
     const std::vector<glm::dvec3> visible = this->ShadowReachCulling
       ? shadowmaps::IntersectFrustumWithBox(
           r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
@@ -1172,47 +1071,46 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     // every layer is combined anew each frame, or where coarse mip levels would
     // average the extra casters into what receivers see.
     const bool drawsAllInView = this->GetViews()->MayKeepViews(r.Frame) &&
-      combination == shadowmaps::Combination::None && !r.Storage.Mipmaps;
+      combination == shadowmaps::Combination::None && !r.Current->Storage.Mipmaps;
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
       {
         const int layer = light.FirstLayer + static_cast<int>(v);
-        const std::vector<glm::dvec3> shaded = ShadedBody(r.Frame, light.Views[v], visible);
-        const std::vector<const Caster*> inView = CastersInView(r.Casters, light.Views[v]);
-        const std::vector<const Caster*> needed = CastersReaching(inView, light.Views[v], shaded,
-          ReachMargin(light, v, shaded, r.Frame.FilterReachTexels, this->NormalOffset));
-        std::vector<vtkMTimeType> viewBits =
-          LayerViewBits(light, v, r.Representation->GetPostProcessingFollowsFilterScale());
-        if (r.LayerContents[layer].Holds(viewBits, StampsOf(needed), current))
+        shadowmaps::LayerRequest request;
+        request.Layer = layer;
+        request.Light = &light;
+        request.View = v;
+        request.Visible = &visible;
+        request.NormalOffsetTexels = this->NormalOffset;
+        request.PostProcessingFollowsFilterScale =
+          r.Representation->GetPostProcessingFollowsFilterScale();
+        request.DrawsAllInView = drawsAllInView;
+        shadowmaps::LayerPlan plan = r.Current->Updates.Plan(r.Frame, r.Casters, request);
+        if (!plan.Render)
         {
           continue;
         }
-        const std::vector<const Caster*>& casters = drawsAllInView ? inView : needed;
-        std::vector<shadowmaps::CasterStamp> stamps = StampsOf(casters);
         const bool linearDepths =
-          light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Storage.Format);
-        const bool peeling = r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
-        const bool multisampled = r.Storage.Samples > 1;
+          light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Current->Storage.Format);
+        const bool peeling = r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
+        const bool multisampled = r.Current->Storage.Samples > 1;
         ok = multisampled
-          ? r.Maps.BindSamples(state, r.Storage.Samples, r.LastGLError)
-          : r.Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling || keepsLightDepths);
+          ? r.Current->Maps.BindSamples(state, r.Current->Storage.Samples, r.LastGLError)
+          : r.Current->Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling || keepsLightDepths);
         if (ok)
         {
           this->ApplyCasterUniforms(light, light.Views[v]);
-          std::vector<vtkProp*> props;
-          std::transform(casters.begin(), casters.end(), std::back_inserter(props),
-            [](const Caster* caster) { return caster->Prop; });
+          std::vector<vtkProp*>& props = plan.Casters;
           draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
-          ok = !multisampled || r.Maps.ResolveSamples(state, layer, r.LastGLError);
-          ok = ok && (!linearDepths || r.LinearDepths.Render(window, r.Maps, layer, r.LastGLError));
-          ok = ok && (!keepsLightDepths || r.LightDepths.Keep(state, r.Maps, layer, r.LastGLError));
+          ok = !multisampled || r.Current->Maps.ResolveSamples(state, layer, r.LastGLError);
+          ok = ok && (!linearDepths || r.Current->LinearDepths.Render(window, r.Current->Maps, layer, r.LastGLError));
+          ok = ok && (!keepsLightDepths || r.Current->LightDepths.Keep(state, r.Current->Maps, layer, r.LastGLError));
           if (ok && peeling && !props.empty())
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);
           }
-          r.LayerContents[layer] =
-            shadowmaps::LayerContent(std::move(viewBits), std::move(stamps));
+          r.Current->Updates.Rendered(layer, std::move(plan));
           rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
         }
       }
@@ -1228,7 +1126,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   ok = this->CombineAcrossProcesses(window, ok);
   if (!ok)
   {
-    r.LayerContents.clear();
+    r.Current->Updates.Invalidate();
     return false;
   }
   return rendered.empty() || this->PostProcessShadowMaps(renderer, rendered);
@@ -1237,7 +1135,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 shadowmaps::Combination vtkAbstractShadowMapPass::MapCombination() const
 {
-  return this->Exchange ? shadowmaps::CombinationOf(this->Internal->Storage)
+  return this->Exchange ? shadowmaps::CombinationOf(this->Internal->Current->Storage)
                         : shadowmaps::Combination::None;
 }
 
@@ -1271,27 +1169,8 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* win
     }
     return true;
   }
-  return shadowmaps::CombineTexels(this->Exchange, window, how, r.Maps, r.Storage, r.LightDepths,
+  return shadowmaps::CombineTexels(this->Exchange, window, how, r.Current->Maps, r.Current->Storage, r.Current->LightDepths,
     this->NumberOfShadowMapLayers, r.Frame.Resolution, r.LastGLError);
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ForgetLayersIfStale()
-{
-  Internals& r = *this->Internal;
-  // What every layer depends on besides its view and casters: the parameters of
-  // the pass and its strategies (the bias, the caster faces and store code among
-  // them), the storage, and how a second depth is made (AUTO may change it when
-  // some other layer's casters change).
-  const std::vector<vtkMTimeType> key = { this->GetMTime(), r.Maps.GetAllocations(),
-    static_cast<vtkMTimeType>(r.Frame.Resolution),
-    static_cast<vtkMTimeType>(r.Storage.SecondDepth) };
-  if (key != r.LayersKey)
-  {
-    r.LayersKey = key;
-    r.LayerContents.clear();
-  }
-  r.LayerContents.resize(static_cast<size_t>(this->NumberOfShadowMapLayers));
 }
 
 //------------------------------------------------------------------------------
@@ -1299,12 +1178,12 @@ bool vtkAbstractShadowMapPass::PostProcessShadowMaps(
   vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered)
 {
   Internals& r = *this->Internal;
-  if (!r.Representation->PostProcessMaps(renderer, r.Maps, rendered))
+  if (!r.Representation->PostProcessMaps(renderer, r.Current->Maps, rendered))
   {
     r.LastGLError = "the shadow maps could not be post-processed";
     return false;
   }
-  r.Maps.GenerateMipmaps();
+  r.Current->Maps.GenerateMipmaps();
   return true;
 }
 
@@ -1316,9 +1195,9 @@ void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer, bool line
   state->vtkglViewport(0, 0, r.Frame.Resolution, r.Frame.Resolution);
   state->vtkglClearDepth(1.0);
   GLbitfield buffers = GL_DEPTH_BUFFER_BIT;
-  if (!shadowmaps::IsDepth(r.Storage.Format))
+  if (!shadowmaps::IsDepth(r.Current->Storage.Format))
   {
-    const float* clear = r.Storage.ClearValues;
+    const float* clear = r.Current->Storage.ClearValues;
     state->vtkglClearColor(clear[0], clear[1], clear[2], clear[3]);
     buffers |= GL_COLOR_BUFFER_BIT;
   }
@@ -1359,7 +1238,7 @@ bool vtkAbstractShadowMapPass::PeelSecondSurface(
   // output; this one keeps, in y only, the nearest surface behind it.
   Internals& r = *this->Internal;
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
-  if (!r.Maps.BindLayer(state, layer, r.LastGLError, false))
+  if (!r.Current->Maps.BindLayer(state, layer, r.LastGLError, false))
   {
     return false;
   }
@@ -1372,7 +1251,7 @@ bool vtkAbstractShadowMapPass::PeelSecondSurface(
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   // Through the state cache: the casters' own textures find their units by it.
   state->vtkglActiveTexture(GL_TEXTURE0 + r.PeelUnit);
-  glBindTexture(GL_TEXTURE_2D, r.Maps.GetSecondOutput());
+  glBindTexture(GL_TEXTURE_2D, r.Current->Maps.GetSecondOutput());
   r.CasterUniforms.SetPeeling(true, r.PeelUnit);
   r.CasterPrograms.Invalidate();
   draws += this->DrawCasters(renderer, casters);
@@ -1395,22 +1274,32 @@ int vtkAbstractShadowMapPass::DrawCasters(vtkOpenGLRenderer* renderer, std::vect
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::CollectNonReceivers(const vtkRenderState* s)
+void vtkAbstractShadowMapPass::RebuildShadersOfChangedReceivers(const vtkRenderState* s)
 {
+  // A prop's shaders hold its receiving code or not: only a prop whose
+  // RECEIVES_SHADOWS changed since it last drew here builds them again. Props
+  // entering or leaving the view, receivers or not, change no shader.
   Internals& r = *this->Internal;
-  std::vector<vtkProp*> nonReceivers;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    if (!IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS()))
+    const bool receives = IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
+    auto known = r.Receives.find(prop);
+    if (known == r.Receives.end() || known->second.first != prop)
     {
-      nonReceivers.push_back(prop);
+      r.Receives[prop] = { prop, receives };
+      continue;
+    }
+    if (known->second.second != receives)
+    {
+      known->second.second = receives;
+      shadowmaps::RebuildShaders(prop);
     }
   }
-  if (nonReceivers != r.NonReceivers)
+  // Forget deleted props.
+  for (auto it = r.Receives.begin(); it != r.Receives.end();)
   {
-    r.NonReceivers = std::move(nonReceivers);
-    r.ShaderKeyTime.Modified();
+    it = it->second.first ? std::next(it) : r.Receives.erase(it);
   }
 }
 
@@ -1432,7 +1321,7 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
   r.MapUnit = window->GetTextureUnitManager()->Allocate();
   window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.MapUnit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  if (r.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
+  if (r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
   {
     r.PeelUnit = window->GetTextureUnitManager()->Allocate();
     r.CasterUniforms.SetPeeling(false, r.PeelUnit);
@@ -1447,9 +1336,9 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
   Internals& r = *this->Internal;
   this->ReserveTextureUnits(renderer);
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  r.Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
-  r.Maps.BindToUnit(window->GetState(), r.MapUnit);
-  r.Uniforms.NewFrame();
+  r.Current->Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
+  r.Current->Maps.BindToUnit(window->GetState(), r.MapUnit);
+  r.Current->Uniforms.NewFrame();
 }
 
 //------------------------------------------------------------------------------
@@ -1478,9 +1367,7 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
 {
   Internals& r = *this->Internal;
-  r.Maps.Release();
-  r.MapsValid = false;
-  r.RenderedLights.clear();
+  r.Current->ReleaseGraphicsResources(r.Context);
   this->NumberOfShadowMapLayers = 0;
   if (error != r.WarnedGLError)
   {
@@ -1559,20 +1446,24 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
       }
     }
   }
-  else if (r.Active && r.Uniforms.FirstUseThisFrame(program))
+  else if (r.Active && r.Current->Uniforms.FirstUseThisFrame(program))
   {
     r.CasterUniforms.ApplyReceiving(program);
-    if (r.CastSinceSceneDraw.erase(program) > 0)
+    RendererMaps*& lastDrawnFor = r.ProgramsLastDrawnFor[program];
+    const bool anotherView = lastDrawnFor != r.Current;
+    lastDrawnFor = r.Current;
+    if (r.CastSinceSceneDraw.erase(program) > 0 || anotherView)
     {
       // The renderer sets a program's lighting uniforms again only when the
       // lights or the camera changed after it last did; the light cameras
       // changed after the scene's camera, and the casters' draws of this
-      // program left the lights in their frames.
+      // program left the lights in their frames. Another renderer (or eye)
+      // sharing the program left them in its camera's frame.
       program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
     }
     if (shadowmaps::ReceiverUniforms::IsReceiver(program))
     {
-      r.Uniforms.Apply(program, r.MapUnit, r.Frame.Resolution, this->NormalOffset);
+      r.Current->Uniforms.Apply(program, r.MapUnit, r.Frame.Resolution, this->NormalOffset);
       r.Representation->SetReceiverUniforms(program);
     }
   }
@@ -1594,9 +1485,9 @@ void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
     return;
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  const bool twoSurfaces = r.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
-  if (!r.MapView.Render(window, r.Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces,
-        r.Storage.WarpExponent))
+  const bool twoSurfaces = r.Current->Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
+  if (!r.MapView.Render(window, r.Current->Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces,
+        r.Current->Storage.WarpExponent))
   {
     this->ReportGLFailure("the shadow-map view shader did not compile");
   }
@@ -1606,13 +1497,14 @@ void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   Internals& r = *this->Internal;
-  r.Maps.Release();
-  r.MapsValid = false;
-  r.RenderedLights.clear();
-  r.Signature.clear();
+  r.HoldsGraphicsResources = false;
+  for (auto& maps : r.PerRenderer)
+  {
+    maps.second->ReleaseGraphicsResources(window);
+  }
+  r.PerRenderer.clear();
+  r.Current = nullptr;
   r.MapView.ReleaseGraphicsResources(window);
-  r.LinearDepths.ReleaseGraphicsResources(window);
-  r.LightDepths.ReleaseGraphicsResources(window);
   r.Representation->ReleaseGraphicsResources(window);
   if (r.DefaultRepresentation != r.Representation)
   {
@@ -1620,6 +1512,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   }
   r.CasterPrograms.Clear();
   r.CastSinceSceneDraw.clear();
+  r.ProgramsLastDrawnFor.clear();
   r.OpaquePass->ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   r.DepthPeeling->ReleaseGraphicsResources(window);

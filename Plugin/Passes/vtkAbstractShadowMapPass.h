@@ -69,6 +69,7 @@ class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkOpenGLState;
 class vtkProp;
+class vtkRenderer;
 class vtkRenderPass;
 class vtkShadowMapExchange;
 class vtkShadowMapRepresentation;
@@ -396,7 +397,18 @@ private:
   bool PrepareShadows(vtkOpenGLRenderer* renderer, const vtkRenderState* s);
   void CollectLights(vtkOpenGLRenderer* renderer);
   void CollectCastersAndCamera(vtkOpenGLRenderer* renderer);
-  void CollectNonReceivers(const vtkRenderState* s);
+  void RebuildShadersOfChangedReceivers(const vtkRenderState* s);
+  /** Records the window `renderer` draws in and that it draws through the pass. */
+  void UseContextOf(vtkOpenGLRenderer* renderer);
+  /** Makes the maps of `renderer` (and its camera's eye) the current ones. */
+  void SelectRendererMaps(vtkOpenGLRenderer* renderer);
+  /** Releases the maps of a renderer that no longer draws through the pass. */
+  void ReleaseMapsOf(vtkRenderer* renderer);
+  /**
+   * Releases the GL objects held in the recorded window's context, while it can
+   * still be made current, and forgets that window.
+   */
+  void ForgetContext();
   std::vector<vtkMTimeType> MapSignature(vtkOpenGLRenderer* renderer);
   /**
    * With an exchange: the fits' prop bounds become every process's
@@ -408,8 +420,6 @@ private:
   int UsableResolution();
   bool NeedsSecondOutput() const;
   bool FitViews();
-  /** The views `light` was last rendered with, if only the camera moved since (ShadowLight::LastViews). */
-  std::vector<shadowmaps::LightView> LastViewsOf(const shadowmaps::ShadowLight& light);
   void DropLightsWithoutUsableViews();
   void AssignLayers();
   void ChooseStorage();
@@ -419,7 +429,6 @@ private:
   shadowmaps::CasterBranch InjectShadowCode(std::string& vertexShader,
     std::string& geometryShader, std::string& fragmentShader, bool receives);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
-  void ForgetLayersIfStale();
   /** How the current storage combines across processes; None without an exchange. */
   shadowmaps::Combination MapCombination() const;
   /**

@@ -1,0 +1,49 @@
+#include "ShadowMapPropParts.h"
+
+#include "vtkAbstractVolumeMapper.h"
+#include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
+#include "vtkMapper.h"
+#include "vtkProp.h"
+#include "vtkProperty.h"
+#include "vtkVolume.h"
+
+namespace shadowmaps
+{
+//------------------------------------------------------------------------------
+void ForEachPart(vtkProp* prop, const std::function<void(vtkProp*, vtkMatrix4x4*)>& visit)
+{
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    vtkAssemblyNode* leaf = path->GetLastNode();
+    visit(leaf->GetViewProp(), leaf->GetMatrix());
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkAbstractMapper* MapperOf(vtkProp* prop)
+{
+  if (auto* actor = vtkActor::SafeDownCast(prop))
+  {
+    return actor->GetMapper();
+  }
+  if (auto* volume = vtkVolume::SafeDownCast(prop))
+  {
+    return volume->GetMapper();
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+void RebuildShaders(vtkProp* prop)
+{
+  ForEachPart(prop, [](vtkProp* part, vtkMatrix4x4*) {
+    if (auto* actor = vtkActor::SafeDownCast(part))
+    {
+      actor->GetProperty()->Modified();
+    }
+  });
+}
+} // namespace shadowmaps

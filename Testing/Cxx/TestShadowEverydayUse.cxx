@@ -1,0 +1,401 @@
+// The ways VTK and ParaView applications really draw: a clipping plane moved
+// in place, assemblies, glyph sources, followers, levels of detail, passes
+// toggled on and off, several renderers and non-receivers entering the view.
+// Each change must show in the next frame exactly as a fresh pass draws it.
+#include "ShadowTestUtilities.h"
+
+#include "vtkCascadedShadowMapPass.h"
+#include "vtkDepthShadowMapPass.h"
+#include "vtkDualDepthShadowMapPass.h"
+#include "vtkVarianceShadowMapPass.h"
+#include "vtkWarpedShadowMapPass.h"
+
+#include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkFollower.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkLightCollection.h"
+#include "vtkLODProp3D.h"
+#include "vtkPlane.h"
+#include "vtkPlaneSource.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPropAssembly.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iostream>
+#include <malloc.h>
+#include <functional>
+#include <string>
+#include <unistd.h>
+
+using namespace shadowtest;
+
+namespace
+{
+const glm::dvec3 Down(0.0, 0.0, -1.0);
+
+// The sphere's shadow under a sun straight above: its centre, and a point
+// beside it that the sphere never shades.
+const glm::dvec3 UnderSphere(0.0, 0.0, 0.0);
+const glm::dvec3 AwayFromEverything(-4.0, -3.0, 0.0);
+
+// Uniform views (vtkDepthShadowMapPass) are fitted to the scene's bounds, which
+// a caster changing inside the scene leaves as they are: only its version
+// tells the pass to render the maps again.
+
+// Renders `scene` with `pass`, applies `change`, renders once more and
+// expects that frame to equal the one a fresh pass of `fresh`'s kind draws.
+void ExpectChangeShownAsFresh(TestScene& scene, vtkAbstractShadowMapPass* pass,
+  const std::function<void()>& change,
+  const std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>& fresh, const std::string& what)
+{
+  scene.Renderer->SetPass(pass);
+  RenderAndCapture(scene.Window);
+  change();
+  const auto after = RgbBytes(RenderAndCapture(scene.Window));
+  EXPECT_TRUE(after == FreshPassFrame(scene, fresh())) << what << ": the frame after the change "
+                                                        "differs from a fresh pass's";
+}
+
+template <typename Pass>
+vtkSmartPointer<vtkAbstractShadowMapPass> NewPass()
+{
+  return vtkSmartPointer<Pass>::New();
+}
+
+// Resident memory of this process in MiB (llvmpipe keeps textures there).
+double ResidentMiB()
+{
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0;
+  long resident = 0;
+  statm >> pages >> resident;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1048576.0;
+}
+} // namespace
+
+// A clipping plane moved in place (as plane widgets do) moves the shadow.
+TEST(ShadowEverydayUse, ClippingPlaneMovedInPlace)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(0.0, 0.0, 0.0);
+  plane->SetNormal(1.0, 0.0, 0.0);
+  scene.Sphere->GetMapper()->AddClippingPlane(plane);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, { -0.5, 0.0, 0.0 }), LitAbove) << "clipped half";
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, { 0.5, 0.0, 0.0 }), ShadowedBelow) << "kept half";
+  // Clip the whole sphere away.
+  plane->SetOrigin(2.0, 0.0, 0.0);
+  image = RenderAndCapture(scene.Window);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, { 0.5, 0.0, 0.0 }), LitAbove) << "after the move";
+  EXPECT_TRUE(RgbBytes(image) == FreshPassFrame(scene, NewPass<vtkWarpedShadowMapPass>()));
+  // And turn it round: the other half comes back.
+  ExpectChangeShownAsFresh(
+    scene, pass, [&] { plane->SetNormal(-1.0, 0.0, 0.0); plane->SetOrigin(0.0, 0.0, 0.0); },
+    NewPass<vtkWarpedShadowMapPass>, "normal turned");
+}
+
+// A part of an assembly, its transform or its input, moves the shadow.
+TEST(ShadowEverydayUse, AssemblyParts)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  scene.Renderer->RemoveActor(scene.Sphere);
+  vtkNew<vtkAssembly> assembly;
+  assembly->AddPart(scene.Sphere);
+  scene.Renderer->AddViewProp(assembly);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  vtkNew<vtkCubeSource> cube; // the sphere's bounds: the same fits, another shadow
+  cube->SetBounds(-1.0, 1.0, -1.0, 1.0, 0.5, 2.5);
+  ExpectChangeShownAsFresh(
+    scene, pass,
+    [&] { vtkPolyDataMapper::SafeDownCast(scene.Sphere->GetMapper())->SetInputConnection(cube->GetOutputPort()); },
+    NewPass<vtkDepthShadowMapPass>, "part's mapper input");
+  auto image = CaptureAsRendered(scene.Window);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, { 0.9, 0.9, 0.0 }), ShadowedBelow) << "cube's corner";
+  ExpectChangeShownAsFresh(
+    scene, pass, [&] { scene.Sphere->SetPosition(3.0, -1.0, 0.0); },
+    NewPass<vtkDepthShadowMapPass>, "part's position");
+}
+
+// A vtkPropAssembly's part's input moves the shadow.
+TEST(ShadowEverydayUse, PropAssemblyParts)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  scene.Renderer->RemoveActor(scene.Sphere);
+  vtkNew<vtkPropAssembly> assembly;
+  assembly->AddPart(scene.Sphere);
+  scene.Renderer->AddViewProp(assembly);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  // Half the sphere's facets, in the same bounds.
+  ExpectChangeShownAsFresh(
+    scene, pass, [&] { scene.SphereSource->SetThetaResolution(4); },
+    NewPass<vtkDepthShadowMapPass>, "part's input");
+  auto image = CaptureAsRendered(scene.Window);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, UnderSphere), ShadowedBelow);
+  EXPECT_GT(LuminanceAt(scene.Renderer, image, { 0.75, 0.75, 0.0 }), LitAbove) << "cut away by the facets";
+}
+
+// A glyph mapper's source (its input port 1) changed upstream.
+TEST(ShadowEverydayUse, GlyphSourceChanged)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  scene.Renderer->RemoveActor(scene.Sphere);
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.0, 0.0, 2.0);
+  vtkNew<vtkPolyData> centers;
+  centers->SetPoints(points);
+  vtkNew<vtkCubeSource> shape;
+  shape->SetXLength(0.5);
+  shape->SetYLength(0.5);
+  vtkNew<vtkGlyph3DMapper> mapper;
+  mapper->SetInputData(centers);
+  mapper->SetSourceConnection(shape->GetOutputPort());
+  vtkNew<vtkActor> glyphs;
+  glyphs->SetMapper(mapper);
+  scene.Renderer->AddActor(glyphs);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  ExpectChangeShownAsFresh(
+    scene, pass, [&] { shape->SetXLength(3.0); }, NewPass<vtkDepthShadowMapPass>, "glyph source");
+  auto image = CaptureAsRendered(scene.Window);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, { 1.2, 0.0, 0.0 }), ShadowedBelow);
+}
+
+// A follower turns with the camera: its shadow turns with it.
+TEST(ShadowEverydayUse, FollowerTurnsWithTheCamera)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  scene.Renderer->RemoveActor(scene.Sphere);
+  vtkNew<vtkPlaneSource> card;
+  card->SetOrigin(-2.0, 0.0, -0.3);
+  card->SetPoint1(2.0, 0.0, -0.3);
+  card->SetPoint2(-2.0, 0.0, 0.3);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(card->GetOutputPort());
+  vtkNew<vtkFollower> follower;
+  follower->SetMapper(mapper);
+  follower->SetPosition(0.0, 0.0, 2.0);
+  follower->SetCamera(scene.Renderer->GetActiveCamera());
+  scene.Renderer->AddActor(follower);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  ExpectChangeShownAsFresh(
+    scene, pass, [&] { scene.Renderer->GetActiveCamera()->Azimuth(60.0); },
+    NewPass<vtkDepthShadowMapPass>, "camera turned");
+}
+
+// A level-of-detail prop switched to another level draws that level into
+// the maps of the next frame.
+TEST(ShadowEverydayUse, LevelOfDetailSwitch)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  scene.Renderer->RemoveActor(scene.Sphere);
+  vtkNew<vtkCubeSource> cube; // the sphere's bounds: the same fits, another shadow
+  const double* bounds = scene.Sphere->GetBounds();
+  cube->SetBounds(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5]);
+  vtkNew<vtkPolyDataMapper> coarse;
+  coarse->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkLODProp3D> lod;
+  const int fine = lod->AddLOD(scene.Sphere->GetMapper(), 0.0);
+  const int boxed = lod->AddLOD(coarse, 0.0);
+  lod->AutomaticLODSelectionOff();
+  lod->SetSelectedLODID(fine);
+  scene.Renderer->AddViewProp(lod);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  ExpectChangeShownAsFresh(
+    scene, pass, [&] { lod->SetSelectedLODID(boxed); }, NewPass<vtkDepthShadowMapPass>, "level switched");
+  auto image = CaptureAsRendered(scene.Window);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, { 0.9, 0.9, 0.0 }), ShadowedBelow) << "box's corner";
+}
+
+// Layers rendered while the user drags (where vtkLODActor and ParaView draw
+// coarse levels chosen by time) are rendered again for the still frame.
+TEST(ShadowEverydayUse, StillFrameAfterADragRendersItsLayers)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  scene.Window->SetDesiredUpdateRate(1.0e6);
+  scene.Window->Render();
+  const int layers = pass->GetNumberOfShadowMapLayers();
+  scene.Window->SetDesiredUpdateRate(0.0001);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfRenderedLayers(), layers);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 0) << "a still camera re-rendered a layer";
+}
+
+// Replacing or deleting a pass leaves no maps behind: 100 toggles of each
+// pass, each time a new one (the README's one line), keep memory flat
+// (before passes released their maps when replaced: 8 MiB per toggle of
+// cascades, 64 MiB per toggle of dual depth).
+TEST(ShadowEverydayUse, TogglingPassesKeepsMemoryFlat)
+{
+  const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
+    kinds = { { "depth", NewPass<vtkDepthShadowMapPass> },
+      { "warped", NewPass<vtkWarpedShadowMapPass> },
+      { "cascaded", NewPass<vtkCascadedShadowMapPass> },
+      { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
+      { "variance", NewPass<vtkVarianceShadowMapPass> } };
+  // Freed blocks of 1 MiB or more go back to the system at once: otherwise
+  // glibc raises its mmap threshold after the first map is freed and keeps
+  // later maps in a heap that resident memory never shrinks from.
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  TestScene scene(160, 120);
+  scene.SetSun(Down);
+  for (const auto& kind : kinds)
+  {
+    auto toggle = [&] {
+      vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
+      scene.Renderer->SetPass(pass);
+      scene.Window->Render();
+      scene.Renderer->SetPass(nullptr);
+      scene.Window->Render();
+    };
+    for (int i = 0; i < 5; ++i)
+    {
+      toggle();
+    }
+    const double before = ResidentMiB();
+    for (int i = 0; i < 100; ++i)
+    {
+      toggle();
+    }
+    const double grown = ResidentMiB() - before;
+    // One toggle's maps are 8 MiB (16-bit depth) to 64 MiB (two floats and a
+    // second output): a leak of any of them grows memory by 800 MiB or more.
+    // The allocator's own steps stay within 16 MiB.
+    EXPECT_LT(grown, 32.0) << kind.first << ": MiB grown over 100 toggles";
+    std::cout << kind.first << ": " << grown << " MiB grown over 100 toggles\n";
+  }
+}
+
+// A pass kept by the user and taken off the renderer releases its maps; put
+// back, it renders them again.
+TEST(ShadowEverydayUse, PassTakenOffReleasesItsMaps)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  vtkNew<vtkCascadedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  RenderAndCapture(scene.Window);
+  EXPECT_GT(pass->GetShadowMapMemory(), 0u);
+  scene.Renderer->SetPass(nullptr);
+  RenderAndCapture(scene.Window);
+  EXPECT_EQ(pass->GetShadowMapMemory(), 0u) << "maps held by a pass no renderer uses";
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, UnderSphere), ShadowedBelow);
+}
+
+// A prop that receives no shadow entering or leaving the view changes no
+// other prop's shader.
+TEST(ShadowEverydayUse, NonReceiverEnteringBuildsNoShader)
+{
+  TestScene scene;
+  scene.SetSun(Down);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  vtkSmartPointer<vtkActor> marker = AddBox(scene.Renderer, { -4.0, 3.0, 0.5 }, { 1.0, 1.0, 1.0 });
+  vtkNew<vtkInformation> keys;
+  keys->Set(vtkAbstractShadowMapPass::RECEIVES_SHADOWS(), 0);
+  marker->SetPropertyKeys(keys);
+  RenderAndCapture(scene.Window);
+  marker->SetVisibility(false);
+  RenderAndCapture(scene.Window);
+  marker->SetVisibility(true);
+  RenderAndCapture(scene.Window);
+  const int builds = pass->GetNumberOfShaderBuilds();
+  marker->SetVisibility(false);
+  RenderAndCapture(scene.Window);
+  marker->SetVisibility(true);
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, UnderSphere), ShadowedBelow);
+}
+
+// One pass shared by two renderers side by side: each shows its own view's
+// shadows, as a fresh pass would, and still cameras re-render no layer.
+TEST(ShadowEverydayUse, TwoRenderersShareAPass)
+{
+  TestScene scene(480, 240);
+  scene.SetSun(glm::normalize(glm::dvec3(-0.3, 0.2, -1.0)));
+  vtkNew<vtkRenderer> right;
+  scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  right->SetBackground(0.2, 0.3, 0.4);
+  for (vtkActor* actor : { scene.Ground.Get(), scene.Sphere.Get(), scene.Box.Get() })
+  {
+    right->AddActor(actor);
+  }
+  right->SetLightFollowCamera(false);
+  right->AutomaticLightCreationOff();
+  scene.Renderer->GetLights()->InitTraversal();
+  right->AddLight(scene.Renderer->GetLights()->GetNextItem());
+  right->GetActiveCamera()->SetPosition(12.0, 6.0, 14.0);
+  right->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  right->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+  right->ResetCameraClippingRange();
+  scene.Window->AddRenderer(right);
+  vtkNew<vtkCascadedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  right->SetPass(pass);
+  // Rendered, then captured as rendered: vtkWindowToImageFilter's own render
+  // moves each camera's view angle by a rounding error.
+  scene.Window->Render();
+  const int updates = pass->GetNumberOfShadowMapUpdates();
+  scene.Window->Render();
+  const auto shared = RgbBytes(CaptureAsRendered(scene.Window));
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates) << "still cameras re-rendered the maps";
+  vtkNew<vtkCascadedShadowMapPass> leftFresh;
+  vtkNew<vtkCascadedShadowMapPass> rightFresh;
+  scene.Renderer->SetPass(leftFresh);
+  right->SetPass(rightFresh);
+  scene.Window->Render();
+  const auto separate = RgbBytes(CaptureAsRendered(scene.Window));
+  EXPECT_TRUE(shared == separate) << "a shared pass draws other shadows than a pass per renderer";
+  auto image = CaptureAsRendered(scene.Window);
+  EXPECT_LT(LuminanceAt(right, image, GroundShadowOfSphereCenter(glm::normalize(glm::dvec3(-0.3, 0.2, -1.0)))),
+    ShadowedBelow);
+}
+
+// A stereo camera: each eye keeps maps of its own, a still camera re-renders
+// neither, and the frame is a fresh pass's.
+TEST(ShadowEverydayUse, StereoEyesKeepTheirMaps)
+{
+  TestScene scene(480, 240);
+  scene.SetSun(glm::normalize(glm::dvec3(-0.3, 0.2, -1.0)));
+  scene.Window->SetStereoTypeToSplitViewportHorizontal();
+  scene.Window->SetStereoRender(1);
+  vtkNew<vtkCascadedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  scene.Window->Render();
+  const int updates = pass->GetNumberOfShadowMapUpdates();
+  EXPECT_EQ(updates, 2) << "one update per eye";
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates) << "a still stereo camera re-rendered the maps";
+  const auto kept = RgbBytes(CaptureAsRendered(scene.Window));
+  EXPECT_TRUE(kept == FreshPassFrame(scene, NewPass<vtkCascadedShadowMapPass>()));
+  scene.Renderer->GetActiveCamera()->Azimuth(10.0);
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates + 2) << "each eye fits the moved camera";
+}
