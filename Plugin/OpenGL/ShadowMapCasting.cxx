@@ -69,9 +69,17 @@ CasterGLState::CasterGLState(vtkOpenGLState* state, bool minimumBlending)
   , DepthTest(state, GL_DEPTH_TEST)
   , Offset(state, GL_POLYGON_OFFSET_FILL)
   , Multisample(state, GL_MULTISAMPLE)
+  , DepthFunc(state)
+  , DepthMask(state)
+  , ClearColor(state)
+  , ActiveTexture(state)
   , DepthClampWasOn(glIsEnabled(GL_DEPTH_CLAMP))
   , MinimumBlending(minimumBlending)
 {
+  state->vtkglGetIntegerv(GL_BLEND_EQUATION_RGB, &this->BlendEquation[0]);
+  state->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, &this->BlendEquation[1]);
+  glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &this->PolygonOffset[0]);
+  glGetFloatv(GL_POLYGON_OFFSET_UNITS, &this->PolygonOffset[1]);
   state->PushFramebufferBindings();
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglDisable(GL_BLEND);
@@ -93,15 +101,15 @@ CasterGLState::CasterGLState(vtkOpenGLState* state, bool minimumBlending)
 //------------------------------------------------------------------------------
 CasterGLState::~CasterGLState()
 {
-  glPolygonOffset(0.0f, 0.0f);
+  // What the caster draws set: the depth function, mask, clear colour and
+  // active texture unit go back with their scoped members.
+  glPolygonOffset(this->PolygonOffset[0], this->PolygonOffset[1]);
   if (!this->DepthClampWasOn)
   {
     glDisable(GL_DEPTH_CLAMP);
   }
-  if (this->MinimumBlending)
-  {
-    this->State->vtkglBlendEquation(GL_FUNC_ADD);
-  }
+  this->State->vtkglBlendEquationSeparate(
+    static_cast<unsigned int>(this->BlendEquation[0]), static_cast<unsigned int>(this->BlendEquation[1]));
   this->State->PopFramebufferBindings();
 }
 } // namespace shadowmaps

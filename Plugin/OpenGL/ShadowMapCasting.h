@@ -53,6 +53,12 @@ private:
   vtkOpenGLState::ScopedglEnableDisable DepthTest;
   vtkOpenGLState::ScopedglEnableDisable Offset;
   vtkOpenGLState::ScopedglEnableDisable Multisample;
+  vtkOpenGLState::ScopedglDepthFunc DepthFunc;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+  vtkOpenGLState::ScopedglClearColor ClearColor;
+  vtkOpenGLState::ScopedglActiveTexture ActiveTexture;
+  int BlendEquation[2] = { 0, 0 };
+  float PolygonOffset[2] = { 0.0f, 0.0f };
   unsigned char DepthClampWasOn;
   bool MinimumBlending;
 };

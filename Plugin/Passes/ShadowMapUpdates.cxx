@@ -104,7 +104,9 @@ double ReachMargin(const ShadowLight& light, size_t index, const std::vector<glm
   return filterReachTexels * std::max(texel, first) + (normalOffsetTexels + 1.0) * texel;
 }
 
-// The casters inside the view's frustum.
+// The casters inside the view's frustum, or nearer the light than its near
+// plane: casters draw with depth clamping (CasterGLState), which keeps those
+// on the near plane, where they still shadow everything behind them.
 std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const LightView& view)
 {
   std::vector<const Caster*> casters;
@@ -113,7 +115,15 @@ std::vector<const Caster*> CastersInView(const std::vector<Caster>& all, const L
     return casters;
   }
   const std::array<Plane, 6> frustum = FrustumPlanes(view.ViewProjection());
-  const std::vector<Plane> planes(frustum.begin(), frustum.end());
+  constexpr std::size_t Near = 4; // FrustumPlanes: -x, +x, -y, +y, near, far
+  std::vector<Plane> planes;
+  for (std::size_t i = 0; i < frustum.size(); ++i)
+  {
+    if (i != Near)
+    {
+      planes.push_back(frustum[i]);
+    }
+  }
   for (const auto& caster : all)
   {
     if (FrustumMeetsBox(planes, caster.Bounds))

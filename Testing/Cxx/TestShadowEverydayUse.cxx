@@ -4,6 +4,10 @@
 // Each change must show in the next frame exactly as a fresh pass draws it.
 #include "ShadowTestUtilities.h"
 
+#include "ShadowMapVTKCompat.h" // the GL loader first
+
+#include "ShadowMapCasting.h"
+
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkDepthShadowMapPass.h"
 #include "vtkDualDepthShadowMapPass.h"
@@ -12,6 +16,9 @@
 
 #include "vtkActor.h"
 #include "vtkAssembly.h"
+#include "vtkCellArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkProperty.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkFollower.h"
@@ -19,6 +26,8 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLightCollection.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkLODProp3D.h"
 #include "vtkPlane.h"
 #include "vtkPlaneSource.h"
@@ -398,4 +407,56 @@ TEST(ShadowEverydayUse, StereoEyesKeepTheirMaps)
   scene.Renderer->GetActiveCamera()->Azimuth(10.0);
   scene.Window->Render();
   EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates + 2) << "each eye fits the moved camera";
+}
+
+// The casters' GL state is set for their draws and restored after, as the
+// application (or another pass) had it, not reset to fixed values.
+TEST(ShadowEverydayUse, CastingRestoresTheGLState)
+{
+  TestScene scene(64, 48);
+  scene.Window->Render();
+  scene.Window->MakeCurrent();
+  vtkOpenGLState* state = vtkOpenGLRenderWindow::SafeDownCast(scene.Window)->GetState();
+  for (bool minimumBlending : { false, true })
+  {
+    state->vtkglDepthFunc(GL_GREATER);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+    state->vtkglActiveTexture(GL_TEXTURE3);
+    state->vtkglBlendEquation(GL_MAX);
+    glPolygonOffset(2.0f, 3.0f);
+    {
+      const shadowmaps::CasterGLState casting(state, minimumBlending);
+      state->vtkglDepthFunc(GL_LESS);
+      state->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+      state->vtkglActiveTexture(GL_TEXTURE5);
+      glPolygonOffset(1.0f, 1.0f);
+    }
+    GLint depthFunc = 0;
+    GLboolean depthMask = GL_TRUE;
+    GLfloat clear[4] = { 0, 0, 0, 0 };
+    GLint unit = 0;
+    GLint equation = 0;
+    GLfloat offset[2] = { 0, 0 };
+    glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &unit);
+    glGetIntegerv(GL_BLEND_EQUATION_RGB, &equation);
+    glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &offset[0]);
+    glGetFloatv(GL_POLYGON_OFFSET_UNITS, &offset[1]);
+    EXPECT_EQ(depthFunc, GL_GREATER) << minimumBlending;
+    EXPECT_EQ(depthMask, GL_FALSE) << minimumBlending;
+    EXPECT_EQ(clear[2], 0.75f) << minimumBlending;
+    EXPECT_EQ(unit, GL_TEXTURE3) << minimumBlending;
+    EXPECT_EQ(equation, GL_MAX) << minimumBlending;
+    EXPECT_EQ(offset[0], 2.0f) << minimumBlending;
+    EXPECT_EQ(offset[1], 3.0f) << minimumBlending;
+  }
+  // Back to what VTK expects of a frame's start.
+  state->vtkglDepthFunc(GL_LEQUAL);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglActiveTexture(GL_TEXTURE0);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  glPolygonOffset(0.0f, 0.0f);
 }

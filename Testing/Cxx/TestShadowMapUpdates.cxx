@@ -1,0 +1,128 @@
+// The frame-to-frame policy of a renderer's maps (Plugin/Passes/ShadowMapUpdates):
+// which casters a layer draws, when a frame keeps a layer, when views are kept.
+#include "ShadowMapUpdates.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+using shadowmaps::Aabb;
+using shadowmaps::Caster;
+using shadowmaps::LayerRequest;
+using shadowmaps::MapUpdates;
+using shadowmaps::ShadowFrame;
+using shadowmaps::ShadowLight;
+
+namespace
+{
+// A sun straight above, its orthographic view from z = 10 down to z = -10,
+// with the near plane at z = 2: a fit that put it there for depth precision.
+ShadowLight SunAbove()
+{
+  ShadowLight light;
+  light.Kind = shadowmaps::LightKind::Directional;
+  light.Position = glm::dvec3(0.0, 0.0, 10.0);
+  light.Direction = glm::dvec3(0.0, 0.0, -1.0);
+  shadowmaps::LightView view;
+  view.View = glm::lookAt(light.Position, glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
+  view.Projection = glm::ortho(-5.0, 5.0, -5.0, 5.0, 8.0, 20.0);
+  light.Views.push_back(view);
+  return light;
+}
+
+Caster BoxCaster(const void* prop, double zMin, double zMax, vtkMTimeType version = 1)
+{
+  Caster caster;
+  caster.Prop = static_cast<vtkProp*>(const_cast<void*>(prop));
+  caster.Bounds = Aabb::FromBounds(std::array<double, 6>{ -1.0, 1.0, -1.0, 1.0, zMin, zMax }.data());
+  caster.Version = version;
+  return caster;
+}
+
+const int Props[2] = { 0, 0 };
+const std::vector<glm::dvec3> NoCulling;
+
+LayerRequest RequestFor(const ShadowLight& light)
+{
+  LayerRequest request;
+  request.Light = &light;
+  request.Visible = &NoCulling;
+  return request;
+}
+} // namespace
+
+// Casters draw with depth clamping: one nearer the light than its view's near
+// plane is pancaked onto it and still shadows what lies below.
+TEST(ShadowMapUpdates, CastersNearerThanTheNearPlaneAreDrawn)
+{
+  const ShadowLight light = SunAbove();
+  const std::vector<Caster> casters = { BoxCaster(&Props[0], 3.0, 4.0),
+    BoxCaster(&Props[1], 11.0, 12.0) };
+  MapUpdates updates;
+  updates.BeginUpdate({ 1 }, 1, false, casters);
+  const shadowmaps::LayerPlan plan = updates.Plan(ShadowFrame(), casters, RequestFor(light));
+  ASSERT_TRUE(plan.Render);
+  ASSERT_EQ(plan.Casters.size(), 2u) << "the caster between the near plane and the light, and "
+                                        "the one above the light, which a sun also casts from";
+}
+
+// A layer drawn during a drag (coarse levels of detail) is not kept by the
+// still frame after it; a layer drawn still is kept by the drag.
+TEST(ShadowMapUpdates, StillFramesKeepNoLayerDrawnInADrag)
+{
+  const ShadowLight light = SunAbove();
+  const std::vector<Caster> casters = { BoxCaster(&Props[0], 0.0, 1.0) };
+  ShadowFrame still;
+  ShadowFrame drag;
+  drag.Interactive = true;
+  MapUpdates updates;
+  updates.BeginUpdate({ 1 }, 1, false, casters);
+  updates.Rendered(0, updates.Plan(still, casters, RequestFor(light)));
+  EXPECT_FALSE(updates.Plan(drag, casters, RequestFor(light)).Render) << "a drag keeps it";
+  EXPECT_FALSE(updates.Plan(still, casters, RequestFor(light)).Render) << "so does a still frame";
+  // Drawn in a drag: a new version of the caster makes the drag render it.
+  const std::vector<Caster> changed = { BoxCaster(&Props[0], 0.0, 1.0, 2) };
+  updates.BeginUpdate({ 1 }, 1, false, changed);
+  shadowmaps::LayerPlan dragged = updates.Plan(drag, changed, RequestFor(light));
+  ASSERT_TRUE(dragged.Render);
+  updates.Rendered(0, std::move(dragged));
+  EXPECT_FALSE(updates.Plan(drag, changed, RequestFor(light)).Render) << "the next drag frame";
+  EXPECT_TRUE(updates.Plan(still, changed, RequestFor(light)).Render) << "the still frame";
+}
+
+// A caster whose version changed re-renders the layers that drew it; the
+// layers' key forgets every layer.
+TEST(ShadowMapUpdates, ChangedCastersAndKeysReRender)
+{
+  const ShadowLight light = SunAbove();
+  std::vector<Caster> casters = { BoxCaster(&Props[0], 0.0, 1.0) };
+  MapUpdates updates;
+  updates.BeginUpdate({ 1 }, 1, false, casters);
+  updates.Rendered(0, updates.Plan(ShadowFrame(), casters, RequestFor(light)));
+  EXPECT_FALSE(updates.Plan(ShadowFrame(), casters, RequestFor(light)).Render);
+  casters[0].Version = 2;
+  updates.BeginUpdate({ 1 }, 1, false, casters);
+  EXPECT_TRUE(updates.Plan(ShadowFrame(), casters, RequestFor(light)).Render) << "new version";
+  updates.Rendered(0, updates.Plan(ShadowFrame(), casters, RequestFor(light)));
+  updates.BeginUpdate({ 2 }, 1, false, casters);
+  EXPECT_TRUE(updates.Plan(ShadowFrame(), casters, RequestFor(light)).Render) << "new key";
+}
+
+// Views are kept only where nothing but the camera moved since.
+TEST(ShadowMapUpdates, ViewsKeptOnlyWhenOnlyTheCameraMoved)
+{
+  const ShadowLight light = SunAbove();
+  const Aabb bounds = Aabb::FromBounds(std::array<double, 6>{ -1, 1, -1, 1, -1, 1 }.data());
+  MapUpdates updates;
+  updates.Finish({ light }, { 1, 2, 3 }, 5, 1024, bounds);
+  EXPECT_TRUE(updates.Current({ 1, 2, 3 }));
+  EXPECT_FALSE(updates.Current({ 1, 2, 4 }));
+  EXPECT_EQ(updates.KeptViews(light, 5, 1024, bounds).size(), 1u);
+  EXPECT_TRUE(updates.KeptViews(light, 6, 1024, bounds).empty()) << "a parameter changed";
+  EXPECT_TRUE(updates.KeptViews(light, 5, 2048, bounds).empty()) << "another resolution";
+  ShadowLight moved = light;
+  moved.Direction = glm::dvec3(0.0, 0.1, -1.0);
+  EXPECT_TRUE(updates.KeptViews(moved, 5, 1024, bounds).empty()) << "the light turned";
+  updates.Invalidate();
+  EXPECT_FALSE(updates.Current({ 1, 2, 3 }));
+  EXPECT_TRUE(updates.KeptViews(light, 5, 1024, bounds).empty());
+}
