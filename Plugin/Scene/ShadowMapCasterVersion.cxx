@@ -6,10 +6,12 @@
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataObject.h"
+#include "vtkFollower.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPlaneCollection.h"
 #include "vtkProp.h"
 #include "vtkProp3D.h"
+#include "vtkProp3DFollower.h"
 
 #include <cstring>
 
@@ -17,16 +19,14 @@ namespace shadowmaps
 {
 namespace
 {
-// FNV-1a over 64-bit words: versions are compared for equality only.
+// An FNV-style mix of 64-bit words: versions are compared for equality only.
 class VersionHash
 {
 public:
   void Add(vtkMTimeType word)
   {
-    for (int byte = 0; byte < 8; ++byte)
-    {
-      this->Value = (this->Value ^ ((word >> (8 * byte)) & 0xffu)) * 1099511628211ull;
-    }
+    this->Value = (this->Value ^ word) * 1099511628211ull;
+    this->Value ^= this->Value >> 29;
   }
   void Add(const double value)
   {
@@ -89,14 +89,18 @@ vtkMTimeType CasterVersion(vtkProp* prop)
 {
   VersionHash hash;
   hash.Add(prop->GetRedrawMTime());
-  // Parts with their composed matrices: a follower's matrix follows its
-  // camera, which no modification time records.
-  ForEachPart(prop, [&hash](vtkProp* part, vtkMatrix4x4* pathMatrix) {
-    hash.Add(part->GetRedrawMTime());
-    AddMatrix(pathMatrix, hash);
-    if (auto* placed = vtkProp3D::SafeDownCast(part))
+  // Parts with their composed matrices. A follower's matrix follows its
+  // camera, which no modification time records; other props' matrices follow
+  // their modification times.
+  ForEachPart(prop, [prop, &hash](vtkProp* part, vtkMatrix4x4* pathMatrix) {
+    if (part != prop)
     {
-      AddMatrix(placed->GetMatrix(), hash);
+      hash.Add(part->GetRedrawMTime());
+      AddMatrix(pathMatrix, hash);
+    }
+    if (vtkFollower::SafeDownCast(part) || vtkProp3DFollower::SafeDownCast(part))
+    {
+      AddMatrix(vtkProp3D::SafeDownCast(part)->GetMatrix(), hash);
     }
     if (vtkAbstractMapper* mapper = MapperOf(part))
     {
