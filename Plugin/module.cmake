@@ -9,6 +9,8 @@ set(shadowmaps_shaders
   vtkShadowMapsAnalysisFS
   vtkShadowMapsBlurFS
   vtkShadowMapsCasterFS
+  vtkShadowMapsSpriteFS
+  vtkShadowMapsSpriteVS
   vtkShadowMapsDepthLookupFS
   vtkShadowMapsDualDepthLookupFS
   vtkShadowMapsFilterFS

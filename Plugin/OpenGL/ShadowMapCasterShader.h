@@ -78,6 +78,19 @@ public:
   /// shader stage that reads the uniform cameraParallel (impostors cast their
   /// rays by it) reads the light view's own while casting instead.
   static void RouteCameraParallel(std::string& shader);
+
+  /// Points drawn as spheres (the fragment shader rounds gl_PointCoord and
+  /// writes ZCalcR's depth): while casting, the vertex shader sizes each point
+  /// to the sphere the scene camera shows, in map texels
+  /// (Shaders/vtkShadowMapsSpriteVS.glsl), and the branch computes its depth.
+  static void SizeSprites(std::string& vertexShader, const std::string& fragmentShader);
+
+  /// Whether a fragment shader draws VTK's points as spheres.
+  static bool DrawsSprites(const std::string& fragmentShader);
+
+  /// Whether a program's points take their size from SizeSprites' code (the
+  /// casters' draws then need GL_PROGRAM_POINT_SIZE).
+  static bool SizesSprites(vtkShaderProgram* program);
 };
 
 /// The uniforms of the casters' branch for the view being rendered.
@@ -101,6 +114,14 @@ public:
   /// both paths: samplers of two types must not share a unit).
   void SetPeeling(bool secondPass, int peelUnit);
 
+  /// Points drawn as spheres (CasterShader::SizeSprites): the view's world to
+  /// clip transform, the light (xyz towards it with w 0, or its position with
+  /// w 1), the scene camera's eye depth row (dot(xyz, p) + w), and the light
+  /// camera's P00 over the scene camera's, whether the scene camera is
+  /// parallel, and the map's size in texels.
+  void SetSprites(const glm::mat4& worldToClip, const glm::vec4& light, const glm::vec4& sceneDepth,
+    const glm::vec3& scale);
+
   /// Selects the branch and sets the view's uniforms.
   void ApplyCasting(vtkShaderProgram* program) const;
 
@@ -118,6 +139,11 @@ private:
   glm::vec4 LightDepthPlane{ 0.0f };
   float LightDepthPerDistance = 0.0f;
   bool Parallel = false;
+  glm::mat4 SpriteWorldToClip{ 1.0f };
+  glm::mat4 SpriteClipToWorld{ 1.0f };
+  glm::vec4 SpriteLight{ 0.0f };
+  glm::vec4 SpriteSceneDepth{ 0.0f };
+  glm::vec3 SpriteScale{ 0.0f };
 };
 } // namespace shadowmaps
 

@@ -29,6 +29,12 @@ bool IsRigid(const glm::dmat4& m)
 } // namespace
 
 //------------------------------------------------------------------------------
+glm::dmat4 CameraProjectionOf(const LightView& view)
+{
+  return IsRigid(view.View) ? view.Projection : view.ViewProjection();
+}
+
+//------------------------------------------------------------------------------
 void SetCameraToView(
   vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view, bool sceneParallel)
 {
@@ -41,7 +47,7 @@ void SetCameraToView(
   camera->SetFocalPoint(eye.x + forward.x, eye.y + forward.y, eye.z + forward.z);
   camera->SetViewUp(up.x, up.y, up.z);
   camera->SetParallelProjection(sceneParallel);
-  ToVtk(rigid ? view.Projection : view.ViewProjection(), projection);
+  ToVtk(CameraProjectionOf(view), projection);
   camera->SetExplicitProjectionTransformMatrix(projection);
   camera->UseExplicitProjectionTransformMatrixOn();
   camera->Modified();
@@ -74,8 +80,10 @@ CasterGLState::CasterGLState(vtkOpenGLState* state, bool minimumBlending)
   , ClearColor(state)
   , ActiveTexture(state)
   , DepthClampWasOn(glIsEnabled(GL_DEPTH_CLAMP))
+  , ProgramPointSizeWasOn(glIsEnabled(GL_PROGRAM_POINT_SIZE))
   , MinimumBlending(minimumBlending)
 {
+  this->ProgramPointSize = this->ProgramPointSizeWasOn;
   state->vtkglGetIntegerv(GL_BLEND_EQUATION_RGB, &this->BlendEquation[0]);
   state->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, &this->BlendEquation[1]);
   glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &this->PolygonOffset[0]);
@@ -99,6 +107,16 @@ CasterGLState::CasterGLState(vtkOpenGLState* state, bool minimumBlending)
 }
 
 //------------------------------------------------------------------------------
+void CasterGLState::UseProgramPointSize(bool on)
+{
+  if (on != this->ProgramPointSize)
+  {
+    on ? glEnable(GL_PROGRAM_POINT_SIZE) : glDisable(GL_PROGRAM_POINT_SIZE);
+    this->ProgramPointSize = on;
+  }
+}
+
+//------------------------------------------------------------------------------
 CasterGLState::~CasterGLState()
 {
   // What the caster draws set: the depth function, mask, clear colour and
@@ -108,6 +126,7 @@ CasterGLState::~CasterGLState()
   {
     glDisable(GL_DEPTH_CLAMP);
   }
+  this->UseProgramPointSize(this->ProgramPointSizeWasOn);
   this->State->vtkglBlendEquationSeparate(
     static_cast<unsigned int>(this->BlendEquation[0]), static_cast<unsigned int>(this->BlendEquation[1]));
   this->State->PopFramebufferBindings();

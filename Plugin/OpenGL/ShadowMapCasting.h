@@ -6,6 +6,8 @@
 
 #include "vtkOpenGLState.h"
 
+#include <glm/glm.hpp>
+
 #include <array>
 
 class vtkCamera;
@@ -14,6 +16,10 @@ class vtkMatrix4x4;
 namespace shadowmaps
 {
 struct LightView;
+
+/// The projection SetCameraToView gives the light camera: the view's own for
+/// a rigid view matrix, else the whole view-projection.
+glm::dmat4 CameraProjectionOf(const LightView& view);
 
 /// Points `camera` at a light view. A rigid view becomes the camera's frame and
 /// the projection (stored in `projection`) is explicit, so VTK's tiled aspect
@@ -45,6 +51,11 @@ public:
   CasterGLState(const CasterGLState&) = delete;
   CasterGLState& operator=(const CasterGLState&) = delete;
 
+  /// Whether the next draw takes its point size from its vertex shader: on for
+  /// points drawn as spheres (CasterShader::SizesSprites), whose size in the
+  /// map is the size of the sphere they show, off for other points.
+  void UseProgramPointSize(bool on);
+
 private:
   vtkOpenGLState* State;
   vtkOpenGLState::ScopedglViewport Viewport;
@@ -60,6 +71,8 @@ private:
   int BlendEquation[2] = { 0, 0 };
   float PolygonOffset[2] = { 0.0f, 0.0f };
   unsigned char DepthClampWasOn;
+  unsigned char ProgramPointSizeWasOn;
+  bool ProgramPointSize = false;
   bool MinimumBlending;
 };
 } // namespace shadowmaps

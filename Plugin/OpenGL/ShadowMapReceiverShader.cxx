@@ -1,5 +1,6 @@
 #include "ShadowMapReceiverShader.h"
 
+#include "ShadowMapCasterShader.h"
 #include "ShadowMapCrop.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapTrapezoid.h"
@@ -109,7 +110,7 @@ std::string ReceiverShaderConstants()
 std::string ReceiverCallArguments(const ShadowLight& light, int index)
 {
   std::ostringstream arguments;
-  arguments << "vertexVC.xyz, vtkShadowNormalVC, " << index << ", " << light.FirstLayer << ", "
+  arguments << "vtkShadowPositionVC, vtkShadowNormalVC, " << index << ", " << light.FirstLayer << ", "
             << static_cast<int>(light.Layout) << ", " << light.Views.size() << ", "
             << ReceiverFeatures(light);
   return arguments.str();
@@ -169,8 +170,14 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
                        "  vtkShadowPositionDy = dFdy(vertexVC.xyz);\n"
                        "#endif\n"
                      : "");
+  // A point drawn as a sphere shades its sphere's surface, VTK's radius
+  // (ZCalcR times the eye depth) from its centre, where all its fragments are.
+  const std::string position = CasterShader::DrawsSprites(fragmentShader)
+    ? "vertexVC.xyz + normalVCVSOutput * ZCalcR * (cameraParallel != 0 ? 1.0 : -vertexVC.z)"
+    : "vertexVC.xyz";
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
     "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n"
+    "  vec3 vtkShadowPositionVC = " + position + ";\n"
     "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
     "  vtkShadowSetReceiverPlane(vtkShadowNormalVC);\n"
     "#endif\n" +

@@ -39,13 +39,6 @@ void RendererUse::Drawn(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-bool RendererUse::Any() const
-{
-  return std::any_of(this->Watches.begin(), this->Watches.end(),
-    [](const Watch& w) { return w.Renderer != nullptr; });
-}
-
-//------------------------------------------------------------------------------
 void RendererUse::FrameEnded(vtkObject* caller, unsigned long, void*)
 {
   auto watch = std::find_if(this->Watches.begin(), this->Watches.end(),

@@ -30,9 +30,6 @@ public:
   /// The pass draws in `renderer`'s frame.
   void Drawn(vtkRenderer* renderer);
 
-  /// Whether any renderer drew through the pass and still exists.
-  bool Any() const;
-
 private:
   struct Watch
   {

@@ -51,6 +51,7 @@
 #include "vtkVolume.h"
 #include "vtkWeakPointer.h"
 
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include "ShadowMapVTKCompat.h"
 
@@ -234,6 +235,8 @@ struct vtkAbstractShadowMapPass::Internals
   // they were rendered for; Current is the one of the frame being rendered.
   std::map<std::pair<vtkRenderer*, int>, std::unique_ptr<RendererMaps>> PerRenderer;
   RendererMaps* Current = nullptr;
+  // The maps whose lights, layers and storage the shader code was made for.
+  RendererMaps* CodeFor = nullptr;
 
   // The receivers' shader code, the same for every renderer's maps.
   shadowmaps::ReceiverCode Code;
@@ -268,6 +271,8 @@ struct vtkAbstractShadowMapPass::Internals
 
   bool Active = false;
   bool Casting = false;
+  // The GL state of the casters' draws, while they draw.
+  shadowmaps::CasterGLState* CastingState = nullptr;
   bool SceneCameraParallel = false;
   bool WarnedTooManyLights = false;
   bool WarnedNonFiniteViews = false;
@@ -481,33 +486,43 @@ void vtkAbstractShadowMapPass::SelectRendererMaps(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  if (r.Context)
+  const auto held = [renderer](const auto& maps) { return maps.first.first == renderer; };
+  if (!r.Context || std::none_of(r.PerRenderer.begin(), r.PerRenderer.end(), held))
   {
-    r.Context->MakeCurrent();
+    return; // released with the context it was moved from, or never drawn
   }
-  const bool current = r.Context && r.Context->IsCurrent();
+  // At the end of the renderer's frame its context is current; a renderer
+  // being deleted has left its window.
+  const bool switches = renderer->GetRenderWindow() != r.Context;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(r.Context.GetPointer());
+  if (switches)
+  {
+    window->PushContext();
+  }
   for (auto it = r.PerRenderer.begin(); it != r.PerRenderer.end();)
   {
-    if (it->first.first != renderer)
+    if (!held(*it))
     {
       ++it;
       continue;
     }
-    if (current)
-    {
-      it->second->ReleaseGraphicsResources(r.Context);
-    }
+    it->second->ReleaseGraphicsResources(window);
     r.Current = r.Current == it->second.get() ? nullptr : r.Current;
+    r.CodeFor = r.CodeFor == it->second.get() ? nullptr : r.CodeFor;
     for (auto& program : r.ProgramsLastDrawnFor)
     {
       program.second = program.second == it->second.get() ? nullptr : program.second;
     }
     it = r.PerRenderer.erase(it);
   }
-  if (r.PerRenderer.empty() && current)
+  if (r.PerRenderer.empty())
   {
     // No renderer draws through the pass any more: it holds nothing.
-    this->ReleaseGraphicsResources(r.Context);
+    this->ReleaseGraphicsResources(window);
+  }
+  if (switches)
+  {
+    window->PopContext();
   }
 }
 
@@ -519,15 +534,15 @@ void vtkAbstractShadowMapPass::ForgetContext()
   {
     return;
   }
-  // A window finalized since released what its renderers' passes held; one
-  // whose context cannot be made current holds nothing this pass can free.
+  // As VTK's own GL objects free themselves: in their context, made current
+  // for the time it takes. A window finalized since released what its
+  // renderers' passes held (HoldsGraphicsResources is then false).
   if (r.HoldsGraphicsResources)
   {
-    r.Context->MakeCurrent();
-    if (r.Context->IsCurrent())
-    {
-      this->ReleaseGraphicsResources(r.Context);
-    }
+    auto* window = static_cast<vtkOpenGLRenderWindow*>(r.Context.GetPointer());
+    window->PushContext();
+    this->ReleaseGraphicsResources(window);
+    window->PopContext();
   }
   r.HoldsGraphicsResources = false;
   r.Context->RemoveObserver(r.ContextDeleteObserver);
@@ -740,6 +755,13 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     // CollectLights rebuilt the lights without views; the maps hold these.
     r.Lights = r.Current->Updates.GetRenderedLights();
     this->NumberOfShadowMapLayers = r.Current->Layers;
+    if (r.CodeFor != r.Current)
+    {
+      // The shaders follow the lights, layers and storage of the renderer
+      // they draw for: another renderer's may differ.
+      this->ChooseReceiverCode();
+      this->UpdateShaderKey(renderer);
+    }
     return true;
   }
 
@@ -874,6 +896,13 @@ void vtkAbstractShadowMapPass::ChooseStorage()
   r.Current->Storage.Samples = oneValueMap && !r.Current->Storage.MinimumBlending && !combinesLightDepths
     ? std::max(1, std::min(r.Current->Storage.Samples, MaximumSamples()))
     : 1;
+  this->ChooseReceiverCode();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ChooseReceiverCode()
+{
+  Internals& r = *this->Internal;
   r.Code.Definitions = std::string(r.Current->Storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
     r.Representation->GetReceiverDefinitions();
   r.Code.Lookup = r.Representation->GetReceiverLookupCode();
@@ -933,6 +962,7 @@ void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
   r.CasterCode.LinearDepth = AnyLinearDepthView(r.Lights);
   std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code) +
     '|' + r.CasterCode.Key();
+  r.CodeFor = r.Current;
   if (key != r.ShaderKey)
   {
     r.ShaderKey = std::move(key);
@@ -992,6 +1022,15 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
     r.CasterUniforms.SetLightDepth(
       glm::mat4(windowToLight), glm::vec4(depth.Plane), static_cast<float>(depth.PerDistance));
   }
+  // Points drawn as spheres: their size and depth follow the scene camera.
+  const glm::dmat4 lightCameraProjection = shadowmaps::CameraProjectionOf(view);
+  const glm::dvec4 toLight = light.Kind == LightKind::Directional
+    ? glm::dvec4(-glm::normalize(light.Direction), 0.0)
+    : glm::dvec4(light.Position, 1.0);
+  r.CasterUniforms.SetSprites(glm::mat4(view.ViewProjection()), glm::vec4(toLight),
+    glm::vec4(-glm::row(r.Frame.CameraView, 2)),
+    glm::vec3(static_cast<float>(lightCameraProjection[0][0] / r.Frame.CameraProjection[0][0]),
+      r.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(r.Frame.Resolution)));
   // Every program takes the view's uniforms on its first draw into it.
   r.CasterPrograms.Invalidate();
 }
@@ -1052,13 +1091,14 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   std::vector<shadowmaps::RenderedLayer> rendered;
   bool ok = true;
   {
-    const shadowmaps::CasterGLState casterState(state,
+    shadowmaps::CasterGLState casterState(state,
       !shadowmaps::IsDepth(r.Current->Storage.Format) && r.Current->Storage.MinimumBlending);
     vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
     r.SceneCameraParallel = userCamera->GetParallelProjection() != 0;
     renderer->SetActiveCamera(r.LightCamera);
     this->ReserveTextureUnits(renderer);
     r.Casting = true;
+    r.CastingState = &casterState;
     const std::vector<glm::dvec3> visible = this->ShadowReachCulling
       ? shadowmaps::IntersectFrustumWithBox(
           r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
@@ -1116,6 +1156,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
       }
     }
     r.Casting = false;
+    r.CastingState = nullptr;
     renderer->SetActiveCamera(userCamera);
   }
   this->NumberOfRenderedLayers = static_cast<int>(rendered.size());
@@ -1408,6 +1449,7 @@ shadowmaps::CasterBranch vtkAbstractShadowMapPass::InjectShadowCode(std::string&
   std::string& geometryShader, std::string& fragmentShader, bool receives)
 {
   const Internals& r = *this->Internal;
+  shadowmaps::CasterShader::SizeSprites(vertexShader, fragmentShader);
   const shadowmaps::CasterBranch branch =
     shadowmaps::CasterShader::Inject(fragmentShader, r.CasterCode);
   for (std::string* stage : { &vertexShader, &geometryShader, &fragmentShader })
@@ -1433,6 +1475,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   Internals& r = *this->Internal;
   if (r.Casting)
   {
+    r.CastingState->UseProgramPointSize(shadowmaps::CasterShader::SizesSprites(program));
     if (r.CasterPrograms.FirstUse(program))
     {
       r.CastSinceSceneDraw.insert(program);
@@ -1504,6 +1547,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   }
   r.PerRenderer.clear();
   r.Current = nullptr;
+  r.CodeFor = nullptr;
   r.MapView.ReleaseGraphicsResources(window);
   r.Representation->ReleaseGraphicsResources(window);
   if (r.DefaultRepresentation != r.Representation)

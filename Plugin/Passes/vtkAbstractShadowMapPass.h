@@ -424,6 +424,8 @@ private:
   void AssignLayers();
   void ChooseStorage();
   void ChooseSecondDepthMethod();
+  /** The receivers' definitions and lookup code for the current maps' storage. */
+  void ChooseReceiverCode();
   void UpdateShaderKey(vtkOpenGLRenderer* renderer);
   bool ShaderCodeCompiles(vtkOpenGLRenderer* renderer);
   shadowmaps::CasterBranch InjectShadowCode(std::string& vertexShader,

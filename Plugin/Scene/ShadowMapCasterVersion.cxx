@@ -88,18 +88,24 @@ void AddMatrix(vtkMatrix4x4* matrix, VersionHash& hash)
 vtkMTimeType CasterVersion(vtkProp* prop)
 {
   VersionHash hash;
-  hash.Add(prop->GetRedrawMTime());
-  // Parts with their composed matrices. A follower's matrix follows its
-  // camera, which no modification time records; other props' matrices follow
-  // their modification times.
-  ForEachPart(prop, [prop, &hash](vtkProp* part, vtkMatrix4x4* pathMatrix) {
+  bool assembled = false;
+  ForEachPart(prop, [prop, &hash, &assembled](vtkProp* part, vtkMatrix4x4* pathMatrix) {
     if (part != prop)
     {
-      hash.Add(part->GetRedrawMTime());
+      // Assemblies poke each part's matrix, which modifies it, at every
+      // draw: a part is known by its composed and own matrices' values and its
+      // visibility, not by its modification time.
+      assembled = true;
+      hash.Add(static_cast<vtkMTimeType>(part->GetVisibility()));
       AddMatrix(pathMatrix, hash);
+      if (auto* placed = vtkProp3D::SafeDownCast(part))
+      {
+        AddMatrix(placed->GetMatrix(), hash);
+      }
     }
-    if (vtkFollower::SafeDownCast(part) || vtkProp3DFollower::SafeDownCast(part))
+    else if (vtkFollower::SafeDownCast(part) || vtkProp3DFollower::SafeDownCast(part))
     {
+      // A follower's matrix follows its camera, which no modification time records.
       AddMatrix(vtkProp3D::SafeDownCast(part)->GetMatrix(), hash);
     }
     if (vtkAbstractMapper* mapper = MapperOf(part))
@@ -107,6 +113,14 @@ vtkMTimeType CasterVersion(vtkProp* prop)
       AddMapper(mapper, hash);
     }
   });
+  if (!assembled)
+  {
+    hash.Add(prop->GetRedrawMTime());
+  }
+  else if (auto* placed = vtkProp3D::SafeDownCast(prop))
+  {
+    AddMatrix(placed->GetMatrix(), hash);
+  }
   return hash.Get();
 }
 } // namespace shadowmaps

@@ -25,6 +25,7 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -140,6 +141,11 @@ TEST(ShadowEverydayUse, AssemblyParts)
   ExpectChangeShownAsFresh(
     scene, pass, [&] { scene.Sphere->SetPosition(3.0, -1.0, 0.0); },
     NewPass<vtkDepthShadowMapPass>, "part's position");
+  // Assemblies modify their parts at every draw (PokeMatrix): still frames
+  // must still keep the maps.
+  scene.Window->Render();
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 0) << "a still frame re-rendered the assembly";
 }
 
 // A vtkPropAssembly's part's input moves the shadow.
@@ -159,6 +165,9 @@ TEST(ShadowEverydayUse, PropAssemblyParts)
   auto image = CaptureAsRendered(scene.Window);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, UnderSphere), ShadowedBelow);
   EXPECT_GT(LuminanceAt(scene.Renderer, image, { 0.75, 0.75, 0.0 }), LitAbove) << "cut away by the facets";
+  scene.Window->Render();
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 0) << "a still frame re-rendered the assembly";
 }
 
 // A glyph mapper's source (its input port 1) changed upstream.
@@ -387,6 +396,48 @@ TEST(ShadowEverydayUse, TwoRenderersShareAPass)
     ShadowedBelow);
 }
 
+// Two renderers sharing a pass and its shaders, with other lights each: each
+// renderer's frame is the one a pass of its own draws.
+TEST(ShadowEverydayUse, TwoRenderersWithOtherLights)
+{
+  TestScene scene(480, 240);
+  scene.SetSun(glm::normalize(glm::dvec3(-0.3, 0.2, -1.0)));
+  vtkNew<vtkRenderer> right;
+  scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  right->SetBackground(0.2, 0.3, 0.4);
+  for (vtkActor* actor : { scene.Ground.Get(), scene.Sphere.Get(), scene.Box.Get() })
+  {
+    right->AddActor(actor);
+  }
+  right->AutomaticLightCreationOff();
+  vtkNew<vtkLight> spot;
+  spot->SetLightTypeToSceneLight();
+  spot->SetPositional(true);
+  spot->SetPosition(-1.0, 0.5, 5.0);
+  spot->SetFocalPoint(0.0, 0.0, 0.0);
+  spot->SetConeAngle(40.0);
+  spot->SetAttenuationValues(1.0, 0.0, 0.0);
+  scene.Renderer->GetLights()->InitTraversal();
+  right->AddLight(scene.Renderer->GetLights()->GetNextItem());
+  right->AddLight(spot);
+  right->SetActiveCamera(scene.Renderer->GetActiveCamera());
+  scene.Window->AddRenderer(right);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  right->SetPass(pass);
+  scene.Window->Render();
+  scene.Window->Render();
+  const auto shared = RgbBytes(CaptureAsRendered(scene.Window));
+  vtkNew<vtkWarpedShadowMapPass> leftFresh;
+  vtkNew<vtkWarpedShadowMapPass> rightFresh;
+  scene.Renderer->SetPass(leftFresh);
+  right->SetPass(rightFresh);
+  scene.Window->Render();
+  EXPECT_TRUE(shared == RgbBytes(CaptureAsRendered(scene.Window)))
+    << "a renderer drew with the other's lights' shader code";
+}
+
 // A stereo camera: each eye keeps maps of its own, a still camera re-renders
 // neither, and the frame is a fresh pass's.
 TEST(ShadowEverydayUse, StereoEyesKeepTheirMaps)
@@ -459,4 +510,118 @@ TEST(ShadowEverydayUse, CastingRestoresTheGLState)
   state->vtkglActiveTexture(GL_TEXTURE0);
   state->vtkglBlendEquation(GL_FUNC_ADD);
   glPolygonOffset(0.0f, 0.0f);
+}
+
+namespace
+{
+// The point size (or line width) in pixels that VTK's impostors draw as a
+// sphere (tube) of `radius` world units at `center`, seen by the renderer's
+// camera: VTK sizes them as radius = size / (width * P00) * eye distance.
+double PixelsForRadius(vtkRenderer* renderer, const glm::dvec3& center, double radius)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  int width = 0;
+  int height = 0;
+  int origin[2];
+  renderer->GetTiledSizeAndOrigin(&width, &height, origin, origin + 1);
+  vtkMatrix4x4* projection =
+    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  double eye[3];
+  camera->GetPosition(eye);
+  double direction[3];
+  camera->GetDirectionOfProjection(direction);
+  const double distance = glm::dot(center - glm::dvec3(eye[0], eye[1], eye[2]),
+    glm::dvec3(direction[0], direction[1], direction[2]));
+  return radius * width * projection->GetElement(0, 0) / distance;
+}
+
+vtkSmartPointer<vtkActor> PointsAsSpheres(
+  TestScene& scene, const std::vector<glm::dvec3>& centers, double radius)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> vertices;
+  for (const auto& c : centers)
+  {
+    vertices->InsertNextCell(1);
+    vertices->InsertCellPoint(points->InsertNextPoint(c.x, c.y, c.z));
+  }
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  data->SetVerts(vertices);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRenderPointsAsSpheres(true);
+  actor->GetProperty()->SetPointSize(
+    static_cast<float>(PixelsForRadius(scene.Renderer, centers.front(), radius)));
+  scene.Renderer->AddActor(actor);
+  return actor;
+}
+} // namespace
+
+// Points drawn as spheres cast the shadow of the sphere they show, under every
+// view layout: its centre dark, its rim's shadow dark, beyond it lit.
+TEST(ShadowEverydayUse, PointsAsSpheresCastTheirSpheresShadows)
+{
+  const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
+    kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
+      { "warped", NewPass<vtkWarpedShadowMapPass> },
+      { "cascaded", NewPass<vtkCascadedShadowMapPass> } };
+  for (const auto& kind : kinds)
+  {
+    for (int light = 0; light < 3; ++light)
+    {
+      TestScene scene;
+      scene.Renderer->RemoveActor(scene.Sphere);
+      const glm::dvec3 center(0.0, 0.0, 1.5);
+      glm::dvec3 shadow;
+      std::string what = kind.first;
+      if (light == 0)
+      {
+        scene.SetSun(Down);
+        shadow = glm::dvec3(0.0, 0.0, 0.0);
+        what += ", sun";
+      }
+      else
+      {
+        const glm::dvec3 position(0.0, 0.0, 6.0);
+        if (light == 1)
+        {
+          scene.SetSpot(position, 60.0);
+          what += ", spot";
+        }
+        else
+        {
+          scene.SetPoint(position);
+          what += ", point";
+        }
+        shadow = GroundShadowOfSphereCenterFrom(position);
+      }
+      PointsAsSpheres(scene, { center }, 1.0);
+      vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
+      // A sprite's size in the map is limited to the GL's largest point size
+      // (255 on llvmpipe): at 1024 texels the point light's cube face needs 232.
+      pass->SetResolution(1024);
+      scene.Renderer->SetPass(pass);
+      auto image = RenderAndCapture(scene.Window);
+      if (light == 0 && kind.first == "uniform")
+      {
+        GLfloat range[2] = { 0.0f, 0.0f };
+        glGetFloatv(GL_POINT_SIZE_RANGE, range);
+        std::cout << "[ measured ] largest point size " << range[1] << "\n";
+      }
+      // The shadow's radius: 1 under the sun; 6 / 4.5 under the lights at z 6.
+      const double rim = light == 0 ? 1.0 : 6.0 / 4.5;
+      EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow), ShadowedBelow) << what << ": centre";
+      // Sides the sphere does not hide from the camera (it looks along +y).
+      for (const glm::dvec3 side : { glm::dvec3(1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(-1, 0, 0) })
+      {
+        EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow + 0.75 * rim * side), ShadowedBelow)
+          << what << ": inside the rim";
+        EXPECT_GT(LuminanceAt(scene.Renderer, image, shadow + 1.35 * rim * side), LitAbove)
+          << what << ": beyond the rim";
+      }
+    }
+  }
 }
