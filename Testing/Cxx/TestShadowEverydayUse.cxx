@@ -351,13 +351,14 @@ TEST(ShadowEverydayUse, NonReceiverEnteringBuildsNoShader)
   EXPECT_LT(LuminanceAt(scene.Renderer, image, UnderSphere), ShadowedBelow);
 }
 
-// One pass shared by two renderers side by side: each shows its own view's
-// shadows, as a fresh pass would, and still cameras re-render no layer.
-TEST(ShadowEverydayUse, TwoRenderersShareAPass)
+namespace
 {
-  TestScene scene(480, 240);
-  scene.SetSun(glm::normalize(glm::dvec3(-0.3, 0.2, -1.0)));
-  vtkNew<vtkRenderer> right;
+const glm::dvec3 SideSun = glm::normalize(glm::dvec3(-0.3, 0.2, -1.0));
+
+// `scene`'s renderer on the left half of its window, `right` on the right
+// half with the same actors and the scene's light.
+void ShareSceneWithRightHalf(TestScene& scene, vtkRenderer* right)
+{
   scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
   right->SetViewport(0.5, 0.0, 1.0, 1.0);
   right->SetBackground(0.2, 0.3, 0.4);
@@ -369,11 +370,22 @@ TEST(ShadowEverydayUse, TwoRenderersShareAPass)
   right->AutomaticLightCreationOff();
   scene.Renderer->GetLights()->InitTraversal();
   right->AddLight(scene.Renderer->GetLights()->GetNextItem());
+  scene.Window->AddRenderer(right);
+}
+} // namespace
+
+// One pass shared by two renderers side by side: each shows its own view's
+// shadows, as a fresh pass would, and still cameras re-render no layer.
+TEST(ShadowEverydayUse, TwoRenderersShareAPass)
+{
+  TestScene scene(480, 240);
+  scene.SetSun(SideSun);
+  vtkNew<vtkRenderer> right;
+  ShareSceneWithRightHalf(scene, right);
   right->GetActiveCamera()->SetPosition(12.0, 6.0, 14.0);
   right->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
   right->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
   right->ResetCameraClippingRange();
-  scene.Window->AddRenderer(right);
   vtkNew<vtkCascadedShadowMapPass> pass;
   scene.Renderer->SetPass(pass);
   right->SetPass(pass);
@@ -392,8 +404,7 @@ TEST(ShadowEverydayUse, TwoRenderersShareAPass)
   const auto separate = RgbBytes(CaptureAsRendered(scene.Window));
   EXPECT_TRUE(shared == separate) << "a shared pass draws other shadows than a pass per renderer";
   auto image = CaptureAsRendered(scene.Window);
-  EXPECT_LT(LuminanceAt(right, image, GroundShadowOfSphereCenter(glm::normalize(glm::dvec3(-0.3, 0.2, -1.0)))),
-    ShadowedBelow);
+  EXPECT_LT(LuminanceAt(right, image, GroundShadowOfSphereCenter(SideSun)), ShadowedBelow);
 }
 
 // Two renderers sharing a pass and its shaders, with other lights each: each
@@ -401,16 +412,9 @@ TEST(ShadowEverydayUse, TwoRenderersShareAPass)
 TEST(ShadowEverydayUse, TwoRenderersWithOtherLights)
 {
   TestScene scene(480, 240);
-  scene.SetSun(glm::normalize(glm::dvec3(-0.3, 0.2, -1.0)));
+  scene.SetSun(SideSun);
   vtkNew<vtkRenderer> right;
-  scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
-  right->SetViewport(0.5, 0.0, 1.0, 1.0);
-  right->SetBackground(0.2, 0.3, 0.4);
-  for (vtkActor* actor : { scene.Ground.Get(), scene.Sphere.Get(), scene.Box.Get() })
-  {
-    right->AddActor(actor);
-  }
-  right->AutomaticLightCreationOff();
+  ShareSceneWithRightHalf(scene, right);
   vtkNew<vtkLight> spot;
   spot->SetLightTypeToSceneLight();
   spot->SetPositional(true);
@@ -418,11 +422,8 @@ TEST(ShadowEverydayUse, TwoRenderersWithOtherLights)
   spot->SetFocalPoint(0.0, 0.0, 0.0);
   spot->SetConeAngle(40.0);
   spot->SetAttenuationValues(1.0, 0.0, 0.0);
-  scene.Renderer->GetLights()->InitTraversal();
-  right->AddLight(scene.Renderer->GetLights()->GetNextItem());
   right->AddLight(spot);
   right->SetActiveCamera(scene.Renderer->GetActiveCamera());
-  scene.Window->AddRenderer(right);
   vtkNew<vtkWarpedShadowMapPass> pass;
   scene.Renderer->SetPass(pass);
   right->SetPass(pass);
@@ -443,7 +444,7 @@ TEST(ShadowEverydayUse, TwoRenderersWithOtherLights)
 TEST(ShadowEverydayUse, StereoEyesKeepTheirMaps)
 {
   TestScene scene(480, 240);
-  scene.SetSun(glm::normalize(glm::dvec3(-0.3, 0.2, -1.0)));
+  scene.SetSun(SideSun);
   scene.Window->SetStereoTypeToSplitViewportHorizontal();
   scene.Window->SetStereoRender(1);
   vtkNew<vtkCascadedShadowMapPass> pass;
