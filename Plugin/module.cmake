@@ -9,8 +9,11 @@ set(shadowmaps_shaders
   vtkShadowMapsAnalysisFS
   vtkShadowMapsBlurFS
   vtkShadowMapsCasterFS
+  vtkShadowMapsImpostorSizes
   vtkShadowMapsSpriteFS
   vtkShadowMapsSpriteVS
+  vtkShadowMapsTubeFS
+  vtkShadowMapsTubeGS
   vtkShadowMapsDepthLookupFS
   vtkShadowMapsDualDepthLookupFS
   vtkShadowMapsFilterFS
@@ -65,6 +68,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapBlur.cxx
     Plugin/OpenGL/ShadowMapCasterShader.cxx
     Plugin/OpenGL/ShadowMapCasting.cxx
+    Plugin/OpenGL/ShadowMapImpostors.cxx
     Plugin/OpenGL/ShadowMapLinearDepthResolve.cxx
     Plugin/OpenGL/ShadowMapStoreFromLightDepths.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
@@ -98,6 +102,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapBlur.h
     Plugin/OpenGL/ShadowMapCasterShader.h
     Plugin/OpenGL/ShadowMapCasting.h
+    Plugin/OpenGL/ShadowMapImpostors.h
     Plugin/OpenGL/ShadowMapLinearDepthResolve.h
     Plugin/OpenGL/ShadowMapStoreFromLightDepths.h
     Plugin/OpenGL/ShadowMapProgramStamps.h

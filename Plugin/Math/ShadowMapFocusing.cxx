@@ -837,4 +837,35 @@ LightView FromSpotSpace(LightView fit, const LightView& cone)
   return IsFinite(fit.ViewProjection()) ? fit : cone;
 }
 
+//------------------------------------------------------------------------------
+glm::dvec4 TileOfWholeImage(const glm::dvec4& tileViewport, const glm::dvec4& rendererViewport)
+{
+  const glm::dvec2 lo(rendererViewport.x, rendererViewport.y);
+  const glm::dvec2 size = glm::dvec2(rendererViewport.z, rendererViewport.w) - lo;
+  const glm::dvec2 from = glm::clamp(glm::dvec2(tileViewport.x, tileViewport.y), lo, lo + size);
+  const glm::dvec2 to = glm::clamp(glm::dvec2(tileViewport.z, tileViewport.w), lo, lo + size);
+  if (!(size.x > 0.0 && size.y > 0.0 && to.x > from.x && to.y > from.y))
+  {
+    return { -1.0, -1.0, 1.0, 1.0 };
+  }
+  const glm::dvec2 ndcFrom = 2.0 * (from - lo) / size - 1.0;
+  const glm::dvec2 ndcTo = 2.0 * (to - lo) / size - 1.0;
+  return { ndcFrom.x, ndcFrom.y, ndcTo.x, ndcTo.y };
+}
+
+//------------------------------------------------------------------------------
+glm::dmat4 WholeImageProjection(const glm::dmat4& tileProjection, const glm::dvec4& tile)
+{
+  // The tile's clip coordinates are the whole's about the tile's centre c,
+  // scaled by its half size h: x' = (x - c.x w) / h.x. Back: x = h.x x' + c.x w.
+  const glm::dvec2 center(0.5 * (tile.x + tile.z), 0.5 * (tile.y + tile.w));
+  const glm::dvec2 half(0.5 * (tile.z - tile.x), 0.5 * (tile.w - tile.y));
+  glm::dmat4 tileToWhole(1.0);
+  tileToWhole[0][0] = half.x;
+  tileToWhole[1][1] = half.y;
+  tileToWhole[3][0] = center.x;
+  tileToWhole[3][1] = center.y;
+  return tileToWhole * tileProjection;
+}
+
 } // namespace shadowmaps

@@ -267,6 +267,19 @@ std::array<LightView, 6> FitCubeFaces(const Aabb& scene, const glm::dvec3& posit
 std::array<LightView, 6> FitCubeFacesToView(const glm::dmat4& cameraViewProjection,
   const Aabb& scene, const glm::dvec3& position, int resolution);
 
+/// The part of the whole image a renderer draws while its window renders one
+/// tile of it (vtkWindowToImageFilter with a scale, tiled displays): the window's
+/// tile viewport and the renderer's viewport (xmin, ymin, xmax, ymax, fractions
+/// of the window) give it in the renderer's normalized device coordinates,
+/// (-1, -1, 1, 1) when the window renders the whole. Empty tiles give that too.
+glm::dvec4 TileOfWholeImage(const glm::dvec4& tileViewport, const glm::dvec4& rendererViewport);
+
+/// The projection of the whole image of which `tileProjection` draws `tile`
+/// (TileOfWholeImage): the tile's projection maps that part of the whole's
+/// normalized device coordinates onto [-1, 1]. Fits follow the whole image, so
+/// that its tiles show the same shadows and share their maps.
+glm::dmat4 WholeImageProjection(const glm::dmat4& tileProjection, const glm::dvec4& tile);
+
 /// {near, far} depths (positive along -z) of a projection's near (clip z = -1) and far
 /// (clip z = +1) planes. Works for perspective and parallel projections, off-axis
 /// included, whose clip w row is (0, 0, c, d). {0, 0} if the planes are undefined.

@@ -3,8 +3,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsCasterFS.h"
 #include "vtkShadowMapsLinearDepthFS.h"
-#include "vtkShadowMapsSpriteFS.h"
-#include "vtkShadowMapsSpriteVS.h"
 
 #include <functional>
 #include <sstream>
@@ -47,7 +45,7 @@ bool ShapesItsOwnFragments(const std::string& code)
   return code.find("gl_FragDepth") != std::string::npos || CountOccurrences(code, "discard") > 1;
 }
 
-std::string Declarations(const CasterCode& code, bool sprites)
+std::string Declarations(const CasterCode& code, Impostors sized)
 {
   std::string dec = code.Faces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
     : code.Faces == 1               ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
@@ -65,11 +63,7 @@ std::string Declarations(const CasterCode& code, bool sprites)
   {
     dec += vtkShadowMapsLinearDepthFS;
   }
-  if (sprites)
-  {
-    dec += vtkShadowMapsSpriteFS;
-  }
-  return dec + code.StoreFunctions + "\n";
+  return dec + ImpostorShader::CasterDeclarations(sized) + code.StoreFunctions + "\n";
 }
 
 // What the branch writes once it has vtkShadowCasterDepth.
@@ -172,22 +166,23 @@ void CasterShader::MarkInjectionPoints(std::string& fragmentShader)
 }
 
 //------------------------------------------------------------------------------
-CasterBranch CasterShader::Inject(std::string& fragmentShader, const CasterCode& code)
+CasterBranch CasterShader::Inject(
+  std::string& fragmentShader, const CasterCode& code, Impostors sized)
 {
   const std::string mapperCode = WithoutLineComments(fragmentShader);
   const bool writesDepth = mapperCode.find("gl_FragDepth") != std::string::npos;
   const bool ownFragments = ShapesItsOwnFragments(mapperCode);
-  const bool sprites = CasterShader::DrawsSprites(mapperCode);
+  // An impostor's depth as the mapper writes it follows the scene camera's
+  // sizes: the branch computes its own.
+  const std::string impostorDepth = ownFragments ? ImpostorShader::CasterDepth(sized) : "";
 
   if (ownFragments)
   {
-    // A sprite's depth as the mapper writes it follows the scene camera's
-    // sizes: the branch computes its own.
-    const char* depth = sprites ? "vtkShadowSpriteDepth()"
-      : writesDepth             ? "gl_FragDepth"
-                                : "gl_FragCoord.z";
+    const std::string depth = !impostorDepth.empty() ? impostorDepth
+      : writesDepth                                  ? "gl_FragDepth"
+                                                     : "gl_FragCoord.z";
     vtkShaderProgram::Substitute(fragmentShader, EarlyMarker, "");
-    PutAtMarker(fragmentShader, LateMarker, Branch(code, depth, sprites, false));
+    PutAtMarker(fragmentShader, LateMarker, Branch(code, depth, !impostorDepth.empty(), false));
   }
   else
   {
@@ -198,47 +193,10 @@ CasterBranch CasterShader::Inject(std::string& fragmentShader, const CasterCode&
   const size_t main = fragmentShader.find("void main");
   if (main != std::string::npos)
   {
-    fragmentShader.insert(main, Declarations(code, sprites && ownFragments));
+    fragmentShader.insert(
+      main, Declarations(code, impostorDepth.empty() ? Impostors::None : sized));
   }
   return ownFragments ? CasterBranch::AfterOwnFragments : CasterBranch::DepthOnly;
-}
-
-//------------------------------------------------------------------------------
-void CasterShader::SizeSprites(std::string& vertexShader, const std::string& fragmentShader)
-{
-  if (!CasterShader::DrawsSprites(WithoutLineComments(fragmentShader)))
-  {
-    return;
-  }
-  const size_t main = vertexShader.find("void main");
-  const size_t end = vertexShader.rfind('}');
-  if (main == std::string::npos || end == std::string::npos || end < main)
-  {
-    return;
-  }
-  vertexShader.insert(end, "  if (vtkShadowCasting != 0)\n  {\n    vtkShadowSizeSprite();\n  }\n");
-  std::string declarations;
-  for (const char* uniform : { "uniform int vtkShadowCasting;", "uniform float ZCalcR;" })
-  {
-    if (vertexShader.find(uniform) == std::string::npos)
-    {
-      declarations += std::string(uniform) + "\n";
-    }
-  }
-  vertexShader.insert(main, declarations + vtkShadowMapsSpriteVS + "\n");
-}
-
-//------------------------------------------------------------------------------
-bool CasterShader::DrawsSprites(const std::string& fragmentShader)
-{
-  return fragmentShader.find("gl_PointCoord") != std::string::npos &&
-    fragmentShader.find("ZCalcR") != std::string::npos;
-}
-
-//------------------------------------------------------------------------------
-bool CasterShader::SizesSprites(vtkShaderProgram* program)
-{
-  return program->IsUniformUsed("vtkShadowSpriteScale");
 }
 
 //------------------------------------------------------------------------------
@@ -274,17 +232,6 @@ void CasterUniforms::SetLightDepth(
   this->WindowToLight = windowToLight;
   this->LightDepthPlane = plane;
   this->LightDepthPerDistance = perDistance;
-}
-
-//------------------------------------------------------------------------------
-void CasterUniforms::SetSprites(const glm::mat4& worldToClip, const glm::vec4& light,
-  const glm::vec4& sceneDepth, const glm::vec3& scale)
-{
-  this->SpriteWorldToClip = worldToClip;
-  this->SpriteClipToWorld = glm::inverse(worldToClip);
-  this->SpriteLight = light;
-  this->SpriteSceneDepth = sceneDepth;
-  this->SpriteScale = scale;
 }
 
 //------------------------------------------------------------------------------
@@ -328,15 +275,9 @@ void CasterUniforms::ApplyCasting(vtkShaderProgram* program) const
     program->SetUniform3f("vtkShadowWindowToInverseW", this->WindowToInverseW.data());
     program->SetUniform3f("vtkShadowLinearDepthBias", this->LinearDepthBias.data());
   }
-  if (CasterShader::SizesSprites(program))
+  if (ImpostorShader::IsSized(program))
   {
-    glm::mat4 worldToClip = this->SpriteWorldToClip; // VTK 9.1 takes mutable pointers
-    glm::mat4 clipToWorld = this->SpriteClipToWorld;
-    program->SetUniformMatrix4x4("vtkShadowSpriteWorldToClip", glm::value_ptr(worldToClip));
-    program->SetUniformMatrix4x4("vtkShadowSpriteClipToWorld", glm::value_ptr(clipToWorld));
-    program->SetUniform4f("vtkShadowSpriteLight", glm::value_ptr(this->SpriteLight));
-    program->SetUniform4f("vtkShadowSpriteSceneDepth", glm::value_ptr(this->SpriteSceneDepth));
-    program->SetUniform3f("vtkShadowSpriteScale", glm::value_ptr(this->SpriteScale));
+    this->ImpostorSizes.Apply(program);
   }
 }
 

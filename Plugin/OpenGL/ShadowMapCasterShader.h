@@ -15,6 +15,7 @@
 #ifndef ShadowMapCasterShader_h
 #define ShadowMapCasterShader_h
 
+#include "ShadowMapImpostors.h"     // For Impostors
 #include "ShadowMapTextureArray.h" // For SecondDepthMethod
 
 #include <array>
@@ -70,8 +71,10 @@ public:
   /// Call before the receivers' markers (both precede //VTK::Light::Impl).
   static void MarkInjectionPoints(std::string& fragmentShader);
 
-  /// Puts the branch at one of the markers and removes the other.
-  static CasterBranch Inject(std::string& fragmentShader, const CasterCode& code);
+  /// Puts the branch at one of the markers and removes the other. `sized`:
+  /// the impostors ImpostorShader::Size sized, whose depth the branch computes.
+  static CasterBranch Inject(
+    std::string& fragmentShader, const CasterCode& code, Impostors sized = Impostors::None);
 
   /// Whether the camera is parallel is part of the state VTK's mappers rebuild
   /// their shaders on, so the light camera keeps the scene camera's flag; a
@@ -79,18 +82,6 @@ public:
   /// rays by it) reads the light view's own while casting instead.
   static void RouteCameraParallel(std::string& shader);
 
-  /// Points drawn as spheres (the fragment shader rounds gl_PointCoord and
-  /// writes ZCalcR's depth): while casting, the vertex shader sizes each point
-  /// to the sphere the scene camera shows, in map texels
-  /// (Shaders/vtkShadowMapsSpriteVS.glsl), and the branch computes its depth.
-  static void SizeSprites(std::string& vertexShader, const std::string& fragmentShader);
-
-  /// Whether a fragment shader draws VTK's points as spheres.
-  static bool DrawsSprites(const std::string& fragmentShader);
-
-  /// Whether a program's points take their size from SizeSprites' code (the
-  /// casters' draws then need GL_PROGRAM_POINT_SIZE).
-  static bool SizesSprites(vtkShaderProgram* program);
 };
 
 /// The uniforms of the casters' branch for the view being rendered.
@@ -114,13 +105,8 @@ public:
   /// both paths: samplers of two types must not share a unit).
   void SetPeeling(bool secondPass, int peelUnit);
 
-  /// Points drawn as spheres (CasterShader::SizeSprites): the view's world to
-  /// clip transform, the light (xyz towards it with w 0, or its position with
-  /// w 1), the scene camera's eye depth row (dot(xyz, p) + w), and the light
-  /// camera's P00 over the scene camera's, whether the scene camera is
-  /// parallel, and the map's size in texels.
-  void SetSprites(const glm::mat4& worldToClip, const glm::vec4& light, const glm::vec4& sceneDepth,
-    const glm::vec3& scale);
+  /// Impostors' sizes (ImpostorShader::Size) in the view being rendered.
+  ImpostorUniforms& Impostors() { return this->ImpostorSizes; }
 
   /// Selects the branch and sets the view's uniforms.
   void ApplyCasting(vtkShaderProgram* program) const;
@@ -139,11 +125,7 @@ private:
   glm::vec4 LightDepthPlane{ 0.0f };
   float LightDepthPerDistance = 0.0f;
   bool Parallel = false;
-  glm::mat4 SpriteWorldToClip{ 1.0f };
-  glm::mat4 SpriteClipToWorld{ 1.0f };
-  glm::vec4 SpriteLight{ 0.0f };
-  glm::vec4 SpriteSceneDepth{ 0.0f };
-  glm::vec3 SpriteScale{ 0.0f };
+  ImpostorUniforms ImpostorSizes;
 };
 } // namespace shadowmaps
 

@@ -52,7 +52,7 @@ public:
   CasterGLState& operator=(const CasterGLState&) = delete;
 
   /// Whether the next draw takes its point size from its vertex shader: on for
-  /// points drawn as spheres (CasterShader::SizesSprites), whose size in the
+  /// points drawn as spheres (ImpostorShader::IsSized), whose size in the
   /// map is the size of the sphere they show, off for other points.
   void UseProgramPointSize(bool on);
 

@@ -1,7 +1,7 @@
 #include "ShadowMapReceiverShader.h"
 
-#include "ShadowMapCasterShader.h"
 #include "ShadowMapCrop.h"
+#include "ShadowMapImpostors.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapTrapezoid.h"
 #include "vtkShaderProgram.h"
@@ -170,11 +170,7 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
                        "  vtkShadowPositionDy = dFdy(vertexVC.xyz);\n"
                        "#endif\n"
                      : "");
-  // A point drawn as a sphere shades its sphere's surface, VTK's radius
-  // (ZCalcR times the eye depth) from its centre, where all its fragments are.
-  const std::string position = CasterShader::DrawsSprites(fragmentShader)
-    ? "vertexVC.xyz + normalVCVSOutput * ZCalcR * (cameraParallel != 0 ? 1.0 : -vertexVC.z)"
-    : "vertexVC.xyz";
+  const std::string position = ImpostorShader::ReceiverPositionVC(fragmentShader);
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
     "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n"
     "  vec3 vtkShadowPositionVC = " + position + ";\n"

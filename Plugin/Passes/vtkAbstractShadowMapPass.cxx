@@ -53,6 +53,7 @@
 
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include "ShadowMapVTKCompat.h"
 
 #include <algorithm>
@@ -274,6 +275,9 @@ struct vtkAbstractShadowMapPass::Internals
   // The GL state of the casters' draws, while they draw.
   shadowmaps::CasterGLState* CastingState = nullptr;
   bool SceneCameraParallel = false;
+  // The scene camera's P00 in the frame as drawn: a tile's, where
+  // Frame.CameraProjection is the whole image's (impostors' sizes follow it).
+  double DrawnCameraP00 = 1.0;
   bool WarnedTooManyLights = false;
   bool WarnedNonFiniteViews = false;
   bool WarnedResolution = false;
@@ -699,8 +703,13 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   }
   vtkCamera* camera = renderer->GetActiveCamera();
   frame.CameraView = ToGlm(camera->GetViewTransformMatrix());
-  frame.CameraProjection =
+  const glm::dmat4 drawn =
     ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
+  r.DrawnCameraP00 = drawn[0][0];
+  glm::dvec4 tileViewport;
+  renderer->GetRenderWindow()->GetTileViewport(glm::value_ptr(tileViewport));
+  frame.CameraProjection = shadowmaps::WholeImageProjection(drawn,
+    shadowmaps::TileOfWholeImage(tileViewport, glm::make_vec4(renderer->GetViewport())));
   frame.FilterReachTexels = r.Representation->GetFilterReachTexels();
   frame.Interactive = this->InteractiveUpdateRate < VTK_DOUBLE_MAX &&
     renderer->GetRenderWindow()->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
@@ -1022,14 +1031,14 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
     r.CasterUniforms.SetLightDepth(
       glm::mat4(windowToLight), glm::vec4(depth.Plane), static_cast<float>(depth.PerDistance));
   }
-  // Points drawn as spheres: their size and depth follow the scene camera.
+  // Impostors (points as spheres, wide lines): their sizes follow the scene camera.
   const glm::dmat4 lightCameraProjection = shadowmaps::CameraProjectionOf(view);
   const glm::dvec4 toLight = light.Kind == LightKind::Directional
     ? glm::dvec4(-glm::normalize(light.Direction), 0.0)
     : glm::dvec4(light.Position, 1.0);
-  r.CasterUniforms.SetSprites(glm::mat4(view.ViewProjection()), glm::vec4(toLight),
+  r.CasterUniforms.Impostors().Set(glm::mat4(view.ViewProjection()), glm::vec4(toLight),
     glm::vec4(-glm::row(r.Frame.CameraView, 2)),
-    glm::vec3(static_cast<float>(lightCameraProjection[0][0] / r.Frame.CameraProjection[0][0]),
+    glm::vec3(static_cast<float>(lightCameraProjection[0][0] / r.DrawnCameraP00),
       r.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(r.Frame.Resolution)));
   // Every program takes the view's uniforms on its first draw into it.
   r.CasterPrograms.Invalidate();
@@ -1449,9 +1458,10 @@ shadowmaps::CasterBranch vtkAbstractShadowMapPass::InjectShadowCode(std::string&
   std::string& geometryShader, std::string& fragmentShader, bool receives)
 {
   const Internals& r = *this->Internal;
-  shadowmaps::CasterShader::SizeSprites(vertexShader, fragmentShader);
+  const shadowmaps::Impostors sized =
+    shadowmaps::ImpostorShader::Size(vertexShader, geometryShader, fragmentShader);
   const shadowmaps::CasterBranch branch =
-    shadowmaps::CasterShader::Inject(fragmentShader, r.CasterCode);
+    shadowmaps::CasterShader::Inject(fragmentShader, r.CasterCode, sized);
   for (std::string* stage : { &vertexShader, &geometryShader, &fragmentShader })
   {
     shadowmaps::CasterShader::RouteCameraParallel(*stage);
@@ -1475,7 +1485,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   Internals& r = *this->Internal;
   if (r.Casting)
   {
-    r.CastingState->UseProgramPointSize(shadowmaps::CasterShader::SizesSprites(program));
+    r.CastingState->UseProgramPointSize(shadowmaps::ImpostorShader::IsSized(program));
     if (r.CasterPrograms.FirstUse(program))
     {
       r.CastSinceSceneDraw.insert(program);

@@ -39,9 +39,11 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <malloc.h>
@@ -54,6 +56,7 @@ using namespace shadowtest;
 namespace
 {
 const glm::dvec3 Down(0.0, 0.0, -1.0);
+const glm::dvec3 Origin(0.0, 0.0, 0.0);
 
 // The sphere's shadow under a sun straight above: its centre, and a point
 // beside it that the sphere never shades.
@@ -561,68 +564,167 @@ vtkSmartPointer<vtkActor> PointsAsSpheres(
 }
 } // namespace
 
-// Points drawn as spheres cast the shadow of the sphere they show, under every
-// view layout: its centre dark, its rim's shadow dark, beyond it lit.
-TEST(ShadowEverydayUse, PointsAsSpheresCastTheirSpheresShadows)
+namespace
+{
+vtkSmartPointer<vtkActor> LineAsTube(
+  TestScene& scene, const glm::dvec3& from, const glm::dvec3& to, double radius)
+{
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(from.x, from.y, from.z);
+  points->InsertNextPoint(to.x, to.y, to.z);
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(2);
+  lines->InsertCellPoint(0);
+  lines->InsertCellPoint(1);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  data->SetLines(lines);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRenderLinesAsTubes(true);
+  actor->GetProperty()->SetLineWidth(
+    static_cast<float>(PixelsForRadius(scene.Renderer, 0.5 * (from + to), radius)));
+  scene.Renderer->AddActor(actor);
+  return actor;
+}
+
+// Each pass kind (uniform, warped, cascaded; dual depth and moments in uniform
+// views) under a sun straight down, then a
+// spot and a point light at (0, 0, 6), drawing the scene without its sphere
+// and with what `add` puts in it; `expect` probes the frame. Shadows of what
+// lies at height 1.5 are `scale` times as far from the z axis as their casters.
+void ForEachPassAndLight(const std::function<void(TestScene&)>& add,
+  const std::function<void(TestScene&, vtkImageData*, double scale, const std::string&)>& expect)
 {
   const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
     kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
       { "warped", NewPass<vtkWarpedShadowMapPass> },
-      { "cascaded", NewPass<vtkCascadedShadowMapPass> } };
+      { "cascaded", NewPass<vtkCascadedShadowMapPass> },
+      { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
+      { "moments", NewPass<vtkVarianceShadowMapPass> } };
+  const glm::dvec3 position(0.0, 0.0, 6.0);
   for (const auto& kind : kinds)
   {
     for (int light = 0; light < 3; ++light)
     {
       TestScene scene;
       scene.Renderer->RemoveActor(scene.Sphere);
-      const glm::dvec3 center(0.0, 0.0, 1.5);
-      glm::dvec3 shadow;
-      std::string what = kind.first;
-      if (light == 0)
-      {
-        scene.SetSun(Down);
-        shadow = glm::dvec3(0.0, 0.0, 0.0);
-        what += ", sun";
-      }
-      else
-      {
-        const glm::dvec3 position(0.0, 0.0, 6.0);
-        if (light == 1)
-        {
-          scene.SetSpot(position, 60.0);
-          what += ", spot";
-        }
-        else
-        {
-          scene.SetPoint(position);
-          what += ", point";
-        }
-        shadow = GroundShadowOfSphereCenterFrom(position);
-      }
-      PointsAsSpheres(scene, { center }, 1.0);
+      light == 0 ? scene.SetSun(Down)
+        : light == 1 ? scene.SetSpot(position, 60.0)
+                     : scene.SetPoint(position);
+      add(scene);
       vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
       // A sprite's size in the map is limited to the GL's largest point size
       // (255 on llvmpipe): at 1024 texels the point light's cube face needs 232.
       pass->SetResolution(1024);
       scene.Renderer->SetPass(pass);
       auto image = RenderAndCapture(scene.Window);
-      if (light == 0 && kind.first == "uniform")
+      const char* lights[] = { ", sun", ", spot", ", point" };
+      expect(scene, image, light == 0 ? 1.0 : 6.0 / 4.5, kind.first + lights[light]);
+    }
+  }
+}
+} // namespace
+
+// Points drawn as spheres cast the shadow of the sphere they show, under every
+// view layout: its centre dark, its rim's shadow dark, beyond it lit.
+TEST(ShadowEverydayUse, PointsAsSpheresCastTheirSpheresShadows)
+{
+  GLfloat range[2] = { 0.0f, 0.0f };
+  ForEachPassAndLight([](TestScene& scene) { PointsAsSpheres(scene, { { 0.0, 0.0, 1.5 } }, 1.0); },
+    [&](TestScene& scene, vtkImageData* image, double rim, const std::string& what) {
+      if (range[1] == 0.0f)
       {
-        GLfloat range[2] = { 0.0f, 0.0f };
         glGetFloatv(GL_POINT_SIZE_RANGE, range);
         std::cout << "[ measured ] largest point size " << range[1] << "\n";
       }
-      // The shadow's radius: 1 under the sun; 6 / 4.5 under the lights at z 6.
-      const double rim = light == 0 ? 1.0 : 6.0 / 4.5;
-      EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow), ShadowedBelow) << what << ": centre";
+      EXPECT_LT(LuminanceAt(scene.Renderer, image, Origin), ShadowedBelow) << what << ": centre";
       // Sides the sphere does not hide from the camera (it looks along +y).
       for (const glm::dvec3 side : { glm::dvec3(1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(-1, 0, 0) })
       {
-        EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow + 0.75 * rim * side), ShadowedBelow)
+        EXPECT_LT(LuminanceAt(scene.Renderer, image, 0.75 * rim * side), ShadowedBelow)
           << what << ": inside the rim";
-        EXPECT_GT(LuminanceAt(scene.Renderer, image, shadow + 1.35 * rim * side), LitAbove)
+        EXPECT_GT(LuminanceAt(scene.Renderer, image, 1.35 * rim * side), LitAbove)
           << what << ": beyond the rim";
       }
+    });
+}
+
+// Lines drawn as tubes cast the shadow of the tube they show: a band as wide as
+// the tube (scaled by the light), dark inside, lit beyond its sides and ends.
+TEST(ShadowEverydayUse, LinesAsTubesCastTheirTubesShadows)
+{
+  const double radius = 0.4;
+  ForEachPassAndLight(
+    [&](TestScene& scene) { LineAsTube(scene, { -2.0, 0.0, 1.5 }, { 2.0, 0.0, 1.5 }, radius); },
+    [&](TestScene& scene, vtkImageData* image, double scale, const std::string& what) {
+      // The side of the band the tube does not hide from the camera (-y).
+      for (const double x : { -1.0, 0.0, 1.0 })
+      {
+        const glm::dvec3 under(scale * x, 0.0, 0.0);
+        const glm::dvec3 side(0.0, -radius * scale, 0.0);
+        EXPECT_LT(LuminanceAt(scene.Renderer, image, under), ShadowedBelow)
+          << what << ": under the line at x " << x;
+        EXPECT_LT(LuminanceAt(scene.Renderer, image, under + 0.7 * side), ShadowedBelow)
+          << what << ": inside the band at x " << x;
+        EXPECT_GT(LuminanceAt(scene.Renderer, image, under + 1.4 * side), LitAbove)
+          << what << ": beside the band at x " << x;
+        // The tube's top, facing the camera, lit: no shadow of its own.
+        const glm::dvec3 top(x, -0.5 * radius, 1.5 + 0.85 * radius);
+        EXPECT_GT(LuminanceAt(scene.Renderer, image, top), LitAbove)
+          << what << ": the tube's top at x " << x;
+      }
+      for (const double end : { -1.0, 1.0 })
+      {
+        EXPECT_GT(LuminanceAt(scene.Renderer, image, glm::dvec3(end * (2.0 * scale + 0.3), -0.1, 0.0)),
+          LitAbove)
+          << what << ": beyond the end";
+      }
+    });
+}
+
+// A capture larger than the window (vtkWindowToImageFilter with a scale, as
+// PyVista's and ParaView's screenshots take) renders the image in tiles: each
+// shows the shadows of the whole image, as a window of that size draws them,
+// from maps rendered once rather than once per tile.
+TEST(ShadowEverydayUse, TiledCapturesShowTheWholeImagesShadows)
+{
+  const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
+    kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
+      { "warped", NewPass<vtkWarpedShadowMapPass> },
+      { "cascaded", NewPass<vtkCascadedShadowMapPass> },
+      { "moments", NewPass<vtkVarianceShadowMapPass> } };
+  for (const auto& kind : kinds)
+  {
+    TestScene whole(800, 600);
+    whole.SetSun(SideSun);
+    whole.Renderer->SetPass(kind.second());
+    const auto expected = RgbBytes(RenderAndCapture(whole.Window));
+
+    TestScene tiled(400, 300);
+    tiled.SetSun(SideSun);
+    vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
+    tiled.Renderer->SetPass(pass);
+    tiled.Window->Render();
+    const int updates = pass->GetNumberOfShadowMapUpdates();
+    vtkNew<vtkWindowToImageFilter> capture;
+    capture->SetInput(tiled.Window);
+    capture->SetInputBufferTypeToRGB();
+    capture->ReadFrontBufferOff();
+    capture->SetScale(2);
+    capture->Update();
+    const auto tiles = RgbBytes(capture->GetOutput());
+    ASSERT_EQ(tiles.size(), expected.size()) << kind.first;
+    int differing = 0;
+    for (std::size_t i = 0; i < tiles.size(); ++i)
+    {
+      differing += std::abs(int(tiles[i]) - int(expected[i])) > 32 ? 1 : 0;
     }
+    EXPECT_EQ(differing, 0) << kind.first << ": channels differing by more than 32";
+    // The first tile's projection, turned back into the whole image's, may
+    // differ from the last frame's by rounding: at most one update.
+    EXPECT_LE(pass->GetNumberOfShadowMapUpdates() - updates, 1) << kind.first;
   }
 }

@@ -300,4 +300,34 @@ TEST(FitSpot, NearPlaneAtTheNearestScenePointInTheCone)
 // Tiles of one map: every point of the map lies in the core of exactly one
 // tile, at the place the whole map's coordinates predict, with the same depth;
 // texel sizes scale with the tile's share of the window.
+// ---------------------------------------------------------------------------
+// TileOfWholeImage, WholeImageProjection
+
+TEST(WholeImageProjection, TilesOfARendererGiveBackTheWholeProjection)
+{
+  // A renderer on the right half of the window; the window renders its
+  // top-right quarter (a 2 x 2 tiling): the renderer's upper half.
+  const glm::dvec4 tile =
+    shadowmaps::TileOfWholeImage(glm::dvec4(0.5, 0.5, 1.0, 1.0), glm::dvec4(0.5, 0.0, 1.0, 1.0));
+  EXPECT_EQ(tile, glm::dvec4(-1.0, 0.0, 1.0, 1.0));
+  EXPECT_EQ(shadowmaps::TileOfWholeImage(glm::dvec4(0.0, 0.0, 1.0, 1.0), glm::dvec4(0.5, 0.0, 1.0, 1.0)),
+    glm::dvec4(-1.0, -1.0, 1.0, 1.0));
+  // A tile the renderer does not reach: the whole.
+  EXPECT_EQ(shadowmaps::TileOfWholeImage(glm::dvec4(0.0, 0.0, 0.5, 0.5), glm::dvec4(0.5, 0.0, 1.0, 1.0)),
+    glm::dvec4(-1.0, -1.0, 1.0, 1.0));
+
+  // The tile's projection, as a camera narrowed onto that part would have it.
+  const glm::dmat4 whole = glm::perspective(glm::radians(40.0), 1.5, 0.5, 80.0);
+  const glm::dmat4 tileProjection = glm::frustum(-0.5 * std::tan(glm::radians(20.0)) * 1.5,
+    0.5 * std::tan(glm::radians(20.0)) * 1.5, 0.0, 0.5 * std::tan(glm::radians(20.0)), 0.5, 80.0);
+  const glm::dmat4 back = shadowmaps::WholeImageProjection(tileProjection, tile);
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      EXPECT_NEAR(back[c][r], whole[c][r], 1e-12) << c << ", " << r;
+    }
+  }
+}
+
 } // namespace

@@ -1,0 +1,169 @@
+#include "ShadowMapImpostors.h"
+
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapsImpostorSizes.h"
+#include "vtkShadowMapsSpriteFS.h"
+#include "vtkShadowMapsSpriteVS.h"
+#include "vtkShadowMapsTubeFS.h"
+#include "vtkShadowMapsTubeGS.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace shadowmaps
+{
+namespace
+{
+const char* const CastingUniform = "uniform int vtkShadowCasting;";
+
+bool Contains(const std::string& text, const char* word)
+{
+  return text.find(word) != std::string::npos;
+}
+
+// VTK's round impostors read ZCalcR, the radius per eye depth: spheres are
+// rounded points, tubes have basis vectors from the wide lines' geometry shader.
+bool DrawsSpheres(const std::string& fragmentShader)
+{
+  return Contains(fragmentShader, "gl_PointCoord") && Contains(fragmentShader, "ZCalcR");
+}
+
+bool DrawsTubes(const std::string& fragmentShader)
+{
+  return Contains(fragmentShader, "tubeBasis1") && Contains(fragmentShader, "ZCalcR");
+}
+
+// The declarations `stage` needs before main() for the impostors' code.
+void DeclareBeforeMain(std::string& stage, size_t main, const char* code)
+{
+  std::string declarations;
+  for (const char* uniform : { CastingUniform, "uniform float ZCalcR;" })
+  {
+    if (!Contains(stage, uniform))
+    {
+      declarations += std::string(uniform) + "\n";
+    }
+  }
+  stage.insert(main, declarations + vtkShadowMapsImpostorSizes + "\n" + code + "\n");
+}
+
+bool SizeSpheres(std::string& vertexShader)
+{
+  const size_t main = vertexShader.find("void main");
+  const size_t end = vertexShader.rfind('}');
+  if (main == std::string::npos || end == std::string::npos || end < main)
+  {
+    return false;
+  }
+  vertexShader.insert(end, "  if (vtkShadowCasting != 0)\n  {\n    vtkShadowSizeSprite();\n  }\n");
+  DeclareBeforeMain(vertexShader, main, vtkShadowMapsSpriteVS);
+  return true;
+}
+
+// VTK's tubes come from its wide-line geometry shaders, which (9.1 to 9.6)
+// emit the quad's corners in a loop over j, one EmitVertex each: the corner is
+// replaced just before it.
+bool SizeTubes(std::string& geometryShader)
+{
+  const size_t main = geometryShader.find("void main");
+  const size_t emit = geometryShader.find("EmitVertex();");
+  if (!Contains(geometryShader, "layout(lines) in") || main == std::string::npos ||
+    emit == std::string::npos || emit < main ||
+    geometryShader.find("for (int j = 0; j < 4; j++)", main) > emit ||
+    geometryShader.find("EmitVertex();", emit + 1) != std::string::npos)
+  {
+    return false;
+  }
+  geometryShader.insert(
+    emit, "if (vtkShadowCasting != 0)\n    {\n      gl_Position = vtkShadowTubeCorner(j);\n    }\n    ");
+  DeclareBeforeMain(geometryShader, main, vtkShadowMapsTubeGS);
+  return true;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+Impostors ImpostorShader::Size(
+  std::string& vertexShader, std::string& geometryShader, const std::string& fragmentShader)
+{
+  if (DrawsSpheres(fragmentShader))
+  {
+    return SizeSpheres(vertexShader) ? Impostors::Spheres : Impostors::None;
+  }
+  // Flat wide lines are a screen-space decoration (drawn by the GL's own wide
+  // lines where it has them, with no geometry shader): they keep their width
+  // in texels.
+  if (DrawsTubes(fragmentShader))
+  {
+    return SizeTubes(geometryShader) ? Impostors::Tubes : Impostors::None;
+  }
+  return Impostors::None;
+}
+
+//------------------------------------------------------------------------------
+std::string ImpostorShader::CasterDepth(Impostors sized)
+{
+  switch (sized)
+  {
+    case Impostors::Spheres:
+      return "vtkShadowSpriteDepth()";
+    case Impostors::Tubes:
+      return "vtkShadowTubeDepth()";
+    default:
+      return "";
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string ImpostorShader::CasterDeclarations(Impostors sized)
+{
+  switch (sized)
+  {
+    case Impostors::Spheres:
+      return vtkShadowMapsSpriteFS;
+    case Impostors::Tubes:
+      return vtkShadowMapsTubeFS;
+    default:
+      return "";
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string ImpostorShader::ReceiverPositionVC(const std::string& fragmentShader)
+{
+  // VTK's radius, ZCalcR times the eye depth, along the impostor's normal from
+  // its centre (sphere) or centre line (tube), where all its fragments are.
+  if (DrawsSpheres(fragmentShader) || DrawsTubes(fragmentShader))
+  {
+    return "vertexVC.xyz + normalVCVSOutput * ZCalcR * (cameraParallel != 0 ? 1.0 : -vertexVC.z)";
+  }
+  return "vertexVC.xyz";
+}
+
+//------------------------------------------------------------------------------
+bool ImpostorShader::IsSized(vtkShaderProgram* program)
+{
+  return program->IsUniformUsed("vtkShadowImpostorScale");
+}
+
+//------------------------------------------------------------------------------
+void ImpostorUniforms::Set(const glm::mat4& worldToClip, const glm::vec4& light,
+  const glm::vec4& sceneDepth, const glm::vec3& scale)
+{
+  this->WorldToClip = worldToClip;
+  this->ClipToWorld = glm::inverse(worldToClip);
+  this->Light = light;
+  this->SceneDepth = sceneDepth;
+  this->Scale = scale;
+}
+
+//------------------------------------------------------------------------------
+void ImpostorUniforms::Apply(vtkShaderProgram* program) const
+{
+  glm::mat4 worldToClip = this->WorldToClip; // VTK 9.1 takes mutable pointers
+  glm::mat4 clipToWorld = this->ClipToWorld;
+  program->SetUniformMatrix4x4("vtkShadowImpostorWorldToClip", glm::value_ptr(worldToClip));
+  program->SetUniformMatrix4x4("vtkShadowImpostorClipToWorld", glm::value_ptr(clipToWorld));
+  program->SetUniform4f("vtkShadowImpostorLight", glm::value_ptr(this->Light));
+  program->SetUniform4f("vtkShadowImpostorSceneDepth", glm::value_ptr(this->SceneDepth));
+  program->SetUniform3f("vtkShadowImpostorScale", glm::value_ptr(this->Scale));
+}
+} // namespace shadowmaps

@@ -1,0 +1,56 @@
+// VTK's round impostors, points drawn as spheres and lines drawn as tubes, are
+// sized in the scene camera's pixels: a radius of ZCalcR times the eye depth,
+// ZCalcR being the point size (line width) over the renderer's width and the
+// camera's P00. While casting ZCalcR holds the light camera's P00; these give
+// the world radius the scene camera shows, and where points lie in the map.
+uniform mat4 vtkShadowImpostorWorldToClip;
+uniform mat4 vtkShadowImpostorClipToWorld;
+// xyz: the direction towards the light (w = 0), or the light's position (w = 1).
+uniform vec4 vtkShadowImpostorLight;
+// The scene camera's eye depth of a world point p: dot(xyz, p) + w.
+uniform vec4 vtkShadowImpostorSceneDepth;
+// x: the light camera's P00 over the scene camera's; y: 1 for a parallel scene
+// camera (no eye depth in the radius); z: the map's size in texels.
+uniform vec3 vtkShadowImpostorScale;
+
+vec3 vtkShadowImpostorWorld(vec4 clip)
+{
+  vec4 h = vtkShadowImpostorClipToWorld * clip;
+  return h.xyz / h.w;
+}
+
+vec4 vtkShadowImpostorClip(vec3 world)
+{
+  return vtkShadowImpostorWorldToClip * vec4(world, 1.0);
+}
+
+float vtkShadowImpostorWindowDepth(vec3 world)
+{
+  vec4 clip = vtkShadowImpostorClip(world);
+  return 0.5 * clip.z / clip.w + 0.5;
+}
+
+float vtkShadowImpostorRadius(vec3 world)
+{
+  float eyeDepth = vtkShadowImpostorScale.y > 0.5 ? 1.0 :
+    dot(vtkShadowImpostorSceneDepth.xyz, world) + vtkShadowImpostorSceneDepth.w;
+  return ZCalcR * vtkShadowImpostorScale.x * eyeDepth;
+}
+
+vec3 vtkShadowImpostorToLight(vec3 world)
+{
+  return vtkShadowImpostorLight.w > 0.5 ? normalize(vtkShadowImpostorLight.xyz - world) :
+    vtkShadowImpostorLight.xyz;
+}
+
+// A unit vector across `direction`, and across `preferred` where it can be.
+vec3 vtkShadowImpostorAcross(vec3 direction, vec3 preferred)
+{
+  vec3 across = cross(direction, preferred);
+  if (dot(across, across) <= 1e-12 * dot(direction, direction) * dot(preferred, preferred))
+  {
+    vec3 unit = normalize(direction);
+    across = cross(unit, abs(unit.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0));
+  }
+  return normalize(across);
+}
