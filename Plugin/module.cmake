@@ -54,6 +54,9 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Views/vtkShadowMapViews
     Plugin/Views/vtkUniformShadowMapViews
     Plugin/Views/vtkWarpedShadowMapViews
+  HEADERS
+    # The setter macro of the classes above, for downstream subclasses too.
+    Plugin/vtkShadowMapSetMacros.h
   SOURCES
     Plugin/Math/ShadowMapCascades.cxx
     Plugin/Math/ShadowMapCasterReach.cxx
@@ -102,6 +105,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapBlur.h
     Plugin/OpenGL/ShadowMapCasterShader.h
     Plugin/OpenGL/ShadowMapCasting.h
+    Plugin/OpenGL/ShadowMapGlslLiteral.h
     Plugin/OpenGL/ShadowMapImpostors.h
     Plugin/OpenGL/ShadowMapLinearDepthResolve.h
     Plugin/OpenGL/ShadowMapStoreFromLightDepths.h

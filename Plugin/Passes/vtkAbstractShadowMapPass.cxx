@@ -347,6 +347,31 @@ vtkShadowMapViews* vtkAbstractShadowMapPass::GetViews()
 }
 
 //------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SetSceneBounds(
+  double xMin, double xMax, double yMin, double yMax, double zMin, double zMax)
+{
+  const double bounds[6] = { xMin, xMax, yMin, yMax, zMin, zMax };
+  this->SetSceneBounds(bounds);
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SetSceneBounds(const double bounds[6])
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    if (!vtkShadowMapsIsFiniteParameter(this, "SceneBounds", bounds[i]))
+    {
+      return;
+    }
+  }
+  if (!std::equal(bounds, bounds + 6, this->SceneBounds))
+  {
+    std::copy(bounds, bounds + 6, this->SceneBounds);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::SetInteractiveTexelRatio(double ratio)
 {
   this->GetViews()->SetInteractiveTexelRatio(ratio);

@@ -59,6 +59,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingShadowMapsModule.h" // For export macro
+#include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 
 #include <memory> // For std::unique_ptr
 #include <string> // For ReportGLFailure
@@ -155,9 +156,11 @@ public:
    * exchange, the fits that follow props (tight cascades, warps) then see
    * this one box; with one, they see every process's props' boxes
    * (vtkShadowMapExchange::AllBoxes), whose union is the scene's bounds when
-   * none are given.
+   * none are given. Bounds with a value that is not finite are refused.
    */
-  vtkSetVector6Macro(SceneBounds, double);
+  virtual void SetSceneBounds(
+    double xMin, double xMax, double yMin, double yMax, double zMin, double zMax);
+  virtual void SetSceneBounds(const double bounds[6]);
   vtkGetVector6Macro(SceneBounds, double);
   vtkSetMacro(UseSceneBounds, bool);
   vtkGetMacro(UseSceneBounds, bool);
@@ -222,7 +225,7 @@ public:
    * exchange, a render is interactive only if it is on every process.
    * Clamped to [0, VTK_DOUBLE_MAX]; default 1.
    */
-  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetFiniteClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveUpdateRate, double);
   ///@}
 
@@ -242,7 +245,7 @@ public:
    * Receiver offset along its normal, in shadow-map texels (scaled by the
    * world-space size of a texel at the receiver). Clamped to [0, 10]; default 1.
    */
-  vtkSetClampMacro(NormalOffset, double, 0.0, 10.0);
+  vtkSetFiniteClampMacro(NormalOffset, double, 0.0, 10.0);
   vtkGetMacro(NormalOffset, double);
   ///@}
 

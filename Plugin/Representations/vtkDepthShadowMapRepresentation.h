@@ -22,6 +22,7 @@
 
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapRepresentation.h"
+#include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 #include "vtkSmartPointer.h" // For the noise textures
 
 #include <map> // For the noise textures
@@ -67,7 +68,7 @@ public:
 
   ///@{
   /** Radius of the Poisson filter, in texels. Clamped to [0.5, 16]; default 2. */
-  vtkSetClampMacro(FilterRadius, double, 0.5, 16.0);
+  vtkSetFiniteClampMacro(FilterRadius, double, 0.5, 16.0);
   vtkGetMacro(FilterRadius, double);
   ///@}
 
@@ -87,7 +88,7 @@ public:
    * always 32-bit and add it, as 2^-24 per unit, to the depth they store.
    * Clamped to [0, 10000]; default 4.
    */
-  vtkSetClampMacro(ConstantBias, double, 0.0, 10000.0);
+  vtkSetFiniteClampMacro(ConstantBias, double, 0.0, 10000.0);
   vtkGetMacro(ConstantBias, double);
   ///@}
 
@@ -99,7 +100,7 @@ public:
    * at SlopeScaledBias / Resolution (a 45 degree surface in a uniform map), as a
    * warp's far texels are many times the mean. Clamped to [0, 100]; default 2.
    */
-  vtkSetClampMacro(SlopeScaledBias, double, 0.0, 100.0);
+  vtkSetFiniteClampMacro(SlopeScaledBias, double, 0.0, 100.0);
   vtkGetMacro(SlopeScaledBias, double);
   ///@}
 

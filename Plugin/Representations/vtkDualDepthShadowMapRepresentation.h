@@ -34,6 +34,7 @@
 
 #include "vtkDepthShadowMapRepresentation.h"
 #include "vtkRenderingShadowMapsModule.h" // For export macro
+#include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 
 class VTKRENDERINGSHADOWMAPS_EXPORT vtkDualDepthShadowMapRepresentation
   : public vtkDepthShadowMapRepresentation
@@ -85,7 +86,7 @@ public:
    * every mode's where a texel has one surface, in texels of world size at the
    * receiver. Clamped to [0, 64]; default 2.
    */
-  vtkSetClampMacro(DualOffset, double, 0.0, 64.0);
+  vtkSetFiniteClampMacro(DualOffset, double, 0.0, 64.0);
   vtkGetMacro(DualOffset, double);
   ///@}
 

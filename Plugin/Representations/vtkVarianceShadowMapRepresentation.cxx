@@ -1,6 +1,7 @@
 #include "vtkVarianceShadowMapRepresentation.h"
 
 #include "ShadowMapBlur.h"
+#include "ShadowMapGlslLiteral.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -56,7 +57,11 @@ void vtkVarianceShadowMapRepresentation::SetStorage(int bits)
 //------------------------------------------------------------------------------
 void vtkVarianceShadowMapRepresentation::SetPositiveExponent(double exponent)
 {
-  exponent = std::isfinite(exponent) ? std::max(exponent, 0.0) : this->PositiveExponent;
+  if (!vtkShadowMapsIsFiniteParameter(this, "PositiveExponent", exponent, this->PositiveExponent))
+  {
+    return;
+  }
+  exponent = std::max(exponent, 0.0);
   if (exponent != this->PositiveExponent)
   {
     this->PositiveExponent = exponent;
@@ -68,7 +73,11 @@ void vtkVarianceShadowMapRepresentation::SetPositiveExponent(double exponent)
 //------------------------------------------------------------------------------
 void vtkVarianceShadowMapRepresentation::SetNegativeExponent(double exponent)
 {
-  exponent = std::isfinite(exponent) ? std::max(exponent, 0.0) : this->NegativeExponent;
+  if (!vtkShadowMapsIsFiniteParameter(this, "NegativeExponent", exponent, this->NegativeExponent))
+  {
+    return;
+  }
+  exponent = std::max(exponent, 0.0);
   if (exponent != this->NegativeExponent)
   {
     this->NegativeExponent = exponent;
@@ -165,10 +174,11 @@ void vtkVarianceShadowMapRepresentation::GetMomentsOfDepth(double depth, double 
 std::string vtkVarianceShadowMapRepresentation::MomentDefinitions() const
 {
   std::ostringstream definitions;
-  definitions.precision(9);
-  definitions << std::showpoint << "#define VTK_SHADOW_MOMENTS " << this->Moments << "\n"
-              << "#define VTK_SHADOW_POSITIVE_EXPONENT " << this->GetWarpExponent() << "\n"
-              << "#define VTK_SHADOW_NEGATIVE_EXPONENT " << this->NegativeExponent << "\n"
+  definitions << "#define VTK_SHADOW_MOMENTS " << this->Moments << "\n"
+              << "#define VTK_SHADOW_POSITIVE_EXPONENT "
+              << shadowmaps::GlslFloat(this->GetWarpExponent()) << "\n"
+              << "#define VTK_SHADOW_NEGATIVE_EXPONENT " << shadowmaps::GlslFloat(this->NegativeExponent)
+              << "\n"
               << "#define VTK_SHADOW_CHEBYSHEV_BASIS " << this->StoresChebyshevMoments() << "\n";
   return definitions.str();
 }
@@ -205,10 +215,10 @@ std::string vtkVarianceShadowMapRepresentation::GetReceiverLookupCode() const
 std::string vtkVarianceShadowMapRepresentation::GetReceiverDefinitions() const
 {
   std::ostringstream definitions;
-  definitions.precision(9);
-  definitions << std::showpoint << this->MomentDefinitions() << "#define VTK_SHADOW_MAP_FOOTPRINT\n"
-              << "#define VTK_SHADOW_BLUR_SIGMA " << shadowmaps::BlurSigma(this->BlurRadius) << "\n"
-              << "#define VTK_SHADOW_ANISOTROPY " << this->Anisotropy << "\n";
+  definitions << this->MomentDefinitions() << "#define VTK_SHADOW_MAP_FOOTPRINT\n"
+              << "#define VTK_SHADOW_BLUR_SIGMA "
+              << shadowmaps::GlslFloat(shadowmaps::BlurSigma(this->BlurRadius)) << "\n"
+              << "#define VTK_SHADOW_ANISOTROPY " << shadowmaps::GlslFloat(this->Anisotropy) << "\n";
   return definitions.str();
 }
 

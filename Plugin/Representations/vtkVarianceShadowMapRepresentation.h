@@ -36,6 +36,7 @@
 
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapRepresentation.h"
+#include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 
 #include <map>    // For the blur per window
 #include <memory> // For the blur per window
@@ -128,7 +129,7 @@ public:
    * penumbra keeps its world width. 0 turns the blur off. Clamped to [0, 16];
    * default 1.
    */
-  vtkSetClampMacro(BlurRadius, double, 0.0, 16.0);
+  vtkSetFiniteClampMacro(BlurRadius, double, 0.0, 16.0);
   vtkGetMacro(BlurRadius, double);
   ///@}
 
@@ -162,7 +163,7 @@ public:
    * ratio if coarser (sharper, at the cost of some aliasing along the long
    * axis). 1: the long axis's level. Clamped to [1, 16]; default 8.
    */
-  vtkSetClampMacro(Anisotropy, double, 1.0, 16.0);
+  vtkSetFiniteClampMacro(Anisotropy, double, 1.0, 16.0);
   vtkGetMacro(Anisotropy, double);
   ///@}
 
@@ -175,7 +176,7 @@ public:
    * 0.69% (docs/VARIANCE.md). Raise it for VSM where occluders stack. Clamped
    * to [0, 0.95]; default 0.
    */
-  vtkSetClampMacro(LightBleedingReduction, double, 0.0, 0.95);
+  vtkSetFiniteClampMacro(LightBleedingReduction, double, 0.0, 0.95);
   vtkGetMacro(LightBleedingReduction, double);
   ///@}
 
@@ -185,7 +186,7 @@ public:
    * (the scene's depth along the light is 1), added to the variance that the
    * receiver's own slope over the filter has. Clamped to [0, 0.01]; default 1e-6.
    */
-  vtkSetClampMacro(MinimumVariance, double, 0.0, 0.01);
+  vtkSetFiniteClampMacro(MinimumVariance, double, 0.0, 0.01);
   vtkGetMacro(MinimumVariance, double);
   ///@}
 
@@ -195,7 +196,7 @@ public:
    * distribution before the reconstruction, against rounding. Clamped to
    * [0, 0.01]; default 3e-5.
    */
-  vtkSetClampMacro(MomentBias, double, 0.0, 0.01);
+  vtkSetFiniteClampMacro(MomentBias, double, 0.0, 0.01);
   vtkGetMacro(MomentBias, double);
   ///@}
 

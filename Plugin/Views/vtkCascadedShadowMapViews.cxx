@@ -90,7 +90,11 @@ void vtkCascadedShadowMapViews::SetNumberOfCascades(int count)
 //------------------------------------------------------------------------------
 void vtkCascadedShadowMapViews::SetSplitLambda(double lambda)
 {
-  const double clamped = std::isnan(lambda) ? 0.75 : std::min(std::max(lambda, 0.0), 1.0);
+  if (!vtkShadowMapsIsFiniteParameter(this, "SplitLambda", lambda, this->SplitLambda))
+  {
+    return;
+  }
+  const double clamped = std::min(std::max(lambda, 0.0), 1.0);
   if (clamped != lambda)
   {
     vtkWarningMacro(<< "SplitLambda " << lambda << " is outside [0, 1]; using " << clamped << ".");
@@ -105,6 +109,10 @@ void vtkCascadedShadowMapViews::SetSplitLambda(double lambda)
 //------------------------------------------------------------------------------
 void vtkCascadedShadowMapViews::AddSplitDistance(double distance)
 {
+  if (!vtkShadowMapsIsFiniteParameter(this, "SplitDistance", distance))
+  {
+    return;
+  }
   this->SplitDistances.push_back(distance);
   this->SplitProblemReported = false;
   this->Modified();
@@ -130,7 +138,12 @@ double vtkCascadedShadowMapViews::GetSplit(int i) const
 //------------------------------------------------------------------------------
 void vtkCascadedShadowMapViews::SetMaximumShadowDistance(double distance)
 {
-  const double clamped = std::isfinite(distance) && distance > 0.0 ? distance : 0.0;
+  if (!vtkShadowMapsIsFiniteParameter(
+        this, "MaximumShadowDistance", distance, this->MaximumShadowDistance))
+  {
+    return;
+  }
+  const double clamped = distance > 0.0 ? distance : 0.0;
   if (clamped != distance)
   {
     vtkWarningMacro(<< "MaximumShadowDistance " << distance

@@ -45,6 +45,7 @@
 #define vtkCascadedShadowMapViews_h
 
 #include "vtkRenderingShadowMapsModule.h" // For export macro
+#include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 #include "vtkShadowMapViews.h"
 #include "vtkWarpedShadowMapViews.h" // For the warp modes
 
@@ -102,7 +103,7 @@ public:
 
   ///@{
   /** Share of MaximumShadowDistance over which shadows fade out, [0, 1], default 0.1. */
-  vtkSetClampMacro(FadeFraction, double, 0.0, 1.0);
+  vtkSetFiniteClampMacro(FadeFraction, double, 0.0, 1.0);
   vtkGetMacro(FadeFraction, double);
   ///@}
 
@@ -114,7 +115,7 @@ public:
    * with 0 the second lookup is compiled out, which on a software rasteriser
    * (that runs it at every pixel) saves about a tenth of a cascaded frame.
    */
-  vtkSetClampMacro(BlendFraction, double, 0.0, 1.0);
+  vtkSetFiniteClampMacro(BlendFraction, double, 0.0, 1.0);
   vtkGetMacro(BlendFraction, double);
   ///@}
 

@@ -29,6 +29,7 @@
 
 #include "vtkObject.h"
 #include "vtkRenderingShadowMapsModule.h" // For export macro
+#include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 #include "vtkWrappingHints.h"             // For VTK_WRAPEXCLUDE
 
 #include <functional> // For ViewFit
@@ -76,7 +77,7 @@ public:
    * anew. No effect on vtkUniformShadowMapViews. Clamped to [1, 16]; default
    * 1.5.
    */
-  vtkSetClampMacro(InteractiveTexelRatio, double, 1.0, 16.0);
+  vtkSetFiniteClampMacro(InteractiveTexelRatio, double, 1.0, 16.0);
   vtkGetMacro(InteractiveTexelRatio, double);
   ///@}
 

@@ -43,6 +43,7 @@
 #define vtkWarpedShadowMapViews_h
 
 #include "vtkRenderingShadowMapsModule.h" // For export macro
+#include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 #include "vtkShadowMapViews.h"
 
 namespace shadowmaps
@@ -85,7 +86,7 @@ public:
    * body, world units). 0 (default) chooses n_opt automatically; clamped to
    * [0, 1e30].
    */
-  vtkSetClampMacro(LiSPSMFreeParameter, double, 0.0, 1e30);
+  vtkSetFiniteClampMacro(LiSPSMFreeParameter, double, 0.0, 1e30);
   vtkGetMacro(LiSPSMFreeParameter, double);
   ///@}
 
@@ -105,7 +106,7 @@ public:
    * where near and far aliasing balance. 0: the original PSM, which gives most
    * of the map to the first few depth units. Clamped to [-1, 1e30].
    */
-  vtkSetClampMacro(PSMSlideBack, double, -1.0, 1e30);
+  vtkSetFiniteClampMacro(PSMSlideBack, double, -1.0, 1e30);
   vtkGetMacro(PSMSlideBack, double);
   ///@}
 
@@ -115,13 +116,13 @@ public:
    * whose shadows get TSMFocusFraction of the map. 0 (default): a fifth of the
    * depth the focus body reaches. Clamped to [0, 1e30].
    */
-  vtkSetClampMacro(TSMFocusDistance, double, 0.0, 1e30);
+  vtkSetFiniteClampMacro(TSMFocusDistance, double, 0.0, 1e30);
   vtkGetMacro(TSMFocusDistance, double);
   ///@}
 
   ///@{
   /** TSM: the share of the map given to the focus region (the paper's 80% line). Clamped to [0.05, 0.95]; default 0.8. */
-  vtkSetClampMacro(TSMFocusFraction, double, 0.05, 0.95);
+  vtkSetFiniteClampMacro(TSMFocusFraction, double, 0.05, 0.95);
   vtkGetMacro(TSMFocusFraction, double);
   ///@}
 

@@ -4,7 +4,11 @@
 // lights with is left unpatched (the check issue 37 asks for on each stack:
 // a VTK whose mapper writes its lighting differently fails here, not as a
 // frame quietly without shadows).
+#include "ShadowMapVTKCompat.h" // the GL loader first
+
+#include "ShadowMapGlslLiteral.h"
 #include "ShadowMapLight.h"
+#include "ShadowMapQuad.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowTestUtilities.h"
 #include "vtkDepthShadowMapPass.h"
@@ -15,6 +19,8 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkProperty.h"
 
 #include <gtest/gtest.h>
@@ -166,4 +172,30 @@ TEST(ShadowInjection, LightingCodeItCannotPatchIsCounted)
   // lightColor01 is another light's; an unlit shader names none.
   std::string other = "uniform vec3 lightColor01;\nvoid main()\n{\n}\n";
   EXPECT_EQ(shadowmaps::ReceiverShader::Inject(other, lights, 1, code, true, false), 0);
+}
+
+// Numbers #define'd into GLSL are float literals the GL parses, huge and tiny
+// ones included: each compiles as the initialiser of a float.
+TEST(ShadowInjection, GlslLiteralsCompileForEveryValue)
+{
+  const std::vector<std::pair<double, std::string>> literals = { { 2.0, "2.00000000" },
+    { 1e30, "1.00000000e+30" }, { -1e30, "-1.00000000e+30" }, { 1e-30, "1.00000000e-30" },
+    { 0.0, "0.00000000" }, { 1e300, "1.00000000e+38" }, { -1e300, "-1.00000000e+38" },
+    { std::nan(""), "0.00000000" } };
+  std::string code = "//VTK::System::Dec\n//VTK::Output::Dec\nin vec2 texCoord;\nvoid main()\n{\n"
+                     "  float sum = 0.0;\n";
+  for (const auto& literal : literals)
+  {
+    EXPECT_EQ(shadowmaps::GlslFloat(literal.first), literal.second);
+    code += "  sum += " + shadowmaps::GlslFloat(literal.first) + " * texCoord.x;\n";
+  }
+  code += "  gl_FragData[0] = vec4(sum);\n}\n";
+  TestScene scene;
+  scene.Window->Render();
+  std::unique_ptr<vtkOpenGLQuadHelper> quad;
+  EXPECT_NE(shadowmaps::ReadyQuadProgram(
+              quad, vtkOpenGLRenderWindow::SafeDownCast(scene.Window), code.c_str()),
+    nullptr);
+  quad.reset();
+  scene.Window->ReleaseGraphicsResources(scene.Window);
 }
