@@ -46,6 +46,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <malloc.h>
 #include <functional>
 #include <string>
@@ -90,6 +91,9 @@ vtkSmartPointer<vtkAbstractShadowMapPass> NewPass()
 // Resident memory of this process in MiB (llvmpipe keeps textures there).
 double ResidentMiB()
 {
+  // Free heap pages at the top and inside glibc's arenas go back first: what
+  // remains is what the process holds.
+  malloc_trim(0);
   std::ifstream statm("/proc/self/statm");
   long pages = 0;
   long resident = 0;
@@ -292,21 +296,34 @@ TEST(ShadowEverydayUse, TogglingPassesKeepsMemoryFlat)
       scene.Renderer->SetPass(nullptr);
       scene.Window->Render();
     };
-    for (int i = 0; i < 5; ++i)
+    // Resident memory after a toggle, once the GL has finished with it; a map
+    // freed a frame late (the GL's or the allocator's timing) shows as a
+    // transient step of one map, so each side takes its least of ten toggles.
+    auto leastOfTenToggles = [&] {
+      double least = std::numeric_limits<double>::max();
+      for (int i = 0; i < 10; ++i)
+      {
+        toggle();
+        scene.Window->WaitForCompletion();
+        least = std::min(least, ResidentMiB());
+      }
+      return least;
+    };
+    leastOfTenToggles(); // what the first frames allocate once
+    const double before = leastOfTenToggles();
+    for (int i = 0; i < 80; ++i)
     {
       toggle();
     }
-    const double before = ResidentMiB();
-    for (int i = 0; i < 100; ++i)
-    {
-      toggle();
-    }
-    const double grown = ResidentMiB() - before;
+    const double grown = leastOfTenToggles() - before;
     // One toggle's maps are 8 MiB (16-bit depth) to 64 MiB (two floats and a
     // second output): a leak of any of them grows memory by 800 MiB or more.
-    // The allocator's own steps stay within 16 MiB.
-    EXPECT_LT(grown, 32.0) << kind.first << ": MiB grown over 100 toggles";
-    std::cout << kind.first << ": " << grown << " MiB grown over 100 toggles\n";
+    // Memory takes single steps of one map (8 MiB after depth's loop here,
+    // returned when the next kind runs; 16 MiB once within 200 toggles of dual
+    // depth in Measurement/toggle_memory.py, flat before and after it), not
+    // one per toggle.
+    EXPECT_LT(grown, 32.0) << kind.first << ": MiB grown over 110 toggles";
+    std::cout << kind.first << ": " << grown << " MiB grown over 110 toggles\n";
   }
 }
 
