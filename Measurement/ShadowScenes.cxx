@@ -1441,6 +1441,28 @@ void BuildStreetScene(vtkRenderer* renderer)
   SetCamera(renderer, position, focalPoint, 50.0);
 }
 
+void BuildBlocksScene(vtkRenderer* renderer)
+{
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  const double spacing = 2.0;
+  const double half = 0.5 * spacing * BlocksPerSide;
+  AddGround(renderer, -half - 4.0, half + 4.0, -half - 4.0, half + 4.0, 0.0);
+  vtkNew<vtkCubeSource> cube; // unit cube: each block scales it
+  for (int i = 0; i < BlocksPerSide; ++i)
+  {
+    for (int j = 0; j < BlocksPerSide; ++j)
+    {
+      const double height = 0.5 + 3.0 * CellNoise(i, j, 5);
+      vtkSmartPointer<vtkActor> block = AddActor(renderer, cube->GetOutputPort(), ModelColor, 0.1);
+      block->SetScale(1.2, 1.2, height);
+      block->SetPosition(-half + spacing * (i + 0.5), -half + spacing * (j + 0.5), 0.5 * height);
+    }
+  }
+  const double position[3] = { -half - 20.0, -half - 25.0, 35.0 };
+  const double focalPoint[3] = { 0.0, 0.0, 0.0 };
+  SetCamera(renderer, position, focalPoint, 40.0);
+}
+
 bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::string& error)
 {
   if (name == "default")
@@ -1482,8 +1504,13 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
     BuildStreetScene(renderer);
     return true;
   }
+  if (name == "blocks")
+  {
+    BuildBlocksScene(renderer);
+    return true;
+  }
   error = "unknown scene '" + name +
-    "' (expected default, outdoor, paraview, model, city, field, room or street)";
+    "' (expected default, outdoor, paraview, model, city, field, room, street or blocks)";
   return false;
 }
 

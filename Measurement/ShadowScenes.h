@@ -147,11 +147,21 @@ constexpr int StreetPolesPerSide = 52;
  */
 void BuildStreetScene(vtkRenderer* renderer);
 
+constexpr int BlocksPerSide = 45;
+
+/**
+ * Thousands of actors, where the per-actor cost is the frame: a grid of
+ * BlocksPerSide^2 (2,025) small boxes of varied heights on a ground, each box
+ * an actor with its own mapper (as an application shows the blocks of a
+ * dataset), seen from above at an angle.
+ */
+void BuildBlocksScene(vtkRenderer* renderer);
+
 /** The sweep's scenes: "default", the benchmark's, then "city", "field", "room". */
 std::vector<std::string> SweepSceneNames();
 
 /**
- * Builds a benchmark scene, a sweep scene, "street" or "default" (BuildDefaultScene) into an empty
+ * Builds a benchmark scene, a sweep scene, "street", "blocks" or "default" (BuildDefaultScene) into an empty
  * renderer. Returns false with a one-line `error` for an unknown name or a
  * scene that cannot be built.
  */

@@ -127,8 +127,8 @@ void PrintUsage(std::ostream& out)
          "  --out DIR                output directory [./bench]\n"
          "\n"
          "options of speed: those of bench but the flicker options, with\n"
-         "  --scenes LIST            outdoor,paraview,model,street (225 actors)\n"
-         "                           [outdoor,paraview,model,street]\n"
+         "  --scenes LIST            outdoor,paraview,model,street (225 actors),\n"
+         "                           blocks (2,026 actors) [outdoor,paraview,model,street]\n"
          "  --setups LIST            [perpendicular,spot]\n"
          "  --techniques LIST        [uniform,lispsm,csm] (none and vtk always measured)\n"
          "  --size WxH               [960x540]\n"
@@ -354,11 +354,12 @@ std::string ParseSpeedScenes(const std::string& value, Options& options)
 {
   auto names = shadowscenes::BenchmarkSceneNames();
   names.push_back("street");
+  names.push_back("blocks");
   for (const std::string& scene : SplitList(value))
   {
     if (std::find(names.begin(), names.end(), scene) == names.end())
     {
-      return "unknown scene '" + scene + "' (expected outdoor, paraview, model or street)";
+      return "unknown scene '" + scene + "' (expected outdoor, paraview, model, street or blocks)";
     }
   }
   options.bench.Scenes = SplitList(value);

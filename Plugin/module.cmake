@@ -83,6 +83,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Scene/ShadowMapClosedSurfaces.cxx
     Plugin/Scene/ShadowMapCasterVersion.cxx
     Plugin/Scene/ShadowMapPropParts.cxx
+    Plugin/Scene/ShadowMapPropRecords.cxx
     ${shadowmaps_shader_sources}
   NOWRAP_HEADERS
     # What a downstream views or representation class needs: plain C++ and
@@ -119,6 +120,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Scene/ShadowMapClosedSurfaces.h
     Plugin/Scene/ShadowMapCasterVersion.h
     Plugin/Scene/ShadowMapPropParts.h
+    Plugin/Scene/ShadowMapPropRecords.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)
   vtk_module_include(ShadowMaps::RenderingShadowMaps

@@ -4,7 +4,7 @@
 #include "ShadowMapCasterShader.h"
 #include "ShadowMapCascades.h"
 #include "ShadowMapCasterReach.h"
-#include "ShadowMapCasterVersion.h"
+#include "ShadowMapPropRecords.h"
 #include "ShadowMapCasting.h"
 #include "ShadowMapCombination.h"
 #include "ShadowMapClosedSurfaces.h"
@@ -48,7 +48,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureUnitManager.h"
 #include "vtkShaderProgram.h"
-#include "vtkVolume.h"
 #include "vtkWeakPointer.h"
 
 #include <glm/gtc/matrix_access.hpp>
@@ -148,14 +147,6 @@ bool IsNonFinite(const LightView& view)
   return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
 }
 
-// Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
-// depth map; as casters they would only re-render the maps on every transfer
-// function edit.
-bool DrawsIntoDepthMaps(vtkProp* prop)
-{
-  return prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop);
-}
-
 } // namespace
 
 // One renderer's (one eye's) maps, what renders them, their receivers'
@@ -169,6 +160,8 @@ struct RendererMaps
   // Light depths of value maps, while the processes' maps are combined.
   shadowmaps::StoreFromLightDepths LightDepths;
   shadowmaps::MapUpdates Updates;
+  // The props' bounds and versions, read again only when they change.
+  shadowmaps::PropRecords Props;
   int Layers = 0;
 
   void ReleaseGraphicsResources(vtkWindow* window)
@@ -685,6 +678,8 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   r.Casters.clear();
   frame.PropBounds.clear();
   frame.SceneBounds = Aabb();
+  shadowmaps::PropRecords& records = r.Current->Props;
+  records.BeginFrame(renderer);
   vtkCollectionSimpleIterator it;
   vtkPropCollection* props = renderer->GetViewProps();
   props->InitTraversal(it);
@@ -694,13 +689,6 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
     {
       continue;
     }
-    const Aabb bounds = Aabb::FromBounds(prop->GetBounds());
-    if (!bounds.IsUsable())
-    {
-      continue;
-    }
-    frame.SceneBounds.Add(bounds);
-    frame.PropBounds.push_back(bounds);
     if (!prop->GetPropertyKeys())
     {
       // Render passes create the keys on first use, which modifies the prop;
@@ -708,11 +696,19 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
       vtkNew<vtkInformation> keys;
       prop->SetPropertyKeys(keys);
     }
-    if (IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()) && DrawsIntoDepthMaps(prop))
+    const shadowmaps::PropRecords::Record& record = records.Read(prop);
+    if (!record.Bounds.IsUsable())
     {
-      r.Casters.push_back({ prop, bounds, shadowmaps::CasterVersion(prop) });
+      continue;
+    }
+    frame.SceneBounds.Add(record.Bounds);
+    frame.PropBounds.push_back(record.Bounds);
+    if (record.DrawsIntoDepthMaps && IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()))
+    {
+      r.Casters.push_back({ prop, record.Bounds, record.Version });
     }
   }
+  records.EndFrame();
 
   const Aabb given = Aabb::FromBounds(this->SceneBounds);
   if (this->UseSceneBounds && given.IsUsable())

@@ -40,15 +40,17 @@ private:
   vtkMTimeType Value = 14695981039346656037ull;
 };
 
-// Every input connection of every port, updated first, and the mapper itself.
-void AddMapper(vtkAbstractMapper* mapper, VersionHash& hash)
+// Every input connection of every port, updated first (where it is not
+// known to be), and the mapper itself.
+void AddMapper(vtkAbstractMapper* mapper, bool firstInputsUpdated, VersionHash& hash)
 {
   hash.Add(mapper->GetMTime());
   for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
   {
     for (int connection = 0; connection < mapper->GetNumberOfInputConnections(port); ++connection)
     {
-      if (vtkAlgorithm* producer = mapper->GetInputAlgorithm(port, connection))
+      vtkAlgorithm* producer = mapper->GetInputAlgorithm(port, connection);
+      if (producer && !(port == 0 && firstInputsUpdated))
       {
         producer->Update(mapper->GetInputConnection(port, connection)->GetIndex());
       }
@@ -85,11 +87,11 @@ void AddMatrix(vtkMatrix4x4* matrix, VersionHash& hash)
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkMTimeType CasterVersion(vtkProp* prop)
+vtkMTimeType CasterVersion(vtkProp* prop, bool firstInputsUpdated)
 {
   VersionHash hash;
   bool assembled = false;
-  ForEachPart(prop, [prop, &hash, &assembled](vtkProp* part, vtkMatrix4x4* pathMatrix) {
+  ForEachPart(prop, [&](vtkProp* part, vtkMatrix4x4* pathMatrix) {
     if (part != prop)
     {
       // Assemblies poke each part's matrix, which modifies it, at every
@@ -110,7 +112,7 @@ vtkMTimeType CasterVersion(vtkProp* prop)
     }
     if (vtkAbstractMapper* mapper = MapperOf(part))
     {
-      AddMapper(mapper, hash);
+      AddMapper(mapper, firstInputsUpdated, hash);
     }
   });
   if (!assembled)

@@ -13,8 +13,10 @@ class vtkProp;
 namespace shadowmaps
 {
 /// A number that differs whenever anything `prop` draws into a depth map
-/// differs: equal numbers mean the same depths. Updates the mappers' inputs.
-vtkMTimeType CasterVersion(vtkProp* prop);
+/// differs: equal numbers mean the same depths. Updates the mappers' inputs,
+/// but for their first port with `firstInputsUpdated` (VTK's cullers, which
+/// ask every visible prop its bounds, brought those up to date this frame).
+vtkMTimeType CasterVersion(vtkProp* prop, bool firstInputsUpdated = false);
 } // namespace shadowmaps
 
 #endif

@@ -14,6 +14,14 @@ namespace shadowmaps
 //------------------------------------------------------------------------------
 void ForEachPart(vtkProp* prop, const std::function<void(vtkProp*, vtkMatrix4x4*)>& visit)
 {
+  // An actor is its own only path, whose matrix is its own: vtkProp3D builds
+  // that path anew at every traversal, which costs more than the rest of a
+  // caster's version.
+  if (auto* actor = vtkActor::SafeDownCast(prop))
+  {
+    visit(actor, actor->GetMatrix());
+    return;
+  }
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {

@@ -1,0 +1,48 @@
+#include "ShadowMapPropRecords.h"
+
+#include "ShadowMapCasterVersion.h"
+
+#include "vtkCullerCollection.h"
+#include "vtkProp.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+
+namespace shadowmaps
+{
+//------------------------------------------------------------------------------
+void PropRecords::BeginFrame(vtkRenderer* renderer)
+{
+  // vtkRenderer::Render runs its cullers before its passes, and they ask every
+  // visible prop its bounds, which updates its mapper's input.
+  this->FirstInputsUpdated = renderer->GetCullers()->GetNumberOfItems() > 0;
+  this->Current.clear();
+  this->Current.reserve(this->Kept.size());
+  this->ReadAgain = 0;
+}
+
+//------------------------------------------------------------------------------
+const PropRecords::Record& PropRecords::Read(vtkProp* prop)
+{
+  const vtkMTimeType version = CasterVersion(prop, this->FirstInputsUpdated);
+  const auto kept = this->Kept.find(prop);
+  if (kept != this->Kept.end() && kept->second.Version == version)
+  {
+    return this->Current[prop] = kept->second;
+  }
+  ++this->ReadAgain;
+  Record& record = this->Current[prop];
+  record.Version = version;
+  record.Bounds = Aabb::FromBounds(prop->GetBounds());
+  // Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
+  // depth map; as casters they would only re-render the maps on every transfer
+  // function edit.
+  record.DrawsIntoDepthMaps = prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop);
+  return record;
+}
+
+//------------------------------------------------------------------------------
+void PropRecords::EndFrame()
+{
+  this->Kept.swap(this->Current);
+}
+} // namespace shadowmaps

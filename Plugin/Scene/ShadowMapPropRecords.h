@@ -1,0 +1,51 @@
+// What a pass reads of each visible prop every frame: its world bounds,
+// whether it draws into depth maps, and its caster version. The bounds update
+// each mapper's pipeline, which with thousands of props was most of the pass's
+// own CPU time; they are kept from frame to frame and read again only when
+// the prop's version changes (the version covers all the bounds depend on:
+// the prop's and its parts' transforms, mappers and inputs).
+#ifndef ShadowMapPropRecords_h
+#define ShadowMapPropRecords_h
+
+#include "ShadowMapFocusing.h" // For Aabb
+
+#include "vtkType.h" // For vtkMTimeType
+
+#include <unordered_map>
+
+class vtkProp;
+class vtkRenderer;
+
+namespace shadowmaps
+{
+class PropRecords
+{
+public:
+  struct Record
+  {
+    Aabb Bounds;
+    bool DrawsIntoDepthMaps = false;
+    vtkMTimeType Version = 0;
+  };
+
+  /// Starts a frame of `renderer`, after its cullers ran (or not).
+  void BeginFrame(vtkRenderer* renderer);
+
+  /// The record of a visible prop this frame.
+  const Record& Read(vtkProp* prop);
+
+  /// Forgets the props not read since BeginFrame.
+  void EndFrame();
+
+  /// Records read again (their version changed, or new) and kept, this frame.
+  int GetNumberOfReadAgain() const { return this->ReadAgain; }
+
+private:
+  std::unordered_map<vtkProp*, Record> Kept;
+  std::unordered_map<vtkProp*, Record> Current;
+  bool FirstInputsUpdated = false;
+  int ReadAgain = 0;
+};
+} // namespace shadowmaps
+
+#endif

@@ -1,0 +1,90 @@
+// What the pass reads of each prop per frame (Plugin/Scene/ShadowMapPropRecords):
+// read again exactly when something its bounds or depths depend on changed,
+// and never stale. Without GL: the records ask props, mappers and pipelines.
+#include "ShadowMapPropRecords.h"
+
+#include "vtkActor.h"
+#include "vtkCullerCollection.h"
+#include "vtkNew.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace
+{
+struct Scene
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkSphereSource> Source;
+  vtkNew<vtkActor> Sphere;
+  vtkNew<vtkActor> Other;
+
+  Scene()
+  {
+    for (vtkActor* actor : { this->Sphere.Get(), this->Other.Get() })
+    {
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(this->Source->GetOutputPort());
+      actor->SetMapper(mapper);
+      this->Renderer->AddActor(actor);
+    }
+    this->Other->SetPosition(5.0, 0.0, 0.0);
+  }
+
+  // One frame's reads, after what vtkRenderer::Render's cullers do: they ask
+  // each prop its bounds (which updates its pipeline) before the passes run.
+  int Frame(shadowmaps::PropRecords& records, bool cullers)
+  {
+    records.BeginFrame(this->Renderer);
+    for (vtkActor* actor : { this->Sphere.Get(), this->Other.Get() })
+    {
+      if (cullers)
+      {
+        actor->GetBounds();
+      }
+      this->Last[actor] = records.Read(actor);
+    }
+    records.EndFrame();
+    return records.GetNumberOfReadAgain();
+  }
+
+  std::map<vtkActor*, shadowmaps::PropRecords::Record> Last;
+};
+} // namespace
+
+TEST(ShadowPropRecords, ReadAgainOnlyWhatChanged)
+{
+  for (const bool cullers : { true, false })
+  {
+    Scene scene;
+    if (!cullers)
+    {
+      scene.Renderer->GetCullers()->RemoveAllItems();
+    }
+    shadowmaps::PropRecords records;
+    scene.Frame(records, cullers);
+    scene.Frame(records, cullers);
+    EXPECT_EQ(scene.Frame(records, cullers), 0) << "still: nothing read again, cullers " << cullers;
+
+    scene.Sphere->SetPosition(0.0, 2.0, 0.0);
+    EXPECT_EQ(scene.Frame(records, cullers), 1) << "moved, cullers " << cullers;
+    EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Min.y, 1.5, 0.05); // a tessellated sphere
+
+    // The source both mappers draw: both read again, their bounds grown.
+    scene.Source->SetRadius(2.0);
+    EXPECT_EQ(scene.Frame(records, cullers), 2) << "input changed, cullers " << cullers;
+    EXPECT_GT(scene.Last[scene.Other].Bounds.Max.x, 6.5) << "cullers " << cullers;
+    EXPECT_EQ(scene.Frame(records, cullers), 0) << "still again, cullers " << cullers;
+
+    // Opacity decides whether a prop draws into the maps.
+    EXPECT_TRUE(scene.Last[scene.Other].DrawsIntoDepthMaps);
+    scene.Other->GetProperty()->SetOpacity(0.5);
+    EXPECT_EQ(scene.Frame(records, cullers), 1) << "opacity, cullers " << cullers;
+    EXPECT_FALSE(scene.Last[scene.Other].DrawsIntoDepthMaps);
+  }
+}
