@@ -32,8 +32,10 @@ float vtkShadowImpostorWindowDepth(vec3 world)
 
 float vtkShadowImpostorRadius(vec3 world)
 {
+  // Behind the scene camera nothing is drawn: no radius (rather than a
+  // negative one that would turn a tube's quad inside out).
   float eyeDepth = vtkShadowImpostorScale.y > 0.5 ? 1.0 :
-    dot(vtkShadowImpostorSceneDepth.xyz, world) + vtkShadowImpostorSceneDepth.w;
+    max(dot(vtkShadowImpostorSceneDepth.xyz, world) + vtkShadowImpostorSceneDepth.w, 0.0);
   return ZCalcR * vtkShadowImpostorScale.x * eyeDepth;
 }
 

@@ -3,7 +3,8 @@
 // they are, they would be that width in map texels. While casting, each corner
 // is put instead a tube's radius (vtkShadowMapsImpostorSizes) from the line,
 // across both the line and the light's direction, in world space: the shadow
-// of the tube the scene camera shows. Each corner also passes the window depth
+// of the tube the scene camera shows, at least as long as wide where the light
+// sees the line end-on. Each corner also passes the window depth
 // of the line's point nearest the light and its side of the line, for
 // vtkShadowMapsTubeFS's depth.
 noperspective out float vtkShadowTubeNearDepth;
@@ -21,5 +22,11 @@ vec4 vtkShadowTubeCorner(int corner)
   vtkShadowTubeSide = corner % 2 == 0 ? 1.0 : -1.0;
   vtkShadowTubeNearDepth = vtkShadowImpostorWindowDepth(end + radius * toLight);
   vec3 across = vtkShadowImpostorAcross(last - first, toLight);
-  return vtkShadowImpostorClip(end + vtkShadowTubeSide * radius * across);
+  // A segment the light sees nearly end-on would cast a sliver: its ends move
+  // apart along the line, across the light, until it is as long as it is wide.
+  vec3 along = cross(toLight, across);
+  float seen = abs(dot(last - first, along));
+  float extension = max(radius - 0.5 * seen, 0.0) * (corner < 2 ? -1.0 : 1.0) *
+    (dot(last - first, along) < 0.0 ? -1.0 : 1.0);
+  return vtkShadowImpostorClip(end + vtkShadowTubeSide * radius * across + extension * along);
 }

@@ -3,6 +3,7 @@
 #include "ShadowMapPropParts.h"
 
 #include "vtkAbstractMapper.h"
+#include "vtkActor.h"
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataObject.h"
@@ -117,7 +118,10 @@ vtkMTimeType CasterVersion(vtkProp* prop, bool firstInputsUpdated)
   });
   if (!assembled)
   {
-    hash.Add(prop->GetRedrawMTime());
+    // An actor's redraw time is its own (with its properties and texture), its
+    // mapper's and its input's, which AddMapper has; vtkActor::GetRedrawMTime
+    // would update the input once more.
+    hash.Add(vtkActor::SafeDownCast(prop) ? prop->GetMTime() : prop->GetRedrawMTime());
   }
   else if (auto* placed = vtkProp3D::SafeDownCast(prop))
   {

@@ -2,6 +2,7 @@
 
 #include "ShadowMapCasterVersion.h"
 
+#include "vtkActor.h"
 #include "vtkCullerCollection.h"
 #include "vtkProp.h"
 #include "vtkRenderer.h"
@@ -25,7 +26,9 @@ const PropRecords::Record& PropRecords::Read(vtkProp* prop)
 {
   const vtkMTimeType version = CasterVersion(prop, this->FirstInputsUpdated);
   const auto kept = this->Kept.find(prop);
-  if (kept != this->Kept.end() && kept->second.Version == version)
+  // Only an actor's bounds are known to follow its version: other props (LOD
+  // props, image stacks, assemblies of slices) are read every frame.
+  if (kept != this->Kept.end() && kept->second.Version == version && vtkActor::SafeDownCast(prop))
   {
     return this->Current[prop] = kept->second;
   }

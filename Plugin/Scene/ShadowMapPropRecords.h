@@ -1,9 +1,9 @@
 // What a pass reads of each visible prop every frame: its world bounds,
 // whether it draws into depth maps, and its caster version. The bounds update
 // each mapper's pipeline, which with thousands of props was most of the pass's
-// own CPU time; they are kept from frame to frame and read again only when
-// the prop's version changes (the version covers all the bounds depend on:
-// the prop's and its parts' transforms, mappers and inputs).
+// own CPU time; an actor's are kept from frame to frame and read again only
+// when its version changes (which covers all they depend on: its transform,
+// mapper and inputs). Other props are read every frame.
 #ifndef ShadowMapPropRecords_h
 #define ShadowMapPropRecords_h
 

@@ -702,6 +702,27 @@ TEST(ShadowEverydayUse, LinesAsTubesCastTheirTubesShadows)
     });
 }
 
+// A tube the light sees end-on (a vertical line under a sun straight above)
+// casts a spot as wide as the tube, not a sliver.
+TEST(ShadowEverydayUse, TubesSeenEndOnCastTheirWidth)
+{
+  const double radius = 0.4;
+  const glm::dvec3 foot(2.0, 2.0, 0.0);
+  TestScene scene;
+  scene.Renderer->RemoveActor(scene.Sphere);
+  scene.SetSun(Down);
+  LineAsTube(scene, foot + glm::dvec3(0.0, 0.0, 0.5), foot + glm::dvec3(0.0, 0.0, 2.5), radius);
+  vtkSmartPointer<vtkAbstractShadowMapPass> pass = NewPass<vtkDepthShadowMapPass>();
+  pass->SetResolution(1024);
+  scene.Renderer->SetPass(pass);
+  auto image = RenderAndCapture(scene.Window);
+  for (const glm::dvec3 side : { glm::dvec3(1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(-1, 0, 0) })
+  {
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, foot + 0.5 * radius * side), ShadowedBelow);
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, foot + 2.0 * radius * side), LitAbove);
+  }
+}
+
 // A capture larger than the window (vtkWindowToImageFilter with a scale, as
 // PyVista's and ParaView's screenshots take) renders the image in tiles: each
 // shows the shadows of the whole image, as a window of that size draws them,

@@ -24,6 +24,7 @@
 #include "vtkWarpedShadowMapViews.h"
 
 #include <algorithm>
+#include <cmath>
 
 vtkStandardNewMacro(vtkPVShadowRenderView);
 
@@ -32,6 +33,10 @@ namespace
 template <typename T>
 T Clamped(vtkObject* self, const char* name, T value, T lowest, T highest)
 {
+  if (!std::isfinite(static_cast<double>(value)))
+  {
+    return value; // the module's setter refuses it, with its warning
+  }
   const T clamped = std::min(std::max(value, lowest), highest);
   if (clamped != value)
   {
