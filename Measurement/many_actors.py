@@ -1,0 +1,67 @@
+"""Steady frames of 2,025 boxes (one actor and mapper each) and a ground under a
+sun at 960 x 540 with 64^2 maps (so that rasterisation adds little and the
+per-actor work shows): argv[1] is none, vtk (VTK's vtkShadowMapPass), uniform
+(vtkDepthShadowMapPass) or csm (vtkCascadedShadowMapPass), argv[2] the frames
+timed after 3 untimed. Prints the mean frame in ms. For where the time goes,
+run it under perf and sum the samples under a function with perf_inclusive.py:
+
+  PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a perf record -D 2500 -F 499 \\
+    --call-graph dwarf,16384 -o uniform.data /usr/bin/python3 Measurement/many_actors.py uniform 60
+  /usr/bin/python3 Measurement/perf_inclusive.py uniform.data vtkAbstractShadowMapPass::PrepareShadows
+"""
+import sys
+import time
+
+import vtkshadowmaps
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer,
+                                         vtkRenderWindow)
+from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkRenderPassCollection,
+                                            vtkSequencePass, vtkShadowMapBakerPass,
+                                            vtkShadowMapPass)
+
+
+def add(renderer, source):
+    mapper = vtkPolyDataMapper(); mapper.SetInputConnection(source.GetOutputPort())
+    actor = vtkActor(); actor.SetMapper(mapper); renderer.AddActor(actor)
+    return actor
+
+
+window = vtkRenderWindow(); window.SetSize(960, 540); window.SetOffScreenRendering(1)
+window.SetMultiSamples(0)
+renderer = vtkRenderer(); window.AddRenderer(renderer)
+ground = vtkPlaneSource(); ground.SetOrigin(-50, -50, 0); ground.SetPoint1(50, -50, 0)
+ground.SetPoint2(-50, 50, 0)
+add(renderer, ground)
+cube = vtkCubeSource()
+for i in range(45):
+    for j in range(45):
+        height = 0.5 + 3.0 * ((i * 7 + j * 13) % 10) / 10.0
+        box = add(renderer, cube)
+        box.SetScale(1.2, 1.2, height); box.SetPosition(-44 + 2 * i, -44 + 2 * j, height / 2)
+renderer.AutomaticLightCreationOff()
+sun = vtkLight(); sun.SetLightTypeToSceneLight(); sun.SetPositional(False)
+sun.SetPosition(1, -1, 3); sun.SetFocalPoint(0, 0, 0); renderer.AddLight(sun)
+camera = renderer.GetActiveCamera()
+camera.SetPosition(-65, -70, 35); camera.SetFocalPoint(0, 0, 0); camera.SetViewUp(0, 0, 1)
+renderer.ResetCameraClippingRange()
+
+kind = sys.argv[1]
+if kind in ("uniform", "csm"):
+    shadows = (vtkshadowmaps.vtkDepthShadowMapPass() if kind == "uniform"
+               else vtkshadowmaps.vtkCascadedShadowMapPass())
+    shadows.SetResolution(64); renderer.SetPass(shadows)
+elif kind == "vtk":
+    baker = vtkShadowMapBakerPass(); baker.SetResolution(64)
+    shadow = vtkShadowMapPass(); shadow.SetShadowMapBakerPass(baker)
+    passes = vtkRenderPassCollection(); passes.AddItem(baker); passes.AddItem(shadow)
+    sequence = vtkSequencePass(); sequence.SetPasses(passes)
+    camera_pass = vtkCameraPass(); camera_pass.SetDelegatePass(sequence)
+    renderer.SetPass(camera_pass)
+for _ in range(3):
+    window.Render()
+frames = int(sys.argv[2]) if len(sys.argv) > 2 else 40
+start = time.perf_counter()
+for _ in range(frames):
+    window.Render()
+print(f"{kind}: {(time.perf_counter() - start) / frames * 1000:.1f} ms per steady frame")
