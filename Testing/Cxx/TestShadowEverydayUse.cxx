@@ -556,6 +556,17 @@ double PixelsForRadius(vtkRenderer* renderer, const glm::dvec3& center, double r
   return radius * width * projection->GetElement(0, 0) / distance;
 }
 
+// An actor drawing `data` with a vtkPolyDataMapper, added to the scene.
+vtkSmartPointer<vtkActor> AddDataActor(TestScene& scene, vtkPolyData* data)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  scene.Renderer->AddActor(actor);
+  return actor;
+}
+
 vtkSmartPointer<vtkActor> PointsAsSpheres(
   TestScene& scene, const std::vector<glm::dvec3>& centers, double radius)
 {
@@ -569,20 +580,13 @@ vtkSmartPointer<vtkActor> PointsAsSpheres(
   vtkNew<vtkPolyData> data;
   data->SetPoints(points);
   data->SetVerts(vertices);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(data);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
+  vtkSmartPointer<vtkActor> actor = AddDataActor(scene, data);
   actor->GetProperty()->SetRenderPointsAsSpheres(true);
   actor->GetProperty()->SetPointSize(
     static_cast<float>(PixelsForRadius(scene.Renderer, centers.front(), radius)));
-  scene.Renderer->AddActor(actor);
   return actor;
 }
-} // namespace
 
-namespace
-{
 vtkSmartPointer<vtkActor> LineAsTube(
   TestScene& scene, const glm::dvec3& from, const glm::dvec3& to, double radius)
 {
@@ -596,14 +600,10 @@ vtkSmartPointer<vtkActor> LineAsTube(
   vtkNew<vtkPolyData> data;
   data->SetPoints(points);
   data->SetLines(lines);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(data);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
+  vtkSmartPointer<vtkActor> actor = AddDataActor(scene, data);
   actor->GetProperty()->SetRenderLinesAsTubes(true);
   actor->GetProperty()->SetLineWidth(
     static_cast<float>(PixelsForRadius(scene.Renderer, 0.5 * (from + to), radius)));
-  scene.Renderer->AddActor(actor);
   return actor;
 }
 
