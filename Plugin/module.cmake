@@ -9,6 +9,7 @@ set(shadowmaps_shaders
   vtkShadowMapsAnalysisFS
   vtkShadowMapsBlurFS
   vtkShadowMapsCasterFS
+  vtkShadowMapsImpostorDepthFS
   vtkShadowMapsImpostorSizes
   vtkShadowMapsSpriteFS
   vtkShadowMapsSpriteVS

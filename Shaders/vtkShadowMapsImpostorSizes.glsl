@@ -10,8 +10,9 @@ uniform vec4 vtkShadowImpostorLight;
 // The scene camera's eye depth of a world point p: dot(xyz, p) + w.
 uniform vec4 vtkShadowImpostorSceneDepth;
 // x: the light camera's P00 over the scene camera's; y: 1 for a parallel scene
-// camera (no eye depth in the radius); z: the map's size in texels.
-uniform vec3 vtkShadowImpostorScale;
+// camera (no eye depth in the radius); z: the map's size in texels; w: the
+// largest point size the GL draws.
+uniform vec4 vtkShadowImpostorScale;
 
 vec3 vtkShadowImpostorWorld(vec4 clip)
 {
@@ -19,15 +20,13 @@ vec3 vtkShadowImpostorWorld(vec4 clip)
   return h.xyz / h.w;
 }
 
-vec4 vtkShadowImpostorClip(vec3 world)
+// The clip position `offset` (world units) from the point drawn at `clip`.
+// Offsets from the drawn point rather than positions: a point recovered through
+// the inverse of a perspective view can carry float error along the light's
+// rays, which an offset keeps out of the positions the casters draw.
+vec4 vtkShadowImpostorClipOffset(vec4 clip, vec3 offset)
 {
-  return vtkShadowImpostorWorldToClip * vec4(world, 1.0);
-}
-
-float vtkShadowImpostorWindowDepth(vec3 world)
-{
-  vec4 clip = vtkShadowImpostorClip(world);
-  return 0.5 * clip.z / clip.w + 0.5;
+  return clip + vtkShadowImpostorWorldToClip * vec4(offset, 0.0);
 }
 
 float vtkShadowImpostorRadius(vec3 world)

@@ -1,11 +1,32 @@
-// The window depth of a point drawn as a sphere, while casting: between its
-// centre's (the point's own) and that of its point nearest the light
-// (vtkShadowMapsSpriteVS), by the sphere's normal towards the viewer of the
-// map; linear in window depth, exact for orthographic views.
-flat in float vtkShadowSpriteNearDepth;
+// The window depth of a point drawn as a sphere, while casting: where the ray
+// of the map texel the fragment covers meets the sphere vtkShadowMapsSpriteVS
+// passes (nearest the light); texels whose rays miss it are discarded.
+flat in vec3 vtkShadowSpriteCentre;
+flat in float vtkShadowSpriteRadius;
+flat in vec4 vtkShadowSpriteClip;
+flat in float vtkShadowSpriteReach;
+flat in vec4 vtkShadowSpriteNear;
+flat in vec4 vtkShadowSpriteMiddle;
 
 float vtkShadowSpriteDepth()
 {
-  vec2 p = 2.0 * gl_PointCoord - 1.0;
-  return mix(gl_FragCoord.z, vtkShadowSpriteNearDepth, sqrt(max(1.0 - dot(p, p), 0.0)));
+  // gl_PointCoord runs down the square.
+  vec2 offset = vtkShadowSpriteReach * vec2(2.0 * gl_PointCoord.x - 1.0, 1.0 - 2.0 * gl_PointCoord.y);
+  vec4 across = vtkShadowImpostorClipToWorld[0] * offset.x + vtkShadowImpostorClipToWorld[1] * offset.y;
+  vec4 near = vtkShadowSpriteNear + across;
+  vec4 middle = vtkShadowSpriteMiddle + across;
+  vec3 origin = near.xyz / near.w;
+  vec3 direction = normalize(middle.xyz / middle.w - origin);
+  vec3 fromCentre = origin - vtkShadowSpriteCentre;
+  float along = dot(fromCentre, direction);
+  float radius = vtkShadowSpriteRadius;
+  float discriminant = along * along - (dot(fromCentre, fromCentre) - radius * radius);
+  // Continuous across the silhouette for the depth's derivatives, then cut.
+  float t = max(-along - sqrt(max(discriminant, 0.0)), 0.0);
+  float depth = vtkShadowImpostorOffsetDepth(vtkShadowSpriteClip, fromCentre + t * direction);
+  if (discriminant < 0.0)
+  {
+    discard;
+  }
+  return depth;
 }

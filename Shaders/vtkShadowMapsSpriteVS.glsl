@@ -1,20 +1,61 @@
 // Points drawn as spheres (RenderPointsAsSpheres) are squares that the
-// rasteriser sizes in pixels and the fragment shader rounds. Drawn into a map
-// as they are, they would be the point's size in map texels. While casting,
-// this sizes each point to the sphere the scene camera shows
-// (vtkShadowMapsImpostorSizes), measured in the map's texels, and passes the
-// window depth of the sphere's point nearest the light (vtkShadowMapsSpriteFS
-// mixes it with the centre's by the sphere's normal).
-flat out float vtkShadowSpriteNearDepth;
+// rasteriser sizes in pixels and the fragment shader rounds. Drawn into a map as
+// they are, they would be the point's size in map texels. While casting, this
+// sizes each point to hold the image of the sphere the scene camera shows
+// (vtkShadowMapsImpostorSizes) in the map, and passes the sphere to
+// vtkShadowMapsSpriteFS, which finds where each texel's ray meets it. A
+// perspective map draws an off-axis sphere as an ellipse, longer than wide
+// and off the centre's image: the square holds the circle through its
+// farthest point.
+flat out vec3 vtkShadowSpriteCentre;
+flat out float vtkShadowSpriteRadius;
+flat out vec4 vtkShadowSpriteClip;
+// Half the square's side in normalized device coordinates.
+flat out float vtkShadowSpriteReach;
+// The world points (homogeneous) at the near plane and at depth 0 of the
+// normalized device coordinates of the centre: with the inverse's columns
+// they give each texel's ray in vtkShadowMapsSpriteFS.
+flat out vec4 vtkShadowSpriteNear;
+flat out vec4 vtkShadowSpriteMiddle;
 
 void vtkShadowSizeSprite()
 {
   vec3 p = vtkShadowImpostorWorld(gl_Position);
   float radius = vtkShadowImpostorRadius(p);
   vec3 toLight = vtkShadowImpostorToLight(p);
-  vec4 rim = vtkShadowImpostorClip(p + radius * vtkShadowImpostorAcross(toLight, vec3(0.0, 0.0, 1.0)));
-  // The rim's offset in normalized device coordinates is the radius over half
-  // the map: the diameter in texels is that offset times the map's size.
-  gl_PointSize = max(length(rim.xy / rim.w - gl_Position.xy / gl_Position.w) * vtkShadowImpostorScale.z, 1.0);
-  vtkShadowSpriteNearDepth = vtkShadowImpostorWindowDepth(p + radius * toLight);
+  // The light's tangent cone meets the plane through the centre across it in
+  // a circle wider than the sphere, by more the nearer a positional light is.
+  float distance = vtkShadowImpostorLight.w > 0.5 ? length(vtkShadowImpostorLight.xyz - p) : 0.0;
+  float ratio = distance > 0.0 ? min(radius / distance, 0.99) : 0.0;
+  float cone = radius / sqrt(1.0 - ratio * ratio);
+  // The image of that circle, to first order: the map's normalized device
+  // coordinates change with world position by J (2 x 3) at the centre, and
+  // the circle's image is an ellipse whose longer half-axis is the largest
+  // singular value of J [u v] times its radius. A perspective map draws the
+  // sphere larger than that on the side nearer its eye, by about the
+  // radius over the depth: a margin of twice that.
+  vec3 u = vtkShadowImpostorAcross(toLight, vec3(0.0, 0.0, 1.0));
+  vec3 v = cross(toLight, u);
+  mat4 m = vtkShadowImpostorWorldToClip;
+  vec2 centre = gl_Position.xy / gl_Position.w;
+  vec3 w = vec3(m[0][3], m[1][3], m[2][3]);
+  vec3 jx = (vec3(m[0][0], m[1][0], m[2][0]) - centre.x * w) / gl_Position.w;
+  vec3 jy = (vec3(m[0][1], m[1][1], m[2][1]) - centre.y * w) / gl_Position.w;
+  vec4 image = vec4(dot(jx, u), dot(jx, v), dot(jy, u), dot(jy, v));
+  float sum = dot(image, image);
+  float det = image.x * image.w - image.y * image.z;
+  float largest = sqrt(0.5 * (sum + sqrt(max(sum * sum - 4.0 * det * det, 0.0))));
+  float depthRatio = abs(cone * dot(w, toLight) / gl_Position.w);
+  float reach = cone * largest * (1.0 + 2.0 * depthRatio);
+  // The GL caps the size (255 texels on llvmpipe): a larger image is cut.
+  gl_PointSize = min(reach * vtkShadowImpostorScale.z + 1.0, vtkShadowImpostorScale.w);
+  reach = gl_PointSize / vtkShadowImpostorScale.z;
+  vtkShadowSpriteCentre = p;
+  vtkShadowSpriteRadius = radius;
+  vtkShadowSpriteClip = gl_Position;
+  vtkShadowSpriteReach = reach;
+  mat4 inverse = vtkShadowImpostorClipToWorld;
+  vec4 atCentre = inverse[0] * centre.x + inverse[1] * centre.y + inverse[3];
+  vtkShadowSpriteNear = atCentre - inverse[2];
+  vtkShadowSpriteMiddle = atCentre;
 }

@@ -289,5 +289,6 @@ void CasterUniforms::ApplyReceiving(vtkShaderProgram* program) const
     program->SetUniformi("vtkShadowCasting", 0);
   }
   this->ApplyPeelUnit(program);
+  this->ImpostorSizes.ApplyReceiving(program);
 }
 } // namespace shadowmaps

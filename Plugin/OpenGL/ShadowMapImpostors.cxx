@@ -1,6 +1,7 @@
 #include "ShadowMapImpostors.h"
 
 #include "vtkShaderProgram.h"
+#include "vtkShadowMapsImpostorDepthFS.h"
 #include "vtkShadowMapsImpostorSizes.h"
 #include "vtkShadowMapsSpriteFS.h"
 #include "vtkShadowMapsSpriteVS.h"
@@ -118,9 +119,9 @@ std::string ImpostorShader::CasterDeclarations(Impostors sized)
   switch (sized)
   {
     case Impostors::Spheres:
-      return vtkShadowMapsSpriteFS;
+      return std::string(vtkShadowMapsImpostorDepthFS) + vtkShadowMapsSpriteFS;
     case Impostors::Tubes:
-      return vtkShadowMapsTubeFS;
+      return std::string(vtkShadowMapsImpostorDepthFS) + vtkShadowMapsTubeFS;
     default:
       return "";
   }
@@ -129,13 +130,26 @@ std::string ImpostorShader::CasterDeclarations(Impostors sized)
 //------------------------------------------------------------------------------
 std::string ImpostorShader::ReceiverPositionVC(const std::string& fragmentShader)
 {
-  // VTK's radius, ZCalcR times the eye depth, along the impostor's normal from
-  // its centre (sphere) or centre line (tube), where all its fragments are.
+  // The drawn radius, ZCalcR times the eye depth (times the tile scale in a
+  // tile, see ReceiverDeclarations), along the impostor's normal from its
+  // centre (sphere) or centre line (tube), where all its fragments are.
   if (DrawsSpheres(fragmentShader) || DrawsTubes(fragmentShader))
   {
-    return "vertexVC.xyz + normalVCVSOutput * ZCalcR * (cameraParallel != 0 ? 1.0 : -vertexVC.z)";
+    return "vertexVC.xyz + normalVCVSOutput * ZCalcR * vtkShadowImpostorDrawnRadius * "
+           "(cameraParallel != 0 ? 1.0 : -vertexVC.z)";
   }
   return "vertexVC.xyz";
+}
+
+//------------------------------------------------------------------------------
+std::string ImpostorShader::ReceiverDeclarations(const std::string& fragmentShader)
+{
+  // While a tile of a larger image renders, VTK's ZCalcR divides the point
+  // size by the whole image's width but the tile's P00: it is the drawn
+  // radius over the tile scale.
+  return DrawsSpheres(fragmentShader) || DrawsTubes(fragmentShader)
+    ? "uniform float vtkShadowImpostorDrawnRadius;\n"
+    : "";
 }
 
 //------------------------------------------------------------------------------
@@ -145,11 +159,11 @@ bool ImpostorShader::IsSized(vtkShaderProgram* program)
 }
 
 //------------------------------------------------------------------------------
-void ImpostorUniforms::Set(const glm::mat4& worldToClip, const glm::vec4& light,
-  const glm::vec4& sceneDepth, const glm::vec3& scale)
+void ImpostorUniforms::Set(const glm::dmat4& worldToClip, const glm::vec4& light,
+  const glm::vec4& sceneDepth, const glm::vec4& scale)
 {
-  this->WorldToClip = worldToClip;
-  this->ClipToWorld = glm::inverse(worldToClip);
+  this->WorldToClip = glm::mat4(worldToClip);
+  this->ClipToWorld = glm::mat4(glm::inverse(worldToClip));
   this->Light = light;
   this->SceneDepth = sceneDepth;
   this->Scale = scale;
@@ -164,6 +178,19 @@ void ImpostorUniforms::Apply(vtkShaderProgram* program) const
   program->SetUniformMatrix4x4("vtkShadowImpostorClipToWorld", glm::value_ptr(clipToWorld));
   program->SetUniform4f("vtkShadowImpostorLight", glm::value_ptr(this->Light));
   program->SetUniform4f("vtkShadowImpostorSceneDepth", glm::value_ptr(this->SceneDepth));
-  program->SetUniform3f("vtkShadowImpostorScale", glm::value_ptr(this->Scale));
+  program->SetUniform4f("vtkShadowImpostorScale", glm::value_ptr(this->Scale));
+  if (program->IsUniformUsed("vtkShadowImpostorDepthOffset"))
+  {
+    program->SetUniform2f("vtkShadowImpostorDepthOffset", glm::value_ptr(this->DepthOffset));
+  }
+}
+
+//------------------------------------------------------------------------------
+void ImpostorUniforms::ApplyReceiving(vtkShaderProgram* program) const
+{
+  if (program->IsUniformUsed("vtkShadowImpostorDrawnRadius"))
+  {
+    program->SetUniformf("vtkShadowImpostorDrawnRadius", this->DrawnRadius);
+  }
 }
 } // namespace shadowmaps

@@ -49,6 +49,8 @@ public:
   /// The receivers' position (view coordinates) in a fragment shader: at the
   /// surface of spheres and tubes, else the interpolated vertexVC.
   static std::string ReceiverPositionVC(const std::string& fragmentShader);
+  /// The uniforms ReceiverPositionVC uses (ImpostorUniforms::ApplyReceiving).
+  static std::string ReceiverDeclarations(const std::string& fragmentShader);
 
   /// Whether a program takes ImpostorUniforms (its casters' draws also need
   /// GL_PROGRAM_POINT_SIZE).
@@ -62,18 +64,32 @@ public:
   /// The view's world to clip transform, the light (xyz towards it with w 0,
   /// or its position with w 1), the scene camera's eye depth row
   /// (dot(xyz, p) + w), and the light camera's P00 over the scene camera's,
-  /// whether the scene camera is parallel, and the map's size in texels.
-  void Set(const glm::mat4& worldToClip, const glm::vec4& light, const glm::vec4& sceneDepth,
-    const glm::vec3& scale);
+  /// whether the scene camera is parallel, the map's size in texels and the
+  /// largest point size the GL draws. The scene camera's P00 is the whole
+  /// image's in a tile of a larger one: VTK sizes impostors by the whole
+  /// image's width in pixels. The inverse is made in double.
+  void Set(const glm::dmat4& worldToClip, const glm::vec4& light, const glm::vec4& sceneDepth,
+    const glm::vec4& scale);
+
+  /// The casters' depth offset in the view (slope-scaled factor, constant in
+  /// depth units), which impostors writing their depth add themselves.
+  void SetDepthOffset(const glm::vec2& offset) { this->DepthOffset = offset; }
 
   void Apply(vtkShaderProgram* program) const;
+
+  /// The frame's drawn impostor radius over VTK's ZCalcR times the eye depth:
+  /// the tile scale, 1 outside tiled captures.
+  void SetDrawnRadius(float overZCalcR) { this->DrawnRadius = overZCalcR; }
+  void ApplyReceiving(vtkShaderProgram* program) const;
 
 private:
   glm::mat4 WorldToClip{ 1.0f };
   glm::mat4 ClipToWorld{ 1.0f };
   glm::vec4 Light{ 0.0f };
   glm::vec4 SceneDepth{ 0.0f };
-  glm::vec3 Scale{ 0.0f };
+  glm::vec4 Scale{ 0.0f };
+  glm::vec2 DepthOffset{ 0.0f };
+  float DrawnRadius = 1.0f;
 };
 } // namespace shadowmaps
 

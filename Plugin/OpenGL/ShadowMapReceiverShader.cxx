@@ -163,7 +163,8 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
     }
   }
   vtkShaderProgram::Substitute(
-    fragmentShader, "//VTK::ShadowMaps::Dec", Declarations(lights, layers, code));
+    fragmentShader, "//VTK::ShadowMaps::Dec",
+    Declarations(lights, layers, code) + ImpostorShader::ReceiverDeclarations(fragmentShader));
   vtkShaderProgram::Substitute(fragmentShader, UniformFlowMarker,
     facetDerivatives ? "#ifdef VTK_SHADOW_POSITION_DERIVATIVES\n"
                        "  vtkShadowPositionDx = dFdx(vertexVC.xyz);\n"

@@ -268,9 +268,6 @@ struct vtkAbstractShadowMapPass::Internals
   // The GL state of the casters' draws, while they draw.
   shadowmaps::CasterGLState* CastingState = nullptr;
   bool SceneCameraParallel = false;
-  // The scene camera's P00 in the frame as drawn: a tile's, where
-  // Frame.CameraProjection is the whole image's (impostors' sizes follow it).
-  double DrawnCameraP00 = 1.0;
   bool WarnedTooManyLights = false;
   bool WarnedNonFiniteViews = false;
   bool WarnedResolution = false;
@@ -675,11 +672,27 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
 {
   Internals& r = *this->Internal;
   shadowmaps::ShadowFrame& frame = r.Frame;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  frame.CameraView = ToGlm(camera->GetViewTransformMatrix());
+  const glm::dmat4 drawn =
+    ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
+  glm::dvec4 tileViewport;
+  renderer->GetRenderWindow()->GetTileViewport(glm::value_ptr(tileViewport));
+  frame.CameraProjection = shadowmaps::WholeImageProjection(drawn,
+    shadowmaps::TileOfWholeImage(tileViewport, glm::make_vec4(renderer->GetViewport())));
+  r.CasterUniforms.Impostors().SetDrawnRadius(
+    static_cast<float>(drawn[0][0] / frame.CameraProjection[0][0]));
+  // vtkViewport::GetSize is the whole image's, in a tile of a larger one.
+  const glm::dvec4 eyeDepth = glm::row(frame.CameraView, 2);
+  const shadowmaps::ImpostorSizing sizing = { static_cast<double>(renderer->GetSize()[0]),
+    frame.CameraProjection[0][0], eyeDepth.x, eyeDepth.y, eyeDepth.z, eyeDepth.w,
+    static_cast<double>(camera->GetParallelProjection()) };
+
   r.Casters.clear();
   frame.PropBounds.clear();
   frame.SceneBounds = Aabb();
   shadowmaps::PropRecords& records = r.Current->Props;
-  records.BeginFrame(renderer);
+  records.BeginFrame(renderer, sizing);
   vtkCollectionSimpleIterator it;
   vtkPropCollection* props = renderer->GetViewProps();
   props->InitTraversal(it);
@@ -722,15 +735,6 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
       frame.PropBounds.assign(1, given);
     }
   }
-  vtkCamera* camera = renderer->GetActiveCamera();
-  frame.CameraView = ToGlm(camera->GetViewTransformMatrix());
-  const glm::dmat4 drawn =
-    ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
-  r.DrawnCameraP00 = drawn[0][0];
-  glm::dvec4 tileViewport;
-  renderer->GetRenderWindow()->GetTileViewport(glm::value_ptr(tileViewport));
-  frame.CameraProjection = shadowmaps::WholeImageProjection(drawn,
-    shadowmaps::TileOfWholeImage(tileViewport, glm::make_vec4(renderer->GetViewport())));
   frame.FilterReachTexels = r.Representation->GetFilterReachTexels();
   frame.Interactive = this->InteractiveUpdateRate < VTK_DOUBLE_MAX &&
     renderer->GetRenderWindow()->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
@@ -1036,11 +1040,16 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
       : std::numeric_limits<float>::max();
     glPolygonOffset(0.0f, 0.0f);
     r.CasterUniforms.SetView(windowToInverseW, { { slope, constant * DepthUnit, cap } }, !view.Perspective);
+    r.CasterUniforms.Impostors().SetDepthOffset(glm::vec2(0.0f));
   }
   else
   {
     glPolygonOffset(slope, constant);
     r.CasterUniforms.SetView(windowToInverseW, { { 0.0f, 0.0f, 0.0f } }, !view.Perspective);
+    const float unit = r.Current->Storage.Format == shadowmaps::TexelFormat::Depth16
+      ? 1.0f / 65535.0f
+      : DepthUnit;
+    r.CasterUniforms.Impostors().SetDepthOffset(glm::vec2(slope, constant * unit));
   }
   if (r.CasterCode.LightDepth)
   {
@@ -1057,10 +1066,11 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
   const glm::dvec4 toLight = light.Kind == LightKind::Directional
     ? glm::dvec4(-glm::normalize(light.Direction), 0.0)
     : glm::dvec4(light.Position, 1.0);
-  r.CasterUniforms.Impostors().Set(glm::mat4(view.ViewProjection()), glm::vec4(toLight),
+  r.CasterUniforms.Impostors().Set(view.ViewProjection(), glm::vec4(toLight),
     glm::vec4(-glm::row(r.Frame.CameraView, 2)),
-    glm::vec3(static_cast<float>(lightCameraProjection[0][0] / r.DrawnCameraP00),
-      r.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(r.Frame.Resolution)));
+    glm::vec4(static_cast<float>(lightCameraProjection[0][0] / r.Frame.CameraProjection[0][0]),
+      r.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(r.Frame.Resolution),
+      r.CastingState ? r.CastingState->GetLargestPointSize() : 1.0f));
   // Every program takes the view's uniforms on its first draw into it.
   r.CasterPrograms.Invalidate();
 }

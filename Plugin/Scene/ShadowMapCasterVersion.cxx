@@ -13,6 +13,7 @@
 #include "vtkProp.h"
 #include "vtkProp3D.h"
 #include "vtkProp3DFollower.h"
+#include "vtkProperty.h"
 
 #include <cstring>
 
@@ -85,10 +86,17 @@ void AddMatrix(vtkMatrix4x4* matrix, VersionHash& hash)
   }
 }
 
+bool DrawsImpostors(vtkProp* part)
+{
+  auto* actor = vtkActor::SafeDownCast(part);
+  vtkProperty* property = actor ? actor->GetProperty() : nullptr;
+  return property && (property->GetRenderPointsAsSpheres() || property->GetRenderLinesAsTubes());
+}
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkMTimeType CasterVersion(vtkProp* prop, bool firstInputsUpdated)
+vtkMTimeType CasterVersion(
+  vtkProp* prop, bool firstInputsUpdated, const ImpostorSizing& impostorSizing)
 {
   VersionHash hash;
   bool assembled = false;
@@ -114,6 +122,13 @@ vtkMTimeType CasterVersion(vtkProp* prop, bool firstInputsUpdated)
     if (vtkAbstractMapper* mapper = MapperOf(part))
     {
       AddMapper(mapper, firstInputsUpdated, hash);
+    }
+    if (DrawsImpostors(part))
+    {
+      for (const double value : impostorSizing)
+      {
+        hash.Add(value);
+      }
     }
   });
   if (!assembled)

@@ -8,15 +8,26 @@
 
 #include "vtkType.h" // For vtkMTimeType
 
+#include <array>
+
 class vtkProp;
 
 namespace shadowmaps
 {
+/// What the scene camera sizes VTK's impostors by (points drawn as spheres,
+/// lines drawn as tubes: a world radius of the size in pixels over the image's
+/// width times P00, times the eye depth): the image's width in pixels, P00,
+/// the eye depth's row and whether the camera is parallel. The depths such a
+/// prop casts change with them.
+using ImpostorSizing = std::array<double, 7>;
+
 /// A number that differs whenever anything `prop` draws into a depth map
 /// differs: equal numbers mean the same depths. Updates the mappers' inputs,
 /// but for their first port with `firstInputsUpdated` (VTK's cullers, which
 /// ask every visible prop its bounds, brought those up to date this frame).
-vtkMTimeType CasterVersion(vtkProp* prop, bool firstInputsUpdated = false);
+/// Parts drawing impostors mix in `impostorSizing`.
+vtkMTimeType CasterVersion(
+  vtkProp* prop, bool firstInputsUpdated = false, const ImpostorSizing& impostorSizing = {});
 } // namespace shadowmaps
 
 #endif

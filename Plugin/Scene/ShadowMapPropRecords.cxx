@@ -11,8 +11,9 @@
 namespace shadowmaps
 {
 //------------------------------------------------------------------------------
-void PropRecords::BeginFrame(vtkRenderer* renderer)
+void PropRecords::BeginFrame(vtkRenderer* renderer, const ImpostorSizing& impostorSizing)
 {
+  this->Sizing = impostorSizing;
   // vtkRenderer::Render runs its cullers before its passes, and they ask every
   // visible prop its bounds, which updates its mapper's input.
   this->FirstInputsUpdated = renderer->GetCullers()->GetNumberOfItems() > 0;
@@ -24,7 +25,7 @@ void PropRecords::BeginFrame(vtkRenderer* renderer)
 //------------------------------------------------------------------------------
 const PropRecords::Record& PropRecords::Read(vtkProp* prop)
 {
-  const vtkMTimeType version = CasterVersion(prop, this->FirstInputsUpdated);
+  const vtkMTimeType version = CasterVersion(prop, this->FirstInputsUpdated, this->Sizing);
   const auto kept = this->Kept.find(prop);
   // Only an actor's bounds are known to follow its version: other props (LOD
   // props, image stacks, assemblies of slices) are read every frame.

@@ -7,6 +7,7 @@
 #ifndef ShadowMapPropRecords_h
 #define ShadowMapPropRecords_h
 
+#include "ShadowMapCasterVersion.h" // For ImpostorSizing
 #include "ShadowMapFocusing.h" // For Aabb
 
 #include "vtkType.h" // For vtkMTimeType
@@ -28,8 +29,9 @@ public:
     vtkMTimeType Version = 0;
   };
 
-  /// Starts a frame of `renderer`, after its cullers ran (or not).
-  void BeginFrame(vtkRenderer* renderer);
+  /// Starts a frame of `renderer`, after its cullers ran (or not), whose
+  /// camera sizes impostors by `impostorSizing`.
+  void BeginFrame(vtkRenderer* renderer, const ImpostorSizing& impostorSizing);
 
   /// The record of a visible prop this frame.
   const Record& Read(vtkProp* prop);
@@ -44,6 +46,7 @@ private:
   std::unordered_map<vtkProp*, Record> Kept;
   std::unordered_map<vtkProp*, Record> Current;
   bool FirstInputsUpdated = false;
+  ImpostorSizing Sizing{};
   int ReadAgain = 0;
 };
 } // namespace shadowmaps

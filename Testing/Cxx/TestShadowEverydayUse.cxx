@@ -610,10 +610,12 @@ vtkSmartPointer<vtkActor> LineAsTube(
 // Each pass kind (uniform, warped, cascaded; dual depth and moments in uniform
 // views) under a sun straight down, then a
 // spot and a point light at (0, 0, 6), drawing the scene without its sphere
-// and with what `add` puts in it; `expect` probes the frame. Shadows of what
-// lies at height 1.5 are `scale` times as far from the z axis as their casters.
+// and with what `add` puts in it; `expect` probes the frame (an `analysis`
+// view of it). Shadows of what lies at height 1.5 are `scale` times as far from
+// the z axis as their casters.
 void ForEachPassAndLight(const std::function<void(TestScene&)>& add,
-  const std::function<void(TestScene&, vtkImageData*, double scale, const std::string&)>& expect)
+  const std::function<void(TestScene&, vtkImageData*, double scale, const std::string&)>& expect,
+  int analysis = vtkAbstractShadowMapPass::NO_ANALYSIS)
 {
   const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
     kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
@@ -636,6 +638,7 @@ void ForEachPassAndLight(const std::function<void(TestScene&)>& add,
       // A sprite's size in the map is limited to the GL's largest point size
       // (255 on llvmpipe): at 1024 texels the point light's cube face needs 232.
       pass->SetResolution(1024);
+      pass->SetAnalysisView(analysis);
       scene.Renderer->SetPass(pass);
       auto image = RenderAndCapture(scene.Window);
       const char* lights[] = { ", sun", ", spot", ", point" };
@@ -667,6 +670,73 @@ TEST(ShadowEverydayUse, PointsAsSpheresCastTheirSpheresShadows)
           << what << ": beyond the rim";
       }
     });
+}
+
+// Points drawn as spheres and lines drawn as tubes shadow themselves as
+// spheres and tubes do: where the surface faces the light, its points are lit
+// (the shadow factor's analysis view), at the default resolution, under a sun
+// and under a spot and a point light near them. Depths mixed linearly in
+// window depth between the centre's and the nearest point's, exact for
+// orthographic maps only, once put a perspective map's sphere nearer the light
+// than the one the receivers see, and shadowed a patch of its lit side.
+TEST(ShadowEverydayUse, ImpostorsLightTheirLitSide)
+{
+  const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
+    kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
+      { "warped", NewPass<vtkWarpedShadowMapPass> },
+      { "cascaded", NewPass<vtkCascadedShadowMapPass> },
+      { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
+      { "moments", NewPass<vtkVarianceShadowMapPass> } };
+  const glm::dvec3 center(-2.0, 1.0, 1.5);
+  const glm::dvec3 lamp = center + glm::dvec3(2.0, -5.0, 4.5);
+  for (const auto& kind : kinds)
+  {
+    for (const std::string light : { "sun", "spot", "point" })
+    {
+      for (const bool tube : { false, true })
+      {
+      TestScene scene(800, 600);
+      scene.Renderer->RemoveActor(scene.Sphere);
+      // A tube along x: its surface's normals lie across x.
+      const glm::dvec3 axis(tube ? 1.0 : 0.0, 0.0, 0.0);
+      tube ? LineAsTube(scene, center - 1.5 * axis, center + 1.5 * axis, 0.5)
+           : PointsAsSpheres(scene, { center }, 0.5);
+      glm::dvec3 toLight = glm::normalize(lamp - center);
+      if (light == "sun")
+      {
+        scene.SetSun(SideSun);
+        toLight = -SideSun;
+      }
+      else if (light == "spot")
+      {
+        scene.SetSpot(lamp, 60.0)->SetFocalPoint(center.x, center.y, 0.0);
+      }
+      else
+      {
+        scene.SetPoint(lamp);
+      }
+      vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
+      pass->SetAnalysisViewToShadowFactor();
+      scene.Renderer->SetPass(pass);
+      auto image = RenderAndCapture(scene.Window);
+      double eye[3];
+      scene.Renderer->GetActiveCamera()->GetPosition(eye);
+      const glm::dvec3 toCamera = glm::normalize(glm::dvec3(eye[0], eye[1], eye[2]) - center);
+      const glm::dvec3 halfway = glm::normalize(toLight + toCamera);
+      const glm::dvec3 facing = glm::normalize(halfway - glm::dot(halfway, axis) * axis);
+      const glm::dvec3 across = tube ? axis : glm::normalize(glm::cross(facing, toLight - toCamera));
+      for (const double turn : { -0.4, 0.0, 0.4 })
+      {
+        // Around the sphere, or along the tube.
+        const glm::dvec3 point = tube ? center + 0.5 * facing + 2.0 * turn * across
+                                      : center + 0.5 * (facing * std::cos(turn) + across * std::sin(turn));
+        EXPECT_GT(DarkestAround(scene.Renderer, image, point), LitAbove)
+          << kind.first << ", " << light << (tube ? ", tube" : ", sphere") << ": the lit side, at "
+          << turn;
+      }
+      }
+    }
+  }
 }
 
 // Lines drawn as tubes cast the shadow of the tube they show: a band as wide as
@@ -726,6 +796,7 @@ TEST(ShadowEverydayUse, TubesSeenEndOnCastTheirWidth)
 // A capture larger than the window (vtkWindowToImageFilter with a scale, as
 // PyVista's and ParaView's screenshots take) renders the image in tiles: each
 // shows the shadows of the whole image, as a window of that size draws them,
+// impostors' too (points as spheres, tubes: sized in the image's pixels),
 // from maps rendered once rather than once per tile.
 TEST(ShadowEverydayUse, TiledCapturesShowTheWholeImagesShadows)
 {
@@ -736,13 +807,18 @@ TEST(ShadowEverydayUse, TiledCapturesShowTheWholeImagesShadows)
       { "moments", NewPass<vtkVarianceShadowMapPass> } };
   for (const auto& kind : kinds)
   {
+    // Impostors are sized in pixels of the image: the same sizes in both.
     TestScene whole(800, 600);
     whole.SetSun(SideSun);
+    vtkProperty* sphere = PointsAsSpheres(whole, { { -3.5, -4.5, 1.2 } }, 0.8)->GetProperty();
+    vtkProperty* tube = LineAsTube(whole, { -5.0, 2.0, 1.2 }, { -1.0, 4.0, 1.2 }, 0.3)->GetProperty();
     whole.Renderer->SetPass(kind.second());
     const auto expected = RgbBytes(RenderAndCapture(whole.Window));
 
     TestScene tiled(400, 300);
     tiled.SetSun(SideSun);
+    PointsAsSpheres(tiled, { { -3.5, -4.5, 1.2 } }, 0.8)->GetProperty()->SetPointSize(sphere->GetPointSize());
+    LineAsTube(tiled, { -5.0, 2.0, 1.2 }, { -1.0, 4.0, 1.2 }, 0.3)->GetProperty()->SetLineWidth(tube->GetLineWidth());
     vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
     tiled.Renderer->SetPass(pass);
     tiled.Window->Render();
@@ -764,5 +840,39 @@ TEST(ShadowEverydayUse, TiledCapturesShowTheWholeImagesShadows)
     // The first tile's projection, turned back into the whole image's, may
     // differ from the last frame's by rounding: at most one update.
     EXPECT_LE(pass->GetNumberOfShadowMapUpdates() - updates, 1) << kind.first;
+  }
+}
+
+// An impostor's world size follows the scene camera (its size is in pixels):
+// an orbit changes the depths it casts, so the layers that see it are
+// rendered again, while a scene without impostors keeps its layers (a point
+// light's faces fit the scene as the light sees it, whatever the camera).
+TEST(ShadowEverydayUse, ImpostorsShadowsFollowTheCamera)
+{
+  for (const bool impostors : { true, false })
+  {
+    TestScene scene;
+    scene.SetPoint(glm::dvec3(1.0, -1.0, 4.0));
+    if (impostors)
+    {
+      PointsAsSpheres(scene, { { -2.5, -3.5, 1.2 } }, 0.5);
+      LineAsTube(scene, { -5.0, 2.0, 1.2 }, { -1.0, 4.0, 1.2 }, 0.3);
+    }
+    vtkSmartPointer<vtkAbstractShadowMapPass> pass = NewPass<vtkDepthShadowMapPass>();
+    scene.Renderer->SetPass(pass);
+    scene.Window->Render();
+    scene.Renderer->GetActiveCamera()->Azimuth(4.0);
+    scene.Renderer->ResetCameraClippingRange();
+    const auto after = RgbBytes(RenderAndCapture(scene.Window));
+    if (impostors)
+    {
+      EXPECT_GE(pass->GetNumberOfRenderedLayers(), 1) << "the faces that see the impostors";
+      EXPECT_LT(pass->GetNumberOfRenderedLayers(), 6) << "the faces that do not see them stay";
+    }
+    else
+    {
+      EXPECT_EQ(pass->GetNumberOfRenderedLayers(), 0) << "the faces stayed put";
+    }
+    EXPECT_TRUE(after == FreshPassFrame(scene, NewPass<vtkDepthShadowMapPass>())) << impostors;
   }
 }

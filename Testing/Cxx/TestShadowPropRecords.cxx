@@ -38,9 +38,10 @@ struct Scene
 
   // One frame's reads, after what vtkRenderer::Render's cullers do: they ask
   // each prop its bounds (which updates its pipeline) before the passes run.
-  int Frame(shadowmaps::PropRecords& records, bool cullers)
+  int Frame(shadowmaps::PropRecords& records, bool cullers,
+    const shadowmaps::ImpostorSizing& sizing = {})
   {
-    records.BeginFrame(this->Renderer);
+    records.BeginFrame(this->Renderer, sizing);
     for (vtkActor* actor : { this->Sphere.Get(), this->Other.Get() })
     {
       if (cullers)
@@ -86,5 +87,32 @@ TEST(ShadowPropRecords, ReadAgainOnlyWhatChanged)
     scene.Other->GetProperty()->SetOpacity(0.5);
     EXPECT_EQ(scene.Frame(records, cullers), 1) << "opacity, cullers " << cullers;
     EXPECT_FALSE(scene.Last[scene.Other].DrawsIntoDepthMaps);
+  }
+}
+
+// The depths of points drawn as spheres and lines drawn as tubes follow what
+// the scene camera sizes them by: only their props' versions change with it.
+TEST(ShadowPropRecords, ImpostorsVersionsFollowTheirSizing)
+{
+  Scene scene;
+  shadowmaps::PropRecords records;
+  shadowmaps::ImpostorSizing sizing = { 400.0, 2.4, 0.0, 0.0, -1.0, 10.0, 0.0 };
+  scene.Frame(records, true, sizing);
+  EXPECT_EQ(scene.Frame(records, true, sizing), 0);
+  sizing[0] = 800.0; // a tile of an image twice as wide
+  EXPECT_EQ(scene.Frame(records, true, sizing), 0) << "no impostors";
+
+  for (const bool spheres : { true, false })
+  {
+    spheres ? scene.Sphere->GetProperty()->RenderPointsAsSpheresOn()
+            : scene.Sphere->GetProperty()->RenderLinesAsTubesOn();
+    scene.Frame(records, true, sizing);
+    const vtkMTimeType version = scene.Last[scene.Sphere].Version;
+    EXPECT_EQ(scene.Frame(records, true, sizing), 0) << spheres;
+    sizing[5] += 1.0; // the camera moved back
+    EXPECT_EQ(scene.Frame(records, true, sizing), 1) << spheres;
+    EXPECT_NE(scene.Last[scene.Sphere].Version, version) << spheres;
+    scene.Sphere->GetProperty()->RenderPointsAsSpheresOff();
+    scene.Sphere->GetProperty()->RenderLinesAsTubesOff();
   }
 }
