@@ -9,6 +9,9 @@
 uniform mat4 vtkShadowImpostorWorldToClip;
 uniform mat4 vtkShadowImpostorClipToWorld;
 uniform vec2 vtkShadowImpostorDepthOffset;
+// Where the texel's ray leaves the shape (window depth, offset): the second
+// surface of dual depth maps. Set with the depth where it enters.
+float vtkShadowImpostorBackDepth = 1.0;
 
 // The world point of the map's normalized device coordinates `ndc` at depth z.
 vec3 vtkShadowImpostorRayPoint(vec2 ndc, float z)

@@ -1,8 +1,9 @@
 // The window depth of a line drawn as a tube, while casting: where the ray of
-// the map texel the fragment covers meets the tube vtkShadowMapsTubeGS passes
-// (nearest the light), a cylinder capped at the line's ends whose radius is
-// the one where the ray passes nearest its axis; texels whose rays miss it
-// are discarded.
+// the map texel the fragment covers enters the tube vtkShadowMapsTubeGS passes
+// (nearest the light), and where it leaves it. The tube is a cylinder capped
+// at the line's ends, whose radius is the one where the ray passes nearest its
+// axis: the ray's span inside the infinite cylinder, cut to its span between
+// the caps' planes. Texels whose rays miss it are discarded.
 flat in vec3 vtkShadowTubeStart;
 flat in vec3 vtkShadowTubeEnd;
 flat in vec2 vtkShadowTubeRadii;
@@ -18,7 +19,7 @@ float vtkShadowTubeDepth()
   vec3 axis = vtkShadowTubeEnd - vtkShadowTubeStart;
   float length_ = max(length(axis), 1e-30);
   axis /= length_;
-  // Ray and axis relative to the start: p(t) = w + t d, q(s) = s a.
+  // The ray from the start: w + t d; its distance along the axis: wa + t da.
   vec3 w = origin - vtkShadowTubeStart;
   float da = dot(direction, axis);
   float wa = dot(w, axis);
@@ -26,30 +27,31 @@ float vtkShadowTubeDepth()
   float nearest = sine2 > 1e-6 ? (da * wa - dot(w, direction)) / sine2 : -dot(w, direction);
   float radius = mix(vtkShadowTubeRadii.x, vtkShadowTubeRadii.y,
     clamp((wa + nearest * da) / length_, 0.0, 1.0));
-  // The side: the ray and the start across the axis.
-  vec3 dAcross = direction - da * axis;
+  // Inside the infinite cylinder (a ray along the axis: inside or not, everywhere).
   vec3 wAcross = w - wa * axis;
+  vec3 dAcross = direction - da * axis;
   float b = dot(wAcross, dAcross);
-  float discriminant = b * b - sine2 * (dot(wAcross, wAcross) - radius * radius);
-  float t = nearest;
-  bool hits = false;
-  if (sine2 > 1e-6 && discriminant >= 0.0)
-  {
-    float side = (-b - sqrt(discriminant)) / sine2;
-    float at = wa + side * da;
-    hits = at >= 0.0 && at <= length_;
-    t = hits ? side : t;
-  }
-  if (!hits && abs(da) > 1e-6)
-  {
-    // The cap the ray meets first, where it leaves the side's span.
-    float capAt = da > 0.0 ? 0.0 : length_;
-    float onCap = (capAt - wa) / da;
-    vec3 fromCapCentre = w + onCap * direction - capAt * axis;
-    hits = dot(fromCapCentre, fromCapCentre) <= radius * radius;
-    t = hits ? onCap : t;
-  }
-  float depth = vtkShadowImpostorOffsetDepth(vtkShadowTubeStartClip, w + max(t, 0.0) * direction);
+  float c = dot(wAcross, wAcross) - radius * radius;
+  float discriminant = b * b - sine2 * c;
+  float halfChord = sqrt(max(discriminant, 0.0));
+  vec2 side = sine2 > 1e-6 ? vec2(-b - halfChord, -b + halfChord) / sine2
+                           : (c <= 0.0 ? vec2(-1e30, 1e30) : vec2(1e30, -1e30));
+  // Between the caps' planes.
+  vec2 planes = vec2(-wa, length_ - wa) / da;
+  vec2 caps = abs(da) > 1e-6 ? vec2(min(planes.x, planes.y), max(planes.x, planes.y))
+                             : (wa >= 0.0 && wa <= length_ ? vec2(-1e30, 1e30) : vec2(1e30, -1e30));
+  // Spans, not their parts beyond the near plane: a part nearer the light
+  // than the near plane takes its depth (the casters' depth clamp).
+  float entry = max(side.x, caps.x);
+  float exit = min(side.y, caps.y);
+  bool hits = discriminant >= 0.0 && entry <= exit;
+  float enters = max(entry, 0.0);
+  float leaves = max(exit, 0.0);
+  // Continuous where the ray grazes the tube, for the depths' derivatives.
+  float t = hits ? enters : max(nearest, 0.0);
+  float depth = vtkShadowImpostorOffsetDepth(vtkShadowTubeStartClip, w + t * direction);
+  vtkShadowImpostorBackDepth =
+    vtkShadowImpostorOffsetDepth(vtkShadowTubeStartClip, w + (hits ? leaves : t) * direction);
   if (!hits)
   {
     discard;

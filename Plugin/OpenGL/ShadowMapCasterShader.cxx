@@ -66,12 +66,17 @@ std::string Declarations(const CasterCode& code, Impostors sized)
   return dec + ImpostorShader::CasterDeclarations(sized) + code.StoreFunctions + "\n";
 }
 
-// What the branch writes once it has vtkShadowCasterDepth.
-std::string StoreCode(const CasterCode& code)
+// What the branch writes once it has vtkShadowCasterDepth (and, for an
+// impostor, vtkShadowCasterBackDepth: where its ray leaves it).
+std::string StoreCode(const CasterCode& code, bool backDepth)
 {
   switch (code.SecondDepth)
   {
     case SecondDepthMethod::FrontAndBackFaces:
+      if (backDepth)
+      {
+        return "    gl_FragData[0] = vec4(vtkShadowCasterDepth, vtkShadowCasterBackDepth, 0.0, 1.0);";
+      }
       return "    gl_FragData[0] = gl_FrontFacing ? vec4(vtkShadowCasterDepth, 1.0, 0.0, 1.0)\n"
              "                                    : vec4(1.0, vtkShadowCasterDepth, 0.0, 1.0);";
     case SecondDepthMethod::Peeling:
@@ -89,14 +94,25 @@ std::string StoreCode(const CasterCode& code)
   return code.LinearDepth ? depthOutput : "    gl_FragData[0] = vec4(1.0);";
 }
 
+// The stored depth of window depth `raw`: made linear, or the light depth, when asked.
+std::string StoredDepth(const CasterCode& code, const std::string& raw)
+{
+  return code.LightDepth ? "vtkShadowLightDepthAt(" + raw + ")"
+    : code.LinearDepth   ? "vtkShadowLinearDepth(" + raw + ")"
+                         : raw;
+}
+
 // The branch: depth (the rasterizer's, or the one the shader wrote) made linear
 // when asked, written back when the shader writes depth on its other path, then
 // the store code, or for linear depth in depth maps the depth as colour
 // (ShadowMapLinearDepthResolve.h says why not gl_FragDepth) in a second output:
 // the first, the mapper's colour, has no buffer while casting, so a software
-// rasteriser drops the work that makes it.
-std::string Branch(
-  const CasterCode& code, const std::string& rawDepth, bool writeDepth, bool selectFaces)
+// rasteriser drops the work that makes it. An impostor also has a back depth
+// (`rawBackDepth`, the window depth where each texel's ray leaves it): its
+// second depth, one surface for front and back faces, and the surface behind
+// the peeled one in the second peeling pass.
+std::string Branch(const CasterCode& code, const std::string& rawDepth,
+  const std::string& rawBackDepth, bool writeDepth, bool selectFaces)
 {
   std::ostringstream branch;
   branch << "  if (vtkShadowCasting != 0)\n  {\n";
@@ -104,17 +120,26 @@ std::string Branch(
   {
     branch << "    if (!vtkShadowCastsThisFace())\n    {\n      discard;\n    }\n";
   }
-  const std::string depth = code.LightDepth ? "vtkShadowLightDepthAt(" + rawDepth + ")"
-    : code.LinearDepth                      ? "vtkShadowLinearDepth(" + rawDepth + ")"
-                                            : rawDepth;
-  branch << "    float vtkShadowCasterDepth = " << depth << ";\n";
+  branch << "    float vtkShadowCasterRawDepth = " << rawDepth << ";\n";
+  const bool backDepth = !rawBackDepth.empty();
+  if (backDepth && code.SecondDepth == SecondDepthMethod::Peeling)
+  {
+    branch << "    if (vtkShadowPeeledAway(" << StoredDepth(code, "vtkShadowCasterRawDepth")
+           << "))\n    {\n      vtkShadowCasterRawDepth = " << rawBackDepth << ";\n    }\n";
+  }
+  branch << "    float vtkShadowCasterDepth = " << StoredDepth(code, "vtkShadowCasterRawDepth") << ";\n";
+  if (backDepth)
+  {
+    branch << "    float vtkShadowCasterBackDepth = " << StoredDepth(code, rawBackDepth) << ";\n";
+  }
   if (writeDepth)
   {
     // The depth test keeps the nearest fragment by window depth; light depth
     // is a value, not that.
-    branch << "    gl_FragDepth = " << (code.LightDepth ? rawDepth : "vtkShadowCasterDepth") << ";\n";
+    branch << "    gl_FragDepth = "
+           << (code.LightDepth ? "vtkShadowCasterRawDepth" : "vtkShadowCasterDepth") << ";\n";
   }
-  branch << StoreCode(code) << "\n    return;\n  }\n";
+  branch << StoreCode(code, backDepth) << "\n    return;\n  }\n";
   return branch.str();
 }
 
@@ -182,13 +207,15 @@ CasterBranch CasterShader::Inject(
       : writesDepth                                  ? "gl_FragDepth"
                                                      : "gl_FragCoord.z";
     vtkShaderProgram::Substitute(fragmentShader, EarlyMarker, "");
-    PutAtMarker(fragmentShader, LateMarker, Branch(code, depth, !impostorDepth.empty(), false));
+    PutAtMarker(fragmentShader, LateMarker,
+      Branch(code, depth, ImpostorShader::CasterBackDepth(impostorDepth.empty() ? Impostors::None : sized),
+        !impostorDepth.empty(), false));
   }
   else
   {
     // A shader that writes gl_FragDepth on one path must on every path.
     vtkShaderProgram::Substitute(fragmentShader, LateMarker, "");
-    PutAtMarker(fragmentShader, EarlyMarker, Branch(code, "gl_FragCoord.z", writesDepth, true));
+    PutAtMarker(fragmentShader, EarlyMarker, Branch(code, "gl_FragCoord.z", "", writesDepth, true));
   }
   const size_t main = fragmentShader.find("void main");
   if (main != std::string::npos)

@@ -114,6 +114,12 @@ std::string ImpostorShader::CasterDepth(Impostors sized)
 }
 
 //------------------------------------------------------------------------------
+std::string ImpostorShader::CasterBackDepth(Impostors sized)
+{
+  return sized == Impostors::None ? "" : "vtkShadowImpostorBackDepth";
+}
+
+//------------------------------------------------------------------------------
 std::string ImpostorShader::CasterDeclarations(Impostors sized)
 {
   switch (sized)

@@ -45,6 +45,9 @@ public:
   /// calls; empty for impostors drawn at their own depth.
   static std::string CasterDepth(Impostors sized);
   static std::string CasterDeclarations(Impostors sized);
+  /// Where the texel's ray leaves the impostor, once CasterDepth ran (dual
+  /// depth maps' second surface); empty as CasterDepth is.
+  static std::string CasterBackDepth(Impostors sized);
 
   /// The receivers' position (view coordinates) in a fragment shader: at the
   /// surface of spheres and tubes, else the interpolated vertexVC.

@@ -739,6 +739,46 @@ TEST(ShadowEverydayUse, ImpostorsLightTheirLitSide)
   }
 }
 
+// Dual depth maps take an impostor's two surfaces, where each texel's ray
+// enters it and where it leaves it, whatever the layer method: a sphere is one
+// front face to the GL, and peeling took the ground behind it as its second
+// surface, which striped the shadow in second-depth mode.
+TEST(ShadowEverydayUse, ImpostorsGiveDualDepthMapsTheirBackSurface)
+{
+  for (const int mode : { vtkDualDepthShadowMapPass::SECOND_DEPTH,
+         vtkDualDepthShadowMapPass::MIDPOINT, vtkDualDepthShadowMapPass::DUAL })
+  {
+    for (const int method :
+      { vtkDualDepthShadowMapPass::MINIMUM_BLENDING, vtkDualDepthShadowMapPass::DEPTH_PEELING })
+    {
+      for (const bool tube : { false, true })
+      {
+        TestScene scene;
+        scene.Renderer->RemoveActor(scene.Sphere);
+        scene.SetSun(Down);
+        tube ? LineAsTube(scene, { -2.0, 0.0, 1.5 }, { 2.0, 0.0, 1.5 }, 1.0)
+             : PointsAsSpheres(scene, { { 0.0, 0.0, 1.5 } }, 1.0);
+        vtkNew<vtkDualDepthShadowMapPass> pass;
+        pass->SetMode(mode);
+        pass->SetLayerMethod(method);
+        scene.Renderer->SetPass(pass);
+        auto image = RenderAndCapture(scene.Window);
+        const std::string what = "mode " + std::to_string(mode) + ", method " +
+          std::to_string(method) + (tube ? ", tube" : ", sphere");
+        for (double x = -0.6; x <= 0.61; x += 0.2)
+        {
+          for (double y = -0.6; y <= 0.61; y += 0.2)
+          {
+            EXPECT_LT(LuminanceAt(scene.Renderer, image, glm::dvec3(x, y, 0.0)), ShadowedBelow)
+              << what << ": the ground at " << x << ", " << y;
+          }
+        }
+        EXPECT_GT(LuminanceAt(scene.Renderer, image, glm::dvec3(0.0, -1.4, 0.0)), LitAbove) << what;
+      }
+    }
+  }
+}
+
 // Lines drawn as tubes cast the shadow of the tube they show: a band as wide as
 // the tube (scaled by the light), dark inside, lit beyond its sides and ends.
 TEST(ShadowEverydayUse, LinesAsTubesCastTheirTubesShadows)
@@ -763,11 +803,18 @@ TEST(ShadowEverydayUse, LinesAsTubesCastTheirTubesShadows)
         EXPECT_GT(LuminanceAt(scene.Renderer, image, top), LitAbove)
           << what << ": the tube's top at x " << x;
       }
+      // The tube is solid: under a light at height 6 its end cap, whose top
+      // is a radius above the line, casts farther out than the line's end.
+      const double capScale = scale == 1.0 ? 1.0 : 6.0 / (6.0 - 1.5 - radius);
       for (const double end : { -1.0, 1.0 })
       {
-        EXPECT_GT(LuminanceAt(scene.Renderer, image, glm::dvec3(end * (2.0 * scale + 0.3), -0.1, 0.0)),
+        EXPECT_GT(
+          LuminanceAt(scene.Renderer, image, glm::dvec3(end * (2.0 * capScale + 0.3), -0.1, 0.0)),
           LitAbove)
           << what << ": beyond the end";
+        EXPECT_LT(LuminanceAt(scene.Renderer, image, glm::dvec3(end * (2.0 * scale - 0.1), 0.0, 0.0)),
+          ShadowedBelow)
+          << what << ": under the end";
       }
     });
 }
