@@ -4,9 +4,8 @@
 // at the line's ends, whose radius is the one where the ray passes nearest its
 // axis: the ray's span inside the infinite cylinder, cut to its span between
 // the caps' planes. Texels whose rays miss it are discarded.
-flat in vec3 vtkShadowTubeStart;
-flat in vec3 vtkShadowTubeEnd;
-flat in vec2 vtkShadowTubeRadii;
+flat in vec4 vtkShadowTubeStart;
+flat in vec4 vtkShadowTubeEnd;
 flat in vec4 vtkShadowTubeStartClip;
 uniform vec4 vtkShadowImpostorScale;
 
@@ -16,37 +15,46 @@ float vtkShadowTubeDepth()
   vec2 ndc = 2.0 * gl_FragCoord.xy / vtkShadowImpostorScale.z - 1.0;
   vec3 origin = vtkShadowImpostorRayPoint(ndc, -1.0);
   vec3 direction = normalize(vtkShadowImpostorRayPoint(ndc, 0.0) - origin);
-  vec3 axis = vtkShadowTubeEnd - vtkShadowTubeStart;
+  vec3 axis = vtkShadowTubeEnd.xyz - vtkShadowTubeStart.xyz;
   float length_ = max(length(axis), 1e-30);
   axis /= length_;
   // The ray from the start: w + t d; its distance along the axis: wa + t da.
-  vec3 w = origin - vtkShadowTubeStart;
+  vec3 w = origin - vtkShadowTubeStart.xyz;
   float da = dot(direction, axis);
   float wa = dot(w, axis);
   float sine2 = 1.0 - da * da;
-  float nearest = sine2 > 1e-6 ? (da * wa - dot(w, direction)) / sine2 : -dot(w, direction);
-  float radius = mix(vtkShadowTubeRadii.x, vtkShadowTubeRadii.y,
+  // Divisions only by what is not near 0: GLSL leaves infinities undefined, and
+  // a compiler may fold the branch that discards them.
+  bool across = sine2 > 1e-6;
+  bool alongAxis = abs(da) > 1e-6;
+  float safeSine2 = across ? sine2 : 1.0;
+  float safeDa = alongAxis ? da : 1.0;
+  float nearest = across ? (da * wa - dot(w, direction)) / safeSine2 : -dot(w, direction);
+  float radius = mix(vtkShadowTubeStart.w, vtkShadowTubeEnd.w,
     clamp((wa + nearest * da) / length_, 0.0, 1.0));
-  // Inside the infinite cylinder (a ray along the axis: inside or not, everywhere).
+  // The ray's span inside the infinite cylinder (a ray along the axis: all
+  // of it or none) and between the caps' planes (a ray across the axis: all
+  // of it or none), then their common part. No infinities stand in for
+  // "all": GLSL leaves them undefined.
   vec3 wAcross = w - wa * axis;
   vec3 dAcross = direction - da * axis;
   float b = dot(wAcross, dAcross);
   float c = dot(wAcross, wAcross) - radius * radius;
   float discriminant = b * b - sine2 * c;
   float halfChord = sqrt(max(discriminant, 0.0));
-  vec2 side = sine2 > 1e-6 ? vec2(-b - halfChord, -b + halfChord) / sine2
-                           : (c <= 0.0 ? vec2(-1e30, 1e30) : vec2(1e30, -1e30));
-  // Between the caps' planes.
-  vec2 planes = vec2(-wa, length_ - wa) / da;
-  vec2 caps = abs(da) > 1e-6 ? vec2(min(planes.x, planes.y), max(planes.x, planes.y))
-                             : (wa >= 0.0 && wa <= length_ ? vec2(-1e30, 1e30) : vec2(1e30, -1e30));
-  // Spans, not their parts beyond the near plane: a part nearer the light
-  // than the near plane takes its depth (the casters' depth clamp).
-  float entry = max(side.x, caps.x);
-  float exit = min(side.y, caps.y);
-  bool hits = discriminant >= 0.0 && entry <= exit;
-  float enters = max(entry, 0.0);
-  float leaves = max(exit, 0.0);
+  vec2 sideSpan = vec2(-b - halfChord, -b + halfChord) / safeSine2;
+  vec2 planes = vec2(-wa, length_ - wa) / safeDa;
+  vec2 capsSpan = vec2(min(planes.x, planes.y), max(planes.x, planes.y));
+  vec2 span = across && alongAxis
+    ? vec2(max(sideSpan.x, capsSpan.x), min(sideSpan.y, capsSpan.y))
+    : (across ? sideSpan : capsSpan);
+  bool insideSide = across ? discriminant >= 0.0 : c <= 0.0;
+  bool insideCaps = alongAxis || (wa >= 0.0 && wa <= length_);
+  bool hits = insideSide && insideCaps && span.x <= span.y;
+  // A part nearer the light than the near plane takes its depth (the
+  // casters' depth clamp).
+  float enters = max(span.x, 0.0);
+  float leaves = max(span.y, 0.0);
   // Continuous where the ray grazes the tube, for the depths' derivatives.
   float t = hits ? enters : max(nearest, 0.0);
   float depth = vtkShadowImpostorOffsetDepth(vtkShadowTubeStartClip, w + t * direction);

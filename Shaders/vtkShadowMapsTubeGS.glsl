@@ -6,9 +6,11 @@
 // the plane across the light's direction at that end, across the line and a
 // radius beyond the end, widened as the light's tangent planes widen it. The
 // tube goes to vtkShadowMapsTubeFS, which finds where each texel's ray meets it.
-flat out vec3 vtkShadowTubeStart;
-flat out vec3 vtkShadowTubeEnd;
-flat out vec2 vtkShadowTubeRadii;
+
+// The tube, the same at every corner: its start and radius there (xyz, w),
+// its end and radius there, and the start's clip position.
+flat out vec4 vtkShadowTubeStart;
+flat out vec4 vtkShadowTubeEnd;
 flat out vec4 vtkShadowTubeStartClip;
 
 // Corner `corner` of the line's quad, in VTK's order: two at each end, the
@@ -17,14 +19,13 @@ vec4 vtkShadowTubeCorner(int corner)
 {
   vec3 first = vtkShadowImpostorWorld(gl_in[0].gl_Position);
   vec3 last = vtkShadowImpostorWorld(gl_in[1].gl_Position);
-  vtkShadowTubeStart = first;
-  vtkShadowTubeEnd = last;
-  vtkShadowTubeRadii = vec2(vtkShadowImpostorRadius(first), vtkShadowImpostorRadius(last));
+  vtkShadowTubeStart = vec4(first, vtkShadowImpostorRadius(first));
+  vtkShadowTubeEnd = vec4(last, vtkShadowImpostorRadius(last));
   vtkShadowTubeStartClip = gl_in[0].gl_Position;
 
   bool atStart = corner < 2;
   vec3 end = atStart ? first : last;
-  float radius = atStart ? vtkShadowTubeRadii.x : vtkShadowTubeRadii.y;
+  float radius = atStart ? vtkShadowTubeStart.w : vtkShadowTubeEnd.w;
   vec3 toLight = vtkShadowImpostorToLight(end);
   float distance = vtkShadowImpostorLight.w > 0.5 ? length(vtkShadowImpostorLight.xyz - end) : 0.0;
   float ratio = distance > 0.0 ? min(radius / distance, 0.99) : 0.0;
@@ -33,6 +34,8 @@ vec4 vtkShadowTubeCorner(int corner)
   vec3 along = cross(toLight, across);
   float outward = (atStart ? -1.0 : 1.0) * (dot(last - first, along) < 0.0 ? -1.0 : 1.0);
   float side = corner % 2 == 0 ? 1.0 : -1.0;
-  return vtkShadowImpostorClipOffset(
-    gl_in[atStart ? 0 : 1].gl_Position, reach * (side * across + outward * along));
+  // gl_in indexed by constants: with an index chosen at run time llvmpipe
+  // (Mesa 25) drew nothing, or crashed.
+  vec4 endClip = atStart ? gl_in[0].gl_Position : gl_in[1].gl_Position;
+  return vtkShadowImpostorClipOffset(endClip, reach * (side * across + outward * along));
 }
