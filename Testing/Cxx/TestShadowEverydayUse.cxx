@@ -88,6 +88,20 @@ vtkSmartPointer<vtkAbstractShadowMapPass> NewPass()
   return vtkSmartPointer<Pass>::New();
 }
 
+using PassKinds =
+  std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>;
+
+// Every pass kind: uniform, warped and cascaded views; dual depth and moments
+// in uniform views.
+PassKinds EveryPassKind()
+{
+  return { { "uniform", NewPass<vtkDepthShadowMapPass> },
+    { "warped", NewPass<vtkWarpedShadowMapPass> },
+    { "cascaded", NewPass<vtkCascadedShadowMapPass> },
+    { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
+    { "moments", NewPass<vtkVarianceShadowMapPass> } };
+}
+
 // Resident memory of this process in MiB (llvmpipe keeps textures there).
 double ResidentMiB()
 {
@@ -275,12 +289,7 @@ TEST(ShadowEverydayUse, StillFrameAfterADragRendersItsLayers)
 // cascades, 64 MiB per toggle of dual depth).
 TEST(ShadowEverydayUse, TogglingPassesKeepsMemoryFlat)
 {
-  const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
-    kinds = { { "depth", NewPass<vtkDepthShadowMapPass> },
-      { "warped", NewPass<vtkWarpedShadowMapPass> },
-      { "cascaded", NewPass<vtkCascadedShadowMapPass> },
-      { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
-      { "variance", NewPass<vtkVarianceShadowMapPass> } };
+  const PassKinds kinds = EveryPassKind();
   // Freed blocks of 1 MiB or more go back to the system at once: otherwise
   // glibc raises its mmap threshold after the first map is freed and keeps
   // later maps in a heap that resident memory never shrinks from.
@@ -617,12 +626,7 @@ void ForEachPassAndLight(const std::function<void(TestScene&)>& add,
   const std::function<void(TestScene&, vtkImageData*, double scale, const std::string&)>& expect,
   int analysis = vtkAbstractShadowMapPass::NO_ANALYSIS)
 {
-  const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
-    kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
-      { "warped", NewPass<vtkWarpedShadowMapPass> },
-      { "cascaded", NewPass<vtkCascadedShadowMapPass> },
-      { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
-      { "moments", NewPass<vtkVarianceShadowMapPass> } };
+  const PassKinds kinds = EveryPassKind();
   const glm::dvec3 position(0.0, 0.0, 6.0);
   for (const auto& kind : kinds)
   {
@@ -681,12 +685,7 @@ TEST(ShadowEverydayUse, PointsAsSpheresCastTheirSpheresShadows)
 // than the one the receivers see, and shadowed a patch of its lit side.
 TEST(ShadowEverydayUse, ImpostorsLightTheirLitSide)
 {
-  const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
-    kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
-      { "warped", NewPass<vtkWarpedShadowMapPass> },
-      { "cascaded", NewPass<vtkCascadedShadowMapPass> },
-      { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
-      { "moments", NewPass<vtkVarianceShadowMapPass> } };
+  const PassKinds kinds = EveryPassKind();
   const glm::dvec3 center(-2.0, 1.0, 1.5);
   const glm::dvec3 lamp = center + glm::dvec3(2.0, -5.0, 4.5);
   for (const auto& kind : kinds)
@@ -847,11 +846,10 @@ TEST(ShadowEverydayUse, TubesSeenEndOnCastTheirWidth)
 // from maps rendered once rather than once per tile.
 TEST(ShadowEverydayUse, TiledCapturesShowTheWholeImagesShadows)
 {
-  const std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>
-    kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
-      { "warped", NewPass<vtkWarpedShadowMapPass> },
-      { "cascaded", NewPass<vtkCascadedShadowMapPass> },
-      { "moments", NewPass<vtkVarianceShadowMapPass> } };
+  const PassKinds kinds = { { "uniform", NewPass<vtkDepthShadowMapPass> },
+    { "warped", NewPass<vtkWarpedShadowMapPass> },
+    { "cascaded", NewPass<vtkCascadedShadowMapPass> },
+    { "moments", NewPass<vtkVarianceShadowMapPass> } };
   for (const auto& kind : kinds)
   {
     // Impostors are sized in pixels of the image: the same sizes in both.
