@@ -134,10 +134,12 @@ std::string Branch(const CasterCode& code, const std::string& rawDepth,
   }
   if (writeDepth)
   {
-    // The depth test keeps the nearest fragment by window depth; light depth
-    // is a value, not that.
+    // The depth test keeps the nearest fragment by window depth, as the
+    // rasteriser gives it to other casters: not the light depth or the
+    // linear depth stored.
     branch << "    gl_FragDepth = "
-           << (code.LightDepth ? "vtkShadowCasterRawDepth" : "vtkShadowCasterDepth") << ";\n";
+           << (code.LightDepth || code.LinearDepth ? "vtkShadowCasterRawDepth" : "vtkShadowCasterDepth")
+           << ";\n";
   }
   branch << StoreCode(code, backDepth) << "\n    return;\n  }\n";
   return branch.str();
@@ -203,9 +205,12 @@ CasterBranch CasterShader::Inject(
 
   if (ownFragments)
   {
-    const std::string depth = !impostorDepth.empty() ? impostorDepth
-      : writesDepth                                  ? "gl_FragDepth"
-                                                     : "gl_FragCoord.z";
+    // Casting back faces only, an impostor casts where the ray leaves it.
+    const std::string depth = !impostorDepth.empty()
+      ? (code.Faces == 1 ? "(" + impostorDepth + ", " + ImpostorShader::CasterBackDepth(sized) + ")"
+                         : impostorDepth)
+      : writesDepth ? "gl_FragDepth"
+                    : "gl_FragCoord.z";
     vtkShaderProgram::Substitute(fragmentShader, EarlyMarker, "");
     PutAtMarker(fragmentShader, LateMarker,
       Branch(code, depth, ImpostorShader::CasterBackDepth(impostorDepth.empty() ? Impostors::None : sized),

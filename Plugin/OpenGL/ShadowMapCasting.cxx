@@ -88,9 +88,6 @@ CasterGLState::CasterGLState(vtkOpenGLState* state, bool minimumBlending)
   state->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, &this->BlendEquation[1]);
   glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &this->PolygonOffset[0]);
   glGetFloatv(GL_POLYGON_OFFSET_UNITS, &this->PolygonOffset[1]);
-  float pointSizes[2] = { 1.0f, 1.0f };
-  glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes);
-  this->LargestPointSize = pointSizes[1];
   state->PushFramebufferBindings();
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglDisable(GL_BLEND);

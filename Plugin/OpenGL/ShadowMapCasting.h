@@ -56,9 +56,6 @@ public:
   /// map is the size of the sphere they show, off for other points.
   void UseProgramPointSize(bool on);
 
-  /// The largest point size the GL draws (GL_POINT_SIZE_RANGE).
-  float GetLargestPointSize() const { return this->LargestPointSize; }
-
 private:
   vtkOpenGLState* State;
   vtkOpenGLState::ScopedglViewport Viewport;
@@ -76,7 +73,6 @@ private:
   unsigned char DepthClampWasOn;
   unsigned char ProgramPointSizeWasOn;
   bool ProgramPointSize = false;
-  float LargestPointSize = 1.0f;
   bool MinimumBlending;
 };
 } // namespace shadowmaps

@@ -268,6 +268,9 @@ struct vtkAbstractShadowMapPass::Internals
   // The GL state of the casters' draws, while they draw.
   shadowmaps::CasterGLState* CastingState = nullptr;
   bool SceneCameraParallel = false;
+  // The largest point size the context draws (GL_POINT_SIZE_RANGE), asked
+  // once: a query may wait for the GL's thread.
+  float LargestPointSize = 0.0f;
   bool WarnedTooManyLights = false;
   bool WarnedNonFiniteViews = false;
   bool WarnedResolution = false;
@@ -682,8 +685,10 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
     shadowmaps::TileOfWholeImage(tileViewport, glm::make_vec4(renderer->GetViewport())));
   r.CasterUniforms.Impostors().SetDrawnRadius(
     static_cast<float>(drawn[0][0] / frame.CameraProjection[0][0]));
-  // vtkViewport::GetSize is the whole image's, in a tile of a larger one.
-  const glm::dvec4 eyeDepth = glm::row(frame.CameraView, 2);
+  // vtkViewport::GetSize is the whole image's, in a tile of a larger one. A
+  // parallel camera's impostors do not grow with the eye depth.
+  const glm::dvec4 eyeDepth =
+    camera->GetParallelProjection() ? glm::dvec4(0.0) : glm::row(frame.CameraView, 2);
   const shadowmaps::ImpostorSizing sizing = { static_cast<double>(renderer->GetSize()[0]),
     frame.CameraProjection[0][0], eyeDepth.x, eyeDepth.y, eyeDepth.z, eyeDepth.w,
     static_cast<double>(camera->GetParallelProjection()) };
@@ -1070,9 +1075,22 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
     glm::vec4(-glm::row(r.Frame.CameraView, 2)),
     glm::vec4(static_cast<float>(lightCameraProjection[0][0] / r.Frame.CameraProjection[0][0]),
       r.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(r.Frame.Resolution),
-      r.CastingState ? r.CastingState->GetLargestPointSize() : 1.0f));
+      this->LargestPointSize()));
   // Every program takes the view's uniforms on its first draw into it.
   r.CasterPrograms.Invalidate();
+}
+
+//------------------------------------------------------------------------------
+float vtkAbstractShadowMapPass::LargestPointSize()
+{
+  Internals& r = *this->Internal;
+  if (r.LargestPointSize <= 0.0f)
+  {
+    float sizes[2] = { 1.0f, 1.0f };
+    glGetFloatv(GL_POINT_SIZE_RANGE, sizes);
+    r.LargestPointSize = std::max(sizes[1], 1.0f);
+  }
+  return r.LargestPointSize;
 }
 
 //------------------------------------------------------------------------------
@@ -1596,6 +1614,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
     r.DefaultRepresentation->ReleaseGraphicsResources(window);
   }
   r.CasterPrograms.Clear();
+  r.LargestPointSize = 0.0f;
   r.CastSinceSceneDraw.clear();
   r.ProgramsLastDrawnFor.clear();
   r.OpaquePass->ReleaseGraphicsResources(window);

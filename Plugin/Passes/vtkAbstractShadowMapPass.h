@@ -424,6 +424,8 @@ private:
   bool NeedsSecondOutput() const;
   bool FitViews();
   void DropLightsWithoutUsableViews();
+  // The largest point size the context draws, asked once per context.
+  float LargestPointSize();
   void AssignLayers();
   void ChooseStorage();
   void ChooseSecondDepthMethod();

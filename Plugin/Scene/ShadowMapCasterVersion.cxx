@@ -108,6 +108,11 @@ vtkMTimeType CasterVersion(
       // visibility, not by its modification time.
       assembled = true;
       hash.Add(static_cast<vtkMTimeType>(part->GetVisibility()));
+      if (auto* actor = vtkActor::SafeDownCast(part))
+      {
+        // Its point size or line width sizes its impostors.
+        hash.Add(actor->GetProperty()->GetMTime());
+      }
       AddMatrix(pathMatrix, hash);
       if (auto* placed = vtkProp3D::SafeDownCast(part))
       {

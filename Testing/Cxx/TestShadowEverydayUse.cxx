@@ -102,6 +102,28 @@ PassKinds EveryPassKind()
     { "moments", NewPass<vtkVarianceShadowMapPass> } };
 }
 
+// Every pass kind, the warps the focused map's default (uniform) leaves out
+// (LiSPSM, TSM with its linear depth, PSM), and casting back faces only.
+PassKinds EveryPassKindAndWarp()
+{
+  PassKinds kinds = EveryPassKind();
+  for (const int mode : { vtkWarpedShadowMapPass::LISPSM, vtkWarpedShadowMapPass::TSM,
+         vtkWarpedShadowMapPass::PSM })
+  {
+    kinds.emplace_back("warp mode " + std::to_string(mode), [mode] {
+      vtkSmartPointer<vtkWarpedShadowMapPass> pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+      pass->SetWarpMode(mode);
+      return vtkSmartPointer<vtkAbstractShadowMapPass>(pass);
+    });
+  }
+  kinds.emplace_back("back faces", [] {
+    vtkSmartPointer<vtkAbstractShadowMapPass> pass = NewPass<vtkDepthShadowMapPass>();
+    pass->SetCasterFacesToBack();
+    return pass;
+  });
+  return kinds;
+}
+
 // Resident memory of this process in MiB (llvmpipe keeps textures there).
 double ResidentMiB()
 {
@@ -685,7 +707,7 @@ TEST(ShadowEverydayUse, PointsAsSpheresCastTheirSpheresShadows)
 // than the one the receivers see, and shadowed a patch of its lit side.
 TEST(ShadowEverydayUse, ImpostorsLightTheirLitSide)
 {
-  const PassKinds kinds = EveryPassKind();
+  const PassKinds kinds = EveryPassKindAndWarp();
   const glm::dvec3 center(-2.0, 1.0, 1.5);
   const glm::dvec3 lamp = center + glm::dvec3(2.0, -5.0, 4.5);
   for (const auto& kind : kinds)
