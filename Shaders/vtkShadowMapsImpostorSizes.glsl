@@ -38,6 +38,17 @@ float vtkShadowImpostorRadius(vec3 world)
   return ZCalcR * vtkShadowImpostorScale.x * eyeDepth;
 }
 
+// The radius of the circle where the light's tangent cone to a sphere (or the
+// tangent planes to a tube) of `radius` at `world` meet the plane through it
+// across the light: wider than the shape, by more the nearer a positional
+// light is.
+float vtkShadowImpostorConeRadius(vec3 world, float radius)
+{
+  float distance = vtkShadowImpostorLight.w > 0.5 ? length(vtkShadowImpostorLight.xyz - world) : 0.0;
+  float ratio = distance > 0.0 ? min(radius / distance, 0.99) : 0.0;
+  return radius / sqrt(1.0 - ratio * ratio);
+}
+
 vec3 vtkShadowImpostorToLight(vec3 world)
 {
   return vtkShadowImpostorLight.w > 0.5 ? normalize(vtkShadowImpostorLight.xyz - world) :

@@ -23,11 +23,7 @@ void vtkShadowSizeSprite()
   vec3 p = vtkShadowImpostorWorld(gl_Position);
   float radius = vtkShadowImpostorRadius(p);
   vec3 toLight = vtkShadowImpostorToLight(p);
-  // The light's tangent cone meets the plane through the centre across it in
-  // a circle wider than the sphere, by more the nearer a positional light is.
-  float distance = vtkShadowImpostorLight.w > 0.5 ? length(vtkShadowImpostorLight.xyz - p) : 0.0;
-  float ratio = distance > 0.0 ? min(radius / distance, 0.99) : 0.0;
-  float cone = radius / sqrt(1.0 - ratio * ratio);
+  float cone = vtkShadowImpostorConeRadius(p, radius);
   // The image of that circle, to first order: the map's normalized device
   // coordinates change with world position by J (2 x 3) at the centre, and
   // the circle's image is an ellipse whose longer half-axis is the largest

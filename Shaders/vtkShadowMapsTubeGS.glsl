@@ -27,9 +27,7 @@ vec4 vtkShadowTubeCorner(int corner)
   vec3 end = atStart ? first : last;
   float radius = atStart ? vtkShadowTubeStart.w : vtkShadowTubeEnd.w;
   vec3 toLight = vtkShadowImpostorToLight(end);
-  float distance = vtkShadowImpostorLight.w > 0.5 ? length(vtkShadowImpostorLight.xyz - end) : 0.0;
-  float ratio = distance > 0.0 ? min(radius / distance, 0.99) : 0.0;
-  float reach = 1.05 * radius / sqrt(1.0 - ratio * ratio);
+  float reach = 1.05 * vtkShadowImpostorConeRadius(end, radius);
   vec3 across = vtkShadowImpostorAcross(last - first, toLight);
   vec3 along = cross(toLight, across);
   float outward = (atStart ? -1.0 : 1.0) * (dot(last - first, along) < 0.0 ? -1.0 : 1.0);

@@ -205,16 +205,15 @@ CasterBranch CasterShader::Inject(
 
   if (ownFragments)
   {
-    // Casting back faces only, an impostor casts where the ray leaves it.
-    const std::string depth = !impostorDepth.empty()
-      ? (code.Faces == 1 ? "(" + impostorDepth + ", " + ImpostorShader::CasterBackDepth(sized) + ")"
-                         : impostorDepth)
-      : writesDepth ? "gl_FragDepth"
-                    : "gl_FragCoord.z";
+    const std::string backDepth =
+      impostorDepth.empty() ? "" : ImpostorShader::CasterBackDepth(sized);
+    // Casting back faces only, an impostor casts where the ray leaves it
+    // (GLSL's comma: the call sets the back depth, then it is read).
+    const std::string depth = impostorDepth.empty() ? (writesDepth ? "gl_FragDepth" : "gl_FragCoord.z")
+      : code.Faces == 1 ? "(" + impostorDepth + ", " + backDepth + ")"
+                        : impostorDepth;
     vtkShaderProgram::Substitute(fragmentShader, EarlyMarker, "");
-    PutAtMarker(fragmentShader, LateMarker,
-      Branch(code, depth, ImpostorShader::CasterBackDepth(impostorDepth.empty() ? Impostors::None : sized),
-        !impostorDepth.empty(), false));
+    PutAtMarker(fragmentShader, LateMarker, Branch(code, depth, backDepth, !impostorDepth.empty(), false));
   }
   else
   {

@@ -671,7 +671,7 @@ void vtkAbstractShadowMapPass::CollectLights(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* renderer)
+shadowmaps::ImpostorSizing vtkAbstractShadowMapPass::ReadSceneCamera(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   shadowmaps::ShadowFrame& frame = r.Frame;
@@ -689,10 +689,16 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   // parallel camera's impostors do not grow with the eye depth.
   const glm::dvec4 eyeDepth =
     camera->GetParallelProjection() ? glm::dvec4(0.0) : glm::row(frame.CameraView, 2);
-  const shadowmaps::ImpostorSizing sizing = { static_cast<double>(renderer->GetSize()[0]),
-    frame.CameraProjection[0][0], eyeDepth.x, eyeDepth.y, eyeDepth.z, eyeDepth.w,
-    static_cast<double>(camera->GetParallelProjection()) };
+  return { static_cast<double>(renderer->GetSize()[0]), frame.CameraProjection[0][0], eyeDepth.x,
+    eyeDepth.y, eyeDepth.z, eyeDepth.w, static_cast<double>(camera->GetParallelProjection()) };
+}
 
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* renderer)
+{
+  Internals& r = *this->Internal;
+  shadowmaps::ShadowFrame& frame = r.Frame;
+  const shadowmaps::ImpostorSizing sizing = this->ReadSceneCamera(renderer);
   r.Casters.clear();
   frame.PropBounds.clear();
   frame.SceneBounds = Aabb();

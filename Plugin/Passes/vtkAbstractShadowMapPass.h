@@ -61,6 +61,7 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 
+#include <array>  // For ReadSceneCamera
 #include <memory> // For std::unique_ptr
 #include <string> // For ReportGLFailure
 #include <vector> // For MapSignature
@@ -424,6 +425,9 @@ private:
   bool NeedsSecondOutput() const;
   bool FitViews();
   void DropLightsWithoutUsableViews();
+  // The scene camera's view and whole-image projection into the frame, and
+  // what the camera sizes impostors by (shadowmaps::ImpostorSizing).
+  std::array<double, 7> ReadSceneCamera(vtkOpenGLRenderer* renderer);
   // The largest point size the context draws, asked once per context.
   float LargestPointSize();
   void AssignLayers();
