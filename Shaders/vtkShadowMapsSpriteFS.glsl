@@ -5,19 +5,16 @@
 flat in vec3 vtkShadowSpriteCentre;
 flat in float vtkShadowSpriteRadius;
 flat in vec4 vtkShadowSpriteClip;
-flat in float vtkShadowSpriteReach;
-flat in vec4 vtkShadowSpriteNear;
-flat in vec4 vtkShadowSpriteMiddle;
+uniform vec4 vtkShadowImpostorScale;
 
 float vtkShadowSpriteDepth()
 {
-  // gl_PointCoord runs down the square.
-  vec2 offset = vtkShadowSpriteReach * vec2(2.0 * gl_PointCoord.x - 1.0, 1.0 - 2.0 * gl_PointCoord.y);
-  vec4 across = vtkShadowImpostorClipToWorld[0] * offset.x + vtkShadowImpostorClipToWorld[1] * offset.y;
-  vec4 near = vtkShadowSpriteNear + across;
-  vec4 middle = vtkShadowSpriteMiddle + across;
-  vec3 origin = near.xyz / near.w;
-  vec3 direction = normalize(middle.xyz / middle.w - origin);
+  // The texel's ray, from where it covers the map (the casters' viewport is
+  // the whole layer): the square may have been moved off the centre's image
+  // (vtkShadowHoldPartInView).
+  vec2 ndc = 2.0 * gl_FragCoord.xy / vtkShadowImpostorScale.z - 1.0;
+  vec3 origin = vtkShadowImpostorRayPoint(ndc, -1.0);
+  vec3 direction = normalize(vtkShadowImpostorRayPoint(ndc, 0.0) - origin);
   vec3 fromCentre = origin - vtkShadowSpriteCentre;
   float along = dot(fromCentre, direction);
   float radius = vtkShadowSpriteRadius;

@@ -10,13 +10,28 @@
 flat out vec3 vtkShadowSpriteCentre;
 flat out float vtkShadowSpriteRadius;
 flat out vec4 vtkShadowSpriteClip;
-// Half the square's side in normalized device coordinates.
-flat out float vtkShadowSpriteReach;
-// The world points (homogeneous) at the near plane and at depth 0 of the
-// normalized device coordinates of the centre: with the inverse's columns
-// they give each texel's ray in vtkShadowMapsSpriteFS.
-flat out vec4 vtkShadowSpriteNear;
-flat out vec4 vtkShadowSpriteMiddle;
+
+// The GL drops a point whose centre lies outside the view, however far its
+// square reaches into it, and caps its size (255 texels on llvmpipe): the
+// square `reach` (normalized device coordinates) each side of `centre` is
+// drawn as the square that holds its part inside the view, centred in that
+// part. A sphere across a cube face's or a cascade's edge casts in both
+// layers, and one half outside a layer needs half the size. (The casters'
+// branch finds the sphere in each texel's ray: where the square lies does not
+// matter to it.)
+void vtkShadowDrawPartInView(vec2 centre, float reach)
+{
+  vec2 low = max(centre - reach, vec2(-1.0));
+  vec2 high = min(centre + reach, vec2(1.0));
+  vec2 halfSide = max(high - low, vec2(0.0)) * 0.5;
+  // Half a texel's margin each side.
+  gl_PointSize =
+    min(max(halfSide.x, halfSide.y) * vtkShadowImpostorScale.z + 1.0, vtkShadowImpostorScale.w);
+  if (gl_Position.w > 0.0)
+  {
+    gl_Position.xy = 0.5 * (low + high) * gl_Position.w;
+  }
+}
 
 void vtkShadowSizeSprite()
 {
@@ -42,16 +57,8 @@ void vtkShadowSizeSprite()
   float det = image.x * image.w - image.y * image.z;
   float largest = sqrt(0.5 * (sum + sqrt(max(sum * sum - 4.0 * det * det, 0.0))));
   float depthRatio = abs(cone * dot(w, toLight) / gl_Position.w);
-  float reach = cone * largest * (1.0 + 2.0 * depthRatio);
-  // The GL caps the size (255 texels on llvmpipe): a larger image is cut.
-  gl_PointSize = min(reach * vtkShadowImpostorScale.z + 1.0, vtkShadowImpostorScale.w);
-  reach = gl_PointSize / vtkShadowImpostorScale.z;
   vtkShadowSpriteCentre = p;
   vtkShadowSpriteRadius = radius;
   vtkShadowSpriteClip = gl_Position;
-  vtkShadowSpriteReach = reach;
-  mat4 inverse = vtkShadowImpostorClipToWorld;
-  vec4 atCentre = inverse[0] * centre.x + inverse[1] * centre.y + inverse[3];
-  vtkShadowSpriteNear = atCentre - inverse[2];
-  vtkShadowSpriteMiddle = atCentre;
+  vtkShadowDrawPartInView(centre, cone * largest * (1.0 + 2.0 * depthRatio));
 }

@@ -1,5 +1,6 @@
 #include "ShadowMapCasterVersion.h"
 
+#include "ShadowMapFocusing.h"
 #include "ShadowMapPropParts.h"
 
 #include "vtkAbstractMapper.h"
@@ -15,6 +16,7 @@
 #include "vtkProp3DFollower.h"
 #include "vtkProperty.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace shadowmaps
@@ -148,5 +150,37 @@ vtkMTimeType CasterVersion(
     AddMatrix(placed->GetMatrix(), hash);
   }
   return hash.Get();
+}
+
+//------------------------------------------------------------------------------
+double ImpostorReach(vtkProp* prop, const Aabb& bounds, const ImpostorSizing& impostorSizing)
+{
+  float largestSize = 0.0f;
+  ForEachPart(prop, [&](vtkProp* part, vtkMatrix4x4*) {
+    if (DrawsImpostors(part))
+    {
+      vtkProperty* property = vtkActor::SafeDownCast(part)->GetProperty();
+      largestSize = std::max({ largestSize,
+        property->GetRenderPointsAsSpheres() ? property->GetPointSize() : 0.0f,
+        property->GetRenderLinesAsTubes() ? property->GetLineWidth() : 0.0f });
+    }
+  });
+  const double perEyeDepth = largestSize / (impostorSizing[0] * impostorSizing[1]);
+  if (!(perEyeDepth > 0.0) || !bounds.IsUsable())
+  {
+    return 0.0;
+  }
+  if (impostorSizing[6] != 0.0)
+  {
+    return perEyeDepth; // a parallel camera's impostors do not grow with depth
+  }
+  // The eye depth is minus the view's z row (VTK's cameras look down -z).
+  double farthest = 0.0;
+  for (const auto& corner : bounds.Corners())
+  {
+    farthest = std::max(farthest, -(impostorSizing[2] * corner.x + impostorSizing[3] * corner.y +
+        impostorSizing[4] * corner.z + impostorSizing[5]));
+  }
+  return perEyeDepth * farthest;
 }
 } // namespace shadowmaps

@@ -14,6 +14,11 @@ class vtkProp;
 
 namespace shadowmaps
 {
+struct Aabb;
+}
+
+namespace shadowmaps
+{
 /// What the scene camera sizes VTK's impostors by (points drawn as spheres,
 /// lines drawn as tubes: a world radius of the size in pixels over the image's
 /// width times P00, times the eye depth): the image's width in pixels, P00,
@@ -28,6 +33,11 @@ using ImpostorSizing = std::array<double, 7>;
 /// Parts drawing impostors mix in `impostorSizing`.
 vtkMTimeType CasterVersion(
   vtkProp* prop, bool firstInputsUpdated = false, const ImpostorSizing& impostorSizing = {});
+
+/// The largest world radius of the impostors `prop` draws inside `bounds` (its
+/// points' or lines' bounds), as `impostorSizing` sizes them; 0 where it
+/// draws none. Their shapes reach that far beyond the bounds.
+double ImpostorReach(vtkProp* prop, const Aabb& bounds, const ImpostorSizing& impostorSizing);
 } // namespace shadowmaps
 
 #endif

@@ -37,6 +37,14 @@ const PropRecords::Record& PropRecords::Read(vtkProp* prop)
   Record& record = this->Current[prop];
   record.Version = version;
   record.Bounds = Aabb::FromBounds(prop->GetBounds());
+  // Points drawn as spheres and lines drawn as tubes reach beyond their
+  // points: the layers that hold any of their shapes cast them.
+  const double reach = ImpostorReach(prop, record.Bounds, this->Sizing);
+  if (reach > 0.0)
+  {
+    record.Bounds.Min -= glm::dvec3(reach);
+    record.Bounds.Max += glm::dvec3(reach);
+  }
   // Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
   // depth map; as casters they would only re-render the maps on every transfer
   // function edit.

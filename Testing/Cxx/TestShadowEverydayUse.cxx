@@ -566,25 +566,30 @@ TEST(ShadowEverydayUse, CastingRestoresTheGLState)
 
 namespace
 {
-// The point size (or line width) in pixels that VTK's impostors draw as a
-// sphere (tube) of `radius` world units at `center`, seen by the renderer's
-// camera: VTK sizes them as radius = size / (width * P00) * eye distance.
-double PixelsForRadius(vtkRenderer* renderer, const glm::dvec3& center, double radius)
+// The camera's eye depth of `p`.
+double EyeDepth(vtkRenderer* renderer, const glm::dvec3& p)
 {
   vtkCamera* camera = renderer->GetActiveCamera();
-  int width = 0;
-  int height = 0;
-  int origin[2];
-  renderer->GetTiledSizeAndOrigin(&width, &height, origin, origin + 1);
-  vtkMatrix4x4* projection =
-    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0);
   double eye[3];
   camera->GetPosition(eye);
   double direction[3];
   camera->GetDirectionOfProjection(direction);
-  const double distance = glm::dot(center - glm::dvec3(eye[0], eye[1], eye[2]),
+  return glm::dot(p - glm::dvec3(eye[0], eye[1], eye[2]),
     glm::dvec3(direction[0], direction[1], direction[2]));
-  return radius * width * projection->GetElement(0, 0) / distance;
+}
+
+// The point size (or line width) in pixels that VTK's impostors draw as a
+// sphere (tube) of `radius` world units at `center`, seen by the renderer's
+// camera: VTK sizes them as radius = size / (width * P00) * eye depth.
+double PixelsForRadius(vtkRenderer* renderer, const glm::dvec3& center, double radius)
+{
+  int width = 0;
+  int height = 0;
+  int origin[2];
+  renderer->GetTiledSizeAndOrigin(&width, &height, origin, origin + 1);
+  vtkMatrix4x4* projection = renderer->GetActiveCamera()->GetProjectionTransformMatrix(
+    renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  return radius * width * projection->GetElement(0, 0) / EyeDepth(renderer, center);
 }
 
 // An actor drawing `data` with a vtkPolyDataMapper, added to the scene.
@@ -907,6 +912,143 @@ TEST(ShadowEverydayUse, TiledCapturesShowTheWholeImagesShadows)
     // The first tile's projection, turned back into the whole image's, may
     // differ from the last frame's by rounding: at most one update.
     EXPECT_LE(pass->GetNumberOfShadowMapUpdates() - updates, 1) << kind.first;
+  }
+}
+
+namespace
+{
+// A point drawn as a sphere (From == To) or a line drawn as a tube, of
+// Radius at its middle (PointsAsSpheres, LineAsTube): VTK sizes it in pixels,
+// so its world radius grows with the eye depth along a tube.
+struct Impostor
+{
+  glm::dvec3 From;
+  glm::dvec3 To;
+  double Radius;
+};
+
+// How near the segment from `from` along the unit `direction` for `length`
+// passes to `impostor`'s centre or axis, in its radii there, and whether the
+// nearest axis point lies between the ends (where a capped tube is its capsule).
+std::pair<double, bool> Nearness(vtkRenderer* renderer, const Impostor& impostor,
+  const glm::dvec3& from, const glm::dvec3& direction, double length)
+{
+  const double middle = EyeDepth(renderer, 0.5 * (impostor.From + impostor.To));
+  double nearest = std::numeric_limits<double>::max();
+  bool between = false;
+  const int steps = impostor.From == impostor.To ? 0 : 200;
+  for (int i = 0; i <= steps; ++i)
+  {
+    const double f = steps == 0 ? 0.0 : double(i) / steps;
+    const glm::dvec3 axis = glm::mix(impostor.From, impostor.To, f);
+    const double radius = impostor.Radius * EyeDepth(renderer, axis) / middle;
+    const double along = glm::clamp(glm::dot(axis - from, direction), 0.0, length);
+    const double distance = glm::length(from + along * direction - axis) / radius;
+    if (distance < nearest)
+    {
+      nearest = distance;
+      between = steps == 0 || (i > 0 && i < steps);
+    }
+  }
+  return { nearest, between };
+}
+
+// Probes the ground the camera sees, on a grid, where `impostors` are the only
+// casters: dark where the light's ray (towards `light`: a direction with w 0,
+// a position with w 1) passes well inside one, lit where it passes well
+// outside all of them but near one. Returns the probes that disagree.
+std::vector<std::string> GroundShadowsDisagreeing(vtkRenderer* renderer, vtkImageData* image,
+  const std::vector<Impostor>& impostors, const glm::dvec4& light)
+{
+  double eye[3];
+  renderer->GetActiveCamera()->GetPosition(eye);
+  std::vector<std::string> disagreeing;
+  for (double x = -10.0; x <= 10.0; x += 0.25)
+  {
+    for (double y = -10.0; y <= 10.0; y += 0.25)
+    {
+      const glm::dvec3 ground(x, y, 0.0);
+      const glm::dvec3 toEye = glm::dvec3(eye[0], eye[1], eye[2]) - ground;
+      const glm::dvec3 toLight = light.w != 0.0 ? glm::dvec3(light) - ground : glm::dvec3(light) * 1e4;
+      bool inside = false;
+      double nearest = std::numeric_limits<double>::max();
+      bool hidden = false;
+      for (const Impostor& impostor : impostors)
+      {
+        const auto [distance, between] =
+          Nearness(renderer, impostor, ground, glm::normalize(toLight), glm::length(toLight));
+        inside = inside || (distance < 0.75 && between);
+        nearest = std::min(nearest, distance);
+        hidden = hidden ||
+          Nearness(renderer, impostor, ground, glm::normalize(toEye), glm::length(toEye)).first < 1.1;
+      }
+      const double luminance = LuminanceAt(renderer, image, ground);
+      if (hidden || luminance < 0.0 || (!inside && (nearest < 1.3 || nearest > 2.0)))
+      {
+        continue;
+      }
+      if (inside ? luminance >= ShadowedBelow : luminance <= LitAbove)
+      {
+        disagreeing.push_back("(" + std::to_string(x) + ", " + std::to_string(y) + "): " +
+          std::to_string(luminance) + (inside ? " in the shadow" : " beside it"));
+      }
+    }
+  }
+  return disagreeing;
+}
+} // namespace
+
+// A sphere or a tube across the edge between two layers casts into both: a
+// point light's cube faces, cascades, a focused view's edge. The GL drops a
+// point whose centre is outside the view, VTK's sphere code rounded the square
+// about the centre, and the layers' casters were culled by their points'
+// bounds: a sphere's shadow was cut at the face's edge (43 probes under a
+// point light before, with every pass).
+TEST(ShadowEverydayUse, ImpostorsAcrossALayersEdgeCastInBoth)
+{
+  // Under the point light at (0, 0, 6): across the -z and +x faces, -z and -y,
+  // near the corner of -z, +y and -x; a tube across -z and +x.
+  const std::vector<Impostor> underThePoint = { { { 4.3, 0.0, 1.5 }, { 4.3, 0.0, 1.5 }, 0.6 },
+    { { -1.0, -4.4, 1.5 }, { -1.0, -4.4, 1.5 }, 0.6 },
+    { { -3.0, 3.2, 2.8 }, { -3.0, 3.2, 2.8 }, 0.6 },
+    { { 3.0, -2.5, 1.5 }, { 6.0, -2.0, 1.5 }, 0.3 } };
+  std::vector<Impostor> underTheSun;
+  for (double y = -6.0; y <= 9.0; y += 1.5)
+  {
+    const glm::dvec3 center(-3.0 + 0.4 * y, y, 1.5);
+    underTheSun.push_back({ center, center, 0.5 });
+  }
+  underTheSun.push_back({ { -9.0, 1.0, 2.0 }, { -9.0, 1.0, 2.0 }, 0.7 });
+  underTheSun.push_back({ { 3.0, -7.0, 1.2 }, { 4.0, 8.0, 1.2 }, 0.5 });
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.8, 0.3, -1.0));
+  for (const auto& kind : EveryPassKind())
+  {
+    for (const bool point : { true, false })
+    {
+      TestScene scene(800, 600);
+      scene.Renderer->RemoveActor(scene.Sphere);
+      scene.Renderer->RemoveActor(scene.Box);
+      const std::vector<Impostor>& impostors = point ? underThePoint : underTheSun;
+      for (const Impostor& impostor : impostors)
+      {
+        impostor.From == impostor.To
+          ? PointsAsSpheres(scene, { impostor.From }, impostor.Radius)
+          : LineAsTube(scene, impostor.From, impostor.To, impostor.Radius);
+      }
+      const glm::dvec4 light = point ? glm::dvec4(0.0, 0.0, 6.0, 1.0) : glm::dvec4(-sun, 0.0);
+      point ? scene.SetPoint(glm::dvec3(light)) : scene.SetSun(sun);
+      vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
+      // The largest point size (255 texels on llvmpipe) holds these spheres'
+      // images at this resolution.
+      pass->SetResolution(512);
+      pass->SetAnalysisViewToShadowFactor();
+      scene.Renderer->SetPass(pass);
+      auto image = RenderAndCapture(scene.Window);
+      const auto disagreeing = GroundShadowsDisagreeing(scene.Renderer, image, impostors, light);
+      EXPECT_TRUE(disagreeing.empty())
+        << kind.first << (point ? ", point light: " : ", sun: ") << disagreeing.size()
+        << " probes, the first " << (disagreeing.empty() ? "" : disagreeing.front());
+    }
   }
 }
 

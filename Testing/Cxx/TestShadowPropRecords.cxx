@@ -116,3 +116,37 @@ TEST(ShadowPropRecords, ImpostorsVersionsFollowTheirSizing)
     scene.Sphere->GetProperty()->RenderLinesAsTubesOff();
   }
 }
+
+// A prop drawing impostors reaches their world radius beyond its points: its
+// bounds grow by the largest one (at the farthest eye depth), so that every
+// layer holding a part of one casts it.
+TEST(ShadowPropRecords, ImpostorsBoundsHoldTheirShapes)
+{
+  Scene scene;
+  shadowmaps::PropRecords records;
+  // 400 pixels wide, P00 2; the camera at z = 10 looking down -z (eye depth
+  // 10 - z); the sphere's points reach z = 0.5 at most, eye depth 10.5 at z = -0.5.
+  const shadowmaps::ImpostorSizing sizing = { 400.0, 2.0, 0.0, 0.0, 1.0, -10.0, 0.0 };
+  scene.Frame(records, true, sizing);
+  const shadowmaps::Aabb plain = scene.Last[scene.Sphere].Bounds;
+  vtkProperty* property = scene.Sphere->GetProperty();
+  property->SetPointSize(16.0f);
+  property->SetLineWidth(8.0f);
+  property->RenderPointsAsSpheresOn();
+  scene.Frame(records, true, sizing);
+  const double pointReach = 16.0 / (400.0 * 2.0) * 10.5;
+  EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Min.x, plain.Min.x - pointReach, 1e-9);
+  EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Max.z, plain.Max.z + pointReach, 1e-9);
+  EXPECT_NEAR(scene.Last[scene.Other].Bounds.Min.x, 5.0 + plain.Min.x, 1e-9) << "no impostors";
+
+  property->RenderPointsAsSpheresOff();
+  property->RenderLinesAsTubesOn();
+  scene.Frame(records, true, sizing);
+  EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Max.y, plain.Max.y + pointReach / 2.0, 1e-9) << "tubes";
+
+  shadowmaps::ImpostorSizing parallel = sizing;
+  parallel[6] = 1.0;
+  scene.Frame(records, true, parallel);
+  EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Max.y, plain.Max.y + 8.0 / 800.0, 1e-9)
+    << "a parallel camera's impostors do not grow with depth";
+}
