@@ -11,7 +11,7 @@ float vtkShadowSpriteDepth()
 {
   // The texel's ray, from where it covers the map (the casters' viewport is
   // the whole layer): the square may have been moved off the centre's image
-  // (vtkShadowHoldPartInView).
+  // (vtkShadowDrawPartInView).
   vec2 ndc = 2.0 * gl_FragCoord.xy / vtkShadowImpostorScale.z - 1.0;
   vec3 origin = vtkShadowImpostorRayPoint(ndc, -1.0);
   vec3 direction = normalize(vtkShadowImpostorRayPoint(ndc, 0.0) - origin);

@@ -203,24 +203,24 @@ CasterBranch CasterShader::Inject(
   // sizes: the branch computes its own.
   const std::string impostorDepth = ownFragments ? ImpostorShader::CasterDepth(sized) : "";
 
-  if (!impostorDepth.empty())
+  if (ownFragments)
   {
-    // The branch finds the impostor's shape itself, first: VTK's code rounds
-    // the point's square about its centre, which the casters' square may
-    // have left (vtkShadowDrawPartInView). Casting back faces only, an
-    // impostor casts where the ray leaves it (GLSL's comma: the call sets the
-    // back depth, then it is read).
-    const std::string backDepth = ImpostorShader::CasterBackDepth(sized);
-    const std::string depth =
-      code.Faces == 1 ? "(" + impostorDepth + ", " + backDepth + ")" : impostorDepth;
-    vtkShaderProgram::Substitute(fragmentShader, LateMarker, "");
-    PutAtMarker(fragmentShader, EarlyMarker, Branch(code, depth, backDepth, true, false));
-  }
-  else if (ownFragments)
-  {
-    vtkShaderProgram::Substitute(fragmentShader, EarlyMarker, "");
-    PutAtMarker(fragmentShader, LateMarker,
-      Branch(code, writesDepth ? "gl_FragDepth" : "gl_FragCoord.z", "", false, false));
+    // An impostor's branch finds its shape itself, after VTK's clipping
+    // planes; VTK's cut of a point's square to its inscribed circle, about its
+    // centre, is lifted while casting (the casters' square may have left the
+    // centre: vtkShadowDrawPartInView). Where it cannot be lifted, the branch
+    // runs first. Casting back faces only, an impostor casts where the ray
+    // leaves it (GLSL's comma: the call sets the back depth, then it is read).
+    const std::string backDepth =
+      impostorDepth.empty() ? "" : ImpostorShader::CasterBackDepth(sized);
+    const std::string depth = impostorDepth.empty() ? (writesDepth ? "gl_FragDepth" : "gl_FragCoord.z")
+      : code.Faces == 1 ? "(" + impostorDepth + ", " + backDepth + ")"
+                        : impostorDepth;
+    const bool first =
+      !impostorDepth.empty() && !ImpostorShader::LiftOwnCutWhileCasting(fragmentShader, sized);
+    vtkShaderProgram::Substitute(fragmentShader, first ? LateMarker : EarlyMarker, "");
+    PutAtMarker(fragmentShader, first ? EarlyMarker : LateMarker,
+      Branch(code, depth, backDepth, !impostorDepth.empty(), false));
   }
   else
   {

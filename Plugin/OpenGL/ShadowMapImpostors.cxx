@@ -120,6 +120,24 @@ std::string ImpostorShader::CasterBackDepth(Impostors sized)
 }
 
 //------------------------------------------------------------------------------
+bool ImpostorShader::LiftOwnCutWhileCasting(std::string& fragmentShader, Impostors sized)
+{
+  if (sized != Impostors::Spheres)
+  {
+    return true;
+  }
+  // VTK 9.1 to 9.6 write it so (vtkOpenGLPolyDataMapper::ReplaceShaderDepth).
+  const std::string cut = "if (len2 > 1.0) { discard; }";
+  const size_t at = fragmentShader.find(cut);
+  if (at == std::string::npos)
+  {
+    return false;
+  }
+  fragmentShader.replace(at, cut.size(), "if (len2 > 1.0 && vtkShadowCasting == 0) { discard; }");
+  return true;
+}
+
+//------------------------------------------------------------------------------
 std::string ImpostorShader::CasterDeclarations(Impostors sized)
 {
   switch (sized)

@@ -49,6 +49,11 @@ public:
   /// depth maps' second surface); empty as CasterDepth is.
   static std::string CasterBackDepth(Impostors sized);
 
+  /// Lets the fragments of the whole square a point drawn as a sphere covers
+  /// through while casting (VTK's code keeps its inscribed circle only);
+  /// nothing to do for tubes. False where VTK's cut was not found.
+  static bool LiftOwnCutWhileCasting(std::string& fragmentShader, Impostors sized);
+
   /// The receivers' position (view coordinates) in a fragment shader: at the
   /// surface of spheres and tubes, else the interpolated vertexVC.
   static std::string ReceiverPositionVC(const std::string& fragmentShader);

@@ -729,7 +729,7 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
     frame.PropBounds.push_back(record.Bounds);
     if (record.DrawsIntoDepthMaps && IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()))
     {
-      r.Casters.push_back({ prop, record.Bounds, record.Version });
+      r.Casters.push_back({ prop, record.CastingBounds, record.Version });
     }
   }
   records.EndFrame();

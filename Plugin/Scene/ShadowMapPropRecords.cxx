@@ -38,12 +38,15 @@ const PropRecords::Record& PropRecords::Read(vtkProp* prop)
   record.Version = version;
   record.Bounds = Aabb::FromBounds(prop->GetBounds());
   // Points drawn as spheres and lines drawn as tubes reach beyond their
-  // points: the layers that hold any of their shapes cast them.
+  // points: the layers that hold any of their shapes cast them. The fits keep
+  // the points' bounds, which do not follow the camera: a shape's part beyond
+  // them shades only receivers beyond them.
+  record.CastingBounds = record.Bounds;
   const double reach = ImpostorReach(prop, record.Bounds, this->Sizing);
   if (reach > 0.0)
   {
-    record.Bounds.Min -= glm::dvec3(reach);
-    record.Bounds.Max += glm::dvec3(reach);
+    record.CastingBounds.Min -= glm::dvec3(reach);
+    record.CastingBounds.Max += glm::dvec3(reach);
   }
   // Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
   // depth map; as casters they would only re-render the maps on every transfer

@@ -24,7 +24,11 @@ class PropRecords
 public:
   struct Record
   {
+    /// The prop's own bounds (its points'): what the views are fitted to.
     Aabb Bounds;
+    /// Its bounds as a caster: grown by the radius of the spheres and tubes
+    /// it draws at its points (ImpostorReach), which the scene camera sizes.
+    Aabb CastingBounds;
     bool DrawsIntoDepthMaps = false;
     vtkMTimeType Version = 0;
   };

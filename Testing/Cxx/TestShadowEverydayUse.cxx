@@ -953,16 +953,26 @@ std::pair<double, bool> Nearness(vtkRenderer* renderer, const Impostor& impostor
   return { nearest, between };
 }
 
+// What GroundShadowsDisagreeing probed: the probes that disagree, and how many
+// probes it judged in each impostor's shadow and beside the shadows.
+struct GroundProbes
+{
+  std::vector<std::string> Disagreeing;
+  std::vector<int> InShadowOf;
+  int Beside = 0;
+};
+
 // Probes the ground the camera sees, on a grid, where `impostors` are the only
 // casters: dark where the light's ray (towards `light`: a direction with w 0,
 // a position with w 1) passes well inside one, lit where it passes well
-// outside all of them but near one. Returns the probes that disagree.
-std::vector<std::string> GroundShadowsDisagreeing(vtkRenderer* renderer, vtkImageData* image,
+// outside all of them but near one.
+GroundProbes GroundShadowsDisagreeing(vtkRenderer* renderer, vtkImageData* image,
   const std::vector<Impostor>& impostors, const glm::dvec4& light)
 {
+  GroundProbes probes;
+  probes.InShadowOf.assign(impostors.size(), 0);
   double eye[3];
   renderer->GetActiveCamera()->GetPosition(eye);
-  std::vector<std::string> disagreeing;
   for (double x = -10.0; x <= 10.0; x += 0.25)
   {
     for (double y = -10.0; y <= 10.0; y += 0.25)
@@ -970,31 +980,33 @@ std::vector<std::string> GroundShadowsDisagreeing(vtkRenderer* renderer, vtkImag
       const glm::dvec3 ground(x, y, 0.0);
       const glm::dvec3 toEye = glm::dvec3(eye[0], eye[1], eye[2]) - ground;
       const glm::dvec3 toLight = light.w != 0.0 ? glm::dvec3(light) - ground : glm::dvec3(light) * 1e4;
-      bool inside = false;
+      int inside = -1;
       double nearest = std::numeric_limits<double>::max();
       bool hidden = false;
-      for (const Impostor& impostor : impostors)
+      for (std::size_t i = 0; i < impostors.size(); ++i)
       {
+        const Impostor& impostor = impostors[i];
         const auto [distance, between] =
           Nearness(renderer, impostor, ground, glm::normalize(toLight), glm::length(toLight));
-        inside = inside || (distance < 0.75 && between);
+        inside = distance < 0.75 && between ? static_cast<int>(i) : inside;
         nearest = std::min(nearest, distance);
         hidden = hidden ||
           Nearness(renderer, impostor, ground, glm::normalize(toEye), glm::length(toEye)).first < 1.1;
       }
       const double luminance = LuminanceAt(renderer, image, ground);
-      if (hidden || luminance < 0.0 || (!inside && (nearest < 1.3 || nearest > 2.0)))
+      if (hidden || luminance < 0.0 || (inside < 0 && (nearest < 1.3 || nearest > 2.0)))
       {
         continue;
       }
-      if (inside ? luminance >= ShadowedBelow : luminance <= LitAbove)
+      inside >= 0 ? ++probes.InShadowOf[inside] : ++probes.Beside;
+      if (inside >= 0 ? luminance >= ShadowedBelow : luminance <= LitAbove)
       {
-        disagreeing.push_back("(" + std::to_string(x) + ", " + std::to_string(y) + "): " +
-          std::to_string(luminance) + (inside ? " in the shadow" : " beside it"));
+        probes.Disagreeing.push_back("(" + std::to_string(x) + ", " + std::to_string(y) +
+          "): " + std::to_string(luminance) + (inside >= 0 ? " in the shadow" : " beside it"));
       }
     }
   }
-  return disagreeing;
+  return probes;
 }
 } // namespace
 
@@ -1044,11 +1056,53 @@ TEST(ShadowEverydayUse, ImpostorsAcrossALayersEdgeCastInBoth)
       pass->SetAnalysisViewToShadowFactor();
       scene.Renderer->SetPass(pass);
       auto image = RenderAndCapture(scene.Window);
-      const auto disagreeing = GroundShadowsDisagreeing(scene.Renderer, image, impostors, light);
-      EXPECT_TRUE(disagreeing.empty())
-        << kind.first << (point ? ", point light: " : ", sun: ") << disagreeing.size()
-        << " probes, the first " << (disagreeing.empty() ? "" : disagreeing.front());
+      const std::string what = kind.first + (point ? ", point light" : ", sun");
+      const GroundProbes probes = GroundShadowsDisagreeing(scene.Renderer, image, impostors, light);
+      EXPECT_TRUE(probes.Disagreeing.empty())
+        << what << ": " << probes.Disagreeing.size() << " probes, the first "
+        << (probes.Disagreeing.empty() ? "" : probes.Disagreeing.front());
+      // Not passed for want of probes: each shadow and its surroundings seen.
+      for (std::size_t i = 0; i < impostors.size(); ++i)
+      {
+        EXPECT_GE(probes.InShadowOf[i], 4) << what << ": probes in the shadow of impostor " << i;
+      }
+      EXPECT_GE(probes.Beside, 100) << what << ": probes beside the shadows";
     }
+  }
+}
+
+// A clipping plane cuts the shadows of points drawn as spheres and lines drawn
+// as tubes as it cuts the shapes, in every pass kind: the casters' branch of
+// impostors runs after VTK's clipping (run before it, it cast them whole).
+TEST(ShadowEverydayUse, ClippingPlanesClipImpostorsShadows)
+{
+  for (const auto& kind : EveryPassKind())
+  {
+    TestScene scene;
+    scene.Renderer->RemoveActor(scene.Sphere);
+    scene.Renderer->RemoveActor(scene.Box);
+    scene.SetSun(Down);
+    vtkNew<vtkPlane> plane; // keeps x > 0
+    plane->SetOrigin(0.0, 0.0, 0.0);
+    plane->SetNormal(1.0, 0.0, 0.0);
+    PointsAsSpheres(scene, { { -2.0, 1.0, 1.5 }, { 2.0, 1.0, 1.5 } }, 0.8)
+      ->GetMapper()
+      ->AddClippingPlane(plane);
+    LineAsTube(scene, { -3.0, -4.0, 1.5 }, { 3.0, -4.0, 1.5 }, 0.5)
+      ->GetMapper()
+      ->AddClippingPlane(plane);
+    vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
+    pass->SetAnalysisViewToShadowFactor();
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, { 2.0, 1.0, 0.0 }), ShadowedBelow)
+      << kind.first << ": the kept sphere";
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, { -2.0, 1.0, 0.0 }), LitAbove)
+      << kind.first << ": the clipped sphere";
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, { 1.5, -4.0, 0.0 }), ShadowedBelow)
+      << kind.first << ": the kept half of the tube";
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, { -1.5, -4.0, 0.0 }), LitAbove)
+      << kind.first << ": the clipped half of the tube";
   }
 }
 

@@ -118,8 +118,9 @@ TEST(ShadowPropRecords, ImpostorsVersionsFollowTheirSizing)
 }
 
 // A prop drawing impostors reaches their world radius beyond its points: its
-// bounds grow by the largest one (at the farthest eye depth), so that every
-// layer holding a part of one casts it.
+// bounds as a caster grow by the largest one (at the farthest eye depth), so
+// that every layer holding a part of one casts it; the bounds the views are
+// fitted to stay its points' (they would follow the camera).
 TEST(ShadowPropRecords, ImpostorsBoundsHoldTheirShapes)
 {
   Scene scene;
@@ -135,18 +136,20 @@ TEST(ShadowPropRecords, ImpostorsBoundsHoldTheirShapes)
   property->RenderPointsAsSpheresOn();
   scene.Frame(records, true, sizing);
   const double pointReach = 16.0 / (400.0 * 2.0) * 10.5;
-  EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Min.x, plain.Min.x - pointReach, 1e-9);
-  EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Max.z, plain.Max.z + pointReach, 1e-9);
-  EXPECT_NEAR(scene.Last[scene.Other].Bounds.Min.x, 5.0 + plain.Min.x, 1e-9) << "no impostors";
+  EXPECT_EQ(scene.Last[scene.Sphere].Bounds.Min, plain.Min);
+  EXPECT_EQ(scene.Last[scene.Sphere].Bounds.Max, plain.Max);
+  EXPECT_NEAR(scene.Last[scene.Sphere].CastingBounds.Min.x, plain.Min.x - pointReach, 1e-9);
+  EXPECT_NEAR(scene.Last[scene.Sphere].CastingBounds.Max.z, plain.Max.z + pointReach, 1e-9);
+  EXPECT_NEAR(scene.Last[scene.Other].CastingBounds.Min.x, 5.0 + plain.Min.x, 1e-9) << "no impostors";
 
   property->RenderPointsAsSpheresOff();
   property->RenderLinesAsTubesOn();
   scene.Frame(records, true, sizing);
-  EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Max.y, plain.Max.y + pointReach / 2.0, 1e-9) << "tubes";
+  EXPECT_NEAR(scene.Last[scene.Sphere].CastingBounds.Max.y, plain.Max.y + pointReach / 2.0, 1e-9) << "tubes";
 
   shadowmaps::ImpostorSizing parallel = sizing;
   parallel[6] = 1.0;
   scene.Frame(records, true, parallel);
-  EXPECT_NEAR(scene.Last[scene.Sphere].Bounds.Max.y, plain.Max.y + 8.0 / 800.0, 1e-9)
+  EXPECT_NEAR(scene.Last[scene.Sphere].CastingBounds.Max.y, plain.Max.y + 8.0 / 800.0, 1e-9)
     << "a parallel camera's impostors do not grow with depth";
 }
