@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <limits>
 #include <numeric>
 
@@ -27,12 +28,25 @@ MovingCameraRenders::~MovingCameraRenders()
 }
 
 //------------------------------------------------------------------------------
-double TimedRender(vtkRenderWindow* window)
+namespace
 {
+double ThreadCpuSeconds()
+{
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+FrameTime TimedRender(vtkRenderWindow* window)
+{
+  const double cpuStart = ThreadCpuSeconds();
   const auto start = std::chrono::steady_clock::now();
   window->Render();
   static_cast<vtkOpenGLRenderWindow*>(window)->WaitForCompletion();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return { std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+    ThreadCpuSeconds() - cpuStart };
 }
 
 //------------------------------------------------------------------------------
@@ -46,6 +60,20 @@ double Median(std::vector<double> values)
   return values[values.size() / 2];
 }
 
+namespace
+{
+std::vector<double> Of(const std::vector<FrameTime>& frames, double FrameTime::*which)
+{
+  std::vector<double> values;
+  values.reserve(frames.size());
+  for (const FrameTime& frame : frames)
+  {
+    values.push_back(frame.*which);
+  }
+  return values;
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* renderer,
   const std::vector<vtkRenderPass*>& passes, int frames, const CameraMotion& motion,
@@ -55,15 +83,15 @@ std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* rend
   constexpr int WarmUpFrames = 2;
   const int motionFrames = Rounds * frames + 1;
   std::vector<Timing> timing(passes.size());
-  std::vector<std::vector<double>> steady(passes.size());
-  std::vector<std::vector<double>> moving(passes.size());
+  std::vector<std::vector<FrameTime>> steady(passes.size());
+  std::vector<std::vector<FrameTime>> moving(passes.size());
   for (int round = 0; round < Rounds; ++round)
   {
     for (size_t p = 0; p < passes.size(); ++p)
     {
       renderer->SetPass(passes[p]);
       motion(0, motionFrames);
-      const double first = TimedRender(window);
+      const double first = TimedRender(window).Wall;
       if (round == 0)
       {
         timing[p].First = first;
@@ -72,25 +100,39 @@ std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* rend
       {
         TimedRender(window);
       }
+      std::vector<FrameTime> steadyRound;
       for (int i = 0; i < frames; ++i)
       {
-        steady[p].push_back(TimedRender(window));
+        steadyRound.push_back(TimedRender(window));
       }
-      const MovingCameraRenders drag(window, interactiveMoving);
-      for (int i = 0; i < frames; ++i)
+      std::vector<FrameTime> movingRound;
       {
-        motion(round * frames + i + 1, motionFrames);
-        moving[p].push_back(TimedRender(window));
+        const MovingCameraRenders drag(window, interactiveMoving);
+        for (int i = 0; i < frames; ++i)
+        {
+          motion(round * frames + i + 1, motionFrames);
+          movingRound.push_back(TimedRender(window));
+        }
       }
+      timing[p].SteadyMainThreadCpuPerRound.push_back(
+        Median(Of(steadyRound, &FrameTime::MainThreadCpu)));
+      timing[p].MovingMainThreadCpuPerRound.push_back(
+        Median(Of(movingRound, &FrameTime::MainThreadCpu)));
+      steady[p].insert(steady[p].end(), steadyRound.begin(), steadyRound.end());
+      moving[p].insert(moving[p].end(), movingRound.begin(), movingRound.end());
     }
   }
   for (size_t p = 0; p < passes.size(); ++p)
   {
-    timing[p].Steady = Median(steady[p]);
-    timing[p].Moving = Median(moving[p]);
-    timing[p].MovingMean = moving[p].empty()
+    const std::vector<double> steadyWall = Of(steady[p], &FrameTime::Wall);
+    const std::vector<double> movingWall = Of(moving[p], &FrameTime::Wall);
+    timing[p].Steady = Median(steadyWall);
+    timing[p].Moving = Median(movingWall);
+    timing[p].MovingMean = movingWall.empty()
       ? std::numeric_limits<double>::quiet_NaN()
-      : std::accumulate(moving[p].begin(), moving[p].end(), 0.0) / moving[p].size();
+      : std::accumulate(movingWall.begin(), movingWall.end(), 0.0) / movingWall.size();
+    timing[p].SteadyMainThreadCpu = Median(Of(steady[p], &FrameTime::MainThreadCpu));
+    timing[p].MovingMainThreadCpu = Median(Of(moving[p], &FrameTime::MainThreadCpu));
   }
   motion(0, motionFrames);
   return timing;

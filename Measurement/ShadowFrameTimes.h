@@ -26,6 +26,23 @@ struct Timing
   double Moving = 0.0;
   /// Their mean: kept maps make most moving frames cheap and some dear.
   double MovingMean = 0.0;
+  /// The CPU time of the rendering thread in steady and moving frames
+  /// (medians): VTK's and the pass's work and the GL driver's on that thread,
+  /// without the frames' rasterisation where the driver does it on threads of
+  /// its own (llvmpipe) or on a GPU.
+  double SteadyMainThreadCpu = 0.0;
+  double MovingMainThreadCpu = 0.0;
+  /// The same per round of MeasureFrameTimes, to compare passes within a
+  /// round: the machine's speed drifts between rounds.
+  std::vector<double> SteadyMainThreadCpuPerRound;
+  std::vector<double> MovingMainThreadCpuPerRound;
+};
+
+/// One frame's wall time and its rendering thread's CPU time, in seconds.
+struct FrameTime
+{
+  double Wall = 0.0;
+  double MainThreadCpu = 0.0;
 };
 
 /// Renders of a moving camera, while the object lives: `interactive`, as a
@@ -48,8 +65,8 @@ private:
 /// Sets the camera for moving frame `frame` of `frames` (frame 0: the start).
 using CameraMotion = std::function<void(int frame, int frames)>;
 
-/// Renders and waits for the GL to finish; returns the wall time in seconds.
-double TimedRender(vtkRenderWindow* window);
+/// Renders and waits for the GL to finish.
+FrameTime TimedRender(vtkRenderWindow* window);
 
 /// The median (NaN for none).
 double Median(std::vector<double> values);

@@ -1,6 +1,7 @@
 #include "ShadowSpeed.h"
 
 #include "ShadowFrameTimes.h"
+#include "ShadowGLCalls.h"
 #include "ShadowScenes.h"
 #include "ShadowTechniques.h"
 
@@ -41,6 +42,8 @@ struct SpeedRow
   std::string Technique;
   Timing Time;
   MovingCounts Counts; // ours only
+  GLCallCounts SteadyCalls;
+  int Props = 0;
 };
 
 struct SpeedView
@@ -140,6 +143,25 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
   return counts;
 }
 
+/// The GL calls of one steady frame of `pass` (nullptr: no shadows).
+GLCallCounts CountSteadyGLCalls(SpeedView& view, vtkRenderPass* pass)
+{
+  view.Renderer->SetPass(pass);
+  for (int i = 0; i < 3; ++i)
+  {
+    view.Window->Render();
+  }
+  view.Window->MakeCurrent();
+  StartCountingGLCalls();
+  view.Window->Render();
+  return CountedGLCalls();
+}
+
+int CountProps(vtkRenderer* renderer)
+{
+  return renderer->GetViewProps()->GetNumberOfItems();
+}
+
 void MeasureCase(SpeedView& view, const std::string& scene, const std::string& setup,
   int resolution, const SpeedOptions& options, std::vector<SpeedRow>& rows)
 {
@@ -157,7 +179,8 @@ void MeasureCase(SpeedView& view, const std::string& scene, const std::string& s
   {
     SpeedRow row{ scene, setup, resolution, names[t], timing[t],
       CountMovingWork(view, techniques[t], options.OrbitDegrees, MovingFramesCounted,
-        options.InteractiveMoving) };
+        options.InteractiveMoving),
+      CountSteadyGLCalls(view, techniques[t].Pass), CountProps(view.Renderer) };
     rows.push_back(row);
   }
   view.Renderer->SetPass(nullptr);
@@ -190,12 +213,38 @@ std::string Ratio(double value, const SpeedRow* reference, double Timing::*which
     : std::string("n/a");
 }
 
+/// The rendering thread's CPU time per prop beyond no shadows', in
+/// microseconds: the median over the rounds of the difference within each.
+std::string CpuPerProp(
+  const SpeedRow& row, const SpeedRow* none, std::vector<double> Timing::*perRound)
+{
+  const std::vector<double>& mine = row.Time.*perRound;
+  if (!none || row.Props <= 0 || mine.size() != (none->Time.*perRound).size() || mine.empty())
+  {
+    return "n/a";
+  }
+  std::vector<double> differences;
+  for (std::size_t i = 0; i < mine.size(); ++i)
+  {
+    differences.push_back(mine[i] - (none->Time.*perRound)[i]);
+  }
+  return FormatNumber(1e6 * Median(differences) / row.Props, 2);
+}
+
+std::string CallCounts(const GLCallCounts& calls)
+{
+  return std::to_string(calls.Draws) + " / " + std::to_string(calls.UniformSets) + " / " +
+    std::to_string(calls.All());
+}
+
 void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
 {
   out << "| scene | light | map | technique | first ms | steady ms | moving ms | moving mean ms "
          "| moving / steady | steady / none | moving / none | moving / vtk | moving mean / vtk "
-         "| shaders built in 8 moving frames | layers per moving frame |\n"
-         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "| shaders built in 8 moving frames | layers per moving frame "
+         "| steady CPU µs per prop over none | moving CPU µs per prop over none "
+         "| steady GL draws / uniform sets / counted calls |\n"
+         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const SpeedRow& row : rows)
   {
     const SpeedRow* none = Reference(rows, row, "none");
@@ -215,7 +264,9 @@ void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
         << (row.Counts.Layers < 0 ? std::string("")
                                   : FormatNumber(row.Counts.LayersPerFrame, 2) + " of " +
                std::to_string(row.Counts.Layers))
-        << " |\n";
+        << " | " << CpuPerProp(row, none, &Timing::SteadyMainThreadCpuPerRound) << " | "
+        << CpuPerProp(row, none, &Timing::MovingMainThreadCpuPerRound) << " | "
+        << CallCounts(row.SteadyCalls) << " |\n";
   }
 }
 
@@ -223,21 +274,21 @@ void WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& path)
 {
   std::ofstream csv(path);
   csv << "scene,setup,resolution,technique,first_s,steady_s,moving_s,moving_mean_s,"
-         "shader_builds_in_8_moving_frames,layers_per_moving_frame,layers\n";
+         "shader_builds_in_8_moving_frames,layers_per_moving_frame,layers,props,"
+         "steady_main_thread_cpu_s,moving_main_thread_cpu_s,steady_gl_draws,"
+         "steady_gl_uniform_sets,steady_gl_counted_calls\n";
   csv << std::setprecision(6);
   for (const SpeedRow& row : rows)
   {
     csv << row.Scene << ',' << row.Setup << ',' << row.Resolution << ',' << row.Technique << ','
         << row.Time.First << ',' << row.Time.Steady << ',' << row.Time.Moving << ','
         << row.Time.MovingMean << ',' << row.Counts.ShaderBuilds << ',' << row.Counts.LayersPerFrame << ','
-        << row.Counts.Layers << '\n';
+        << row.Counts.Layers << ',' << row.Props << ',' << row.Time.SteadyMainThreadCpu << ','
+        << row.Time.MovingMainThreadCpu << ',' << row.SteadyCalls.Draws << ','
+        << row.SteadyCalls.UniformSets << ',' << row.SteadyCalls.All() << '\n';
   }
 }
 
-int CountProps(vtkRenderer* renderer)
-{
-  return renderer->GetViewProps()->GetNumberOfItems();
-}
 } // namespace
 
 //------------------------------------------------------------------------------

@@ -2,13 +2,17 @@
 sun at 960 x 540 with 64^2 maps (so that rasterisation adds little and the
 per-actor work shows): argv[1] is none, vtk (VTK's vtkShadowMapPass), uniform
 (vtkDepthShadowMapPass) or csm (vtkCascadedShadowMapPass), argv[2] the frames
-timed after 3 untimed. Prints the mean frame in ms. For where the time goes,
+timed after 3 untimed. Prints the mean frame in ms and the rendering thread's CPU time
+per frame (VTK's, the pass's and the driver's work on that thread; llvmpipe rasterises
+on threads of its own). For where the time goes,
 run it under perf and sum the samples under a function with perf_inclusive.py:
 
-  PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a perf record -D 2500 -F 499 \\
-    --call-graph dwarf,16384 -o uniform.data /usr/bin/python3 Measurement/many_actors.py uniform 60
+  mkfifo ctl ack; PERF_CONTROL=ctl,ack PYTHONPATH=build/lib/python3/dist-packages \\
+    xvfb-run -a perf record --control=fifo:ctl,ack -D -1 -F 499 --call-graph dwarf,16384 \\
+    -o uniform.data /usr/bin/python3 Measurement/many_actors.py uniform 60
   /usr/bin/python3 Measurement/perf_inclusive.py uniform.data vtkAbstractShadowMapPass::PrepareShadows
 """
+import os
 import sys
 import time
 
@@ -19,6 +23,17 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, 
 from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkRenderPassCollection,
                                             vtkSequencePass, vtkShadowMapBakerPass,
                                             vtkShadowMapPass)
+
+
+def perf_command(control, command):
+    """Has a perf record started with --control=fifo:CTL,ACK -D -1 sample only the
+    timed frames: control is "CTL,ACK"."""
+    if control:
+        ctl, ack = control.split(",")
+        with open(ctl, "w") as fifo:
+            fifo.write(command + "\n")
+        with open(ack) as fifo:
+            fifo.read(5)
 
 
 def add(renderer, source):
@@ -61,7 +76,12 @@ elif kind == "vtk":
 for _ in range(3):
     window.Render()
 frames = int(sys.argv[2]) if len(sys.argv) > 2 else 40
+control = os.environ.get("PERF_CONTROL")  # perf record --control=fifo:CTL,ACK -D -1
+perf_command(control, "enable")
 start = time.perf_counter()
+cpu_start = time.thread_time()
 for _ in range(frames):
     window.Render()
-print(f"{kind}: {(time.perf_counter() - start) / frames * 1000:.1f} ms per steady frame")
+perf_command(control, "disable")
+print(f"{kind}: {(time.perf_counter() - start) / frames * 1000:.1f} ms per steady frame, "
+      f"{(time.thread_time() - cpu_start) / frames * 1000:.1f} ms of the rendering thread's CPU")

@@ -36,6 +36,13 @@ vtk_module_autoinit(TARGETS TestShadowSweep MODULES ${shadowbench_vtk_modules}
   ${shadowscenes_vtk_modules} ${shadowtechniques_vtk_modules} ShadowMaps::RenderingShadowMaps)
 gtest_discover_tests(TestShadowSweep DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 900)
 
+# What a steady frame asks of the GL per prop (Measurement/ShadowGLCalls.h).
+add_executable(TestShadowGLCalls Cxx/TestShadowGLCalls.cxx)
+target_link_libraries(TestShadowGLCalls PRIVATE ShadowBench GTest::gtest_main)
+vtk_module_autoinit(TARGETS TestShadowGLCalls MODULES ${shadowbench_vtk_modules}
+  ${shadowscenes_vtk_modules} ${shadowtechniques_vtk_modules} ShadowMaps::RenderingShadowMaps)
+gtest_discover_tests(TestShadowGLCalls DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
+
 if (TARGET vtkshadows)
   add_test(NAME CLI.BenchAndAnalyze
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_bench.py"
