@@ -60,6 +60,45 @@ bool SizeSpheres(std::string& vertexShader)
   return true;
 }
 
+const char* const CornerLoop = "for (int j = 0; j < 4; j++)";
+
+// Writes the loop over the corners at `loop` as four blocks, each with its
+// corner j a constant: VTK's loop reads its inputs (gl_in, the clipping
+// planes' clipVertexMC) at j / 2, and llvmpipe in Mesa 25.0 drew nothing of
+// such a shader with the casters' code and clipping planes in it (an index
+// chosen at run time, as in vtkShadowMapsTubeGS). False if the loop's body
+// has no closing brace.
+bool UnrollCornerLoop(std::string& geometryShader, size_t loop)
+{
+  const size_t open = geometryShader.find('{', loop);
+  if (open == std::string::npos)
+  {
+    return false;
+  }
+  int depth = 0;
+  size_t close = open;
+  for (; close < geometryShader.size(); ++close)
+  {
+    depth += geometryShader[close] == '{' ? 1 : geometryShader[close] == '}' ? -1 : 0;
+    if (depth == 0)
+    {
+      break;
+    }
+  }
+  if (close == geometryShader.size())
+  {
+    return false;
+  }
+  const std::string body = geometryShader.substr(open + 1, close - open - 1);
+  std::string unrolled;
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    unrolled += "{\n    const int j = " + std::to_string(corner) + ";" + body + "}\n  ";
+  }
+  geometryShader.replace(loop, close + 1 - loop, unrolled);
+  return true;
+}
+
 // VTK's tubes come from its wide-line geometry shaders, which (9.1 to 9.6)
 // emit the quad's corners in a loop over j, one EmitVertex each: the corner is
 // replaced just before it.
@@ -67,16 +106,22 @@ bool SizeTubes(std::string& geometryShader)
 {
   const size_t main = geometryShader.find("void main");
   const size_t emit = geometryShader.find("EmitVertex();");
+  const size_t loop = main == std::string::npos ? main : geometryShader.find(CornerLoop, main);
   if (!Contains(geometryShader, "layout(lines) in") || main == std::string::npos ||
-    emit == std::string::npos || emit < main ||
-    geometryShader.find("for (int j = 0; j < 4; j++)", main) > emit ||
+    emit == std::string::npos || emit < main || loop > emit ||
     geometryShader.find("EmitVertex();", emit + 1) != std::string::npos)
   {
     return false;
   }
-  geometryShader.insert(
+  std::string sized = geometryShader;
+  sized.insert(
     emit, "if (vtkShadowCasting != 0)\n    {\n      gl_Position = vtkShadowTubeCorner(j);\n    }\n    ");
-  DeclareBeforeMain(geometryShader, main, vtkShadowMapsTubeGS);
+  if (!UnrollCornerLoop(sized, loop))
+  {
+    return false;
+  }
+  DeclareBeforeMain(sized, main, vtkShadowMapsTubeGS);
+  geometryShader = sized;
   return true;
 }
 } // namespace
