@@ -38,13 +38,24 @@ struct Counted<FunctionPointer<Result, Arguments...>, Slot, Counter>
       *Slot = &Call;
     }
   }
+
+  static void Uninstall()
+  {
+    if (*Slot == &Call)
+    {
+      *Slot = Original;
+    }
+  }
+
+  static void Swap(bool install) { install ? Install() : Uninstall(); }
 };
 
 // The loader's pointer behind a GL function's name, and the wrapper for it.
 #define SHADOW_COUNT(name, counter)                                                              \
-  Counted<decltype(name), &(name), &GLCallCounts::counter>::Install()
+  Counted<decltype(name), &(name), &GLCallCounts::counter>::Swap(Install)
 
-void InstallCounters()
+template <bool Install>
+void SwapCounters()
 {
   SHADOW_COUNT(glDrawRangeElements, Draws);
   SHADOW_COUNT(glDrawArraysInstanced, Draws);
@@ -69,13 +80,14 @@ void InstallCounters()
 //------------------------------------------------------------------------------
 void StartCountingGLCalls()
 {
-  InstallCounters();
+  SwapCounters<true>();
   Counts = GLCallCounts();
 }
 
 //------------------------------------------------------------------------------
-GLCallCounts CountedGLCalls()
+GLCallCounts StopCountingGLCalls()
 {
+  SwapCounters<false>();
   return Counts;
 }
 } // namespace shadowbench

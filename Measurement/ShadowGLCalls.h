@@ -3,7 +3,9 @@
 // to 9.3, glad from 9.4) call these through function pointers that every
 // library of the process shares; counting swaps in wrappers that count and
 // call the original. Only functions that are pointers in both loaders are
-// counted (GLEW calls GL 1.1's, glDrawArrays among them, directly).
+// counted (GLEW calls GL 1.1's, glDrawArrays among them, directly): the draws
+// counted are the mappers' (glDrawRangeElements and the instanced draws), not
+// glDrawArrays' full-screen quads.
 #ifndef ShadowGLCalls_h
 #define ShadowGLCalls_h
 
@@ -29,8 +31,10 @@ struct GLCallCounts
 /// the counters back where a loader reloaded its pointers.
 void StartCountingGLCalls();
 
-/// The counts since StartCountingGLCalls.
-GLCallCounts CountedGLCalls();
+/// Puts the loader's own pointers back (the wrappers cost a little per call:
+/// frames timed after counting must not run through them); returns the counts
+/// since StartCountingGLCalls.
+GLCallCounts StopCountingGLCalls();
 } // namespace shadowbench
 
 #endif

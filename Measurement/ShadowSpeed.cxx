@@ -154,7 +154,7 @@ GLCallCounts CountSteadyGLCalls(SpeedView& view, vtkRenderPass* pass)
   view.Window->MakeCurrent();
   StartCountingGLCalls();
   view.Window->Render();
-  return CountedGLCalls();
+  return StopCountingGLCalls();
 }
 
 int CountProps(vtkRenderer* renderer)

@@ -66,8 +66,9 @@ const char* const CornerLoop = "for (int j = 0; j < 4; j++)";
 // corner j a constant: VTK's loop reads its inputs (gl_in, the clipping
 // planes' clipVertexMC) at j / 2, and llvmpipe in Mesa 25.0 drew nothing of
 // such a shader with the casters' code and clipping planes in it (an index
-// chosen at run time, as in vtkShadowMapsTubeGS). False if the loop's body
-// has no closing brace.
+// chosen at run time, as in vtkShadowMapsTubeGS). A user's replacement of a
+// marker inside the loop made after this (ReplaceAll off) reaches the first
+// corner only. False if the loop's body has no closing brace.
 bool UnrollCornerLoop(std::string& geometryShader, size_t loop)
 {
   const size_t open = geometryShader.find('{', loop);
