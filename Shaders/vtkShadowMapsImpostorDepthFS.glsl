@@ -9,6 +9,7 @@
 uniform mat4 vtkShadowImpostorWorldToClip;
 uniform mat4 vtkShadowImpostorClipToWorld;
 uniform vec2 vtkShadowImpostorDepthOffset;
+uniform vec4 vtkShadowImpostorScale;
 // Where the texel's ray leaves the shape (window depth, offset): the second
 // surface of dual depth maps. Set with the depth where it enters.
 float vtkShadowImpostorBackDepth = 1.0;
@@ -18,6 +19,16 @@ vec3 vtkShadowImpostorRayPoint(vec2 ndc, float z)
 {
   vec4 h = vtkShadowImpostorClipToWorld * vec4(ndc, z, 1.0);
   return h.xyz / h.w;
+}
+
+// The ray of the map texel the fragment covers, from the near plane (the
+// casters' viewport is the whole layer, of vtkShadowImpostorScale.z texels;
+// a point's square may lie off its centre's image: vtkShadowDrawPartInView).
+void vtkShadowImpostorTexelRay(out vec3 origin, out vec3 direction)
+{
+  vec2 ndc = 2.0 * gl_FragCoord.xy / vtkShadowImpostorScale.z - 1.0;
+  origin = vtkShadowImpostorRayPoint(ndc, -1.0);
+  direction = normalize(vtkShadowImpostorRayPoint(ndc, 0.0) - origin);
 }
 
 // The offset window depth of the point `offset` (world units) from the point

@@ -5,16 +5,12 @@
 flat in vec3 vtkShadowSpriteCentre;
 flat in float vtkShadowSpriteRadius;
 flat in vec4 vtkShadowSpriteClip;
-uniform vec4 vtkShadowImpostorScale;
 
 float vtkShadowSpriteDepth()
 {
-  // The texel's ray, from where it covers the map (the casters' viewport is
-  // the whole layer): the square may have been moved off the centre's image
-  // (vtkShadowDrawPartInView).
-  vec2 ndc = 2.0 * gl_FragCoord.xy / vtkShadowImpostorScale.z - 1.0;
-  vec3 origin = vtkShadowImpostorRayPoint(ndc, -1.0);
-  vec3 direction = normalize(vtkShadowImpostorRayPoint(ndc, 0.0) - origin);
+  vec3 origin;
+  vec3 direction;
+  vtkShadowImpostorTexelRay(origin, direction);
   vec3 fromCentre = origin - vtkShadowSpriteCentre;
   float along = dot(fromCentre, direction);
   float radius = vtkShadowSpriteRadius;

@@ -7,14 +7,12 @@
 flat in vec4 vtkShadowTubeStart;
 flat in vec4 vtkShadowTubeEnd;
 flat in vec4 vtkShadowTubeStartClip;
-uniform vec4 vtkShadowImpostorScale;
 
 float vtkShadowTubeDepth()
 {
-  // The casters' viewport is the whole map layer.
-  vec2 ndc = 2.0 * gl_FragCoord.xy / vtkShadowImpostorScale.z - 1.0;
-  vec3 origin = vtkShadowImpostorRayPoint(ndc, -1.0);
-  vec3 direction = normalize(vtkShadowImpostorRayPoint(ndc, 0.0) - origin);
+  vec3 origin;
+  vec3 direction;
+  vtkShadowImpostorTexelRay(origin, direction);
   vec3 axis = vtkShadowTubeEnd.xyz - vtkShadowTubeStart.xyz;
   float length_ = max(length(axis), 1e-30);
   axis /= length_;
