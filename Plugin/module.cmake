@@ -79,12 +79,17 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
+    Plugin/Passes/ShadowMapPassShaders.cxx
+    Plugin/Passes/ShadowMapProgramUniforms.cxx
+    Plugin/Passes/ShadowMapRendererMaps.cxx
     Plugin/Passes/ShadowMapRendererUse.cxx
+    Plugin/Passes/ShadowMapStorageChoice.cxx
     Plugin/Passes/ShadowMapUpdates.cxx
     Plugin/Scene/ShadowMapClosedSurfaces.cxx
     Plugin/Scene/ShadowMapCasterVersion.cxx
     Plugin/Scene/ShadowMapPropParts.cxx
     Plugin/Scene/ShadowMapPropRecords.cxx
+    Plugin/Scene/ShadowMapSceneReading.cxx
     ${shadowmaps_shader_sources}
   NOWRAP_HEADERS
     # What a downstream views or representation class needs: plain C++ and
@@ -116,12 +121,17 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapReceiverShader.h
     Plugin/Passes/ShadowMapCombination.h
     Plugin/Passes/ShadowMapLayerContent.h
+    Plugin/Passes/ShadowMapPassShaders.h
+    Plugin/Passes/ShadowMapProgramUniforms.h
+    Plugin/Passes/ShadowMapRendererMaps.h
     Plugin/Passes/ShadowMapRendererUse.h
+    Plugin/Passes/ShadowMapStorageChoice.h
     Plugin/Passes/ShadowMapUpdates.h
     Plugin/Scene/ShadowMapClosedSurfaces.h
     Plugin/Scene/ShadowMapCasterVersion.h
     Plugin/Scene/ShadowMapPropParts.h
     Plugin/Scene/ShadowMapPropRecords.h
+    Plugin/Scene/ShadowMapSceneReading.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)
   vtk_module_include(ShadowMaps::RenderingShadowMaps

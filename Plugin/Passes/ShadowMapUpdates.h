@@ -9,6 +9,7 @@
 
 #include "ShadowMapLayerContent.h"
 #include "ShadowMapLight.h"
+#include "ShadowMapSceneReading.h" // For Caster
 
 #include "vtkType.h"
 
@@ -18,15 +19,6 @@ class vtkProp;
 
 namespace shadowmaps
 {
-/// A prop that renders into the maps: its world bounds and the version of
-/// everything its depth depends on (CasterVersion).
-struct Caster
-{
-  vtkProp* Prop = nullptr;
-  Aabb Bounds;
-  vtkMTimeType Version = 0;
-};
-
 /// What, besides the frame, decides whether maps must be rendered again.
 struct MapInputs
 {

@@ -14,7 +14,12 @@
 #include "ShadowMapLinearDepthResolve.h"
 #include "ShadowMapPropParts.h"
 #include "ShadowMapReceiverShader.h"
+#include "ShadowMapPassShaders.h"
+#include "ShadowMapProgramUniforms.h"
+#include "ShadowMapRendererMaps.h"
 #include "ShadowMapRendererUse.h"
+#include "ShadowMapSceneReading.h"
+#include "ShadowMapStorageChoice.h"
 #include "ShadowMapStoreFromLightDepths.h"
 #include "ShadowMapTextureArray.h"
 #include "ShadowMapUpdates.h"
@@ -77,15 +82,10 @@ using shadowmaps::LightKind;
 using shadowmaps::LightView;
 using shadowmaps::ShadowLight;
 
+using shadowmaps::IsEnabled;
+
 namespace
 {
-
-// An absent key means yes.
-bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
-{
-  return !info || !info->Has(key) || info->Get(key) != 0;
-}
-
 bool HasRenderPass(vtkInformation* info, vtkObjectBase* pass)
 {
   vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
@@ -99,21 +99,6 @@ bool HasRenderPass(vtkInformation* info, vtkObjectBase* pass)
   return false;
 }
 
-// Views out of view hold no shadows, whatever their precision. Depth maps that
-// are 32-bit go to 16 bits only with twice the margin, so that a camera hovering
-// at the threshold does not reallocate the maps, and move the shadows' contacts
-// by the bias of the other format, every frame. Maps not allocated (new, or
-// released after a GL failure) and value maps take the 16-bit rule.
-bool SixteenBitDepthSuffices(const std::vector<ShadowLight>& lights, bool thirtyTwoBitNow)
-{
-  const double stepsPerTexel = thirtyTwoBitNow ? 32.0 : 16.0;
-  return std::all_of(lights.begin(), lights.end(), [&](const ShadowLight& light) {
-    return std::all_of(light.Views.begin(), light.Views.end(), [&](const LightView& view) {
-      return view.OutOfView || shadowmaps::SixteenBitDepthSuffices(view, stepsPerTexel);
-    });
-  });
-}
-
 // The most samples GL offers per texel of a multisample buffer.
 int MaximumSamples()
 {
@@ -122,57 +107,11 @@ int MaximumSamples()
   return std::max(1, static_cast<int>(samples));
 }
 
-// Window coordinates (pixels of a resolution^2 map, window depth) to world.
-glm::dmat4 WindowToWorld(const LightView& view, int resolution)
-{
-  const double half = 0.5 * resolution;
-  glm::dmat4 viewport(1.0);
-  viewport[0][0] = viewport[1][1] = half;
-  viewport[3][0] = viewport[3][1] = half;
-  viewport[2][2] = 0.5;
-  viewport[3][2] = 0.5;
-  return glm::inverse(viewport * view.ViewProjection());
-}
-
-bool AnyLinearDepthView(const std::vector<ShadowLight>& lights)
-{
-  return std::any_of(lights.begin(), lights.end(), [](const ShadowLight& light) {
-    return std::any_of(light.Views.begin(), light.Views.end(),
-      [](const LightView& view) { return view.LinearDepth; });
-  });
-}
-
 bool IsNonFinite(const LightView& view)
 {
   return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
 }
-
 } // namespace
-
-// One renderer's (one eye's) maps, what renders them, their receivers'
-// uniforms, and what the maps were last rendered for.
-struct RendererMaps
-{
-  shadowmaps::TextureArray Maps;
-  shadowmaps::MapStorage Storage;
-  shadowmaps::ReceiverUniforms Uniforms;
-  shadowmaps::LinearDepthResolve LinearDepths;
-  // Light depths of value maps, while the processes' maps are combined.
-  shadowmaps::StoreFromLightDepths LightDepths;
-  shadowmaps::MapUpdates Updates;
-  // The props' bounds and versions, read again only when they change.
-  shadowmaps::PropRecords Props;
-  int Layers = 0;
-
-  void ReleaseGraphicsResources(vtkWindow* window)
-  {
-    this->Maps.Release();
-    this->LinearDepths.ReleaseGraphicsResources(window);
-    this->LightDepths.ReleaseGraphicsResources(window);
-    this->Updates.Invalidate();
-    this->Layers = 0;
-  }
-};
 
 struct vtkAbstractShadowMapPass::Internals
 {
@@ -187,9 +126,7 @@ struct vtkAbstractShadowMapPass::Internals
   std::vector<shadowmaps::ShadowLight> Lights;
   std::vector<Caster> Casters;
 
-  // The maps and what renders them.
-  shadowmaps::TextureArray Maps;
-  shadowmaps::MapStorage Storage;
+  // What renders the maps.
   vtkNew<vtkOpaquePass> OpaquePass;
   vtkNew<vtkCamera> LightCamera;
   vtkNew<vtkMatrix4x4> LightProjection;
@@ -225,28 +162,19 @@ struct vtkAbstractShadowMapPass::Internals
   bool WarnedUncombined = false;
   bool WarnedUngatheredBounds = false;
 
-  // The maps of each renderer (and eye) that draws through the pass, and what
-  // they were rendered for; Current is the one of the frame being rendered.
-  std::map<std::pair<vtkRenderer*, int>, std::unique_ptr<RendererMaps>> PerRenderer;
-  RendererMaps* Current = nullptr;
+  // The maps of each renderer (and eye) that draws through the pass; Maps()
+  // are the ones of the frame being rendered.
+  shadowmaps::MapsByRenderer Renderers;
+  shadowmaps::RendererMaps& Maps() { return *this->Renderers.Current(); }
   // The maps whose lights, layers and storage the shader code was made for.
-  RendererMaps* CodeFor = nullptr;
+  const shadowmaps::RendererMaps* CodeFor = nullptr;
 
-  // The receivers' shader code, the same for every renderer's maps.
-  shadowmaps::ReceiverCode Code;
-  // The casters' branch of the same shaders and its uniforms.
-  shadowmaps::CasterCode CasterCode;
-  shadowmaps::CasterUniforms CasterUniforms;
-  shadowmaps::ProgramStamps CasterPrograms;
-  // Programs the casters drew with since the scene last did.
-  std::unordered_set<vtkShaderProgram*> CastSinceSceneDraw;
-  // The maps each program last shaded with: programs are shared by renderers.
-  std::unordered_map<vtkShaderProgram*, RendererMaps*> ProgramsLastDrawnFor;
-  // The shaders depend on these; GetShaderStageMTime() follows them.
-  std::string ShaderKey;
+  // The shadow code in the mappers' shaders, the same for every renderer's
+  // maps, and what the pass sets on their programs.
+  shadowmaps::PassShaders Shaders;
+  shadowmaps::ProgramUniforms Programs;
   // Whether each prop received shadows when it last drew through the pass.
   std::unordered_map<vtkProp*, std::pair<vtkWeakPointer<vtkProp>, bool>> Receives;
-  vtkTimeStamp ShaderKeyTime;
   int MapUnit = -1;
   // Depth peeling's first-pass depths, while casting.
   int PeelUnit = -1;
@@ -287,7 +215,6 @@ vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
   this->Internal->DefaultRepresentation = defaultRepresentation;
   this->Internal->Views = defaultViews;
   this->Internal->Representation = defaultRepresentation;
-  this->Internal->ShaderKeyTime.Modified();
   this->Internal->Use = std::make_unique<shadowmaps::RendererUse>(
     [this](vtkRenderer* renderer) { this->ReleaseMapsOf(renderer); });
 }
@@ -404,12 +331,7 @@ vtkMTimeType vtkAbstractShadowMapPass::GetMTime()
 //------------------------------------------------------------------------------
 size_t vtkAbstractShadowMapPass::GetShadowMapMemory() const
 {
-  size_t bytes = 0;
-  for (const auto& maps : this->Internal->PerRenderer)
-  {
-    bytes += maps.second->Maps.GetMemoryBytes();
-  }
-  return bytes;
+  return this->Internal->Renderers.MemoryBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -489,27 +411,14 @@ void vtkAbstractShadowMapPass::UseContextOf(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::SelectRendererMaps(vtkOpenGLRenderer* renderer)
 {
-  // Each renderer, and each eye of a stereo camera, keeps maps of its own:
-  // views sharing one set would fit and render it anew for each other.
-  Internals& r = *this->Internal;
-  const int eye =
-    renderer->GetRenderWindow()->GetStereoRender() && !renderer->GetActiveCamera()->GetLeftEye()
-    ? 1
-    : 0;
-  std::unique_ptr<RendererMaps>& maps = r.PerRenderer[{ renderer, eye }];
-  if (!maps)
-  {
-    maps = std::make_unique<RendererMaps>();
-  }
-  r.Current = maps.get();
+  this->Internal->Renderers.Select(renderer);
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  const auto held = [renderer](const auto& maps) { return maps.first.first == renderer; };
-  if (!r.Context || std::none_of(r.PerRenderer.begin(), r.PerRenderer.end(), held))
+  if (!r.Context || !r.Renderers.Holds(renderer))
   {
     return; // released with the context it was moved from, or never drawn
   }
@@ -521,23 +430,11 @@ void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
   {
     window->PushContext();
   }
-  for (auto it = r.PerRenderer.begin(); it != r.PerRenderer.end();)
-  {
-    if (!held(*it))
-    {
-      ++it;
-      continue;
-    }
-    it->second->ReleaseGraphicsResources(window);
-    r.Current = r.Current == it->second.get() ? nullptr : r.Current;
-    r.CodeFor = r.CodeFor == it->second.get() ? nullptr : r.CodeFor;
-    for (auto& program : r.ProgramsLastDrawnFor)
-    {
-      program.second = program.second == it->second.get() ? nullptr : program.second;
-    }
-    it = r.PerRenderer.erase(it);
-  }
-  if (r.PerRenderer.empty())
+  r.Renderers.Release(renderer, window, [&r](const shadowmaps::RendererMaps* maps) {
+    r.CodeFor = r.CodeFor == maps ? nullptr : r.CodeFor;
+    r.Programs.Forget(maps);
+  });
+  if (r.Renderers.Empty())
   {
     // No renderer draws through the pass any more: it holds nothing.
     this->ReleaseGraphicsResources(window);
@@ -627,41 +524,9 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::CollectLights(vtkOpenGLRenderer* renderer)
 {
-  auto& lights = this->Internal->Lights;
-  lights.clear();
-  int shaderIndex = 0;
-  vtkCollectionSimpleIterator it;
-  vtkLightCollection* collection = renderer->GetLights();
-  collection->InitTraversal(it);
   int skipped = 0;
-  while (vtkLight* light = collection->GetNextLight(it))
-  {
-    if (!light->GetSwitch())
-    {
-      continue; // switched-off lights get no index in the mappers' shaders
-    }
-    const int index = shaderIndex++;
-    if (light->LightTypeIsHeadlight() || !IsEnabled(light->GetInformation(), CASTS_SHADOWS()))
-    {
-      continue;
-    }
-    if (static_cast<int>(lights.size()) == VTK_MAX_SHADOWED_LIGHTS)
-    {
-      ++skipped;
-      continue;
-    }
-    ShadowLight shadowLight;
-    shadowLight.Light = light;
-    shadowLight.ShaderIndex = index;
-    shadowLight.Position = ToGlm(light->GetTransformedPosition());
-    shadowLight.Direction = ToGlm(light->GetTransformedFocalPoint()) - shadowLight.Position;
-    shadowLight.ConeAngle = light->GetConeAngle();
-    shadowLight.Attenuation = std::min(std::max(light->GetShadowAttenuation(), 0.0f), 1.0f);
-    shadowLight.Kind = !light->GetPositional() ? LightKind::Directional
-      : shadowLight.ConeAngle < 90.0           ? LightKind::Spot
-                                               : LightKind::Point;
-    lights.push_back(shadowLight);
-  }
+  this->Internal->Lights =
+    shadowmaps::CollectShadowedLights(renderer, CASTS_SHADOWS(), VTK_MAX_SHADOWED_LIGHTS, skipped);
   if (skipped > 0 && !this->Internal->WarnedTooManyLights)
   {
     vtkWarningMacro(<< skipped << " light(s) beyond the first " << VTK_MAX_SHADOWED_LIGHTS
@@ -671,68 +536,15 @@ void vtkAbstractShadowMapPass::CollectLights(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-shadowmaps::ImpostorSizing vtkAbstractShadowMapPass::ReadSceneCamera(vtkOpenGLRenderer* renderer)
-{
-  Internals& r = *this->Internal;
-  shadowmaps::ShadowFrame& frame = r.Frame;
-  vtkCamera* camera = renderer->GetActiveCamera();
-  frame.CameraView = ToGlm(camera->GetViewTransformMatrix());
-  const glm::dmat4 drawn =
-    ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
-  glm::dvec4 tileViewport;
-  renderer->GetRenderWindow()->GetTileViewport(glm::value_ptr(tileViewport));
-  frame.CameraProjection = shadowmaps::WholeImageProjection(drawn,
-    shadowmaps::TileOfWholeImage(tileViewport, glm::make_vec4(renderer->GetViewport())));
-  r.CasterUniforms.Impostors().SetDrawnRadius(
-    static_cast<float>(drawn[0][0] / frame.CameraProjection[0][0]));
-  // vtkViewport::GetSize is the whole image's, in a tile of a larger one. A
-  // parallel camera's impostors do not grow with the eye depth.
-  const glm::dvec4 eyeDepth =
-    camera->GetParallelProjection() ? glm::dvec4(0.0) : glm::row(frame.CameraView, 2);
-  return { static_cast<double>(renderer->GetSize()[0]), frame.CameraProjection[0][0], eyeDepth.x,
-    eyeDepth.y, eyeDepth.z, eyeDepth.w, static_cast<double>(camera->GetParallelProjection()) };
-}
-
-//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   shadowmaps::ShadowFrame& frame = r.Frame;
-  const shadowmaps::ImpostorSizing sizing = this->ReadSceneCamera(renderer);
-  r.Casters.clear();
-  frame.PropBounds.clear();
-  frame.SceneBounds = Aabb();
-  shadowmaps::PropRecords& records = r.Current->Props;
-  records.BeginFrame(renderer, sizing);
-  vtkCollectionSimpleIterator it;
-  vtkPropCollection* props = renderer->GetViewProps();
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (!prop->GetVisibility())
-    {
-      continue;
-    }
-    if (!prop->GetPropertyKeys())
-    {
-      // Render passes create the keys on first use, which modifies the prop;
-      // create them now so that this first use does not re-render the maps.
-      vtkNew<vtkInformation> keys;
-      prop->SetPropertyKeys(keys);
-    }
-    const shadowmaps::PropRecords::Record& record = records.Read(prop);
-    if (!record.Bounds.IsUsable())
-    {
-      continue;
-    }
-    frame.SceneBounds.Add(record.Bounds);
-    frame.PropBounds.push_back(record.Bounds);
-    if (record.DrawsIntoDepthMaps && IsEnabled(prop->GetPropertyKeys(), CASTS_SHADOWS()))
-    {
-      r.Casters.push_back({ prop, record.CastingBounds, record.Version });
-    }
-  }
-  records.EndFrame();
+  const shadowmaps::SceneCamera camera = shadowmaps::ReadSceneCamera(renderer, frame);
+  r.SceneCameraParallel = camera.Parallel;
+  r.Programs.SetDrawnRadius(camera.DrawnRadius);
+  shadowmaps::CollectProps(
+    renderer, camera.Sizing, CASTS_SHADOWS(), r.Maps().Props, frame, r.Casters);
 
   const Aabb given = Aabb::FromBounds(this->SceneBounds);
   if (this->UseSceneBounds && given.IsUsable())
@@ -793,19 +605,18 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     r.Frame.Interactive = !this->Exchange->AnyOf(!r.Frame.Interactive);
   }
   std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
-  const bool stale = !r.Current->Updates.Current(signature);
+  const bool stale = !r.Maps().Updates.Current(signature);
   // Every process asks every frame: another one's casters may have moved.
   if (!(this->Exchange ? this->Exchange->AnyOf(stale) : stale))
   {
     // CollectLights rebuilt the lights without views; the maps hold these.
-    r.Lights = r.Current->Updates.GetRenderedLights();
-    this->NumberOfShadowMapLayers = r.Current->Layers;
-    if (r.CodeFor != r.Current)
+    r.Lights = r.Maps().Updates.GetRenderedLights();
+    this->NumberOfShadowMapLayers = r.Maps().Layers;
+    if (r.CodeFor != &r.Maps())
     {
       // The shaders follow the lights, layers and storage of the renderer
       // they draw for: another renderer's may differ.
-      this->ChooseReceiverCode();
-      this->UpdateShaderKey(renderer);
+      this->UpdateShaders(renderer);
     }
     return true;
   }
@@ -819,7 +630,7 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   this->ChooseStorage();
-  this->UpdateShaderKey(renderer);
+  this->UpdateShaders(renderer);
   if (!r.ShaderCodeCompiles)
   {
     this->CombineAcrossProcesses(window, false);
@@ -828,8 +639,8 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   std::string error;
-  if (!r.Current->Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Current->Storage.Format,
-        r.Current->Storage.Mipmaps, error))
+  if (!r.Maps().Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Maps().Storage.Format,
+        r.Maps().Storage.Mipmaps, error))
   {
     this->CombineAcrossProcesses(window, false);
     this->ReportGLFailure(error);
@@ -840,35 +651,21 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     this->ReportGLFailure(r.LastGLError);
     return false;
   }
-  if (!this->NeedsSecondOutput())
+  if (!shadowmaps::NeedsSecondOutput(r.Maps().Storage, this->MapCombination(), r.Lights))
   {
-    r.Current->Maps.ReleaseSecondOutput();
+    r.Maps().Maps.ReleaseSecondOutput();
   }
-  if (r.Current->Storage.Samples <= 1)
+  if (r.Maps().Storage.Samples <= 1)
   {
-    r.Current->Maps.ReleaseSamples();
+    r.Maps().Maps.ReleaseSamples();
   }
-  r.Current->Uniforms.Pack(r.Lights, r.Frame.CameraView);
-  r.Current->Updates.Finish(
+  r.Maps().Uniforms.Pack(r.Lights, r.Frame.CameraView);
+  r.Maps().Updates.Finish(
     r.Lights, std::move(signature), this->GetMTime(), r.Frame.Resolution, r.Frame.SceneBounds);
-  r.Current->Layers = this->NumberOfShadowMapLayers;
+  r.Maps().Layers = this->NumberOfShadowMapLayers;
   r.WarnedGLError.clear();
   ++this->NumberOfShadowMapUpdates;
   return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::NeedsSecondOutput() const
-{
-  // Peeled two-surface maps, value maps whose light depths are combined, and
-  // linear-depth views of depth maps.
-  const Internals& r = *this->Internal;
-  if (r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling ||
-    this->MapCombination() == shadowmaps::Combination::NearestLightDepths)
-  {
-    return true;
-  }
-  return shadowmaps::IsDepth(r.Current->Storage.Format) && AnyLinearDepthView(r.Lights);
 }
 
 //------------------------------------------------------------------------------
@@ -893,7 +690,7 @@ bool vtkAbstractShadowMapPass::FitViews()
   Internals& r = *this->Internal;
   for (ShadowLight& light : r.Lights)
   {
-    light.LastViews = r.Current->Updates.KeptViews(
+    light.LastViews = r.Maps().Updates.KeptViews(
       light, this->GetMTime(), r.Frame.Resolution, r.Frame.SceneBounds);
     r.Views->FitLight(r.Frame, light);
     light.LastViews.clear();
@@ -922,168 +719,53 @@ void vtkAbstractShadowMapPass::AssignLayers()
 void vtkAbstractShadowMapPass::ChooseStorage()
 {
   Internals& r = *this->Internal;
-  r.Representation->GetMapStorage(r.Current->Storage);
-  this->ChooseSecondDepthMethod();
-  const bool thirtyTwoBitNow =
-    r.Current->Maps.GetResolution() != 0 && r.Current->Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
-  if (r.Current->Storage.Format == shadowmaps::TexelFormat::Depth &&
-    SixteenBitDepthSuffices(r.Lights, thirtyTwoBitNow))
-  {
-    r.Current->Storage.Format = shadowmaps::TexelFormat::Depth16;
-  }
-  // Depth maps store the views' own depths; two-surface maps compare them.
-  const bool oneValueMap = !shadowmaps::IsDepth(r.Current->Storage.Format) &&
-    r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::None;
-  r.Current->Storage.LightDepth = r.Current->Storage.LightDepth && oneValueMap;
-  // Combined light-depth maps are rebuilt from each texel's nearest light
-  // depth, not its samples.
-  const bool combinesLightDepths = this->Exchange && r.Current->Storage.LightDepth;
-  r.Current->Storage.Samples = oneValueMap && !r.Current->Storage.MinimumBlending && !combinesLightDepths
-    ? std::max(1, std::min(r.Current->Storage.Samples, MaximumSamples()))
-    : 1;
-  this->ChooseReceiverCode();
+  shadowmaps::RendererMaps& maps = r.Maps();
+  r.Representation->GetMapStorage(maps.Storage);
+  shadowmaps::StorageLimits limits;
+  limits.CombinesAcrossProcesses = this->Exchange != nullptr;
+  limits.ThirtyTwoBitDepthNow =
+    maps.Maps.GetResolution() != 0 && maps.Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
+  limits.MaximumSamples = MaximumSamples();
+  shadowmaps::CompleteStorage(maps.Storage, r.Lights, r.Casters, r.ClosedCasters, limits);
+  this->NumberOfCasterPassesPerLayer = shadowmaps::CasterPassesPerLayer(maps.Storage);
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ChooseReceiverCode()
-{
-  Internals& r = *this->Internal;
-  r.Code.Definitions = std::string(r.Current->Storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
-    r.Representation->GetReceiverDefinitions();
-  r.Code.Lookup = r.Representation->GetReceiverLookupCode();
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ChooseSecondDepthMethod()
-{
-  using shadowmaps::SecondDepthMethod;
-  Internals& r = *this->Internal;
-  shadowmaps::MapStorage& storage = r.Current->Storage;
-  if (storage.Format != shadowmaps::TexelFormat::TwoFloats)
-  {
-    storage.SecondDepth = SecondDepthMethod::None;
-  }
-  if (storage.SecondDepth == SecondDepthMethod::Auto)
-  {
-    std::vector<std::pair<vtkProp*, vtkMTimeType>> casters;
-    for (const Caster& caster : r.Casters)
-    {
-      casters.emplace_back(caster.Prop, caster.Version);
-    }
-    // Processes that combine their maps must make them the same way, and
-    // peeling is right whatever each one's casters are.
-    storage.SecondDepth = !this->Exchange && r.ClosedCasters.AllClosed(casters)
-      ? SecondDepthMethod::FrontAndBackFaces
-      : SecondDepthMethod::Peeling;
-  }
-  if (storage.SecondDepth != SecondDepthMethod::None)
-  {
-    storage.MinimumBlending = storage.SecondDepth == SecondDepthMethod::FrontAndBackFaces;
-    storage.ClearValues[0] = storage.ClearValues[1] = 1.0f;
-  }
-  this->NumberOfCasterPassesPerLayer = storage.SecondDepth == SecondDepthMethod::Peeling ? 2 : 1;
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::UpdateShaderKey(vtkOpenGLRenderer* renderer)
+void vtkAbstractShadowMapPass::UpdateShaders(vtkOpenGLRenderer* renderer)
 {
   // Before the casters draw: they build the shaders the scene then uses.
   Internals& r = *this->Internal;
+  shadowmaps::ShaderChoices choices;
+  choices.CasterFaces = this->CasterFaces;
   // Analysis settings are pass parameters: a change re-renders the maps.
   const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
-  shadowmaps::AddAnalysisReceiverCode(
-    recolours ? this->AnalysisView : 0, this->AnalysisLight, r.Lights, r.Code);
-  r.Code.Rehash();
-  r.CasterCode.SecondDepth = r.Current->Storage.SecondDepth;
-  // Two surfaces' depths need both faces of the casters.
-  r.CasterCode.Faces =
-    r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::None ? this->CasterFaces : BOTH_FACES;
-  const bool values = !shadowmaps::IsDepth(r.Current->Storage.Format);
-  r.CasterCode.StoreCode = values ? r.Current->Storage.StoreCode : std::string();
-  r.CasterCode.KeepsLightDepth =
+  choices.AnalysisView = recolours ? this->AnalysisView : 0;
+  choices.AnalysisLight = this->AnalysisLight;
+  choices.KeepsLightDepths =
     this->MapCombination() == shadowmaps::Combination::NearestLightDepths;
-  r.CasterCode.StoreFunctions = values ? r.Current->Storage.StoreFunctions : std::string();
-  r.CasterCode.LightDepth = values && r.Current->Storage.LightDepth;
-  r.CasterCode.LinearDepth = AnyLinearDepthView(r.Lights);
-  std::string key = shadowmaps::ReceiverShader::Key(r.Lights, this->NumberOfShadowMapLayers, r.Code) +
-    '|' + r.CasterCode.Key();
-  r.CodeFor = r.Current;
-  if (key != r.ShaderKey)
+  r.CodeFor = &r.Maps();
+  if (r.Shaders.Update(r.Maps().Storage, r.Representation, r.Lights,
+        this->NumberOfShadowMapLayers, choices))
   {
-    r.ShaderKey = std::move(key);
-    r.ShaderKeyTime.Modified();
-    r.ShaderCodeCompiles = this->ShaderCodeCompiles(renderer);
+    auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+    r.ShaderCodeCompiles = r.Shaders.Compiles(window, r.Lights, this->NumberOfShadowMapLayers);
   }
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::ShaderCodeCompiles(vtkOpenGLRenderer* renderer)
-{
-  shadowmaps::ProbeShaders probe = shadowmaps::MakeProbeShaders(this->Internal->Lights);
-  std::string geometryShader;
-  this->PreReplaceShaderValues(probe.Vertex, geometryShader, probe.Fragment, nullptr, nullptr);
-  this->InjectShadowCode(probe.Vertex, geometryShader, probe.Fragment, true);
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  return window->GetShaderCache()->ReadyShaderProgram(
-           probe.Vertex.c_str(), probe.Fragment.c_str(), "") != nullptr;
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, const LightView& view)
 {
-  // 32-bit depth (linear-depth views are never 16-bit): one polygon-offset unit
-  // is 2^-24 for depths in [0.5, 1).
-  constexpr float DepthUnit = 1.0f / 16777216.0f;
   Internals& r = *this->Internal;
-  const std::array<float, 3> windowToInverseW = shadowmaps::WindowToInverseW(view, r.Frame.Resolution);
-  const shadowmaps::DepthOffset offset = this->GetRepresentation()->GetCasterDepthOffset();
-  const auto slope = static_cast<float>(offset.SlopeScaled);
-  const auto constant = static_cast<float>(offset.Constant);
-  if (view.LinearDepth)
-  {
-    // A directional light's linear depth spans its casters and B: its
-    // slope-scaled term is capped at what a 45 degree surface needs in a
-    // uniform map as deep as it is wide (SlopeScaledBias texels' worth, 2 /
-    // resolution at the default). A spot's stored depth is its post-perspective
-    // depth, crowded toward 1: no such cap.
-    const float cap = light.Kind == LightKind::Directional
-      ? slope / static_cast<float>(std::max(r.Frame.Resolution, 1))
-      : std::numeric_limits<float>::max();
-    glPolygonOffset(0.0f, 0.0f);
-    r.CasterUniforms.SetView(windowToInverseW, { { slope, constant * DepthUnit, cap } }, !view.Perspective);
-    r.CasterUniforms.Impostors().SetDepthOffset(glm::vec2(0.0f));
-  }
-  else
-  {
-    glPolygonOffset(slope, constant);
-    r.CasterUniforms.SetView(windowToInverseW, { { 0.0f, 0.0f, 0.0f } }, !view.Perspective);
-    const float unit = r.Current->Storage.Format == shadowmaps::TexelFormat::Depth16
-      ? 1.0f / 65535.0f
-      : DepthUnit;
-    r.CasterUniforms.Impostors().SetDepthOffset(glm::vec2(slope, constant * unit));
-  }
-  if (r.CasterCode.LightDepth)
-  {
-    // Positions relative to the depth's origin, composed in double: no large
-    // world coordinate is formed in float.
-    const shadowmaps::LightDepth& depth = light.Depth;
-    const glm::dmat4 windowToLight =
-      glm::translate(glm::dmat4(1.0), -depth.Origin) * WindowToWorld(view, r.Frame.Resolution);
-    r.CasterUniforms.SetLightDepth(
-      glm::mat4(windowToLight), glm::vec4(depth.Plane), static_cast<float>(depth.PerDistance));
-  }
-  // Impostors (points as spheres, wide lines): their sizes follow the scene camera.
-  const glm::dmat4 lightCameraProjection = shadowmaps::CameraProjectionOf(view);
-  const glm::dvec4 toLight = light.Kind == LightKind::Directional
-    ? glm::dvec4(-glm::normalize(light.Direction), 0.0)
-    : glm::dvec4(light.Position, 1.0);
-  r.CasterUniforms.Impostors().Set(view.ViewProjection(), glm::vec4(toLight),
-    glm::vec4(-glm::row(r.Frame.CameraView, 2)),
-    glm::vec4(static_cast<float>(lightCameraProjection[0][0] / r.Frame.CameraProjection[0][0]),
-      r.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(r.Frame.Resolution),
-      this->LargestPointSize()));
-  // Every program takes the view's uniforms on its first draw into it.
-  r.CasterPrograms.Invalidate();
+  const shadowmaps::DepthOffset offset = r.Representation->GetCasterDepthOffset();
+  shadowmaps::CastingSettings settings;
+  settings.Resolution = r.Frame.Resolution;
+  settings.Depth16 = r.Maps().Storage.Format == shadowmaps::TexelFormat::Depth16;
+  settings.LightDepth = r.Shaders.GetCasterCode().LightDepth;
+  settings.SlopeScaledOffset = offset.SlopeScaled;
+  settings.ConstantOffset = offset.Constant;
+  settings.LargestPointSize = this->LargestPointSize();
+  settings.SceneCameraParallel = r.SceneCameraParallel;
+  r.Programs.SetCastingView(light, view, r.Frame, settings);
 }
 
 //------------------------------------------------------------------------------
@@ -1142,23 +824,22 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   // among them), the storage, and how a second depth is made (AUTO may change
   // it when some other layer's casters change). Layers that hold every
   // process's casters combined are all rendered and combined again.
-  r.Current->Updates.BeginUpdate({ this->GetMTime(), r.Current->Maps.GetAllocations(),
+  r.Maps().Updates.BeginUpdate({ this->GetMTime(), r.Maps().Maps.GetAllocations(),
                                    static_cast<vtkMTimeType>(r.Frame.Resolution),
-                                   static_cast<vtkMTimeType>(r.Current->Storage.SecondDepth) },
+                                   static_cast<vtkMTimeType>(r.Maps().Storage.SecondDepth) },
     this->NumberOfShadowMapLayers, combination != shadowmaps::Combination::None, r.Casters);
   const bool keepsLightDepths = combination == shadowmaps::Combination::NearestLightDepths;
   if (keepsLightDepths)
   {
-    r.Current->LightDepths.Reset(r.Current->Maps, this->NumberOfShadowMapLayers);
+    r.Maps().LightDepths.Reset(r.Maps().Maps, this->NumberOfShadowMapLayers);
   }
   int draws = 0;
   std::vector<shadowmaps::RenderedLayer> rendered;
   bool ok = true;
   {
     shadowmaps::CasterGLState casterState(state,
-      !shadowmaps::IsDepth(r.Current->Storage.Format) && r.Current->Storage.MinimumBlending);
+      !shadowmaps::IsDepth(r.Maps().Storage.Format) && r.Maps().Storage.MinimumBlending);
     vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
-    r.SceneCameraParallel = userCamera->GetParallelProjection() != 0;
     renderer->SetActiveCamera(r.LightCamera);
     this->ReserveTextureUnits(renderer);
     r.Casting = true;
@@ -1175,7 +856,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     // every layer is combined anew each frame, or where coarse mip levels would
     // average the extra casters into what receivers see.
     const bool drawsAllInView = this->GetViews()->MayKeepViews(r.Frame) &&
-      combination == shadowmaps::Combination::None && !r.Current->Storage.Mipmaps;
+      combination == shadowmaps::Combination::None && !r.Maps().Storage.Mipmaps;
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
@@ -1190,31 +871,31 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         request.PostProcessingFollowsFilterScale =
           r.Representation->GetPostProcessingFollowsFilterScale();
         request.DrawsAllInView = drawsAllInView;
-        shadowmaps::LayerPlan plan = r.Current->Updates.Plan(r.Frame, r.Casters, request);
+        shadowmaps::LayerPlan plan = r.Maps().Updates.Plan(r.Frame, r.Casters, request);
         if (!plan.Render)
         {
           continue;
         }
         const bool linearDepths =
-          light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Current->Storage.Format);
-        const bool peeling = r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
-        const bool multisampled = r.Current->Storage.Samples > 1;
+          light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Maps().Storage.Format);
+        const bool peeling = r.Maps().Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
+        const bool multisampled = r.Maps().Storage.Samples > 1;
         ok = multisampled
-          ? r.Current->Maps.BindSamples(state, r.Current->Storage.Samples, r.LastGLError)
-          : r.Current->Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling || keepsLightDepths);
+          ? r.Maps().Maps.BindSamples(state, r.Maps().Storage.Samples, r.LastGLError)
+          : r.Maps().Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling || keepsLightDepths);
         if (ok)
         {
           this->ApplyCasterUniforms(light, light.Views[v]);
           std::vector<vtkProp*>& props = plan.Casters;
           draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
-          ok = !multisampled || r.Current->Maps.ResolveSamples(state, layer, r.LastGLError);
-          ok = ok && (!linearDepths || r.Current->LinearDepths.Render(window, r.Current->Maps, layer, r.LastGLError));
-          ok = ok && (!keepsLightDepths || r.Current->LightDepths.Keep(state, r.Current->Maps, layer, r.LastGLError));
+          ok = !multisampled || r.Maps().Maps.ResolveSamples(state, layer, r.LastGLError);
+          ok = ok && (!linearDepths || r.Maps().LinearDepths.Render(window, r.Maps().Maps, layer, r.LastGLError));
+          ok = ok && (!keepsLightDepths || r.Maps().LightDepths.Keep(state, r.Maps().Maps, layer, r.LastGLError));
           if (ok && peeling && !props.empty())
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);
           }
-          r.Current->Updates.Rendered(layer, std::move(plan));
+          r.Maps().Updates.Rendered(layer, std::move(plan));
           rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
         }
       }
@@ -1231,7 +912,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   ok = this->CombineAcrossProcesses(window, ok);
   if (!ok)
   {
-    r.Current->Updates.Invalidate();
+    r.Maps().Updates.Invalidate();
     return false;
   }
   return rendered.empty() || this->PostProcessShadowMaps(renderer, rendered);
@@ -1240,7 +921,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 shadowmaps::Combination vtkAbstractShadowMapPass::MapCombination() const
 {
-  return this->Exchange ? shadowmaps::CombinationOf(this->Internal->Current->Storage)
+  return this->Exchange ? shadowmaps::CombinationOf(this->Internal->Maps().Storage)
                         : shadowmaps::Combination::None;
 }
 
@@ -1274,7 +955,7 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* win
     }
     return true;
   }
-  return shadowmaps::CombineTexels(this->Exchange, window, how, r.Current->Maps, r.Current->Storage, r.Current->LightDepths,
+  return shadowmaps::CombineTexels(this->Exchange, window, how, r.Maps().Maps, r.Maps().Storage, r.Maps().LightDepths,
     this->NumberOfShadowMapLayers, r.Frame.Resolution, r.LastGLError);
 }
 
@@ -1283,12 +964,12 @@ bool vtkAbstractShadowMapPass::PostProcessShadowMaps(
   vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered)
 {
   Internals& r = *this->Internal;
-  if (!r.Representation->PostProcessMaps(renderer, r.Current->Maps, rendered))
+  if (!r.Representation->PostProcessMaps(renderer, r.Maps().Maps, rendered))
   {
     r.LastGLError = "the shadow maps could not be post-processed";
     return false;
   }
-  r.Current->Maps.GenerateMipmaps();
+  r.Maps().Maps.GenerateMipmaps();
   return true;
 }
 
@@ -1300,9 +981,9 @@ void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer, bool line
   state->vtkglViewport(0, 0, r.Frame.Resolution, r.Frame.Resolution);
   state->vtkglClearDepth(1.0);
   GLbitfield buffers = GL_DEPTH_BUFFER_BIT;
-  if (!shadowmaps::IsDepth(r.Current->Storage.Format))
+  if (!shadowmaps::IsDepth(r.Maps().Storage.Format))
   {
-    const float* clear = r.Current->Storage.ClearValues;
+    const float* clear = r.Maps().Storage.ClearValues;
     state->vtkglClearColor(clear[0], clear[1], clear[2], clear[3]);
     buffers |= GL_COLOR_BUFFER_BIT;
   }
@@ -1343,7 +1024,7 @@ bool vtkAbstractShadowMapPass::PeelSecondSurface(
   // output; this one keeps, in y only, the nearest surface behind it.
   Internals& r = *this->Internal;
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
-  if (!r.Current->Maps.BindLayer(state, layer, r.LastGLError, false))
+  if (!r.Maps().Maps.BindLayer(state, layer, r.LastGLError, false))
   {
     return false;
   }
@@ -1356,12 +1037,10 @@ bool vtkAbstractShadowMapPass::PeelSecondSurface(
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   // Through the state cache: the casters' own textures find their units by it.
   state->vtkglActiveTexture(GL_TEXTURE0 + r.PeelUnit);
-  glBindTexture(GL_TEXTURE_2D, r.Current->Maps.GetSecondOutput());
-  r.CasterUniforms.SetPeeling(true, r.PeelUnit);
-  r.CasterPrograms.Invalidate();
+  glBindTexture(GL_TEXTURE_2D, r.Maps().Maps.GetSecondOutput());
+  r.Programs.SetPeeling(true, r.PeelUnit);
   draws += this->DrawCasters(renderer, casters);
-  r.CasterUniforms.SetPeeling(false, r.PeelUnit);
-  r.CasterPrograms.Invalidate();
+  r.Programs.SetPeeling(false, r.PeelUnit);
   state->vtkglActiveTexture(GL_TEXTURE0 + r.PeelUnit);
   glBindTexture(GL_TEXTURE_2D, 0);
   return true;
@@ -1426,10 +1105,10 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
   r.MapUnit = window->GetTextureUnitManager()->Allocate();
   window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.MapUnit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  if (r.Current->Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
+  if (r.Maps().Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
   {
     r.PeelUnit = window->GetTextureUnitManager()->Allocate();
-    r.CasterUniforms.SetPeeling(false, r.PeelUnit);
+    r.Programs.SetPeeling(false, r.PeelUnit);
   }
   r.Representation->ActivateReceiverResources(window);
   r.TextureUnitsReserved = true;
@@ -1441,9 +1120,9 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
   Internals& r = *this->Internal;
   this->ReserveTextureUnits(renderer);
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  r.Current->Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
-  r.Current->Maps.BindToUnit(window->GetState(), r.MapUnit);
-  r.Current->Uniforms.NewFrame();
+  r.Maps().Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
+  r.Maps().Maps.BindToUnit(window->GetState(), r.MapUnit);
+  r.Maps().Uniforms.NewFrame();
 }
 
 //------------------------------------------------------------------------------
@@ -1472,7 +1151,7 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
 {
   Internals& r = *this->Internal;
-  r.Current->ReleaseGraphicsResources(r.Context);
+  r.Maps().ReleaseGraphicsResources(r.Context);
   this->NumberOfShadowMapLayers = 0;
   if (error != r.WarnedGLError)
   {
@@ -1487,8 +1166,7 @@ bool vtkAbstractShadowMapPass::PreReplaceShaderValues(std::string&, std::string&
 {
   // Markers for PostReplaceShaderValues, which knows whether the mapper
   // generated per-light code to patch and how it shapes its fragments.
-  shadowmaps::CasterShader::MarkInjectionPoints(fragmentShader);
-  shadowmaps::ReceiverShader::MarkInjectionPoints(fragmentShader);
+  shadowmaps::PassShaders::MarkInjectionPoints(fragmentShader);
   return true;
 }
 
@@ -1501,28 +1179,11 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
   // Shaders first built by a caster draw are the ones the scene then uses.
   const bool receives =
     (r.Active || r.Casting) && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
-  const shadowmaps::CasterBranch branch =
-    this->InjectShadowCode(vertexShader, geometryShader, fragmentShader, receives);
+  int unpatched = 0;
+  const shadowmaps::CasterBranch branch = r.Shaders.Inject(vertexShader, geometryShader,
+    fragmentShader, r.Lights, this->NumberOfShadowMapLayers, receives, unpatched);
   ++(branch == shadowmaps::CasterBranch::DepthOnly ? this->NumberOfDepthOnlyCasterShaders
                                                    : this->NumberOfOwnFragmentCasterShaders);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-shadowmaps::CasterBranch vtkAbstractShadowMapPass::InjectShadowCode(std::string& vertexShader,
-  std::string& geometryShader, std::string& fragmentShader, bool receives)
-{
-  const Internals& r = *this->Internal;
-  const shadowmaps::Impostors sized =
-    shadowmaps::ImpostorShader::Size(vertexShader, geometryShader, fragmentShader);
-  const shadowmaps::CasterBranch branch =
-    shadowmaps::CasterShader::Inject(fragmentShader, r.CasterCode, sized);
-  for (std::string* stage : { &vertexShader, &geometryShader, &fragmentShader })
-  {
-    shadowmaps::CasterShader::RouteCameraParallel(*stage);
-  }
-  const int unpatched = shadowmaps::ReceiverShader::Inject(fragmentShader, r.Lights,
-    this->NumberOfShadowMapLayers, r.Code, receives, branch == shadowmaps::CasterBranch::DepthOnly);
   if (unpatched > 0 && this->NumberOfUnpatchedReceiverLights == 0)
   {
     vtkWarningMacro(<< "This VTK's mapper lights " << unpatched
@@ -1530,7 +1191,7 @@ shadowmaps::CasterBranch vtkAbstractShadowMapPass::InjectShadowCode(std::string&
                        "they cast no shadow on that prop (reported once).");
   }
   this->NumberOfUnpatchedReceiverLights += unpatched;
-  return branch;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -1541,39 +1202,12 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   if (r.Casting)
   {
     r.CastingState->UseProgramPointSize(shadowmaps::ImpostorShader::IsSized(program));
-    if (r.CasterPrograms.FirstUse(program))
-    {
-      r.CastSinceSceneDraw.insert(program);
-      r.CasterUniforms.ApplyCasting(program);
-      if (shadowmaps::ReceiverUniforms::IsReceiver(program))
-      {
-        // Not sampled while casting, but a sampler must not share a unit with
-        // one of another type.
-        program->SetUniformi("vtkShadowMaps", r.MapUnit);
-        r.Representation->SetReceiverUniforms(program);
-      }
-    }
+    r.Programs.Casting(program, r.MapUnit, r.Representation);
   }
-  else if (r.Active && r.Current->Uniforms.FirstUseThisFrame(program))
+  else if (r.Active)
   {
-    r.CasterUniforms.ApplyReceiving(program);
-    RendererMaps*& lastDrawnFor = r.ProgramsLastDrawnFor[program];
-    const bool anotherView = lastDrawnFor != r.Current;
-    lastDrawnFor = r.Current;
-    if (r.CastSinceSceneDraw.erase(program) > 0 || anotherView)
-    {
-      // The renderer sets a program's lighting uniforms again only when the
-      // lights or the camera changed after it last did; the light cameras
-      // changed after the scene's camera, and the casters' draws of this
-      // program left the lights in their frames. Another renderer (or eye)
-      // sharing the program left them in its camera's frame.
-      program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
-    }
-    if (shadowmaps::ReceiverUniforms::IsReceiver(program))
-    {
-      r.Current->Uniforms.Apply(program, r.MapUnit, r.Frame.Resolution, this->NormalOffset);
-      r.Representation->SetReceiverUniforms(program);
-    }
+    r.Programs.Receiving(
+      program, r.Maps(), r.MapUnit, r.Frame.Resolution, this->NormalOffset, r.Representation);
   }
   return true;
 }
@@ -1581,7 +1215,7 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
 //------------------------------------------------------------------------------
 vtkMTimeType vtkAbstractShadowMapPass::GetShaderStageMTime()
 {
-  return this->Internal->ShaderKeyTime.GetMTime();
+  return this->Internal->Shaders.GetKeyTime();
 }
 
 //------------------------------------------------------------------------------
@@ -1593,9 +1227,9 @@ void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
     return;
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  const bool twoSurfaces = r.Current->Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
-  if (!r.MapView.Render(window, r.Current->Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces,
-        r.Current->Storage.WarpExponent))
+  const bool twoSurfaces = r.Maps().Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
+  if (!r.MapView.Render(window, r.Maps().Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces,
+        r.Maps().Storage.WarpExponent))
   {
     this->ReportGLFailure("the shadow-map view shader did not compile");
   }
@@ -1606,12 +1240,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   Internals& r = *this->Internal;
   r.HoldsGraphicsResources = false;
-  for (auto& maps : r.PerRenderer)
-  {
-    maps.second->ReleaseGraphicsResources(window);
-  }
-  r.PerRenderer.clear();
-  r.Current = nullptr;
+  r.Renderers.ReleaseAll(window);
   r.CodeFor = nullptr;
   r.MapView.ReleaseGraphicsResources(window);
   r.Representation->ReleaseGraphicsResources(window);
@@ -1619,10 +1248,8 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   {
     r.DefaultRepresentation->ReleaseGraphicsResources(window);
   }
-  r.CasterPrograms.Clear();
+  r.Programs.Clear();
   r.LargestPointSize = 0.0f;
-  r.CastSinceSceneDraw.clear();
-  r.ProgramsLastDrawnFor.clear();
   r.OpaquePass->ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   r.DepthPeeling->ReleaseGraphicsResources(window);

@@ -61,7 +61,6 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 
-#include <array>  // For ReadSceneCamera
 #include <memory> // For std::unique_ptr
 #include <string> // For ReportGLFailure
 #include <vector> // For MapSignature
@@ -78,7 +77,6 @@ class vtkShadowMapRepresentation;
 class vtkShadowMapViews;
 namespace shadowmaps
 {
-enum class CasterBranch;
 enum class Combination : int;
 struct LightView;
 struct RenderedLayer;
@@ -422,23 +420,17 @@ private:
   void GatherPropBounds();
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   int UsableResolution();
-  bool NeedsSecondOutput() const;
   bool FitViews();
   void DropLightsWithoutUsableViews();
-  // The scene camera's view and whole-image projection into the frame, and
-  // what the camera sizes impostors by (shadowmaps::ImpostorSizing).
-  std::array<double, 7> ReadSceneCamera(vtkOpenGLRenderer* renderer);
   // The largest point size the context draws, asked once per context.
   float LargestPointSize();
   void AssignLayers();
   void ChooseStorage();
-  void ChooseSecondDepthMethod();
-  /** The receivers' definitions and lookup code for the current maps' storage. */
-  void ChooseReceiverCode();
-  void UpdateShaderKey(vtkOpenGLRenderer* renderer);
-  bool ShaderCodeCompiles(vtkOpenGLRenderer* renderer);
-  shadowmaps::CasterBranch InjectShadowCode(std::string& vertexShader,
-    std::string& geometryShader, std::string& fragmentShader, bool receives);
+  /**
+   * The shadow code for the current maps' lights, layers and storage; a new
+   * key rebuilds the mappers' shaders, once the code is known to compile.
+   */
+  void UpdateShaders(vtkOpenGLRenderer* renderer);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
   /** How the current storage combines across processes; None without an exchange. */
   shadowmaps::Combination MapCombination() const;

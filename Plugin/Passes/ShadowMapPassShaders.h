@@ -1,0 +1,77 @@
+// The shadow code a pass puts into the mappers' shaders: the receivers' lookup
+// and the casters' branch for the current maps, the key on which the mappers
+// rebuild their shaders, and the injection itself. The receivers and casters
+// share one program per mapper primitive (vtkShadowMapsCasterFS.glsl), so the
+// key changes only with the lights' layouts, the layers and the storage, never
+// with the camera. Not a VTK class.
+#ifndef ShadowMapPassShaders_h
+#define ShadowMapPassShaders_h
+
+#include "ShadowMapCasterShader.h"   // For CasterCode, CasterBranch
+#include "ShadowMapReceiverShader.h" // For ReceiverCode
+
+#include "vtkTimeStamp.h"
+
+#include <string>
+#include <vector>
+
+class vtkOpenGLRenderWindow;
+class vtkShadowMapRepresentation;
+
+namespace shadowmaps
+{
+struct MapStorage;
+struct ShadowLight;
+
+/// What the code depends on besides the maps' storage and lights.
+struct ShaderChoices
+{
+  /// vtkAbstractShadowMapPass::CasterFacesType, for one-depth maps.
+  int CasterFaces = 2;
+  /// The analysis view that recolours receivers (0: none) and its light.
+  int AnalysisView = 0;
+  int AnalysisLight = 0;
+  /// The casters also write their light depth, for the processes' maps to be
+  /// combined by it (Combination::NearestLightDepths).
+  bool KeepsLightDepths = false;
+};
+
+class PassShaders
+{
+public:
+  /// Makes the code for maps of `storage`, read as `representation` says, of
+  /// `lights` in `layers` layers. True when the key changed: the mappers
+  /// then rebuild their shaders (GetKeyTime).
+  bool Update(const MapStorage& storage, vtkShadowMapRepresentation* representation,
+    const std::vector<ShadowLight>& lights, int layers, const ShaderChoices& choices);
+
+  /// When the key last changed (vtkOpenGLRenderPass::GetShaderStageMTime).
+  vtkMTimeType GetKeyTime() const { return this->KeyTime.GetMTime(); }
+
+  /// Puts the code into a mapper's shaders, which hold the injection points
+  /// (MarkInjectionPoints). Adds to `unpatched` the receiving lights the
+  /// mapper lit in code this module cannot patch. `receives` false: the
+  /// casters' branch only.
+  CasterBranch Inject(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, const std::vector<ShadowLight>& lights, int layers,
+    bool receives, int& unpatched) const;
+
+  /// Marks where Inject puts its code, before the mapper's own replacements.
+  static void MarkInjectionPoints(std::string& fragmentShader);
+
+  /// Whether the current code compiles in `window`, tried on a probe program:
+  /// VTK 9.1's mappers crash on a program that fails to build.
+  bool Compiles(vtkOpenGLRenderWindow* window, const std::vector<ShadowLight>& lights,
+    int layers) const;
+
+  const CasterCode& GetCasterCode() const { return this->Casters; }
+
+private:
+  ReceiverCode Receivers;
+  CasterCode Casters;
+  std::string Key;
+  vtkTimeStamp KeyTime;
+};
+} // namespace shadowmaps
+
+#endif

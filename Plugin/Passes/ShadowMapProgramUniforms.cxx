@@ -1,0 +1,165 @@
+#include "ShadowMapProgramUniforms.h"
+
+#include "ShadowMapCasting.h"
+#include "ShadowMapRendererMaps.h"
+
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapRepresentation.h"
+#include "ShadowMapVTKCompat.h"
+
+#include <glm/gtc/matrix_access.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace shadowmaps
+{
+namespace
+{
+// Window coordinates (pixels of a resolution^2 map, window depth) to world.
+glm::dmat4 WindowToWorld(const LightView& view, int resolution)
+{
+  const double half = 0.5 * resolution;
+  glm::dmat4 viewport(1.0);
+  viewport[0][0] = viewport[1][1] = half;
+  viewport[3][0] = viewport[3][1] = half;
+  viewport[2][2] = 0.5;
+  viewport[3][2] = 0.5;
+  return glm::inverse(viewport * view.ViewProjection());
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+void ProgramUniforms::SetCastingView(const ShadowLight& light, const LightView& view,
+  const ShadowFrame& frame, const CastingSettings& settings)
+{
+  // 32-bit depth (linear-depth views are never 16-bit): one polygon-offset unit
+  // is 2^-24 for depths in [0.5, 1).
+  constexpr float DepthUnit = 1.0f / 16777216.0f;
+  const std::array<float, 3> windowToInverseW = WindowToInverseW(view, settings.Resolution);
+  const auto slope = static_cast<float>(settings.SlopeScaledOffset);
+  const auto constant = static_cast<float>(settings.ConstantOffset);
+  if (view.LinearDepth)
+  {
+    // A directional light's linear depth spans its casters and B: its
+    // slope-scaled term is capped at what a 45 degree surface needs in a
+    // uniform map as deep as it is wide (SlopeScaledBias texels' worth, 2 /
+    // resolution at the default). A spot's stored depth is its post-perspective
+    // depth, crowded toward 1: no such cap.
+    const float cap = light.Kind == LightKind::Directional
+      ? slope / static_cast<float>(std::max(settings.Resolution, 1))
+      : std::numeric_limits<float>::max();
+    glPolygonOffset(0.0f, 0.0f);
+    this->Casters.SetView(
+      windowToInverseW, { { slope, constant * DepthUnit, cap } }, !view.Perspective);
+    this->Casters.Impostors().SetDepthOffset(glm::vec2(0.0f));
+  }
+  else
+  {
+    glPolygonOffset(slope, constant);
+    this->Casters.SetView(windowToInverseW, { { 0.0f, 0.0f, 0.0f } }, !view.Perspective);
+    const float unit = settings.Depth16 ? 1.0f / 65535.0f : DepthUnit;
+    this->Casters.Impostors().SetDepthOffset(glm::vec2(slope, constant * unit));
+  }
+  if (settings.LightDepth)
+  {
+    // Positions relative to the depth's origin, composed in double: no large
+    // world coordinate is formed in float.
+    const LightDepth& depth = light.Depth;
+    const glm::dmat4 windowToLight =
+      glm::translate(glm::dmat4(1.0), -depth.Origin) * WindowToWorld(view, settings.Resolution);
+    this->Casters.SetLightDepth(
+      glm::mat4(windowToLight), glm::vec4(depth.Plane), static_cast<float>(depth.PerDistance));
+  }
+  // Impostors (points as spheres, wide lines): their sizes follow the scene camera.
+  const glm::dmat4 lightCameraProjection = CameraProjectionOf(view);
+  const glm::dvec4 toLight = light.Kind == LightKind::Directional
+    ? glm::dvec4(-glm::normalize(light.Direction), 0.0)
+    : glm::dvec4(light.Position, 1.0);
+  this->Casters.Impostors().Set(view.ViewProjection(), glm::vec4(toLight),
+    glm::vec4(-glm::row(frame.CameraView, 2)),
+    glm::vec4(static_cast<float>(lightCameraProjection[0][0] / frame.CameraProjection[0][0]),
+      settings.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(settings.Resolution),
+      settings.LargestPointSize));
+  this->CasterPrograms.Invalidate();
+}
+
+//------------------------------------------------------------------------------
+void ProgramUniforms::SetPeeling(bool secondPass, int peelUnit)
+{
+  this->Casters.SetPeeling(secondPass, peelUnit);
+  this->CasterPrograms.Invalidate();
+}
+
+//------------------------------------------------------------------------------
+void ProgramUniforms::SetDrawnRadius(float radius)
+{
+  this->Casters.Impostors().SetDrawnRadius(radius);
+}
+
+//------------------------------------------------------------------------------
+void ProgramUniforms::Casting(
+  vtkShaderProgram* program, int mapUnit, vtkShadowMapRepresentation* representation)
+{
+  if (!this->CasterPrograms.FirstUse(program))
+  {
+    return;
+  }
+  this->CastSinceSceneDraw.insert(program);
+  this->Casters.ApplyCasting(program);
+  if (ReceiverUniforms::IsReceiver(program))
+  {
+    // Not sampled while casting, but a sampler must not share a unit with
+    // one of another type.
+    program->SetUniformi("vtkShadowMaps", mapUnit);
+    representation->SetReceiverUniforms(program);
+  }
+}
+
+//------------------------------------------------------------------------------
+void ProgramUniforms::Receiving(vtkShaderProgram* program, RendererMaps& maps, int mapUnit,
+  int resolution, double normalOffset, vtkShadowMapRepresentation* representation)
+{
+  if (!maps.Uniforms.FirstUseThisFrame(program))
+  {
+    return;
+  }
+  this->Casters.ApplyReceiving(program);
+  const RendererMaps*& lastDrawnFor = this->LastDrawnFor[program];
+  const bool anotherView = lastDrawnFor != &maps;
+  lastDrawnFor = &maps;
+  if (this->CastSinceSceneDraw.erase(program) > 0 || anotherView)
+  {
+    // The renderer sets a program's lighting uniforms again only when the
+    // lights or the camera changed after it last did; the light cameras
+    // changed after the scene's camera, and the casters' draws of this
+    // program left the lights in their frames. Another renderer (or eye)
+    // sharing the program left them in its camera's frame.
+    program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
+  }
+  if (ReceiverUniforms::IsReceiver(program))
+  {
+    maps.Uniforms.Apply(program, mapUnit, resolution, normalOffset);
+    representation->SetReceiverUniforms(program);
+  }
+}
+
+//------------------------------------------------------------------------------
+void ProgramUniforms::Forget(const RendererMaps* maps)
+{
+  for (auto& program : this->LastDrawnFor)
+  {
+    program.second = program.second == maps ? nullptr : program.second;
+  }
+}
+
+//------------------------------------------------------------------------------
+void ProgramUniforms::Clear()
+{
+  this->CasterPrograms.Clear();
+  this->CastSinceSceneDraw.clear();
+  this->LastDrawnFor.clear();
+}
+} // namespace shadowmaps

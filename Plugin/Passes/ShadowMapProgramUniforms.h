@@ -1,0 +1,77 @@
+// What the pass sets on the mappers' programs, and when. Programs keep their
+// uniforms and many draws share one, so each program takes the casters'
+// uniforms once per view it draws into, and the receivers' once per frame
+// (ProgramStamps): the per-draw cost does not grow with lights or views.
+// Programs are shared by the renderers (and eyes) that draw through the pass,
+// whose maps differ. Not a VTK class.
+#ifndef ShadowMapProgramUniforms_h
+#define ShadowMapProgramUniforms_h
+
+#include "ShadowMapCasterShader.h" // For CasterUniforms
+#include "ShadowMapLight.h"        // For ShadowFrame
+#include "ShadowMapProgramStamps.h"
+
+#include <unordered_map>
+#include <unordered_set>
+
+class vtkShaderProgram;
+class vtkShadowMapRepresentation;
+
+namespace shadowmaps
+{
+struct RendererMaps;
+
+/// What a view's casters draw with besides the view.
+struct CastingSettings
+{
+  int Resolution = 1;
+  /// Window depth in 16 bits (TexelFormat::Depth16): the polygon offset's
+  /// unit for impostors, which write their own depth.
+  bool Depth16 = false;
+  /// The casters store the light depth (CasterCode::LightDepth).
+  bool LightDepth = false;
+  double SlopeScaledOffset = 0.0;
+  double ConstantOffset = 0.0;
+  /// The context's largest point size (impostors' sprites).
+  float LargestPointSize = 1.0f;
+  bool SceneCameraParallel = false;
+};
+
+class ProgramUniforms
+{
+public:
+  /// The casters' uniforms, and the GL polygon offset, for drawing into
+  /// `view` of `light`: every program takes them on its next caster draw.
+  void SetCastingView(const ShadowLight& light, const LightView& view, const ShadowFrame& frame,
+    const CastingSettings& settings);
+
+  /// Depth peeling's pass (CasterUniforms::SetPeeling), for the next caster draws.
+  void SetPeeling(bool secondPass, int peelUnit);
+
+  /// Impostors' drawn size over the whole image's (SceneCamera::DrawnRadius).
+  void SetDrawnRadius(float radius);
+
+  /// Before a caster draw with `program`.
+  void Casting(vtkShaderProgram* program, int mapUnit, vtkShadowMapRepresentation* representation);
+
+  /// Before a scene draw with `program`, shaded with `maps`.
+  void Receiving(vtkShaderProgram* program, RendererMaps& maps, int mapUnit, int resolution,
+    double normalOffset, vtkShadowMapRepresentation* representation);
+
+  /// `maps` are going: no program was last drawn for them.
+  void Forget(const RendererMaps* maps);
+
+  /// Every program is forgotten (their GL objects released).
+  void Clear();
+
+private:
+  CasterUniforms Casters;
+  ProgramStamps CasterPrograms;
+  /// Programs the casters drew with since the scene last did.
+  std::unordered_set<vtkShaderProgram*> CastSinceSceneDraw;
+  /// The maps each program last shaded with.
+  std::unordered_map<vtkShaderProgram*, const RendererMaps*> LastDrawnFor;
+};
+} // namespace shadowmaps
+
+#endif

@@ -1,0 +1,78 @@
+// The maps of each renderer that draws through a pass, and of each eye of a
+// stereo camera: views sharing one set would fit and render it anew for each
+// other. A renderer's maps hold their GL objects, their receivers' uniforms
+// and what they were last rendered for (MapUpdates). Not a VTK class.
+#ifndef ShadowMapRendererMaps_h
+#define ShadowMapRendererMaps_h
+
+#include "ShadowMapLinearDepthResolve.h"
+#include "ShadowMapPropRecords.h"
+#include "ShadowMapReceiverShader.h"
+#include "ShadowMapStoreFromLightDepths.h"
+#include "ShadowMapTextureArray.h"
+#include "ShadowMapUpdates.h"
+#include "vtkShadowMapRepresentation.h" // For MapStorage
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <memory>
+#include <utility>
+
+class vtkRenderer;
+class vtkWindow;
+
+namespace shadowmaps
+{
+/// One renderer's (one eye's) maps, what renders them, their receivers'
+/// uniforms, and what the maps were last rendered for.
+struct RendererMaps
+{
+  TextureArray Maps;
+  MapStorage Storage;
+  ReceiverUniforms Uniforms;
+  LinearDepthResolve LinearDepths;
+  /// Light depths of value maps, while the processes' maps are combined.
+  StoreFromLightDepths LightDepths;
+  MapUpdates Updates;
+  /// The props' bounds and versions, read again only when they change.
+  PropRecords Props;
+  int Layers = 0;
+
+  /// Frees the GL objects (`window`'s context current); the maps are then
+  /// rendered anew.
+  void ReleaseGraphicsResources(vtkWindow* window);
+};
+
+class MapsByRenderer
+{
+public:
+  /// The maps of `renderer` for the eye its camera renders now, made on first
+  /// use; they become the current ones.
+  RendererMaps& Select(vtkRenderer* renderer);
+
+  /// The maps of the frame being rendered; null before Select or once released.
+  RendererMaps* Current() const { return this->CurrentMaps; }
+
+  bool Holds(vtkRenderer* renderer) const;
+
+  /// Frees and forgets the maps of `renderer` (both eyes), `window`'s
+  /// context current; `forgetting` is told of each first.
+  void Release(vtkRenderer* renderer, vtkWindow* window,
+    const std::function<void(const RendererMaps*)>& forgetting);
+
+  /// Frees and forgets every renderer's maps.
+  void ReleaseAll(vtkWindow* window);
+
+  bool Empty() const { return this->Maps.empty(); }
+
+  /// Bytes the maps of every renderer hold.
+  std::size_t MemoryBytes() const;
+
+private:
+  std::map<std::pair<vtkRenderer*, int>, std::unique_ptr<RendererMaps>> Maps;
+  RendererMaps* CurrentMaps = nullptr;
+};
+} // namespace shadowmaps
+
+#endif

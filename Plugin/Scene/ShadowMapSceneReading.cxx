@@ -1,0 +1,132 @@
+#include "ShadowMapSceneReading.h"
+
+#include "ShadowMapGlm.h"
+#include "ShadowMapPropRecords.h"
+
+#include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkNew.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <glm/gtc/matrix_access.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+
+namespace shadowmaps
+{
+//------------------------------------------------------------------------------
+bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
+{
+  return !info || !info->Has(key) || info->Get(key) != 0;
+}
+
+//------------------------------------------------------------------------------
+std::vector<ShadowLight> CollectShadowedLights(
+  vtkRenderer* renderer, vtkInformationIntegerKey* castsShadows, int maximum, int& skipped)
+{
+  std::vector<ShadowLight> lights;
+  skipped = 0;
+  int shaderIndex = 0;
+  vtkCollectionSimpleIterator it;
+  vtkLightCollection* collection = renderer->GetLights();
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (!light->GetSwitch())
+    {
+      continue; // switched-off lights get no index in the mappers' shaders
+    }
+    const int index = shaderIndex++;
+    if (light->LightTypeIsHeadlight() || !IsEnabled(light->GetInformation(), castsShadows))
+    {
+      continue;
+    }
+    if (static_cast<int>(lights.size()) == maximum)
+    {
+      ++skipped;
+      continue;
+    }
+    ShadowLight shadowLight;
+    shadowLight.Light = light;
+    shadowLight.ShaderIndex = index;
+    shadowLight.Position = ToGlm(light->GetTransformedPosition());
+    shadowLight.Direction = ToGlm(light->GetTransformedFocalPoint()) - shadowLight.Position;
+    shadowLight.ConeAngle = light->GetConeAngle();
+    shadowLight.Attenuation = std::min(std::max(light->GetShadowAttenuation(), 0.0f), 1.0f);
+    shadowLight.Kind = !light->GetPositional() ? LightKind::Directional
+      : shadowLight.ConeAngle < 90.0           ? LightKind::Spot
+                                               : LightKind::Point;
+    lights.push_back(shadowLight);
+  }
+  return lights;
+}
+
+//------------------------------------------------------------------------------
+SceneCamera ReadSceneCamera(vtkRenderer* renderer, ShadowFrame& frame)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  frame.CameraView = ToGlm(camera->GetViewTransformMatrix());
+  const glm::dmat4 drawn =
+    ToGlm(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
+  glm::dvec4 tileViewport;
+  renderer->GetRenderWindow()->GetTileViewport(glm::value_ptr(tileViewport));
+  frame.CameraProjection = WholeImageProjection(
+    drawn, TileOfWholeImage(tileViewport, glm::make_vec4(renderer->GetViewport())));
+  SceneCamera scene;
+  scene.DrawnRadius = static_cast<float>(drawn[0][0] / frame.CameraProjection[0][0]);
+  scene.Parallel = camera->GetParallelProjection() != 0;
+  // vtkViewport::GetSize is the whole image's, in a tile of a larger one. A
+  // parallel camera's impostors do not grow with the eye depth.
+  const glm::dvec4 eyeDepth = scene.Parallel ? glm::dvec4(0.0) : glm::row(frame.CameraView, 2);
+  scene.Sizing = { static_cast<double>(renderer->GetSize()[0]), frame.CameraProjection[0][0],
+    eyeDepth.x, eyeDepth.y, eyeDepth.z, eyeDepth.w, scene.Parallel ? 1.0 : 0.0 };
+  return scene;
+}
+
+//------------------------------------------------------------------------------
+void CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
+  vtkInformationIntegerKey* castsShadows, PropRecords& records, ShadowFrame& frame,
+  std::vector<Caster>& casters)
+{
+  casters.clear();
+  frame.PropBounds.clear();
+  frame.SceneBounds = Aabb();
+  records.BeginFrame(renderer, sizing);
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    if (!prop->GetPropertyKeys())
+    {
+      // Render passes create the keys on first use, which modifies the prop;
+      // create them now so that this first use does not re-render the maps.
+      vtkNew<vtkInformation> keys;
+      prop->SetPropertyKeys(keys);
+    }
+    const PropRecords::Record& record = records.Read(prop);
+    if (!record.Bounds.IsUsable())
+    {
+      continue;
+    }
+    frame.SceneBounds.Add(record.Bounds);
+    frame.PropBounds.push_back(record.Bounds);
+    if (record.DrawsIntoDepthMaps && IsEnabled(prop->GetPropertyKeys(), castsShadows))
+    {
+      casters.push_back({ prop, record.CastingBounds, record.Version });
+    }
+  }
+  records.EndFrame();
+}
+} // namespace shadowmaps

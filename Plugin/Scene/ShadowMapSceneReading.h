@@ -1,0 +1,67 @@
+// What a frame's shadows are made of, read from a renderer: the shadowed
+// lights, the scene camera, the visible props' bounds and the casters. The
+// pass reads these first every frame; nothing here touches the GL. Not a VTK
+// class.
+#ifndef ShadowMapSceneReading_h
+#define ShadowMapSceneReading_h
+
+#include "ShadowMapCasterVersion.h" // For ImpostorSizing
+#include "ShadowMapLight.h"         // For ShadowLight, ShadowFrame, Aabb
+
+#include "vtkType.h" // For vtkMTimeType
+
+#include <vector>
+
+class vtkInformation;
+class vtkInformationIntegerKey;
+class vtkProp;
+class vtkRenderer;
+
+namespace shadowmaps
+{
+class PropRecords;
+
+/// A prop that renders into the maps: its world bounds (grown by its
+/// impostors' reach) and the version of everything its depth depends on
+/// (CasterVersion).
+struct Caster
+{
+  vtkProp* Prop = nullptr;
+  Aabb Bounds;
+  vtkMTimeType Version = 0;
+};
+
+/// An opt-out key: absent (or no information at all) means yes.
+bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key);
+
+/// The renderer's switched-on lights that cast shadows (not headlights, not
+/// opted out by `castsShadows`), at most `maximum` of them, without views;
+/// `skipped` counts those beyond the maximum. Each keeps its index among the
+/// switched-on lights, the mappers' shaders' light index.
+std::vector<ShadowLight> CollectShadowedLights(
+  vtkRenderer* renderer, vtkInformationIntegerKey* castsShadows, int maximum, int& skipped);
+
+/// The scene camera as the frame needs it.
+struct SceneCamera
+{
+  /// What the camera sizes impostors by (points as spheres, tubes).
+  ImpostorSizing Sizing{};
+  /// The drawn projection's x scale over the whole image's: a tile of a larger
+  /// image draws impostors at the whole image's size.
+  float DrawnRadius = 1.0f;
+  bool Parallel = false;
+};
+
+/// Reads the camera's view and whole-image projection into `frame`.
+SceneCamera ReadSceneCamera(vtkRenderer* renderer, ShadowFrame& frame);
+
+/// The visible props' bounds into `frame` (SceneBounds, PropBounds) and the
+/// casters among them (props that draw into depth maps and do not opt out by
+/// `castsShadows`), through `records`, which reads a prop again only when it
+/// changed.
+void CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
+  vtkInformationIntegerKey* castsShadows, PropRecords& records, ShadowFrame& frame,
+  std::vector<Caster>& casters);
+} // namespace shadowmaps
+
+#endif
