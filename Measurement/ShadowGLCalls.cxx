@@ -90,4 +90,12 @@ GLCallCounts StopCountingGLCalls()
   SwapCounters<false>();
   return Counts;
 }
+
+//------------------------------------------------------------------------------
+std::string GLRendererName()
+{
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return std::string(renderer ? renderer : "?") + ", OpenGL " + (version ? version : "?");
+}
 } // namespace shadowbench

@@ -9,6 +9,8 @@
 #ifndef ShadowGLCalls_h
 #define ShadowGLCalls_h
 
+#include <string>
+
 namespace shadowbench
 {
 struct GLCallCounts
@@ -35,6 +37,10 @@ void StartCountingGLCalls();
 /// frames timed after counting must not run through them); returns the counts
 /// since StartCountingGLCalls.
 GLCallCounts StopCountingGLCalls();
+
+/// The current context's GL_RENDERER and GL_VERSION strings (which GPU, or
+/// which software rasteriser, the figures come from).
+std::string GLRendererName();
 } // namespace shadowbench
 
 #endif

@@ -307,6 +307,11 @@ bool RunSpeed(const SpeedOptions& options, std::ostream& out, std::ostream& log,
       return false;
     }
     log << scene << ": " << CountProps(view.Renderer) << " actors" << std::endl;
+    if (rows.empty())
+    {
+      view.Window->Render();
+      log << "GL renderer: " << GLRendererName() << std::endl;
+    }
     for (const std::string& setup : options.Setups)
     {
       for (const int resolution : options.Resolutions)
