@@ -2,7 +2,8 @@
 sun at 960 x 540 with 64^2 maps (so that rasterisation adds little and the
 per-actor work shows): argv[1] is none, vtk (VTK's vtkShadowMapPass), uniform
 (vtkDepthShadowMapPass) or csm (vtkCascadedShadowMapPass), argv[2] the frames
-timed after 3 untimed. Prints the mean frame in ms and the rendering thread's CPU time
+timed after 3 untimed; with --moving the frames orbit the camera by one degree
+each, rendered as a user's drag (the window's desired update rate 15). Prints the mean frame in ms and the rendering thread's CPU time
 per frame (VTK's, the pass's and the driver's work on that thread; llvmpipe rasterises
 on threads of its own). For where the time goes,
 run it under perf and sum the samples under a function with perf_inclusive.py:
@@ -75,13 +76,20 @@ elif kind == "vtk":
     renderer.SetPass(camera_pass)
 for _ in range(3):
     window.Render()
-frames = int(sys.argv[2]) if len(sys.argv) > 2 else 40
+arguments = [a for a in sys.argv[1:] if not a.startswith("--")]
+frames = int(arguments[1]) if len(arguments) > 1 else 40
+moving = "--moving" in sys.argv
+if moving:
+    window.SetDesiredUpdateRate(15.0)
 control = os.environ.get("PERF_CONTROL")  # perf record --control=fifo:CTL,ACK -D -1
 perf_command(control, "enable")
 start = time.perf_counter()
 cpu_start = time.thread_time()
 for _ in range(frames):
+    if moving:
+        camera.Azimuth(1.0); renderer.ResetCameraClippingRange()
     window.Render()
 perf_command(control, "disable")
-print(f"{kind}: {(time.perf_counter() - start) / frames * 1000:.1f} ms per steady frame, "
+print(f"{kind}: {(time.perf_counter() - start) / frames * 1000:.1f} ms per "
+      f"{'moving' if moving else 'steady'} frame, "
       f"{(time.thread_time() - cpu_start) / frames * 1000:.1f} ms of the rendering thread's CPU")
