@@ -1,0 +1,15 @@
+#!/bin/bash
+# On the GPU machine, from the repository root, with .gpu/bundle.tar.xz
+# carried (make_bundle.sh): `vtkshadows speed ARGS` ROUNDS times, each run's
+# log and CSV under $OUT (the device tool brings at most 8 files back).
+#
+#   bash Measurement/gpu/speed.sh ROUNDS ARGS...
+set -o pipefail
+rounds=$1
+shift
+mkdir -p /tmp/b && xz -dc .gpu/bundle.tar.xz | tar -C /tmp/b -xf - || exit 1
+for i in $(seq "$rounds"); do
+  /tmp/b/run_on_gpu.sh /tmp/b/bin/vtkshadows speed "$@" --out "$OUT/r$i" > "$OUT/r$i.log" 2>&1
+  echo "round $i: rc $?, $(grep -m1 'GL renderer' "$OUT/r$i.log")"
+  rm -f "$OUT/r$i/speed.md"
+done
