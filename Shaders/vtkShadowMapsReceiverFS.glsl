@@ -206,37 +206,11 @@ int vtkShadowSelectView(
   return firstView + vtkShadowCubeFace(fromLight);
 }
 
-// The linear part of an affine view's matrix (no
-// VTK_SHADOW_FEATURE_PROJECTIVE_VIEWS): a cropped view scales its light's
-// first view's rows, the offset aside.
-mat3 vtkShadowAffineMatrix(int firstView, int view, int features)
-{
-  if (!vtkShadowHas(features, VTK_SHADOW_FEATURE_CROPPED_VIEWS))
-  {
-    return mat3(vtkShadowViews[view].ViewToMap);
-  }
-  mat3 first = mat3(vtkShadowViews[firstView].ViewToMap);
-  vec3 scale = vtkShadowViews[view].CropScale;
-  return mat3(first[0] * scale, first[1] * scale, first[2] * scale);
-}
-
-vec3 vtkShadowRow(mat3 m, int row)
-{
-  return vec3(m[0][row], m[1][row], m[2][row]);
-}
-
 // Gradients at positionVC of the projective map coordinates t in {u, v}:
-// grad t = (row_t - t row_w) / w; an affine view's rows themselves.
+// grad t = (row_t - t row_w) / w.
 void vtkShadowMapGradients(
   vec3 positionVC, int firstView, int view, int features, out vec3 gradU, out vec3 gradV)
 {
-  if (!vtkShadowHas(features, VTK_SHADOW_FEATURE_PROJECTIVE_VIEWS))
-  {
-    mat3 a = vtkShadowAffineMatrix(firstView, view, features);
-    gradU = vtkShadowRow(a, 0);
-    gradV = vtkShadowRow(a, 1);
-    return;
-  }
   mat4 m = vtkShadowMapMatrix(firstView, view, features);
   vec4 q = m * vec4(positionVC, 1.0);
   vec3 rowW = vec3(m[0][3], m[1][3], m[2][3]);
@@ -388,46 +362,11 @@ vec3 vtkShadowMapPoint(vec3 positionVC, mat4 viewToMap, int view, int features)
   return vtkShadowMapCoord(viewToMap * vec4(positionVC, 1.0), view, features);
 }
 
-// The same for an affine view, from its matrix's rows r0, r1, r2 (map u, v
-// and depth): the ray is r0 x r1, and a plane of normal n has the depth slope
-// -(n . (r1 x r2), n . (r2 x r0)) / n . (r0 x r1) over (u, v), the rows of the
-// inverse transpose, whose determinant cancels. No map point is transformed.
-void vtkShadowMeasureAffineReceiver(
-  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
-{
-  mat3 a = vtkShadowAffineMatrix(firstView, view, features);
-  vec3 r0 = vtkShadowRow(a, 0);
-  vec3 r1 = vtkShadowRow(a, 1);
-  vec3 r2 = vtkShadowRow(a, 2);
-  vec3 ray = cross(r0, r1);
-  float rayLength = length(ray);
-  if (!(rayLength > 0.0))
-  {
-    return;
-  }
-  float texel = vtkShadowTexelWorldSize(positionVC, light, firstView, view, features);
-  vtkShadowDepthPerTexel = abs(dot(r2, ray)) * (texel / rayLength);
-  // Clamped as below without dividing by a normal across the ray (an edge-on
-  // plane, whose slope is unbounded); exactly edge-on has none.
-  vec2 rise = -vec2(dot(normalVC, cross(r1, r2)), dot(normalVC, cross(r2, r0)));
-  float run = dot(normalVC, ray);
-  float steepest = max(abs(rise.x), abs(rise.y));
-  float most = VTK_SHADOW_MAX_PLANE_TEXELS * vtkShadowDepthPerTexel * vtkShadowMapResolution;
-  vtkShadowReceiverSlope = steepest >= most * abs(run)
-    ? (steepest > 0.0 ? rise * (sign(run) * most / steepest) : vec2(0.0))
-    : rise / run;
-}
-
 void vtkShadowMeasureReceiver(vec3 positionVC, vec3 normalVC, vec3 mapCoord, int light,
   int firstView, int view, int features)
 {
   vtkShadowDepthPerTexel = 0.0;
   vtkShadowReceiverSlope = vec2(0.0);
-  if (!vtkShadowHas(features, VTK_SHADOW_FEATURE_PROJECTIVE_VIEWS))
-  {
-    vtkShadowMeasureAffineReceiver(positionVC, normalVC, light, firstView, view, features);
-    return;
-  }
   vec3 gradU;
   vec3 gradV;
   vtkShadowMapGradients(positionVC, firstView, view, features, gradU, gradV);

@@ -97,7 +97,6 @@ std::string ReceiverShaderConstants()
     { "VTK_SHADOW_FEATURE_LINEAR_DEPTHS", LinearDepths },
     { "VTK_SHADOW_FEATURE_CROPPED_VIEWS", CroppedViews },
     { "VTK_SHADOW_FEATURE_CASCADE_BLENDS", CascadeBlends },
-    { "VTK_SHADOW_FEATURE_PROJECTIVE_VIEWS", ProjectiveViews },
   };
   std::ostringstream defines;
   for (const auto& constant : constants)

@@ -55,11 +55,7 @@ enum ReceiverFeature : int
   /// tiles are. Receivers then transform by the first view only.
   CroppedViews = 8,
   /// Cascades with a blend band: receivers in it look up two cascades.
-  CascadeBlends = 16,
-  /// Views whose map coordinates are not affine in the world (positional
-  /// lights, warps): receivers find the map's gradients at each fragment.
-  /// Without it they are the matrix's rows, the same at every receiver.
-  ProjectiveViews = 32
+  CascadeBlends = 16
 };
 
 /// Cones wider than this (half angle, degrees) are rendered as six cube faces:
@@ -119,13 +115,6 @@ inline bool NeedsCubeFaces(const ShadowLight& light)
     (light.Kind == LightKind::Spot && light.ConeAngle > WidestSingleMapCone);
 }
 
-/// Whether `m` takes points to homogeneous coordinates of w = 1: its map
-/// coordinates are then affine in the world.
-inline bool IsAffine(const glm::dmat4& m)
-{
-  return m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0;
-}
-
 /// The ReceiverFeature bits the light's receivers are compiled with: the
 /// possible ones and whatever this frame's views need.
 inline int ReceiverFeatures(const ShadowLight& light)
@@ -133,13 +122,12 @@ inline int ReceiverFeatures(const ShadowLight& light)
   int features = light.PossibleFeatures;
   if (light.Kind != LightKind::Directional)
   {
-    features |= DistantTexels | ProjectiveViews;
+    features |= DistantTexels;
   }
   for (const LightView& view : light.Views)
   {
     features |= (view.TexelSizeFromGradient ? GradientTexels : 0) |
-      (view.TexelPerUnitDistance != 0.0 ? DistantTexels : 0) | (view.LinearDepth ? LinearDepths : 0) |
-      (IsAffine(view.ViewProjection()) ? 0 : ProjectiveViews);
+      (view.TexelPerUnitDistance != 0.0 ? DistantTexels : 0) | (view.LinearDepth ? LinearDepths : 0);
   }
   if (light.Layout == ViewLayout::Cascades && light.Views.size() > 1)
   {

@@ -240,7 +240,7 @@ void vtkCascadedShadowMapViews::FitLight(
   // tiles crop one map, warped or not; unwarped cascades share the light's
   // rotation and differ by their orthographic boxes.
   light.PossibleFeatures =
-    this->MayWarp() ? shadowmaps::GradientTexels | shadowmaps::LinearDepths | shadowmaps::ProjectiveViews : 0;
+    this->MayWarp() ? shadowmaps::GradientTexels | shadowmaps::LinearDepths : 0;
   if (light.Kind == shadowmaps::LightKind::Spot || !this->MayWarp())
   {
     light.PossibleFeatures |= shadowmaps::CroppedViews;

@@ -162,11 +162,9 @@ void vtkWarpedShadowMapViews::FitLight(const ShadowFrame& frame, ShadowLight& li
 {
   const bool mayWarp = this->WarpMode != UNIFORM && !shadowmaps::NeedsCubeFaces(light);
   // Every warp but PSM stores linear depth (PSM's w depends on depth).
-  // A warp fading in or out must not rebuild the receivers' shaders.
-  const int warped = shadowmaps::GradientTexels | shadowmaps::ProjectiveViews;
   light.PossibleFeatures = !mayWarp ? 0
-    : this->WarpMode == PSM        ? warped
-                                   : warped | shadowmaps::LinearDepths;
+    : this->WarpMode == PSM        ? shadowmaps::GradientTexels
+                                   : shadowmaps::GradientTexels | shadowmaps::LinearDepths;
   if (!mayWarp)
   {
     vtkShadowMapViews::FitUniformViews(frame, light);
