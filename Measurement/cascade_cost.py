@@ -1,5 +1,6 @@
 """Steady frames of cascaded maps by cascade count (and with blend, fade and coverage
-selection varied) against no shadows and the uniform map: a ground and 50 boxes,
+selection varied) against no shadows and the uniform map, and of the dual-depth map
+(second depth, uniform views or four cascades: "dual", "dual-csm4"): a ground and 50 boxes,
 960 x 540, 1024^2 maps, medians of 3 interleaved rounds of 6 frames.
 
   PYTHONPATH=build/lib/python3/dist-packages \
@@ -37,9 +38,13 @@ def csm(n=4, blend=None, fade=None, sel=None):
     return q
 def uni():
     q = vtkshadowmaps.vtkWarpedShadowMapPass(); q.SetResolution(1024); return q
+def dual(cascaded=False):
+    q = vtkshadowmaps.vtkDualDepthShadowMapPass(); q.SetResolution(1024)
+    if cascaded: q.SetViews(vtkshadowmaps.vtkCascadedShadowMapViews())
+    return q
 variants = {"none": lambda: None, "uniform": uni, "csm4": csm, "csm4-noblend": lambda: csm(4, 0.0),
             "csm4-noblend-nofade": lambda: csm(4, 0.0, 0.0), "csm1": lambda: csm(1), "csm2": lambda: csm(2),
-            "csm4-coverage": lambda: csm(4, sel=1)}
+            "csm4-coverage": lambda: csm(4, sel=1), "dual": dual, "dual-csm4": lambda: dual(True)}
 chosen = next((a.split("=", 1)[1].split(",") for a in sys.argv if a.startswith("--variants=")), None)
 if chosen is not None:
     unknown = [k for k in chosen if k not in variants]
