@@ -17,14 +17,21 @@ double Cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
 
 // Clip x, y of points through a projection; false if any lies behind it or so
 // close to its plane that the division is not finite.
+// The map position of p, false where it is not in front of the view or not finite.
+bool ProjectInFront(const glm::dmat4& m, const glm::dvec3& p, glm::dvec2& xy)
+{
+  const glm::dvec4 clip = m * glm::dvec4(p, 1.0);
+  xy = glm::dvec2(clip) / clip.w;
+  return clip.w > 0.0 && std::isfinite(xy.x) && std::isfinite(xy.y);
+}
+
 bool ProjectAll(const glm::dmat4& m, const glm::dvec3* points, size_t count, std::vector<glm::dvec2>& out)
 {
   out.clear();
   for (size_t i = 0; i < count; ++i)
   {
-    const glm::dvec4 clip = m * glm::dvec4(points[i], 1.0);
-    const glm::dvec2 xy = glm::dvec2(clip) / clip.w;
-    if (!(clip.w > 0.0) || !std::isfinite(xy.x) || !std::isfinite(xy.y))
+    glm::dvec2 xy;
+    if (!ProjectInFront(m, points[i], xy))
     {
       return false;
     }
@@ -103,18 +110,18 @@ bool MayShadowInto(const ShadowReach& reach, const glm::dmat4& viewProjection, c
   {
     return true;
   }
-  const std::array<glm::dvec3, 8> corners = bounds.Corners();
-  std::vector<glm::dvec2> clip;
-  if (!ProjectAll(viewProjection, corners.data(), corners.size(), clip))
-  {
-    return true;
-  }
+  // Called for every caster and layer: no allocation.
   glm::dvec2 lo(std::numeric_limits<double>::max());
   glm::dvec2 hi(std::numeric_limits<double>::lowest());
-  for (const auto& p : clip)
+  for (const glm::dvec3& corner : bounds.Corners())
   {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
+    glm::dvec2 xy;
+    if (!ProjectInFront(viewProjection, corner, xy))
+    {
+      return true;
+    }
+    lo = glm::min(lo, xy);
+    hi = glm::max(hi, xy);
   }
   return RectangleMeetsPolygon(lo, hi, reach.Footprint);
 }

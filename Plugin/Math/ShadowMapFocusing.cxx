@@ -418,15 +418,58 @@ glm::dvec2 VisibleDepthRange(
   const glm::dmat4& cameraView, const glm::dmat4& cameraProjection, const std::vector<Aabb>& boxes)
 {
   const glm::dmat4 viewProjection = cameraProjection * cameraView;
+  const std::array<Plane, 6> frustum = FrustumPlanes(viewProjection);
+  const auto depthOf = [&cameraView](const glm::dvec3& p) {
+    return -(cameraView * glm::dvec4(p, 1.0)).z;
+  };
   double nearest = Infinity, farthest = -Infinity;
   for (const Aabb& box : boxes)
   {
-    for (const auto& p : IntersectFrustumWithBox(viewProjection, box))
+    if (box.IsEmpty())
     {
-      const double depth = -(cameraView * glm::dvec4(p, 1.0)).z;
-      nearest = std::min(nearest, depth);
-      farthest = std::max(farthest, depth);
+      continue;
     }
+    // Most boxes of a large scene are wholly in view or out of it: their part
+    // in view is all of them or nothing, and clipping them, the costly part,
+    // is left to the boxes across the frustum whose depths could widen the
+    // range (the clipped box's depths lie within its corners').
+    const std::array<glm::dvec3, 8> corners = box.Corners();
+    const double tolerance = 1e-9 * std::max(box.Diagonal(), 1e-300);
+    glm::dvec2 span(Infinity, -Infinity);
+    bool inside = true;
+    bool outside = false;
+    for (const Plane& plane : frustum)
+    {
+      int behind = 0;
+      for (const glm::dvec3& corner : corners)
+      {
+        behind += plane.Distance(corner) < -tolerance ? 1 : 0;
+      }
+      inside = inside && behind == 0;
+      outside = outside || behind == 8;
+    }
+    if (outside)
+    {
+      continue;
+    }
+    for (const glm::dvec3& corner : corners)
+    {
+      span = glm::dvec2(std::min(span.x, depthOf(corner)), std::max(span.y, depthOf(corner)));
+    }
+    if (!inside && span.x >= nearest && span.y <= farthest)
+    {
+      continue;
+    }
+    if (!inside)
+    {
+      span = glm::dvec2(Infinity, -Infinity);
+      for (const auto& p : IntersectFrustumWithBox(viewProjection, box))
+      {
+        span = glm::dvec2(std::min(span.x, depthOf(p)), std::max(span.y, depthOf(p)));
+      }
+    }
+    nearest = std::min(nearest, span.x);
+    farthest = std::max(farthest, span.y);
   }
   if (!(farthest >= nearest) || !std::isfinite(farthest - nearest))
   {
