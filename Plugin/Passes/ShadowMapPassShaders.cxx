@@ -27,7 +27,9 @@ bool PassShaders::Update(const MapStorage& storage, vtkShadowMapRepresentation* 
   CasterCode& casters = this->Casters;
   casters.SecondDepth = storage.SecondDepth;
   // Two surfaces' depths need both faces of the casters.
-  casters.Faces = storage.SecondDepth == SecondDepthMethod::None ? choices.CasterFaces : 2;
+  casters.Faces = storage.SecondDepth == SecondDepthMethod::None
+    ? choices.CasterFaces
+    : static_cast<int>(vtkAbstractShadowMapPass::BOTH_FACES);
   const bool values = !IsDepth(storage.Format);
   casters.StoreCode = values ? storage.StoreCode : std::string();
   casters.KeepsLightDepth = choices.KeepsLightDepths;

@@ -10,6 +10,7 @@
 #include "ShadowMapCasterShader.h"   // For CasterCode, CasterBranch
 #include "ShadowMapReceiverShader.h" // For ReceiverCode
 
+#include "vtkAbstractShadowMapPass.h" // For CasterFacesType
 #include "vtkTimeStamp.h"
 
 #include <string>
@@ -27,7 +28,7 @@ struct ShadowLight;
 struct ShaderChoices
 {
   /// vtkAbstractShadowMapPass::CasterFacesType, for one-depth maps.
-  int CasterFaces = 2;
+  int CasterFaces = vtkAbstractShadowMapPass::BOTH_FACES;
   /// The analysis view that recolours receivers (0: none) and its light.
   int AnalysisView = 0;
   int AnalysisLight = 0;
@@ -39,6 +40,8 @@ struct ShaderChoices
 class PassShaders
 {
 public:
+  PassShaders() { this->KeyTime.Modified(); }
+
   /// Makes the code for maps of `storage`, read as `representation` says, of
   /// `lights` in `layers` layers. True when the key changed: the mappers
   /// then rebuild their shaders (GetKeyTime).

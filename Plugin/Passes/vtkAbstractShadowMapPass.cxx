@@ -166,6 +166,7 @@ struct vtkAbstractShadowMapPass::Internals
   // are the ones of the frame being rendered.
   shadowmaps::MapsByRenderer Renderers;
   shadowmaps::RendererMaps& Maps() { return *this->Renderers.Current(); }
+  const shadowmaps::RendererMaps& Maps() const { return *this->Renderers.Current(); }
   // The maps whose lights, layers and storage the shader code was made for.
   const shadowmaps::RendererMaps* CodeFor = nullptr;
 
@@ -199,6 +200,9 @@ struct vtkAbstractShadowMapPass::Internals
   // The largest point size the context draws (GL_POINT_SIZE_RANGE), asked
   // once: a query may wait for the GL's thread.
   float LargestPointSize = 0.0f;
+  // The most samples per texel the context offers (GL_MAX_SAMPLES), asked
+  // once, and only by maps that may be multisampled.
+  int MaximumSamples = 0;
   bool WarnedTooManyLights = false;
   bool WarnedNonFiniteViews = false;
   bool WarnedResolution = false;
@@ -725,7 +729,11 @@ void vtkAbstractShadowMapPass::ChooseStorage()
   limits.CombinesAcrossProcesses = this->Exchange != nullptr;
   limits.ThirtyTwoBitDepthNow =
     maps.Maps.GetResolution() != 0 && maps.Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
-  limits.MaximumSamples = MaximumSamples();
+  if (maps.Storage.Samples > 1 && r.MaximumSamples <= 0)
+  {
+    r.MaximumSamples = MaximumSamples();
+  }
+  limits.MaximumSamples = std::max(r.MaximumSamples, 1);
   shadowmaps::CompleteStorage(maps.Storage, r.Lights, r.Casters, r.ClosedCasters, limits);
   this->NumberOfCasterPassesPerLayer = shadowmaps::CasterPassesPerLayer(maps.Storage);
 }
@@ -921,7 +929,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 shadowmaps::Combination vtkAbstractShadowMapPass::MapCombination() const
 {
-  return this->Exchange ? shadowmaps::CombinationOf(this->Internal->Maps().Storage)
+  const Internals& r = *this->Internal;
+  return this->Exchange ? shadowmaps::CombinationOf(r.Maps().Storage)
                         : shadowmaps::Combination::None;
 }
 
@@ -1250,6 +1259,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   }
   r.Programs.Clear();
   r.LargestPointSize = 0.0f;
+  r.MaximumSamples = 0;
   r.OpaquePass->ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   r.DepthPeeling->ReleaseGraphicsResources(window);
