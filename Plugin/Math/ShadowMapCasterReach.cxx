@@ -15,8 +15,6 @@ double Cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-// Clip x, y of points through a projection; false if any lies behind it or so
-// close to its plane that the division is not finite.
 // The map position of p, false where it is not in front of the view or not finite.
 bool ProjectInFront(const glm::dmat4& m, const glm::dvec3& p, glm::dvec2& xy)
 {
@@ -25,6 +23,8 @@ bool ProjectInFront(const glm::dmat4& m, const glm::dvec3& p, glm::dvec2& xy)
   return clip.w > 0.0 && std::isfinite(xy.x) && std::isfinite(xy.y);
 }
 
+// Clip x, y of points through a projection; false if any lies behind it or so
+// close to its plane that the division is not finite.
 bool ProjectAll(const glm::dmat4& m, const glm::dvec3* points, size_t count, std::vector<glm::dvec2>& out)
 {
   out.clear();

@@ -443,7 +443,8 @@ glm::dvec2 VisibleDepthRange(
       int behind = 0;
       for (const glm::dvec3& corner : corners)
       {
-        behind += plane.Distance(corner) < -tolerance ? 1 : 0;
+        // As InsideAll: a distance that is not a number is not inside.
+        behind += plane.Distance(corner) >= -tolerance ? 0 : 1;
       }
       inside = inside && behind == 0;
       outside = outside || behind == 8;

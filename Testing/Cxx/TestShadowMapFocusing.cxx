@@ -6,6 +6,61 @@ using namespace focusingtest;
 namespace
 {
 // ---------------------------------------------------------------------------
+// VisibleDepthRange
+
+// The range by definition: every box clipped to the frustum.
+glm::dvec2 ClippedDepthRange(
+  const glm::dmat4& view, const glm::dmat4& projection, const std::vector<Aabb>& boxes)
+{
+  double nearest = std::numeric_limits<double>::infinity();
+  double farthest = -nearest;
+  for (const Aabb& box : boxes)
+  {
+    for (const glm::dvec3& p : shadowmaps::IntersectFrustumWithBox(projection * view, box))
+    {
+      const double depth = -(view * glm::dvec4(p, 1.0)).z;
+      nearest = std::min(nearest, depth);
+      farthest = std::max(farthest, depth);
+    }
+  }
+  return farthest >= nearest ? glm::dvec2(nearest, farthest) : glm::dvec2(0.0);
+}
+
+// Which boxes it clips is a shortcut (those wholly in view or out of it are
+// not, nor those that cannot widen the range): the range is the clipped one's.
+TEST(VisibleDepthRange, IsTheRangeOfTheBoxesClippedToTheFrustum)
+{
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> position(-60.0, 60.0);
+  std::uniform_real_distribution<double> size(0.1, 12.0);
+  const glm::dmat4 view =
+    glm::lookAt(glm::dvec3(-40.0, -50.0, 25.0), glm::dvec3(0.0), glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dmat4 projections[] = { glm::perspective(0.6, 16.0 / 9.0, 2.0, 150.0),
+    glm::ortho(-30.0, 30.0, -20.0, 20.0, 5.0, 120.0) };
+  for (const glm::dmat4& projection : projections)
+  {
+    for (int scene = 0; scene < 20; ++scene)
+    {
+      std::vector<Aabb> boxes;
+      for (int i = 0; i < 200; ++i)
+      {
+        const glm::dvec3 corner(position(random), position(random), position(random) * 0.3);
+        boxes.push_back(
+          MakeBox(corner, corner + glm::dvec3(size(random), size(random), size(random))));
+      }
+      const glm::dvec2 expected = ClippedDepthRange(view, projection, boxes);
+      const glm::dvec2 range = shadowmaps::VisibleDepthRange(view, projection, boxes);
+      ASSERT_GT(expected.y, expected.x);
+      EXPECT_NEAR(range.x, expected.x, 1e-9 * expected.y) << "scene " << scene;
+      EXPECT_NEAR(range.y, expected.y, 1e-9 * expected.y) << "scene " << scene;
+    }
+  }
+  // Nothing in view: no range.
+  const std::vector<Aabb> behind{ MakeBox(glm::dvec3(-60.0, -80.0, 30.0), glm::dvec3(-55.0, -75.0, 35.0)) };
+  EXPECT_EQ(shadowmaps::VisibleDepthRange(view, projections[0], behind), glm::dvec2(0.0));
+}
+
+// ---------------------------------------------------------------------------
 // ComputeNearAndFar
 
 TEST(ComputeNearAndFar, AxisAlignedLightOverABox)
