@@ -13,12 +13,12 @@ import sys
 ratios = collections.defaultdict(lambda: ([], []))
 for path in sys.argv[1:]:
     rows = list(csv.DictReader(open(path)))
-    vtk = {(r["scene"], r["resolution"]): r for r in rows if r["technique"] == "vtk"}
+    vtk = {(r["scene"], r["setup"], r["resolution"]): r for r in rows if r["technique"] == "vtk"}
     for r in rows:
-        reference = vtk.get((r["scene"], r["resolution"]))
+        reference = vtk.get((r["scene"], r["setup"], r["resolution"]))
         if reference is None:
             continue
-        steady, moving = ratios[(r["scene"], r["resolution"], r["technique"])]
+        steady, moving = ratios[(r["scene"], r["setup"], r["resolution"], r["technique"])]
         steady.append(float(r["steady_s"]) / float(reference["steady_s"]))
         moving.append(float(r["moving_s"]) / float(reference["moving_s"]))
 
@@ -27,7 +27,8 @@ def summary(values):
     return f"{statistics.median(values):.2f} ({min(values):.2f}–{max(values):.2f})"
 
 
-print("| scene | map | technique | runs | steady / VTK's pass | moving / VTK's pass |")
-print("|---|---:|---|---:|---:|---:|")
-for (scene, resolution, technique), (steady, moving) in ratios.items():
-    print(f"| {scene} | {resolution}² | {technique} | {len(steady)} | {summary(steady)} | {summary(moving)} |")
+print("| scene | light | map | technique | runs | steady / VTK's pass | moving / VTK's pass |")
+print("|---|---|---:|---|---:|---:|---:|")
+for (scene, setup, resolution, technique), (steady, moving) in ratios.items():
+    print(f"| {scene} | {setup} | {resolution}² | {technique} | {len(steady)} | {summary(steady)} "
+          f"| {summary(moving)} |")

@@ -2,7 +2,9 @@
 # Inside the bundle (make_bundle.sh), unpacked at /tmp/b on the GPU machine,
 # as root: runs "$@" with a display whose clients render on the GPU. Xvfb's
 # own GLX is Mesa's; the clients' GLX is the NVIDIA driver's (glvnd's vendor
-# override), which is what makes them render on the GPU.
+# override), which is what makes them render on the GPU. It installs xkbcomp,
+# the keymaps and Mesa's driver where Xvfb looks for them: for a bare machine
+# that is given back after the run, not for one's own.
 B=/tmp/b
 cp $B/bin/xkbcomp /usr/bin/xkbcomp
 mkdir -p /usr/share/X11 /usr/lib/x86_64-linux-gnu/dri
@@ -10,11 +12,13 @@ mkdir -p /usr/share/X11 /usr/lib/x86_64-linux-gnu/dri
 cp $B/dri/swrast_dri.so /usr/lib/x86_64-linux-gnu/dri/
 # One server for every call: without -noreset it would reset, and lose its
 # GLX, when its last client leaves (a second speed run then found it gone).
-if [ ! -e /tmp/.X11-unix/X99 ]; then
+if ! pgrep -x Xvfb > /dev/null; then
+  rm -f /tmp/.X99-lock /tmp/.X11-unix/X99
   LD_LIBRARY_PATH=$B/lib $B/bin/Xvfb :99 -screen 0 1920x1080x24 -nolisten tcp -noreset \
     > /tmp/xvfb.log 2>&1 &
-  sleep 3
+  for _ in $(seq 50); do [ -e /tmp/.X11-unix/X99 ] && break; sleep 0.2; done
+  [ -e /tmp/.X11-unix/X99 ] || { echo "Xvfb did not start:" >&2; cat /tmp/xvfb.log >&2; exit 1; }
 fi
-NVIDIA=$(ls -d /usr/local/nvidia/lib64 /usr/local/nvidia/lib 2>/dev/null | tr '\n' ':')
-export LD_LIBRARY_PATH=$B/lib:$NVIDIA DISPLAY=:99 __GLX_VENDOR_LIBRARY_NAME=nvidia
+NVIDIA=$(ls -d /usr/local/nvidia/lib64 /usr/local/nvidia/lib 2>/dev/null | paste -sd: -)
+export LD_LIBRARY_PATH=$B/lib${NVIDIA:+:$NVIDIA} DISPLAY=:99 __GLX_VENDOR_LIBRARY_NAME=nvidia
 exec "$@"
