@@ -601,6 +601,7 @@ void vtkAbstractShadowMapPass::GatherPropBounds()
 bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
+  shadowmaps::RendererMaps& maps = r.Maps();
   this->GatherPropBounds();
   if (this->Exchange)
   {
@@ -609,14 +610,14 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     r.Frame.Interactive = !this->Exchange->AnyOf(!r.Frame.Interactive);
   }
   std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
-  const bool stale = !r.Maps().Updates.Current(signature);
+  const bool stale = !maps.Updates.Current(signature);
   // Every process asks every frame: another one's casters may have moved.
   if (!(this->Exchange ? this->Exchange->AnyOf(stale) : stale))
   {
     // CollectLights rebuilt the lights without views; the maps hold these.
-    r.Lights = r.Maps().Updates.GetRenderedLights();
-    this->NumberOfShadowMapLayers = r.Maps().Layers;
-    if (r.CodeFor != &r.Maps())
+    r.Lights = maps.Updates.GetRenderedLights();
+    this->NumberOfShadowMapLayers = maps.Layers;
+    if (r.CodeFor != &maps)
     {
       // The shaders follow the lights, layers and storage of the renderer
       // they draw for: another renderer's may differ.
@@ -643,8 +644,8 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   std::string error;
-  if (!r.Maps().Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, r.Maps().Storage.Format,
-        r.Maps().Storage.Mipmaps, error))
+  if (!maps.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, maps.Storage.Format,
+        maps.Storage.Mipmaps, error))
   {
     this->CombineAcrossProcesses(window, false);
     this->ReportGLFailure(error);
@@ -655,18 +656,18 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
     this->ReportGLFailure(r.LastGLError);
     return false;
   }
-  if (!shadowmaps::NeedsSecondOutput(r.Maps().Storage, this->MapCombination(), r.Lights))
+  if (!shadowmaps::NeedsSecondOutput(maps.Storage, this->MapCombination(), r.Lights))
   {
-    r.Maps().Maps.ReleaseSecondOutput();
+    maps.Maps.ReleaseSecondOutput();
   }
-  if (r.Maps().Storage.Samples <= 1)
+  if (maps.Storage.Samples <= 1)
   {
-    r.Maps().Maps.ReleaseSamples();
+    maps.Maps.ReleaseSamples();
   }
-  r.Maps().Uniforms.Pack(r.Lights, r.Frame.CameraView);
-  r.Maps().Updates.Finish(
+  maps.Uniforms.Pack(r.Lights, r.Frame.CameraView);
+  maps.Updates.Finish(
     r.Lights, std::move(signature), this->GetMTime(), r.Frame.Resolution, r.Frame.SceneBounds);
-  r.Maps().Layers = this->NumberOfShadowMapLayers;
+  maps.Layers = this->NumberOfShadowMapLayers;
   r.WarnedGLError.clear();
   ++this->NumberOfShadowMapUpdates;
   return true;
@@ -824,6 +825,7 @@ void vtkAbstractShadowMapPass::DropLightsWithoutUsableViews()
 bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
+  shadowmaps::RendererMaps& maps = r.Maps();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
   const shadowmaps::Combination combination = this->MapCombination();
@@ -832,21 +834,21 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   // among them), the storage, and how a second depth is made (AUTO may change
   // it when some other layer's casters change). Layers that hold every
   // process's casters combined are all rendered and combined again.
-  r.Maps().Updates.BeginUpdate({ this->GetMTime(), r.Maps().Maps.GetAllocations(),
+  maps.Updates.BeginUpdate({ this->GetMTime(), maps.Maps.GetAllocations(),
                                    static_cast<vtkMTimeType>(r.Frame.Resolution),
-                                   static_cast<vtkMTimeType>(r.Maps().Storage.SecondDepth) },
+                                   static_cast<vtkMTimeType>(maps.Storage.SecondDepth) },
     this->NumberOfShadowMapLayers, combination != shadowmaps::Combination::None, r.Casters);
   const bool keepsLightDepths = combination == shadowmaps::Combination::NearestLightDepths;
   if (keepsLightDepths)
   {
-    r.Maps().LightDepths.Reset(r.Maps().Maps, this->NumberOfShadowMapLayers);
+    maps.LightDepths.Reset(maps.Maps, this->NumberOfShadowMapLayers);
   }
   int draws = 0;
   std::vector<shadowmaps::RenderedLayer> rendered;
   bool ok = true;
   {
     shadowmaps::CasterGLState casterState(state,
-      !shadowmaps::IsDepth(r.Maps().Storage.Format) && r.Maps().Storage.MinimumBlending);
+      !shadowmaps::IsDepth(maps.Storage.Format) && maps.Storage.MinimumBlending);
     vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
     renderer->SetActiveCamera(r.LightCamera);
     this->ReserveTextureUnits(renderer);
@@ -864,7 +866,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     // every layer is combined anew each frame, or where coarse mip levels would
     // average the extra casters into what receivers see.
     const bool drawsAllInView = this->GetViews()->MayKeepViews(r.Frame) &&
-      combination == shadowmaps::Combination::None && !r.Maps().Storage.Mipmaps;
+      combination == shadowmaps::Combination::None && !maps.Storage.Mipmaps;
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
@@ -879,31 +881,34 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         request.PostProcessingFollowsFilterScale =
           r.Representation->GetPostProcessingFollowsFilterScale();
         request.DrawsAllInView = drawsAllInView;
-        shadowmaps::LayerPlan plan = r.Maps().Updates.Plan(r.Frame, r.Casters, request);
+        shadowmaps::LayerPlan plan = maps.Updates.Plan(r.Frame, r.Casters, request);
         if (!plan.Render)
         {
           continue;
         }
         const bool linearDepths =
-          light.Views[v].LinearDepth && shadowmaps::IsDepth(r.Maps().Storage.Format);
-        const bool peeling = r.Maps().Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
-        const bool multisampled = r.Maps().Storage.Samples > 1;
+          light.Views[v].LinearDepth && shadowmaps::IsDepth(maps.Storage.Format);
+        const bool peeling = maps.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
+        const bool multisampled = maps.Storage.Samples > 1;
         ok = multisampled
-          ? r.Maps().Maps.BindSamples(state, r.Maps().Storage.Samples, r.LastGLError)
-          : r.Maps().Maps.BindLayer(state, layer, r.LastGLError, linearDepths || peeling || keepsLightDepths);
+          ? maps.Maps.BindSamples(state, maps.Storage.Samples, r.LastGLError)
+          : maps.Maps.BindLayer(
+              state, layer, r.LastGLError, linearDepths || peeling || keepsLightDepths);
         if (ok)
         {
           this->ApplyCasterUniforms(light, light.Views[v]);
           std::vector<vtkProp*>& props = plan.Casters;
           draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
-          ok = !multisampled || r.Maps().Maps.ResolveSamples(state, layer, r.LastGLError);
-          ok = ok && (!linearDepths || r.Maps().LinearDepths.Render(window, r.Maps().Maps, layer, r.LastGLError));
-          ok = ok && (!keepsLightDepths || r.Maps().LightDepths.Keep(state, r.Maps().Maps, layer, r.LastGLError));
+          ok = !multisampled || maps.Maps.ResolveSamples(state, layer, r.LastGLError);
+          ok = ok &&
+            (!linearDepths || maps.LinearDepths.Render(window, maps.Maps, layer, r.LastGLError));
+          ok = ok &&
+            (!keepsLightDepths || maps.LightDepths.Keep(state, maps.Maps, layer, r.LastGLError));
           if (ok && peeling && !props.empty())
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);
           }
-          r.Maps().Updates.Rendered(layer, std::move(plan));
+          maps.Updates.Rendered(layer, std::move(plan));
           rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
         }
       }
@@ -920,7 +925,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   ok = this->CombineAcrossProcesses(window, ok);
   if (!ok)
   {
-    r.Maps().Updates.Invalidate();
+    maps.Updates.Invalidate();
     return false;
   }
   return rendered.empty() || this->PostProcessShadowMaps(renderer, rendered);
@@ -938,6 +943,7 @@ shadowmaps::Combination vtkAbstractShadowMapPass::MapCombination() const
 bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* window, bool ok)
 {
   Internals& r = *this->Internal;
+  shadowmaps::RendererMaps& maps = r.Maps();
   if (!this->Exchange)
   {
     return ok;
@@ -964,8 +970,8 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* win
     }
     return true;
   }
-  return shadowmaps::CombineTexels(this->Exchange, window, how, r.Maps().Maps, r.Maps().Storage, r.Maps().LightDepths,
-    this->NumberOfShadowMapLayers, r.Frame.Resolution, r.LastGLError);
+  return shadowmaps::CombineTexels(this->Exchange, window, how, maps.Maps, maps.Storage,
+    maps.LightDepths, this->NumberOfShadowMapLayers, r.Frame.Resolution, r.LastGLError);
 }
 
 //------------------------------------------------------------------------------
@@ -1127,11 +1133,12 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
+  shadowmaps::RendererMaps& maps = r.Maps();
   this->ReserveTextureUnits(renderer);
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  r.Maps().Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
-  r.Maps().Maps.BindToUnit(window->GetState(), r.MapUnit);
-  r.Maps().Uniforms.NewFrame();
+  maps.Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
+  maps.Maps.BindToUnit(window->GetState(), r.MapUnit);
+  maps.Uniforms.NewFrame();
 }
 
 //------------------------------------------------------------------------------
@@ -1231,14 +1238,15 @@ vtkMTimeType vtkAbstractShadowMapPass::GetShaderStageMTime()
 void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
+  shadowmaps::RendererMaps& maps = r.Maps();
   if (this->AnalysisLight >= static_cast<int>(r.Lights.size()))
   {
     return;
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  const bool twoSurfaces = r.Maps().Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
-  if (!r.MapView.Render(window, r.Maps().Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces,
-        r.Maps().Storage.WarpExponent))
+  const bool twoSurfaces = maps.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
+  if (!r.MapView.Render(window, maps.Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces,
+        maps.Storage.WarpExponent))
   {
     this->ReportGLFailure("the shadow-map view shader did not compile");
   }
