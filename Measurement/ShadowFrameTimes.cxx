@@ -1,5 +1,6 @@
 #include "ShadowFrameTimes.h"
 
+#include <vtkAbstractShadowMapPass.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkRenderPass.h>
 #include <vtkRenderer.h>
@@ -72,6 +73,19 @@ std::vector<double> Of(const std::vector<FrameTime>& frames, double FrameTime::*
   }
   return values;
 }
+
+/// TimedRender's, with what one of this module's passes rendered into its maps.
+FrameTime TimedPassRender(vtkRenderWindow* window, vtkRenderPass* pass)
+{
+  FrameTime time = TimedRender(window);
+  if (auto* ours = vtkAbstractShadowMapPass::SafeDownCast(pass))
+  {
+    time.Layers = ours->GetNumberOfRenderedLayers();
+    // The draw count is that of the last frame that rendered layers.
+    time.CasterDraws = time.Layers > 0 ? ours->GetNumberOfCasterDraws() : 0;
+  }
+  return time;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -103,7 +117,7 @@ std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* rend
       std::vector<FrameTime> steadyRound;
       for (int i = 0; i < frames; ++i)
       {
-        steadyRound.push_back(TimedRender(window));
+        steadyRound.push_back(TimedPassRender(window, passes[p]));
       }
       std::vector<FrameTime> movingRound;
       {
@@ -111,7 +125,7 @@ std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* rend
         for (int i = 0; i < frames; ++i)
         {
           motion(round * frames + i + 1, motionFrames);
-          movingRound.push_back(TimedRender(window));
+          movingRound.push_back(TimedPassRender(window, passes[p]));
         }
       }
       timing[p].SteadyMainThreadCpuPerRound.push_back(
@@ -133,6 +147,8 @@ std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* rend
       : std::accumulate(movingWall.begin(), movingWall.end(), 0.0) / movingWall.size();
     timing[p].SteadyMainThreadCpu = Median(Of(steady[p], &FrameTime::MainThreadCpu));
     timing[p].MovingMainThreadCpu = Median(Of(moving[p], &FrameTime::MainThreadCpu));
+    timing[p].SteadyFrames = steady[p];
+    timing[p].MovingFrames = moving[p];
   }
   motion(0, motionFrames);
   return timing;

@@ -14,6 +14,16 @@ class vtkRenderer;
 namespace shadowbench
 {
 
+/// One frame's wall time and its rendering thread's CPU time, in seconds, and
+/// for this module's passes the map layers it rendered and their caster draws.
+struct FrameTime
+{
+  double Wall = 0.0;
+  double MainThreadCpu = 0.0;
+  int Layers = -1;
+  int CasterDraws = -1;
+};
+
 /// Seconds per frame.
 struct Timing
 {
@@ -36,13 +46,9 @@ struct Timing
   /// round: the machine's speed drifts between rounds.
   std::vector<double> SteadyMainThreadCpuPerRound;
   std::vector<double> MovingMainThreadCpuPerRound;
-};
-
-/// One frame's wall time and its rendering thread's CPU time, in seconds.
-struct FrameTime
-{
-  double Wall = 0.0;
-  double MainThreadCpu = 0.0;
+  /// Every timed frame, round after round.
+  std::vector<FrameTime> SteadyFrames;
+  std::vector<FrameTime> MovingFrames;
 };
 
 /// Renders of a moving camera, while the object lives: `interactive`, as a

@@ -25,13 +25,14 @@ namespace
 constexpr int MovingFramesCounted = 8;
 
 /// What one of our passes does in moving frames after its first: shader sources
-/// built (0 when casters and receivers keep their programs) and map layers
-/// re-rendered per frame, of the layers in use.
+/// built (0 when casters and receivers keep their programs), map layers
+/// re-rendered per frame, of the layers in use, and caster draws per frame.
 struct MovingCounts
 {
   int ShaderBuilds = -1;
   double LayersPerFrame = -1.0;
   int Layers = -1;
+  double CasterDrawsPerFrame = -1.0;
 };
 
 struct SpeedRow
@@ -127,19 +128,24 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
   view.Window->Render();
   const int before = technique.Ours->GetNumberOfShaderBuilds();
   int layers = 0;
+  int casterDraws = 0;
   {
     const MovingCameraRenders drag(view.Window, interactive);
     for (int frame = 2; frame < frames + 2; ++frame)
     {
       orbit(frame, frames + 2);
       view.Window->Render();
-      layers += technique.Ours->GetNumberOfRenderedLayers();
+      const int rendered = technique.Ours->GetNumberOfRenderedLayers();
+      layers += rendered;
+      // The draw count is the last frame's that rendered layers.
+      casterDraws += rendered > 0 ? technique.Ours->GetNumberOfCasterDraws() : 0;
     }
   }
   orbit(0, frames + 2);
   counts.ShaderBuilds = technique.Ours->GetNumberOfShaderBuilds() - before;
   counts.LayersPerFrame = double(layers) / double(frames);
   counts.Layers = technique.Ours->GetNumberOfShadowMapLayers();
+  counts.CasterDrawsPerFrame = double(casterDraws) / double(frames);
   return counts;
 }
 
@@ -242,9 +248,9 @@ void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
   out << "| scene | light | map | technique | first ms | steady ms | moving ms | moving mean ms "
          "| moving / steady | steady / none | moving / none | moving / vtk | moving mean / vtk "
          "| shaders built in 8 moving frames | layers per moving frame "
-         "| steady CPU µs per prop over none | moving CPU µs per prop over none "
+         "| caster draws per moving frame | steady CPU µs per prop over none | moving CPU µs per prop over none "
          "| steady GL draws / uniform sets / counted calls |\n"
-         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const SpeedRow& row : rows)
   {
     const SpeedRow* none = Reference(rows, row, "none");
@@ -264,6 +270,9 @@ void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
         << (row.Counts.Layers < 0 ? std::string("")
                                   : FormatNumber(row.Counts.LayersPerFrame, 2) + " of " +
                std::to_string(row.Counts.Layers))
+        << " | "
+        << (row.Counts.CasterDrawsPerFrame < 0 ? std::string("")
+                                               : FormatNumber(row.Counts.CasterDrawsPerFrame, 1))
         << " | " << CpuPerProp(row, none, &Timing::SteadyMainThreadCpuPerRound) << " | "
         << CpuPerProp(row, none, &Timing::MovingMainThreadCpuPerRound) << " | "
         << CallCounts(row.SteadyCalls) << " |\n";
@@ -276,7 +285,7 @@ void WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& path)
   csv << "scene,setup,resolution,technique,first_s,steady_s,moving_s,moving_mean_s,"
          "shader_builds_in_8_moving_frames,layers_per_moving_frame,layers,props,"
          "steady_main_thread_cpu_s,moving_main_thread_cpu_s,steady_gl_draws,"
-         "steady_gl_uniform_sets,steady_gl_counted_calls\n";
+         "steady_gl_uniform_sets,steady_gl_counted_calls,caster_draws_per_moving_frame\n";
   csv << std::setprecision(6);
   for (const SpeedRow& row : rows)
   {
@@ -285,7 +294,32 @@ void WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& path)
         << row.Time.MovingMean << ',' << row.Counts.ShaderBuilds << ',' << row.Counts.LayersPerFrame << ','
         << row.Counts.Layers << ',' << row.Props << ',' << row.Time.SteadyMainThreadCpu << ','
         << row.Time.MovingMainThreadCpu << ',' << row.SteadyCalls.Draws << ','
-        << row.SteadyCalls.UniformSets << ',' << row.SteadyCalls.All() << '\n';
+        << row.SteadyCalls.UniformSets << ',' << row.SteadyCalls.All() << ','
+        << row.Counts.CasterDrawsPerFrame << '\n';
+  }
+}
+
+/// Every timed frame: which frames of a motion cost what, and whether they
+/// rendered layers.
+void WriteFramesCSV(const std::vector<SpeedRow>& rows, const std::string& path)
+{
+  std::ofstream csv(path);
+  csv << "scene,setup,resolution,technique,frames,index,wall_s,main_thread_cpu_s,layers,"
+         "caster_draws\n";
+  csv << std::setprecision(6);
+  const auto write = [&](const SpeedRow& row, const char* kind,
+                       const std::vector<FrameTime>& frames) {
+    for (std::size_t i = 0; i < frames.size(); ++i)
+    {
+      csv << row.Scene << ',' << row.Setup << ',' << row.Resolution << ',' << row.Technique << ','
+          << kind << ',' << i << ',' << frames[i].Wall << ',' << frames[i].MainThreadCpu << ','
+          << frames[i].Layers << ',' << frames[i].CasterDraws << '\n';
+    }
+  };
+  for (const SpeedRow& row : rows)
+  {
+    write(row, "steady", row.Time.SteadyFrames);
+    write(row, "moving", row.Time.MovingFrames);
   }
 }
 
@@ -328,6 +362,7 @@ bool RunSpeed(const SpeedOptions& options, std::ostream& out, std::ostream& log,
   out << table.str();
   std::ofstream(options.OutputDirectory + "/speed.md") << table.str();
   WriteSpeedCSV(rows, options.OutputDirectory + "/speed.csv");
+  WriteFramesCSV(rows, options.OutputDirectory + "/frames.csv");
   return true;
 }
 

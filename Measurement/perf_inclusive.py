@@ -1,14 +1,17 @@
-"""Samples of the python3 thread under a function in a perf.data recorded with
+"""Samples of the python3 thread (or of the thread named by a third argument,
+vtkshadows for the program's) under a function in a perf.data recorded with
 --call-graph dwarf, and under which of its callees they fell:
 
   /usr/bin/python3 Measurement/perf_inclusive.py uniform.data vtkOpenGLPolyDataMapper::UpdateShaders
+  /usr/bin/python3 Measurement/perf_inclusive.py speed.data shadowmaps::MapUpdates::Plan vtkshadows
 """
 import collections
 import subprocess
 import sys
 
 data, function = sys.argv[1], sys.argv[2]
-script = subprocess.run(["perf", "script", "-i", data, "--comm", "python3", "-F", "ip,sym"],
+thread = sys.argv[3] if len(sys.argv) > 3 else "python3"
+script = subprocess.run(["perf", "script", "-i", data, "--comm", thread, "-F", "ip,sym"],
                         capture_output=True, text=True, check=True).stdout
 callees = collections.Counter()
 total = under = 0

@@ -79,7 +79,7 @@ void PrintUsage(std::ostream& out)
          "lights; prints each technique's distribution, worst cases and flagged cases.\n"
          "speed: first, steady and moving (orbiting) frame times of none, vtk and techniques,\n"
          "interleaved in one process, at --resolution and at 64; prints a markdown table,\n"
-         "writes speed.md and speed.csv.\n"
+         "writes speed.md, speed.csv and frames.csv (every timed frame).\n"
          "\n"
          "options of render:\n"
          "  --scene default|FILE     built-in scene or a model (.obj .ply .stl .vtp .gltf .glb)\n"
