@@ -289,29 +289,38 @@ std::array<Plane, 6> BoxPlanes(const Aabb& box)
 
 std::vector<glm::dvec3> ConvexPolytopeVertices(const std::vector<Plane>& planes, double scale)
 {
-  std::vector<glm::dvec3> vertices;
+  // Run for every cascade in every moving frame: what does not depend on the
+  // innermost loop is computed once, in the same arithmetic as there.
   const size_t count = planes.size();
   const double tolerance = 1e-9 * std::max(scale, 1e-300);
+  std::vector<double> lengths(count);
+  std::vector<double> slack(count);
   for (size_t i = 0; i < count; ++i)
   {
+    lengths[i] = glm::length(planes[i].Normal);
+    slack[i] = -tolerance * lengths[i];
+  }
+  std::vector<glm::dvec3> vertices;
+  for (size_t i = 0; i < count; ++i)
+  {
+    const Plane& a = planes[i];
     for (size_t j = i + 1; j < count; ++j)
     {
+      const Plane& b = planes[j];
+      const glm::dvec3 ab = glm::cross(a.Normal, b.Normal);
       for (size_t k = j + 1; k < count; ++k)
       {
-        const Plane& a = planes[i];
-        const Plane& b = planes[j];
         const Plane& c = planes[k];
         const glm::dvec3 bc = glm::cross(b.Normal, c.Normal);
         const double determinant = glm::dot(a.Normal, bc);
-        const double norms = glm::length(a.Normal) * glm::length(b.Normal) * glm::length(c.Normal);
+        const double norms = lengths[i] * lengths[j] * lengths[k];
         if (!(std::abs(determinant) > 1e-12 * norms))
         {
           continue; // two of the planes are (nearly) parallel
         }
         // Cramer's rule for n_a.x = -d_a, n_b.x = -d_b, n_c.x = -d_c.
-        const glm::dvec3 x = (-a.Offset * bc - b.Offset * glm::cross(c.Normal, a.Normal) -
-                               c.Offset * glm::cross(a.Normal, b.Normal)) /
-          determinant;
+        const glm::dvec3 x =
+          (-a.Offset * bc - b.Offset * glm::cross(c.Normal, a.Normal) - c.Offset * ab) / determinant;
         if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z))
         {
           continue;
@@ -319,7 +328,7 @@ std::vector<glm::dvec3> ConvexPolytopeVertices(const std::vector<Plane>& planes,
         bool inside = true;
         for (size_t m = 0; m < count && inside; ++m)
         {
-          inside = planes[m].Distance(x) >= -tolerance * glm::length(planes[m].Normal);
+          inside = planes[m].Distance(x) >= slack[m];
         }
         if (inside)
         {

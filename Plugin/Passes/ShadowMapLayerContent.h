@@ -19,18 +19,30 @@ struct CasterStamp
   vtkMTimeType Version = 0;
 };
 
+bool operator==(const CasterStamp& a, const CasterStamp& b);
+
 /// `stamps` sorted by prop, for LayerContent.
 std::vector<CasterStamp> SortedByProp(std::vector<CasterStamp> stamps);
 
 /// What a layer was rendered from: its view (the bits of everything about it
-/// that reaches the texels) and the casters drawn into it.
+/// that reaches the texels), the casters drawn into it, the generation of the
+/// frame's casters then (a number that changes whenever the frame's set of
+/// casters or one of their versions does) and whether they were every caster
+/// in the view.
 class LayerContent
 {
 public:
   /// Never rendered, or to be re-rendered: holds nothing.
   LayerContent() = default;
-  /// `view` must not be empty.
-  LayerContent(std::vector<vtkMTimeType> view, std::vector<CasterStamp> drawn);
+  /// `view` must not be empty; `drawn` must be among the casters of
+  /// `generation`.
+  LayerContent(std::vector<vtkMTimeType> view, std::vector<CasterStamp> drawn,
+    unsigned long long generation, bool everyCasterInView);
+
+  /// Whether the layer still shows `view` for casters of `generation` because it
+  /// was drawn with every caster in that view of those casters: whatever a frame
+  /// needs, it holds, with no caster to compare.
+  bool HoldsEveryCasterInView(const std::vector<vtkMTimeType>& view, unsigned long long generation) const;
 
   /// Whether the layer still shows `view` with the `needed` casters: the same
   /// view, every needed caster drawn with its current data, and every drawn
@@ -41,12 +53,16 @@ public:
   /// no receiver in view looks them up (coarse mip levels of a filtered map may
   /// still average them in, as they would had it been needed; drags add none
   /// to mipmapped maps). A drawn caster whose data changed re-renders the layer.
+  /// Where `generation` is still the layer's, the drawn casters are known to be
+  /// current without comparing.
   bool Holds(const std::vector<vtkMTimeType>& view, const std::vector<CasterStamp>& needed,
-    const std::vector<CasterStamp>& current) const;
+    const std::vector<CasterStamp>& current, unsigned long long generation) const;
 
 private:
   std::vector<vtkMTimeType> View; // empty: never rendered
   std::vector<CasterStamp> Drawn; // SortedByProp
+  unsigned long long Generation = 0;
+  bool EveryCasterInView = false;
 };
 
 } // namespace shadowmaps

@@ -273,7 +273,12 @@ void MapUpdates::BeginUpdate(const std::vector<vtkMTimeType>& layersKey, int lay
   {
     stamps.push_back({ caster.Prop, caster.Version });
   }
-  this->CurrentCasters = SortedByProp(std::move(stamps));
+  stamps = SortedByProp(std::move(stamps));
+  if (stamps != this->CurrentCasters)
+  {
+    this->CurrentCasters = std::move(stamps);
+    ++this->CastersGeneration;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -282,10 +287,6 @@ LayerPlan MapUpdates::Plan(
 {
   const ShadowLight& light = *request.Light;
   const LightView& view = light.Views[request.View];
-  const std::vector<glm::dvec3> shaded = ShadedBody(frame, view, *request.Visible);
-  const std::vector<const Caster*> inView = CastersInView(casters, view);
-  const std::vector<const Caster*> needed = CastersReaching(inView, view, shaded,
-    ReachMargin(light, request.View, shaded, frame.FilterReachTexels, request.NormalOffsetTexels));
   LayerPlan plan;
   plan.ViewBits = LayerViewBits(light, request.View, request.PostProcessingFollowsFilterScale);
   plan.DrawnInDrag = frame.Interactive;
@@ -293,8 +294,18 @@ LayerPlan MapUpdates::Plan(
   // chosen by time, which no caster version records: a still frame does not
   // keep a layer drawn in a drag.
   const bool dragged = this->LayersDrawnInDrag[request.Layer] && !frame.Interactive;
+  const LayerContent& content = this->Layers[request.Layer];
+  // A drag's kept views: no caster to sort out.
+  if (!dragged && content.HoldsEveryCasterInView(plan.ViewBits, this->CastersGeneration))
+  {
+    return plan;
+  }
+  const std::vector<glm::dvec3> shaded = ShadedBody(frame, view, *request.Visible);
+  const std::vector<const Caster*> inView = CastersInView(casters, view);
+  const std::vector<const Caster*> needed = CastersReaching(inView, view, shaded,
+    ReachMargin(light, request.View, shaded, frame.FilterReachTexels, request.NormalOffsetTexels));
   if (!dragged &&
-    this->Layers[request.Layer].Holds(plan.ViewBits, StampsOf(needed), this->CurrentCasters))
+    content.Holds(plan.ViewBits, StampsOf(needed), this->CurrentCasters, this->CastersGeneration))
   {
     return plan;
   }
@@ -303,6 +314,7 @@ LayerPlan MapUpdates::Plan(
   // so that casters the camera brings into reach later in the drag are
   // already drawn.
   const std::vector<const Caster*>& drawn = request.DrawsAllInView ? inView : needed;
+  plan.DrawsEveryCasterInView = request.DrawsAllInView;
   plan.Render = true;
   plan.Drawn = StampsOf(drawn);
   std::transform(drawn.begin(), drawn.end(), std::back_inserter(plan.Casters),
@@ -314,7 +326,8 @@ LayerPlan MapUpdates::Plan(
 void MapUpdates::Rendered(int layer, LayerPlan plan)
 {
   this->LayersDrawnInDrag[layer] = plan.DrawnInDrag;
-  this->Layers[layer] = LayerContent(std::move(plan.ViewBits), std::move(plan.Drawn));
+  this->Layers[layer] = LayerContent(std::move(plan.ViewBits), std::move(plan.Drawn),
+    this->CastersGeneration, plan.DrawsEveryCasterInView);
 }
 
 //------------------------------------------------------------------------------

@@ -54,6 +54,7 @@ struct LayerPlan
   std::vector<vtkMTimeType> ViewBits;
   std::vector<CasterStamp> Drawn;
   bool DrawnInDrag = false;
+  bool DrawsEveryCasterInView = false;
 };
 
 class MapUpdates
@@ -100,6 +101,7 @@ private:
   std::vector<bool> LayersDrawnInDrag;
   std::vector<vtkMTimeType> LayersKey;
   std::vector<CasterStamp> CurrentCasters; // SortedByProp, this update's
+  unsigned long long CastersGeneration = 0; // changes with CurrentCasters
   std::vector<ShadowLight> RenderedLights;
   vtkMTimeType RenderedPassTime = 0;
   int RenderedResolution = 0;

@@ -107,6 +107,37 @@ TEST(ShadowMapUpdates, ChangedCastersAndKeysReRender)
   EXPECT_TRUE(updates.Plan(ShadowFrame(), casters, RequestFor(light)).Render) << "new key";
 }
 
+// A layer a drag drew with every caster in its view is kept by the drag's
+// next frames while the casters stay the same; a caster gone, or a new one in
+// view, re-renders it (the casters' generation moved on, and the casters are
+// compared).
+TEST(ShadowMapUpdates, ADragsLayerOfEveryCasterInViewFollowsTheCasters)
+{
+  const ShadowLight light = SunAbove();
+  const int more[2] = { 0, 0 };
+  const std::vector<Caster> two = { BoxCaster(&Props[0], 0.0, 1.0), BoxCaster(&Props[1], 0.0, 1.0) };
+  const std::vector<Caster> one = { two[0] };
+  const std::vector<Caster> three = { two[0], two[1], BoxCaster(&more[0], 0.0, 1.0) };
+  ShadowFrame drag;
+  drag.Interactive = true;
+  LayerRequest request = RequestFor(light);
+  request.DrawsAllInView = true;
+  MapUpdates updates;
+  updates.BeginUpdate({ 1 }, 1, false, two);
+  shadowmaps::LayerPlan first = updates.Plan(drag, two, request);
+  ASSERT_TRUE(first.Render);
+  EXPECT_EQ(first.Casters.size(), 2u);
+  updates.Rendered(0, std::move(first));
+  updates.BeginUpdate({ 1 }, 1, false, two);
+  EXPECT_FALSE(updates.Plan(drag, two, request).Render) << "the same casters";
+  updates.BeginUpdate({ 1 }, 1, false, one);
+  EXPECT_TRUE(updates.Plan(drag, one, request).Render) << "a drawn caster gone";
+  updates.BeginUpdate({ 1 }, 1, false, two);
+  EXPECT_FALSE(updates.Plan(drag, two, request).Render) << "back as drawn: compared, kept";
+  updates.BeginUpdate({ 1 }, 1, false, three);
+  EXPECT_TRUE(updates.Plan(drag, three, request).Render) << "a new caster in view";
+}
+
 // Views are kept only where nothing but the camera moved since.
 TEST(ShadowMapUpdates, ViewsKeptOnlyWhenOnlyTheCameraMoved)
 {
