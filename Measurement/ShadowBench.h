@@ -5,6 +5,8 @@
 #ifndef ShadowBench_h
 #define ShadowBench_h
 
+#include "ShadowModelUp.h"
+
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -18,6 +20,8 @@ struct Options
   /// is set, that file alone.
   std::vector<std::string> Scenes;
   std::string ModelFile;
+  /// The model file's up axis (Auto: shadowscenes::ChooseModelUp).
+  shadowscenes::UpAxis Up = shadowscenes::UpAxis::Auto;
   /// shadowscenes::LightSetupNames.
   std::vector<std::string> Setups;
   /// TechniqueNames() (ShadowTechniques.h); by default DefaultTechniqueNames().
@@ -40,11 +44,23 @@ struct Options
 /// below, flicker along the path for the perpendicular sun.
 Options DefaultOptions();
 
-/// Runs the benchmark: prints the markdown table on `out` and writes into the
-/// output directory results.md, results.csv, one error map PNG per case
-/// (<scene>-<setup>-<technique>-errors.png: leaks red, false shadows blue,
-/// agreement grey) and one chart PNG per scene and set-up. Progress goes to
-/// `log`. Returns false with a one-line `error` on bad options or failure.
+/// `vtkshadows analyze`'s: a quick answer (about a minute and a half for a
+/// 110,000-triangle model on a 2-core machine with llvmpipe): the techniques
+/// that differ most (QuickTechniqueNames), one set-up per light kind
+/// (perpendicular, spot, point), 3 timed frames and 12 frames of flicker.
+Options QuickAnalyzeOptions();
+
+/// A technique is recommended if its frames stay within this many times the
+/// uniform map's.
+constexpr double RecommendationBudget = 1.25;
+
+/// Runs the benchmark: prints the markdown table and the recommendation
+/// (ShadowRecommendation.h) on `out` and writes into the output directory
+/// results.md (both), results.csv, recommendation.json, one error map PNG per
+/// case (<scene>-<setup>-<technique>-errors.png: leaks red, false shadows
+/// blue, agreement grey) and one chart PNG per scene and set-up. Progress, with
+/// the time left, goes to `log`, and for a model file the up axis it was given.
+/// Returns false with a one-line `error` on bad options or failure.
 bool Run(const Options& options, std::ostream& out, std::ostream& log, std::string& error);
 
 } // namespace shadowbench

@@ -1,5 +1,7 @@
 #include "ShadowScenes.h"
 
+#include <vtkMatrix4x4.h>
+
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -545,6 +547,31 @@ vtkSmartPointer<vtkPolyData> ReadModelIsolated(
 }
 
 #endif
+
+/** The model turned so that its up axis is +z (its normals with it). */
+vtkSmartPointer<vtkPolyData> TurnedUp(vtkPolyData* model, UpAxis up)
+{
+  if (up == UpAxis::PlusZ || up == UpAxis::Auto)
+  {
+    return model;
+  }
+  const std::array<double, 9> rotation = RotationToZUp(up);
+  vtkNew<vtkMatrix4x4> matrix;
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      matrix->SetElement(row, column, rotation[3 * row + column]);
+    }
+  }
+  vtkNew<vtkTransform> transform;
+  transform->SetMatrix(matrix);
+  vtkNew<vtkTransformPolyDataFilter> turn;
+  turn->SetTransform(transform);
+  turn->SetInputData(model);
+  turn->Update();
+  return turn->GetOutput();
+}
 
 /** Smooth normals for models that come without them (STL, many PLY files). */
 vtkSmartPointer<vtkPolyData> WithNormals(vtkPolyData* model)
@@ -1180,7 +1207,8 @@ void BuildDefaultScene(vtkRenderer* renderer)
   SetCamera(renderer, position, focalPoint, 40.0);
 }
 
-bool BuildFileScene(vtkRenderer* renderer, const std::string& path, std::string& error)
+bool BuildFileScene(
+  vtkRenderer* renderer, const std::string& path, UpAxis up, ModelUp& chosen, std::string& error)
 {
   const std::string extension = LowerCaseExtension(path);
   if (!IsSupportedModelExtension(extension))
@@ -1201,7 +1229,10 @@ bool BuildFileScene(vtkRenderer* renderer, const std::string& path, std::string&
     error = "cannot read model '" + path + "': " + Describe(failure);
     return false;
   }
-  model = WithNormals(model);
+  std::array<double, 6> read{};
+  model->GetBounds(read.data());
+  chosen = ChooseModelUp(up, extension, read);
+  model = WithNormals(TurnedUp(model, chosen.Axis));
 
   double bounds[6];
   model->GetBounds(bounds);
@@ -1323,7 +1354,8 @@ bool BuildModelScene(vtkRenderer* renderer, std::string& error)
       "': no such readable file (it comes with Debian's assimp-testmodels)";
     return false;
   }
-  if (!BuildFileScene(renderer, path, error))
+  ModelUp up; // the spider's own axes: +z
+  if (!BuildFileScene(renderer, path, UpAxis::PlusZ, up, error))
   {
     return false;
   }

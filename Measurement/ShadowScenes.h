@@ -1,8 +1,10 @@
 // Scenes and lights shared by the vtkshadows program, the tests and the
 // benchmarks. All scenes use +z as the up axis; models loaded from files are
-// not rotated.
+// turned so that theirs is too (ShadowModelUp.h).
 #ifndef ShadowScenes_h
 #define ShadowScenes_h
+
+#include "ShadowModelUp.h"
 
 #include <string>
 #include <vector>
@@ -22,12 +24,14 @@ void BuildDefaultScene(vtkRenderer* renderer);
 
 /**
  * Loads an OBJ, PLY, STL, VTP, glTF or glb model (chosen by the extension,
- * case-insensitive), puts it on a ground plane four times its size and frames
- * the camera on it from an elevated three-quarter view. On failure (unknown
- * extension, unreadable file, no geometry) returns false, leaves the renderer
- * untouched and sets `error` to a one-line message.
+ * case-insensitive), turns it so that its up axis (`up`, or ChooseModelUp's
+ * choice for Auto, returned in `chosen`) is +z, puts it on a ground plane four
+ * times its size and frames the camera on it from an elevated three-quarter
+ * view. On failure (unknown extension, unreadable file, no geometry) returns
+ * false, leaves the renderer untouched and sets `error` to a one-line message.
  */
-bool BuildFileScene(vtkRenderer* renderer, const std::string& path, std::string& error);
+bool BuildFileScene(vtkRenderer* renderer, const std::string& path, UpAxis up, ModelUp& chosen,
+  std::string& error);
 
 /** True for the light kinds AddLight understands: "sun", "spot", "point". */
 bool IsLightKind(const std::string& kind);

@@ -241,6 +241,12 @@ std::vector<std::string> DefaultTechniqueNames()
 }
 
 //------------------------------------------------------------------------------
+std::vector<std::string> QuickTechniqueNames()
+{
+  return { "none", "vtk", "uniform", "lispsm", "csm", "second-depth", "evsm4" };
+}
+
+//------------------------------------------------------------------------------
 std::vector<std::string> TechniqueNames()
 {
   std::vector<std::string> names = DefaultTechniqueNames();

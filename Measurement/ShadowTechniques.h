@@ -53,6 +53,10 @@ std::vector<std::string> TechniqueNames();
 /// the dual pass's forced layer methods and the bias sweep.
 std::vector<std::string> DefaultTechniqueNames();
 
+/// One of each family, the ones that differ most: the references, the uniform
+/// map, LiSPSM, cascades, second-depth and moments (vtkshadows analyze).
+std::vector<std::string> QuickTechniqueNames();
+
 /// True for a name in TechniqueNames().
 bool IsTechnique(const std::string& name);
 

@@ -73,8 +73,11 @@ void PrintUsage(std::ostream& out)
          "\n"
          "render: renders a scene with shadows and writes a PNG; prints the PNG's absolute path.\n"
          "bench: measures every technique on the benchmark scenes against ray-traced truth;\n"
-         "prints a markdown table, writes error maps, charts, results.md and results.csv.\n"
-         "analyze: the same for a model file (.obj .ply .stl .vtp .gltf .glb) on a ground.\n"
+         "prints a markdown table and which technique to use per light kind (the most accurate\n"
+         "within 1.25x the uniform map's frame), writes error maps, charts, results.md,\n"
+         "results.csv and recommendation.json.\n"
+         "analyze: the same for a model file (.obj .ply .stl .vtp .gltf .glb) on a ground,\n"
+         "by default a quick answer (about a minute and a half on 2 cores, llvmpipe).\n"
          "sweep: measures techniques against ray-traced truth on random scenes, cameras and\n"
          "lights; prints each technique's distribution, worst cases and flagged cases.\n"
          "speed: first, steady and moving (orbiting) frame times of none, vtk and techniques,\n"
@@ -84,6 +87,8 @@ void PrintUsage(std::ostream& out)
          "options of render:\n"
          "  --scene default|FILE     built-in scene or a model (.obj .ply .stl .vtp .gltf .glb)\n"
          "                           [default]\n"
+         "  --up x|y|z|-x|-y|-z      the model's up axis [glTF: y; a model standing on a\n"
+         "                           coordinate plane: that axis; OBJ, PLY: y; STL, VTP: z]\n"
          "  --light sun|spot|point   light kind [sun]\n"
          "  --azimuth A              light azimuth in degrees, from +x towards +y [60]\n"
          "  --elevation E            light elevation above the ground, -90..90 [45]\n"
@@ -100,12 +105,15 @@ void PrintUsage(std::ostream& out)
          "  -o, --output FILE        output PNG [./vtkshadows.png]\n"
          "  -h, --help               this help\n"
          "\n"
-         "options of bench and analyze (lists are comma-separated):\n"
+         "options of bench and analyze (lists are comma-separated; analyze's defaults in\n"
+         "braces):\n"
          "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
-         "  --setups LIST            overhead,perpendicular,behind,facing,spot,point [all]\n"
-         "  --techniques LIST        none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
+         "  --up x|y|z|-x|-y|-z      analyze only: the model's up axis, as for render\n"
+         "  --setups LIST|all        overhead,perpendicular,behind,facing,spot,point [all]\n"
+         "                           {perpendicular,spot,point}\n"
+         "  --techniques LIST|all    none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
          "                           csm-tight,csm-lispsm,second-depth,midpoint,dual,evsm4\n"
-         "                           [all of these]\n"
+         "                           [all of these] {uniform,lispsm,csm,second-depth,evsm4}\n"
          "                           (csm: 4 cascades of N/2, stable, tight, or tight with LiSPSM\n"
          "                           in each cascade and in a spot's tiled map); also dual-minblend,\n"
          "                           dual-peel (forced layer method), dual-offsetK (K: 0.5,1,4,8\n"
@@ -121,9 +129,9 @@ void PrintUsage(std::ostream& out)
          "  --technique NAME         one technique (with none and vtk)\n"
          "  --resolution N           map size of this project's techniques [2048]\n"
          "  --size WxH               image size [640x360]\n"
-         "  --flicker-frames N       frames of the camera path, 0 or 2..600 [60]\n"
+         "  --flicker-frames N       frames of the camera path, 0 or 2..600 [60] {12}\n"
          "  --flicker-setups LIST    set-ups measured along the path [perpendicular]\n"
-         "  --timed-frames N         frames per frame-time figure, 1..100 [8]\n"
+         "  --timed-frames N         frames per frame-time figure, 1..100 [8] {3}\n"
          "  --out DIR                output directory [./bench]\n"
          "\n"
          "options of speed: those of bench but the flicker options, with\n"
@@ -199,6 +207,15 @@ std::string ParseScene(const std::string& value, Options& options)
     return "scene file name is empty";
   }
   options.scene = value;
+  return {};
+}
+
+std::string ParseUp(const std::string& value, Options& options)
+{
+  if (!shadowscenes::ParseUpAxis(value, options.bench.Up))
+  {
+    return "unknown up axis '" + value + "' (expected x, y, z, -x, -y or -z)";
+  }
   return {};
 }
 
@@ -381,7 +398,7 @@ std::string CheckSetups(const std::vector<std::string>& setups)
 
 std::string ParseSetups(const std::string& value, Options& options)
 {
-  options.bench.Setups = SplitList(value);
+  options.bench.Setups = value == "all" ? shadowscenes::LightSetupNames() : SplitList(value);
   return CheckSetups(options.bench.Setups);
 }
 
@@ -393,6 +410,11 @@ std::string ParseFlickerSetups(const std::string& value, Options& options)
 
 std::string ParseTechniques(const std::string& value, Options& options)
 {
+  if (value == "all")
+  {
+    options.bench.Techniques = shadowbench::DefaultTechniqueNames();
+    return {};
+  }
   for (const std::string& technique : SplitList(value))
   {
     if (!shadowbench::IsTechnique(technique))
@@ -554,6 +576,7 @@ const std::map<std::string, OptionParser>& RenderOptionParsers()
 {
   static const std::map<std::string, OptionParser> parsers = {
     { "--scene", ParseScene },
+    { "--up", ParseUp },
     { "--light", ParseLight },
     { "--azimuth", ParseAzimuth },
     { "--elevation", ParseElevation },
@@ -586,6 +609,17 @@ const std::map<std::string, OptionParser>& BenchOptionParsers(bool withScenes)
     return parsers;
   }();
   return withScenes ? bench : common;
+}
+
+/** Bench's options without the scenes, with the model's up axis. */
+const std::map<std::string, OptionParser>& AnalyzeOptionParsers()
+{
+  static const std::map<std::string, OptionParser> parsers = [] {
+    auto analyze = BenchOptionParsers(false);
+    analyze["--up"] = ParseUp;
+    return analyze;
+  }();
+  return parsers;
 }
 
 /** Bench's options without the flicker path, and the street among the scenes. */
@@ -744,8 +778,9 @@ bool ParseCommandLine(
       error = "analyze needs a model FILE";
       return false;
     }
+    options.bench = shadowbench::QuickAnalyzeOptions();
     options.bench.ModelFile = arguments[1];
-    return ParseSubcommandOptions(arguments, 2, BenchOptionParsers(false), options, error);
+    return ParseSubcommandOptions(arguments, 2, AnalyzeOptionParsers(), options, error);
   }
   error = "unknown subcommand '" + arguments[0] + "' (expected render, bench, analyze, sweep or speed)";
   return false;
@@ -760,7 +795,13 @@ bool BuildScene(vtkRenderer* renderer, const Options& options, std::string& erro
     shadowscenes::BuildDefaultScene(renderer);
     return true;
   }
-  return shadowscenes::BuildFileScene(renderer, options.scene, error);
+  shadowscenes::ModelUp up;
+  if (!shadowscenes::BuildFileScene(renderer, options.scene, options.bench.Up, up, error))
+  {
+    return false;
+  }
+  std::cerr << shadowscenes::DescribeModelUp(up) << std::endl;
+  return true;
 }
 
 void ApplyTechnique(vtkRenderer* renderer, vtkRenderWindow* window, const Options& options)

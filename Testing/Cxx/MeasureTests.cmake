@@ -53,3 +53,14 @@ if (TARGET vtkshadows)
             "$<TARGET_FILE:vtkshadows>" "${CMAKE_CURRENT_BINARY_DIR}/Output")
   set_tests_properties(CLI.Sweep PROPERTIES TIMEOUT 900)
 endif ()
+
+# A user's model the right way up, and what `vtkshadows analyze` recommends.
+add_executable(TestShadowModelUp Cxx/TestShadowModelUp.cxx)
+target_link_libraries(TestShadowModelUp PRIVATE ShadowScenes VTK::IOPLY VTK::FiltersGeneral
+  VTK::FiltersCore VTK::FiltersSources VTK::RenderingCore VTK::RenderingOpenGL2 GTest::gtest_main)
+vtk_module_autoinit(TARGETS TestShadowModelUp MODULES ${shadowscenes_vtk_modules})
+gtest_discover_tests(TestShadowModelUp DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
+
+add_executable(TestShadowRecommendation Cxx/TestShadowRecommendation.cxx)
+target_link_libraries(TestShadowRecommendation PRIVATE ShadowBench GTest::gtest_main)
+gtest_discover_tests(TestShadowRecommendation)

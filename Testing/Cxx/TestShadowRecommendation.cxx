@@ -1,0 +1,92 @@
+// Which technique `vtkshadows analyze` recommends (Measurement/
+// ShadowRecommendation.h), and its progress line (ShadowProgress.h).
+#include "ShadowProgress.h"
+#include "ShadowRecommendation.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace
+{
+using shadowbench::MeasuredCase;
+using shadowbench::Recommend;
+
+MeasuredCase Case(const std::string& setup, const std::string& technique, double misclassified,
+  double steady, double moving, bool ours = true)
+{
+  return { "file", setup, technique, ours ? "vtkSomePass" : "", 1024, misclassified, steady, moving };
+}
+
+TEST(ShadowRecommendation, TheMostAccurateWithinTheBudgetAndTheRunnerUp)
+{
+  const std::vector<MeasuredCase> cases = {
+    Case("perpendicular", "none", 9.0, 0.8, 0.8, false),
+    Case("perpendicular", "vtk", 20.0, 0.9, 0.9, false),
+    Case("perpendicular", "uniform", 1.0, 1.0, 1.0),
+    Case("perpendicular", "csm", 0.4, 1.2, 1.24),
+    Case("perpendicular", "lispsm", 0.6, 1.1, 1.1),
+    Case("perpendicular", "second-depth", 0.1, 1.2, 1.6), // moving over the budget
+  };
+  const auto recommendations = Recommend(cases, 1.25);
+  ASSERT_EQ(recommendations.size(), 1u);
+  const auto& r = recommendations[0];
+  EXPECT_EQ(r.LightKind, "sun");
+  ASSERT_TRUE(r.HasBest);
+  EXPECT_EQ(r.Best.Technique, "csm");
+  EXPECT_NEAR(r.Best.Cost, 1.24, 1e-12) << "the larger of the steady and moving ratios";
+  ASSERT_TRUE(r.HasRunnerUp);
+  EXPECT_EQ(r.RunnerUp.Technique, "lispsm");
+  ASSERT_TRUE(r.HasOverBudget);
+  EXPECT_EQ(r.MostAccurate.Technique, "second-depth");
+  EXPECT_NE(r.Why.find("second-depth"), std::string::npos) << r.Why;
+}
+
+TEST(ShadowRecommendation, OneRecommendationPerLightKindAveragedOverItsSetups)
+{
+  const std::vector<MeasuredCase> cases = {
+    Case("perpendicular", "uniform", 1.0, 1.0, 1.0),
+    Case("perpendicular", "csm", 0.2, 1.1, 1.1),
+    Case("facing", "uniform", 1.0, 1.0, 1.0),
+    Case("facing", "csm", 2.0, 1.1, 1.1), // mean 1.1: worse than the uniform map's 1.0
+    Case("spot", "uniform", 0.5, 1.0, 1.0),
+    Case("spot", "csm", 0.3, 2.0, 2.0),
+    Case("point", "csm", 0.1, 1.0, 1.0), // no uniform map measured here
+  };
+  const auto recommendations = Recommend(cases, 1.25);
+  ASSERT_EQ(recommendations.size(), 3u);
+  EXPECT_EQ(recommendations[0].LightKind, "sun");
+  EXPECT_EQ(recommendations[0].Setups, (std::vector<std::string>{ "perpendicular", "facing" }));
+  EXPECT_EQ(recommendations[0].Best.Technique, "uniform");
+  EXPECT_NEAR(recommendations[0].RunnerUp.Misclassified, 1.1, 1e-12);
+  EXPECT_EQ(recommendations[1].LightKind, "spot");
+  EXPECT_EQ(recommendations[1].Best.Technique, "uniform") << "csm is over the budget";
+  EXPECT_FALSE(recommendations[1].HasRunnerUp);
+  EXPECT_EQ(recommendations[2].LightKind, "point");
+  EXPECT_FALSE(recommendations[2].HasBest) << "no cost reference";
+  EXPECT_NE(recommendations[2].Why.find("uniform"), std::string::npos);
+}
+
+TEST(ShadowRecommendation, WrittenAsMarkdownAndJSON)
+{
+  const std::vector<MeasuredCase> cases = { Case("spot", "uniform", 0.5, 1.0, 1.0),
+    Case("spot", "lispsm", 0.25, 1.0, 1.1) };
+  const auto recommendations = Recommend(cases, 1.25);
+  std::ostringstream markdown;
+  shadowbench::WriteRecommendationsMarkdown(recommendations, markdown);
+  EXPECT_NE(markdown.str().find("| file | spot | spot | lispsm |"), std::string::npos) << markdown.str();
+  std::ostringstream json;
+  shadowbench::WriteRecommendationsJSON(recommendations, json);
+  EXPECT_NE(json.str().find("\"best\": {\"technique\": \"lispsm\""), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"runner_up\": {\"technique\": \"uniform\""), std::string::npos);
+}
+
+TEST(ShadowProgress, TheTimeLeftFollowsTheWorkDone)
+{
+  EXPECT_EQ(shadowbench::ProgressLine(0.0, 100.0, 0.0), "[0%, 0:00 so far]");
+  EXPECT_EQ(shadowbench::ProgressLine(25.0, 100.0, 30.0), "[25%, 0:30 so far, about 1:30 left]");
+  EXPECT_EQ(shadowbench::ProgressLine(50.0, 100.0, 61.0), "[50%, 1:01 so far, about 1:01 left]");
+  EXPECT_EQ(shadowbench::ProgressLine(100.0, 100.0, 90.0), "[100%, 1:30 so far]");
+  EXPECT_EQ(shadowbench::ProgressLine(150.0, 100.0, 90.0), "[100%, 1:30 so far]") << "clamped";
+}
+} // namespace
