@@ -27,7 +27,7 @@ std::vector<CasterStamp> SortedByProp(std::vector<CasterStamp> stamps);
 /// What a layer was rendered from: its view (the bits of everything about it
 /// that reaches the texels), the casters drawn into it, the generation of the
 /// frame's casters then (a number that changes whenever the frame's set of
-/// casters or one of their versions does) and whether they were every caster
+/// casters, one of their versions or one of their bounds does) and whether they were every caster
 /// in the view.
 class LayerContent
 {

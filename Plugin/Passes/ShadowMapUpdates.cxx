@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <iterator>
 #include <limits>
@@ -273,10 +274,20 @@ void MapUpdates::BeginUpdate(const std::vector<vtkMTimeType>& layersKey, int lay
   {
     stamps.push_back({ caster.Prop, caster.Version });
   }
-  stamps = SortedByProp(std::move(stamps));
-  if (stamps != this->CurrentCasters)
+  this->CurrentCasters = SortedByProp(std::move(stamps));
+  // Which casters a view holds follows their bounds too, and only an actor's
+  // bounds are known to follow its version (PropRecords).
+  std::vector<vtkMTimeType> castersKey;
+  castersKey.reserve(8 * casters.size());
+  for (const Caster& caster : casters)
   {
-    this->CurrentCasters = std::move(stamps);
+    castersKey.push_back(static_cast<vtkMTimeType>(reinterpret_cast<std::uintptr_t>(caster.Prop)));
+    castersKey.push_back(caster.Version);
+    AppendBoxBits(caster.Bounds, castersKey);
+  }
+  if (castersKey != this->CastersKey)
+  {
+    this->CastersKey = std::move(castersKey);
     ++this->CastersGeneration;
   }
 }

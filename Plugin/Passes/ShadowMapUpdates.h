@@ -101,7 +101,9 @@ private:
   std::vector<bool> LayersDrawnInDrag;
   std::vector<vtkMTimeType> LayersKey;
   std::vector<CasterStamp> CurrentCasters; // SortedByProp, this update's
-  unsigned long long CastersGeneration = 0; // changes with CurrentCasters
+  // Moves on whenever a caster, its version or its bounds change.
+  std::vector<vtkMTimeType> CastersKey;
+  unsigned long long CastersGeneration = 0;
   std::vector<ShadowLight> RenderedLights;
   vtkMTimeType RenderedPassTime = 0;
   int RenderedResolution = 0;

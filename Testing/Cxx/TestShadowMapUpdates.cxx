@@ -138,6 +138,30 @@ TEST(ShadowMapUpdates, ADragsLayerOfEveryCasterInViewFollowsTheCasters)
   EXPECT_TRUE(updates.Plan(drag, three, request).Render) << "a new caster in view";
 }
 
+// A prop that is not an actor may move with its version unchanged (only an
+// actor's bounds follow its version): its bounds entering a drag's layer's view
+// re-render the layer.
+TEST(ShadowMapUpdates, ADragsLayerFollowsCastersBoundsAsWellAsVersions)
+{
+  const ShadowLight light = SunAbove();
+  Caster away = BoxCaster(&Props[0], 0.0, 1.0);
+  away.Bounds = Aabb::FromBounds(std::array<double, 6>{ 100.0, 101.0, 0.0, 1.0, 0.0, 1.0 }.data());
+  const std::vector<Caster> before = { BoxCaster(&Props[1], 0.0, 1.0), away };
+  const std::vector<Caster> after = { BoxCaster(&Props[1], 0.0, 1.0), BoxCaster(&Props[0], 0.0, 1.0) };
+  ShadowFrame drag;
+  drag.Interactive = true;
+  LayerRequest request = RequestFor(light);
+  request.DrawsAllInView = true;
+  MapUpdates updates;
+  updates.BeginUpdate({ 1 }, 1, false, before);
+  shadowmaps::LayerPlan first = updates.Plan(drag, before, request);
+  ASSERT_TRUE(first.Render);
+  EXPECT_EQ(first.Casters.size(), 1u) << "the one out of view is not drawn";
+  updates.Rendered(0, std::move(first));
+  updates.BeginUpdate({ 1 }, 1, false, after);
+  EXPECT_TRUE(updates.Plan(drag, after, request).Render) << "the same version, now in view";
+}
+
 // Views are kept only where nothing but the camera moved since.
 TEST(ShadowMapUpdates, ViewsKeptOnlyWhenOnlyTheCameraMoved)
 {
