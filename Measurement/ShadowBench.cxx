@@ -429,7 +429,8 @@ std::vector<Recommendation> RecommendationsOf(const std::vector<Row>& rows)
   for (const Row& row : rows)
   {
     cases.push_back({ row.Scene, row.Setup, row.Technique, row.PassClass, row.Resolution,
-      row.Errors.Misclassified, row.Time.Steady, row.Time.Moving });
+      row.Errors.Misclassified, row.Time.Steady, row.Time.Moving,
+      static_cast<long long>(row.Errors.Counted) });
   }
   return Recommend(cases, RecommendationBudget);
 }
@@ -439,6 +440,8 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
   std::ofstream csv(path);
   csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,bleeding,inner,"
          "mean_abs_diff,undersampled,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels\n";
+  // Enough digits for the recommendation to be recomputed from the file.
+  csv << std::setprecision(12);
   for (const Row& row : rows)
   {
     csv << row.Scene << ',' << row.Setup << ',' << row.Technique << ',' << row.Resolution << ','

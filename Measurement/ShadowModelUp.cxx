@@ -11,35 +11,37 @@ namespace
 {
 constexpr double RestTolerance = 0.01; // of the model's extent along the axis
 
-UpAxis Signed(int axis, bool plus)
+UpAxis Plus(int axis)
 {
-  static const UpAxis plusAxes[3] = { UpAxis::PlusX, UpAxis::PlusY, UpAxis::PlusZ };
-  static const UpAxis minusAxes[3] = { UpAxis::MinusX, UpAxis::MinusY, UpAxis::MinusZ };
-  return plus ? plusAxes[axis] : minusAxes[axis];
+  static const UpAxis axes[3] = { UpAxis::PlusX, UpAxis::PlusY, UpAxis::PlusZ };
+  return axes[axis];
 }
 
-// The axes along which the model stands on the plane coordinate = 0, signed
-// the way it stands: +axis when it lies above the plane, -axis below.
-std::vector<UpAxis> AxesResting(const std::array<double, 6>& bounds)
+bool Straddles(double low, double high)
 {
-  std::vector<UpAxis> resting;
+  return low < 0.0 && high > 0.0;
+}
+
+// The axes along which the model stands on the plane coordinate = 0 (its
+// minimum there, its maximum above) while the other two cross 0: a model
+// placed on its modeller's ground and centred over the origin.
+std::vector<UpAxis> AxesStoodOn(const std::array<double, 6>& bounds)
+{
+  std::vector<UpAxis> stood;
   for (int axis = 0; axis < 3; ++axis)
   {
     const double low = bounds[2 * axis];
     const double high = bounds[2 * axis + 1];
     const double extent = high - low;
-    if (!(extent > 0.0) || !std::isfinite(extent))
+    const int others[2] = { (axis + 1) % 3, (axis + 2) % 3 };
+    if (extent > 0.0 && std::isfinite(extent) && std::abs(low) <= RestTolerance * extent &&
+      Straddles(bounds[2 * others[0]], bounds[2 * others[0] + 1]) &&
+      Straddles(bounds[2 * others[1]], bounds[2 * others[1] + 1]))
     {
-      continue;
-    }
-    const bool lowAtZero = std::abs(low) <= RestTolerance * extent;
-    const bool highAtZero = std::abs(high) <= RestTolerance * extent;
-    if (lowAtZero != highAtZero)
-    {
-      resting.push_back(Signed(axis, lowAtZero));
+      stood.push_back(Plus(axis));
     }
   }
-  return resting;
+  return stood;
 }
 } // namespace
 
@@ -101,12 +103,11 @@ ModelUp ChooseModelUp(
   {
     return { UpAxis::PlusY, "glTF is Y-up by its specification" };
   }
-  const std::vector<UpAxis> resting = AxesResting(bounds);
-  if (resting.size() == 1)
+  const std::vector<UpAxis> stood = AxesStoodOn(bounds);
+  if (stood.size() == 1)
   {
-    const std::string name = UpAxisName(resting[0]);
-    return { resting[0],
-      "the model stands on the plane " + name.substr(1) + " = 0, on its " + name + " side" };
+    return { stood[0],
+      "the model stands on the plane " + UpAxisName(stood[0]).substr(1) + " = 0" };
   }
   if (extension == ".obj" || extension == ".ply")
   {

@@ -41,10 +41,10 @@ struct ModelUp
  * dot) and bounds (xmin, xmax, ymin, ymax, zmin, zmax), where `requested` is
  * Auto; else `requested` itself. Auto takes, in order:
  *  - glTF (.gltf, .glb): +y, its specification's;
- *  - a model that stands on a coordinate plane: the one axis whose minimum is
- *    0 (within 1% of the model's extent along it) and whose maximum is not,
- *    +axis (-axis for a maximum at 0 and a minimum not), where no other axis
- *    does so: modellers put their ground at 0 along their up axis;
+ *  - a model that stands on a coordinate plane: +axis for the axis whose
+ *    minimum is 0 (within 1% of the model's extent along it) while the other
+ *    two cross 0: modellers put their ground at 0 along their up axis and
+ *    centre the model over the origin;
  *  - else the format's habit: +y for OBJ and PLY, +z for STL and VTP.
  */
 ModelUp ChooseModelUp(UpAxis requested, const std::string& extension, const std::array<double, 6>& bounds);

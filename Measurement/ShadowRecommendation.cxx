@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <map>
 #include <ostream>
@@ -52,7 +53,7 @@ bool Evaluate(const std::vector<MeasuredCase>& cases, const std::string& scene,
     const MeasuredCase* mine = Find(cases, scene, setup, technique);
     const MeasuredCase* uniform = Find(cases, scene, setup, "uniform");
     if (!mine || !uniform || !(uniform->Steady > 0.0) || !(uniform->Moving > 0.0) ||
-      !std::isfinite(mine->Misclassified))
+      !std::isfinite(mine->Misclassified) || mine->Counted <= 0)
     {
       return false;
     }
@@ -90,7 +91,7 @@ std::string Why(const Recommendation& r)
   if (!r.HasBest)
   {
     return "no recommendation: the uniform map, the cost's reference, or this module's techniques "
-           "were not measured in every " + r.LightKind + " set-up";
+           "have no finite figures over counted pixels in every " + r.LightKind + " set-up";
   }
   std::string why = r.Best.Technique + " is the most accurate within " + Number(r.Budget, 2) +
     "x the uniform map's frame: " + Percent(r.Best.Misclassified) + "% of pixels misclassified, frames " +
@@ -108,6 +109,13 @@ std::string JSONString(const std::string& text)
   std::string quoted = "\"";
   for (const char c : text)
   {
+    if (static_cast<unsigned char>(c) < 0x20)
+    {
+      char escaped[8];
+      std::snprintf(escaped, sizeof(escaped), "\\u%04x", static_cast<unsigned>(c));
+      quoted += escaped;
+      continue;
+    }
     if (c == '"' || c == '\\')
     {
       quoted += '\\';

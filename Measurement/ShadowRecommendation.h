@@ -23,6 +23,7 @@ struct MeasuredCase
   double Misclassified = 0.0; // % of counted pixels
   double Steady = 0.0;        // seconds per frame
   double Moving = 0.0;
+  long long Counted = 0; // pixels the error is of; 0: not measured
 };
 
 /// A technique's figures over the set-ups of one light kind.
@@ -56,7 +57,8 @@ std::string LightKindOfSetup(const std::string& setup);
 
 /**
  * For each scene and light kind in `cases` (in their order): this module's
- * techniques (a PassClass) measured in every set-up of that kind, ranked by
+ * techniques (a PassClass) measured in every set-up of that kind (finite
+ * figures over counted pixels), ranked by
  * their mean misclassified % (then by cost) among those whose Cost is at most
  * `budget`. The uniform map is the cost's reference: without it in every
  * set-up of a kind, that kind gets no best (Why says so).

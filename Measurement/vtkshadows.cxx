@@ -149,7 +149,7 @@ void PrintUsage(std::ostream& out)
          "options of sweep:\n"
          "  --cases N                random cases, 1..1000000 [200]\n"
          "  --seed S                 seed of the sweep, 0..2^64-1 [1]\n"
-         "  --techniques LIST        as for bench, without none\n"
+         "  --techniques LIST|all    as for bench, without none\n"
          "                           [uniform,psm,lispsm,tsm,gmnpr,csm,csm-tight,csm-lispsm]\n"
          "  --resolution N           map size [2048]\n"
          "  --size WxH               base image size, each case scales each side by 0.5..1.5\n"
@@ -531,6 +531,11 @@ std::string ParseSweepTechniques(const std::string& value, Options& options)
 {
   std::string error = ParseTechniques(value, options);
   options.sweep.Techniques = options.bench.Techniques;
+  if (value == "all") // every technique that casts shadows
+  {
+    auto& techniques = options.sweep.Techniques;
+    techniques.erase(std::remove(techniques.begin(), techniques.end(), "none"), techniques.end());
+  }
   return error;
 }
 
@@ -792,6 +797,11 @@ bool BuildScene(vtkRenderer* renderer, const Options& options, std::string& erro
 {
   if (options.scene == "default")
   {
+    if (options.bench.Up != shadowscenes::UpAxis::Auto)
+    {
+      error = "--up turns a model file (--scene FILE); the built-in scene is Z-up";
+      return false;
+    }
     shadowscenes::BuildDefaultScene(renderer);
     return true;
   }

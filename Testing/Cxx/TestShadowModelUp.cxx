@@ -16,10 +16,9 @@
 #include <vtkPropPicker.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkTransform.h>
-#include <vtkTransformPolyDataFilter.h>
 #include <vtkTriangleFilter.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -50,14 +49,20 @@ TEST(ShadowModelUp, ChoosesFromTheFormatAndWhereTheModelStands)
 {
   const std::array<double, 6> centred = { -1, 1, -1, 1, -1, 1 };
   const std::array<double, 6> onY = { -0.46, 0.46, -0.0006, 1.52, -1.62, 1.62 }; // Wuson.ply
-  const std::array<double, 6> underZ = { -1, 1, -2, 2, -3, 0.001 };
-  const std::array<double, 6> corner = { 0, 1, 0, 1, 0, 1 }; // every axis at 0: no sign
+  const std::array<double, 6> onZ = { -194, 1442, -205, 968, 0, 338 }; // OBJ/regr01.obj
+  const std::array<double, 6> underZ = { -1, 1, -2, 2, -3, 0.001 }; // a pit, a sea floor
+  const std::array<double, 6> offCentre = { -1, 1, 0, 2, 0.3, 4 }; // y at 0 by chance
+  const std::array<double, 6> corner = { 0, 1, 0, 1, 0, 1 }; // every axis at 0
   EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".glb", onY).Axis, UpAxis::PlusY);
-  EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".gltf", underZ).Axis, UpAxis::PlusY)
+  EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".gltf", onZ).Axis, UpAxis::PlusY)
     << "glTF's specification first";
   EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".ply", onY).Axis, UpAxis::PlusY);
   EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".stl", onY).Axis, UpAxis::PlusY);
-  EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".obj", underZ).Axis, UpAxis::MinusZ);
+  EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".obj", onZ).Axis, UpAxis::PlusZ);
+  EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".stl", underZ).Axis, UpAxis::PlusZ)
+    << "not turned over: a maximum at 0 says nothing";
+  EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".stl", offCentre).Axis, UpAxis::PlusZ)
+    << "a minimum at 0 over a model not centred is no ground";
   EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".obj", centred).Axis, UpAxis::PlusY);
   EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".ply", corner).Axis, UpAxis::PlusY);
   EXPECT_EQ(ChooseModelUp(UpAxis::Auto, ".stl", centred).Axis, UpAxis::PlusZ);
@@ -93,28 +98,32 @@ TEST(ShadowModelUp, TheRotationTurnsTheAxisToZ)
 
 // --- rendered ---------------------------------------------------------------------
 
-// A column 0.5 wide and 4 tall standing on a 3 x 3 plate 0.2 thick, made with
-// `up` as its up axis and written as PLY: upright, the plate is at the bottom.
+// A column 0.5 wide and 4 tall standing on a 3 x 3 plate 0.2 thick, made
+// with `up` as its up axis (written out axis by axis, not through
+// RotationToZUp, so that a wrong rotation shows) as PLY: upright, the plate is
+// at the bottom.
 std::string WriteColumnOnPlate(const std::string& name, UpAxis up)
 {
+  const std::string axisName = shadowscenes::UpAxisName(up);
+  const int axis = axisName[1] - 'x';
+  const double sign = axisName[0] == '-' ? -1.0 : 1.0;
+  // Bounds of a box `width` across and from 0 to `height` along the up axis.
+  const auto box = [&](double width, double height) {
+    std::array<double, 6> bounds = { -width / 2, width / 2, -width / 2, width / 2, -width / 2,
+      width / 2 };
+    bounds[2 * axis] = std::min(0.0, sign * height);
+    bounds[2 * axis + 1] = std::max(0.0, sign * height);
+    return bounds;
+  };
   vtkNew<vtkCubeSource> column;
-  column->SetBounds(-0.25, 0.25, -0.25, 0.25, 0.0, 4.0);
+  column->SetBounds(box(0.5, 4.0).data());
   vtkNew<vtkCubeSource> plate;
-  plate->SetBounds(-1.5, 1.5, -1.5, 1.5, 0.0, 0.2);
+  plate->SetBounds(box(3.0, 0.2).data());
   vtkNew<vtkAppendPolyData> both;
   both->AddInputConnection(column->GetOutputPort());
   both->AddInputConnection(plate->GetOutputPort());
-  // From z-up to `up`: the inverse (the transpose) of RotationToZUp.
-  const std::array<double, 9> m = shadowscenes::RotationToZUp(up);
-  const double transposed[16] = { m[0], m[3], m[6], 0, m[1], m[4], m[7], 0, m[2], m[5], m[8], 0, 0,
-    0, 0, 1 };
-  vtkNew<vtkTransform> turn;
-  turn->SetMatrix(transposed);
-  vtkNew<vtkTransformPolyDataFilter> turned;
-  turned->SetTransform(turn);
-  turned->SetInputConnection(both->GetOutputPort());
   vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(turned->GetOutputPort());
+  triangles->SetInputConnection(both->GetOutputPort());
   const std::string path =
     (std::filesystem::temp_directory_path() / ("vtkshadows-up-" + name + ".ply")).string();
   vtkNew<vtkPLYWriter> writer;

@@ -15,7 +15,8 @@ using shadowbench::Recommend;
 MeasuredCase Case(const std::string& setup, const std::string& technique, double misclassified,
   double steady, double moving, bool ours = true)
 {
-  return { "file", setup, technique, ours ? "vtkSomePass" : "", 1024, misclassified, steady, moving };
+  return { "file", setup, technique, ours ? "vtkSomePass" : "", 1024, misclassified, steady, moving,
+    1000 };
 }
 
 TEST(ShadowRecommendation, TheMostAccurateWithinTheBudgetAndTheRunnerUp)
@@ -67,6 +68,20 @@ TEST(ShadowRecommendation, OneRecommendationPerLightKindAveragedOverItsSetups)
   EXPECT_NE(recommendations[2].Why.find("uniform"), std::string::npos);
 }
 
+// An error over no counted pixel (a view with no receiver) was not measured:
+// its 0% must not win.
+TEST(ShadowRecommendation, ErrorsOverNoPixelAreNotMeasurements)
+{
+  MeasuredCase empty = Case("perpendicular", "csm", 0.0, 1.0, 1.0);
+  empty.Counted = 0;
+  const std::vector<MeasuredCase> cases = { Case("perpendicular", "uniform", 1.0, 1.0, 1.0),
+    Case("perpendicular", "lispsm", 0.5, 1.1, 1.1), empty };
+  const auto recommendations = Recommend(cases, 1.25);
+  ASSERT_EQ(recommendations.size(), 1u);
+  EXPECT_EQ(recommendations[0].Best.Technique, "lispsm");
+  EXPECT_EQ(recommendations[0].RunnerUp.Technique, "uniform");
+}
+
 TEST(ShadowRecommendation, WrittenAsMarkdownAndJSON)
 {
   const std::vector<MeasuredCase> cases = { Case("spot", "uniform", 0.5, 1.0, 1.0),
@@ -79,6 +94,12 @@ TEST(ShadowRecommendation, WrittenAsMarkdownAndJSON)
   shadowbench::WriteRecommendationsJSON(recommendations, json);
   EXPECT_NE(json.str().find("\"best\": {\"technique\": \"lispsm\""), std::string::npos) << json.str();
   EXPECT_NE(json.str().find("\"runner_up\": {\"technique\": \"uniform\""), std::string::npos);
+  MeasuredCase odd = Case("spot", "uniform", 0.5, 1.0, 1.0);
+  odd.Scene = "a \"quoted\"\tscene\n";
+  std::ostringstream escaped;
+  shadowbench::WriteRecommendationsJSON(Recommend({ odd }, 1.25), escaped);
+  EXPECT_NE(escaped.str().find("\"a \\\"quoted\\\"\\u0009scene\\u000a\""), std::string::npos)
+    << escaped.str();
 }
 
 TEST(ShadowProgress, TheTimeLeftFollowsTheWorkDone)

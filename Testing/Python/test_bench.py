@@ -145,6 +145,8 @@ def test_errors(program):
         (["analyze", MODEL, "--up", "sideways"], "unknown up axis"),
         (["render", "--scene", MODEL, "--up", "w"], "unknown up axis"),
         (["bench", "--up", "y"], "unknown option '--up'"),
+        (["render", "--up", "y"], "--up turns a model file"),
+        (["sweep", "--techniques", "all", "--cases", "0"], "cases"),
         # "all" is a list: the error is the third option's.
         (["analyze", MODEL, "--techniques", "all", "--setups", "all", "--timed-frames", "0"],
          "timed frames"),
