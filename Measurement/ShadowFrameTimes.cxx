@@ -51,6 +51,17 @@ FrameTime TimedRender(vtkRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
+void ReadMapWork(vtkRenderPass* pass, int& layers, int& casterDraws)
+{
+  if (auto* ours = vtkAbstractShadowMapPass::SafeDownCast(pass))
+  {
+    layers = ours->GetNumberOfRenderedLayers();
+    // The pass's draw count is that of the last frame that rendered layers.
+    casterDraws = layers > 0 ? ours->GetNumberOfCasterDraws() : 0;
+  }
+}
+
+//------------------------------------------------------------------------------
 double Median(std::vector<double> values)
 {
   if (values.empty())
@@ -78,12 +89,7 @@ std::vector<double> Of(const std::vector<FrameTime>& frames, double FrameTime::*
 FrameTime TimedPassRender(vtkRenderWindow* window, vtkRenderPass* pass)
 {
   FrameTime time = TimedRender(window);
-  if (auto* ours = vtkAbstractShadowMapPass::SafeDownCast(pass))
-  {
-    time.Layers = ours->GetNumberOfRenderedLayers();
-    // The draw count is that of the last frame that rendered layers.
-    time.CasterDraws = time.Layers > 0 ? ours->GetNumberOfCasterDraws() : 0;
-  }
+  ReadMapWork(pass, time.Layers, time.CasterDraws);
   return time;
 }
 } // namespace

@@ -74,6 +74,10 @@ using CameraMotion = std::function<void(int frame, int frames)>;
 /// Renders and waits for the GL to finish.
 FrameTime TimedRender(vtkRenderWindow* window);
 
+/// The map layers and caster draws of `pass`'s last frame, if it is one of this
+/// module's passes (else left as they are).
+void ReadMapWork(vtkRenderPass* pass, int& layers, int& casterDraws);
+
 /// The median (NaN for none).
 double Median(std::vector<double> values);
 

@@ -135,10 +135,11 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
     {
       orbit(frame, frames + 2);
       view.Window->Render();
-      const int rendered = technique.Ours->GetNumberOfRenderedLayers();
-      layers += rendered;
-      // The draw count is the last frame's that rendered layers.
-      casterDraws += rendered > 0 ? technique.Ours->GetNumberOfCasterDraws() : 0;
+      int frameLayers = 0;
+      int frameDraws = 0;
+      ReadMapWork(technique.Ours, frameLayers, frameDraws);
+      layers += frameLayers;
+      casterDraws += frameDraws;
     }
   }
   orbit(0, frames + 2);

@@ -17,7 +17,7 @@ bool PropBefore(const CasterStamp& a, const CasterStamp& b)
 bool Contains(const std::vector<CasterStamp>& sorted, const CasterStamp& stamp)
 {
   const auto found = std::lower_bound(sorted.begin(), sorted.end(), stamp, PropBefore);
-  return found != sorted.end() && found->Prop == stamp.Prop && found->Version == stamp.Version;
+  return found != sorted.end() && *found == stamp;
 }
 } // namespace
 

@@ -48,6 +48,21 @@ LayerRequest RequestFor(const ShadowLight& light)
   request.Visible = &NoCulling;
   return request;
 }
+
+// A drag's frame, and its request for a layer of every caster in view.
+ShadowFrame DragFrame()
+{
+  ShadowFrame drag;
+  drag.Interactive = true;
+  return drag;
+}
+
+LayerRequest DragRequestFor(const ShadowLight& light)
+{
+  LayerRequest request = RequestFor(light);
+  request.DrawsAllInView = true;
+  return request;
+}
 } // namespace
 
 // Casters draw with depth clamping: one nearer the light than its view's near
@@ -118,10 +133,8 @@ TEST(ShadowMapUpdates, ADragsLayerOfEveryCasterInViewFollowsTheCasters)
   const std::vector<Caster> two = { BoxCaster(&Props[0], 0.0, 1.0), BoxCaster(&Props[1], 0.0, 1.0) };
   const std::vector<Caster> one = { two[0] };
   const std::vector<Caster> three = { two[0], two[1], BoxCaster(&more[0], 0.0, 1.0) };
-  ShadowFrame drag;
-  drag.Interactive = true;
-  LayerRequest request = RequestFor(light);
-  request.DrawsAllInView = true;
+  const ShadowFrame drag = DragFrame();
+  const LayerRequest request = DragRequestFor(light);
   MapUpdates updates;
   updates.BeginUpdate({ 1 }, 1, false, two);
   shadowmaps::LayerPlan first = updates.Plan(drag, two, request);
@@ -148,10 +161,8 @@ TEST(ShadowMapUpdates, ADragsLayerFollowsCastersBoundsAsWellAsVersions)
   away.Bounds = Aabb::FromBounds(std::array<double, 6>{ 100.0, 101.0, 0.0, 1.0, 0.0, 1.0 }.data());
   const std::vector<Caster> before = { BoxCaster(&Props[1], 0.0, 1.0), away };
   const std::vector<Caster> after = { BoxCaster(&Props[1], 0.0, 1.0), BoxCaster(&Props[0], 0.0, 1.0) };
-  ShadowFrame drag;
-  drag.Interactive = true;
-  LayerRequest request = RequestFor(light);
-  request.DrawsAllInView = true;
+  const ShadowFrame drag = DragFrame();
+  const LayerRequest request = DragRequestFor(light);
   MapUpdates updates;
   updates.BeginUpdate({ 1 }, 1, false, before);
   shadowmaps::LayerPlan first = updates.Plan(drag, before, request);
