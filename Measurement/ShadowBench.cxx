@@ -89,14 +89,28 @@ std::vector<Truth> TruthOfView(View& view, const shadoworacle::Oracle& oracle,
   return truth;
 }
 
-/// Undersampling of VTK's pass, from its light camera: the map texel
-/// coordinates of every pixel's surface point, differentiated across pixels.
-double VTKUndersampled(const TechniqueInstance& technique, const shadoworacle::Surface& surface)
+/// How a technique's texels fall on the screen: the percentage of pixels
+/// undersampled and the spread of texel footprints (ShadowMetrics.h).
+struct Sampling
+{
+  double Undersampled = NotMeasured;
+  double Spread = NotMeasured;
+};
+
+Sampling SamplingOf(const std::vector<double>& footprints, const std::vector<std::uint8_t>& valid)
+{
+  return { shadowmetrics::UndersampledFromFootprints(footprints, valid),
+    shadowmetrics::FootprintSpread(footprints) };
+}
+
+/// Sampling of VTK's pass, from its light camera: the map texel coordinates
+/// of every pixel's surface point, differentiated across pixels.
+Sampling VTKSampling(const TechniqueInstance& technique, const shadoworacle::Surface& surface)
 {
   auto* cameras = technique.VTK->GetShadowMapBakerPass()->GetLightCameras();
   if (!cameras || cameras->empty() || !(*cameras)[0])
   {
-    return NotMeasured;
+    return {};
   }
   vtkMatrix4x4* m = (*cameras)[0]->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0);
   std::vector<glm::dvec2> texel(surface.Position.size());
@@ -117,19 +131,19 @@ double VTKUndersampled(const TechniqueInstance& technique, const shadoworacle::S
     }
     texel[i] = (glm::dvec2(clip[0], clip[1]) / clip[3] * 0.5 + 0.5) * double(technique.Resolution);
   }
-  const auto footprint =
-    shadowmetrics::TexelFootprints(texel, valid, surface.Width, surface.Height);
-  return shadowmetrics::UndersampledFromFootprints(footprint, surface.Valid);
+  return SamplingOf(
+    shadowmetrics::TexelFootprints(texel, valid, surface.Width, surface.Height), surface.Valid);
 }
 
-double OurUndersampled(View& view, const TechniqueInstance& technique,
+Sampling OurSampling(View& view, const TechniqueInstance& technique,
   const std::vector<std::uint8_t>& valid)
 {
   technique.Ours->SetAnalysisView(vtkAbstractShadowMapPass::TEXEL_DENSITY);
   view.Window->Render();
   const auto rgb = CaptureRGB(view.Window);
   technique.Ours->SetAnalysisView(vtkAbstractShadowMapPass::NO_ANALYSIS);
-  return shadowmetrics::UndersampledFromAnalysis(rgb, valid);
+  return { shadowmetrics::UndersampledFromAnalysis(rgb, valid),
+    shadowmetrics::FootprintSpread(shadowmetrics::FootprintsFromAnalysis(rgb, valid)) };
 }
 
 // --- one case ---------------------------------------------------------------------
@@ -146,6 +160,8 @@ struct Row
   /// Light leaks where the truth's shadow ray meets two or more occluders (%).
   double Bleeding = NotMeasured;
   double Undersampled = NotMeasured;
+  /// Octaves between the 10th and 90th percentile texel footprints.
+  double DensitySpread = NotMeasured;
   double Flicker = NotMeasured;
   double Changes = NotMeasured;
   double TruthChanges = NotMeasured;
@@ -289,7 +305,7 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   std::vector<TechniqueInstance> techniques;
   for (const std::string& name : options.Techniques)
   {
-    techniques.push_back(MakeTechnique(name, setup == "point", options.Resolution));
+    techniques.push_back(MakeTechnique(name, shadowscenes::LightKindOfSetup(setup) == "point", options.Resolution));
   }
   log << progress.Line() << "  " << scene << " / " << setup << ": frame times" << std::endl;
   const std::vector<Timing> timing = MeasureFrameTimes(view, techniques, options.TimedFrames);
@@ -314,14 +330,11 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
     row.Errors = shadowmetrics::Classify(truth, factor, view.Width, view.Height);
     row.Bleeding = shadowmetrics::LeakBehindSeveral(occluders, factor);
     row.MemoryMiB = MemoryMiB(technique);
-    if (technique.Ours)
-    {
-      row.Undersampled = OurUndersampled(view, technique, valid);
-    }
-    else if (technique.VTK)
-    {
-      row.Undersampled = VTKUndersampled(technique, surface);
-    }
+    const Sampling sampling = technique.Ours ? OurSampling(view, technique, valid)
+      : technique.VTK                        ? VTKSampling(technique, surface)
+                                             : Sampling{};
+    row.Undersampled = sampling.Undersampled;
+    row.DensitySpread = sampling.Spread;
     const std::string errors = options.OutputDirectory + "/" + CaseName(scene, setup) + "-" + name + "-errors.png";
     if (!WritePNG(shadowmetrics::ErrorMap(truth, factor), view.Width, view.Height, errors))
     {
@@ -398,10 +411,11 @@ double Ratio(const std::vector<Row>& rows, const Row& row, const std::string& re
 void PrintTable(const std::vector<Row>& rows, std::ostream& out)
 {
   out << "| scene | light | technique | map | MiB | misclassified % | false shadow % | leak % | "
-         "bleeding % | inner % | mean abs. diff. | undersampled % | flicker % | changes % (truth %) | "
+         "bleeding % | inner % | mean abs. diff. | undersampled % | density spread | flicker % | "
+         "changes % (truth %) | "
          "first frame / none | "
          "steady / none | steady / vtk | moving / none | moving / vtk |\n"
-      << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Row& row : rows)
   {
     out << "| " << row.Scene << " | " << row.Setup << " | " << row.Technique << " | "
@@ -410,7 +424,7 @@ void PrintTable(const std::vector<Row>& rows, std::ostream& out)
         << FormatNumber(row.Errors.FalseShadow) << " | " << FormatNumber(row.Errors.LightLeak) << " | "
         << FormatNumber(row.Bleeding) << " | " << FormatNumber(row.Errors.InnerMisclassified) << " | "
         << FormatNumber(row.Errors.MeanAbsoluteDifference, 3) << " | " << FormatNumber(row.Undersampled)
-        << " | "
+        << " | " << FormatNumber(row.DensitySpread) << " | "
         << (std::isnan(row.Flicker) ? std::string("-") : FormatNumber(row.Flicker, 3)) << " | "
         << (std::isnan(row.Changes)
                ? std::string("-")
@@ -439,7 +453,7 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
 {
   std::ofstream csv(path);
   csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,bleeding,inner,"
-         "mean_abs_diff,undersampled,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels\n";
+         "mean_abs_diff,undersampled,density_spread,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels\n";
   // Enough digits for the recommendation to be recomputed from the file.
   csv << std::setprecision(12);
   for (const Row& row : rows)
@@ -447,7 +461,7 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
     csv << row.Scene << ',' << row.Setup << ',' << row.Technique << ',' << row.Resolution << ','
         << row.MemoryMiB << ',' << row.Errors.Misclassified << ',' << row.Errors.FalseShadow << ','
         << row.Errors.LightLeak << ',' << row.Bleeding << ',' << row.Errors.InnerMisclassified << ','
-        << row.Errors.MeanAbsoluteDifference << ',' << row.Undersampled << ',' << row.Flicker << ','
+        << row.Errors.MeanAbsoluteDifference << ',' << row.Undersampled << ',' << row.DensitySpread << ',' << row.Flicker << ','
         << row.Changes << ',' << row.TruthChanges << ',' << row.Time.First << ',' << row.Time.Steady << ','
         << row.Time.Moving << ',' << row.Errors.Counted << '\n';
   }

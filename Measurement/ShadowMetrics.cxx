@@ -160,6 +160,54 @@ double UndersampledFromAnalysis(
 }
 
 //------------------------------------------------------------------------------
+std::vector<double> FootprintsFromAnalysis(
+  const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& valid)
+{
+  // The inverse of vtkShadowDensityColor (Shaders/vtkShadowMapsAnalysisFS.glsl):
+  // green runs from 0.2 to 0.9 over log2 footprints -4 to log2(1.5), then,
+  // with red at 1, from 0.6 down to 0 over log2(1.5) to 6.
+  const double limit = std::log2(UndersampledAbove);
+  std::vector<double> footprints(valid.size(), std::nan(""));
+  for (size_t i = 0; i < valid.size(); ++i)
+  {
+    const double red = rgb[3 * i] / 255.0;
+    const double green = rgb[3 * i + 1] / 255.0;
+    const double blue = rgb[3 * i + 2] / 255.0;
+    if (!valid[i] || red + green + blue == 0.0)
+    {
+      continue;
+    }
+    const double octaves = rgb[3 * i] == 255
+      ? limit + std::clamp(1.0 - green / 0.6, 0.0, 1.0) * (6.0 - limit)
+      : -4.0 + std::clamp((green - 0.2) / 0.7, 0.0, 1.0) * (limit + 4.0);
+    footprints[i] = std::exp2(octaves);
+  }
+  return footprints;
+}
+
+//------------------------------------------------------------------------------
+double FootprintSpread(const std::vector<double>& footprints)
+{
+  std::vector<double> sorted;
+  for (double footprint : footprints)
+  {
+    if (std::isfinite(footprint) && footprint > 0.0)
+    {
+      sorted.push_back(footprint);
+    }
+  }
+  if (sorted.empty())
+  {
+    return std::nan("");
+  }
+  std::sort(sorted.begin(), sorted.end());
+  const auto at = [&](double fraction) {
+    return sorted[static_cast<size_t>(fraction * static_cast<double>(sorted.size() - 1))];
+  };
+  return std::log2(at(0.9) / at(0.1));
+}
+
+//------------------------------------------------------------------------------
 double UndersampledFromFootprints(
   const std::vector<double>& footprint, const std::vector<std::uint8_t>& valid)
 {

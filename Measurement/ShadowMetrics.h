@@ -65,6 +65,18 @@ std::vector<float> FactorFromAnalysis(const std::vector<std::uint8_t>& rgb, int 
 double UndersampledFromAnalysis(
   const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& valid);
 
+/// Each valid pixel's texel footprint (screen pixels per map texel, along one
+/// side) decoded from a texel-density analysis render's heat map; NaN for
+/// pixels outside the maps (black) and invalid ones. Footprints below 1/16 and
+/// above 64 pixels read as those bounds (the heat map's own).
+std::vector<double> FootprintsFromAnalysis(
+  const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& valid);
+
+/// How unevenly texels spread over the view: log2 of the 90th over the 10th
+/// percentile of the finite, positive footprints, in octaves (0: every pixel
+/// gets the same texel size); NaN without any.
+double FootprintSpread(const std::vector<double>& footprints);
+
 /// Percentage of the valid pixels whose footprint exceeds UndersampledAbove.
 double UndersampledFromFootprints(
   const std::vector<double>& footprint, const std::vector<std::uint8_t>& valid);

@@ -1,5 +1,7 @@
 #include "ShadowRecommendation.h"
 
+#include "ShadowScenes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -133,11 +135,6 @@ void WriteCandidateJSON(const Candidate& c, std::ostream& out)
 }
 } // namespace
 
-std::string LightKindOfSetup(const std::string& setup)
-{
-  return setup == "spot" || setup == "point" ? setup : "sun";
-}
-
 std::vector<Recommendation> Recommend(const std::vector<MeasuredCase>& cases, double budget)
 {
   std::vector<std::pair<std::string, std::string>> keys; // scene, light kind
@@ -145,7 +142,7 @@ std::vector<Recommendation> Recommend(const std::vector<MeasuredCase>& cases, do
   std::vector<std::string> techniques;
   for (const MeasuredCase& c : cases)
   {
-    const auto key = std::make_pair(c.Scene, LightKindOfSetup(c.Setup));
+    const auto key = std::make_pair(c.Scene, shadowscenes::LightKindOfSetup(c.Setup));
     AddOnce(keys, key);
     AddOnce(setups[key], c.Setup);
     if (!c.PassClass.empty())

@@ -52,9 +52,6 @@ struct Recommendation
   std::string Why; // one line
 };
 
-/// "sun" for the suns' set-ups, "spot", "point".
-std::string LightKindOfSetup(const std::string& setup);
-
 /**
  * For each scene and light kind in `cases` (in their order): this module's
  * techniques (a PassClass) measured in every set-up of that kind (finite

@@ -1000,6 +1000,7 @@ constexpr SunSetup SunSetups[] = {
   { "facing", 0.0, SunElevationDeg },
 };
 constexpr double SpotConeAngleDeg = 45.0; // vtkLight's cone angle is the half-angle
+constexpr double WideSpotConeAngleDeg = 75.0;
 
 /** A white directional scene light shining from `position` towards `focalPoint`. */
 vtkSmartPointer<vtkLight> MakeSceneLight(const double position[3], const double focalPoint[3])
@@ -1043,9 +1044,21 @@ vtkSmartPointer<vtkLight> MakeSetupLight(const ViewFrame& view, const std::strin
     PointFromFocus(view, -0.6, 0.0, 0.8, position);
     return MakePositionalLight(position, view.focalPoint, SpotConeAngleDeg);
   }
-  if (setup == "point")
+  if (setup == "wide-spot")
   {
-    PointFromFocus(view, -0.3, 0.0, 0.5, position);
+    PointFromFocus(view, -0.6, 0.0, 0.8, position);
+    return MakePositionalLight(position, view.focalPoint, WideSpotConeAngleDeg);
+  }
+  if (setup == "point" || setup == "street-point")
+  {
+    if (setup == "point")
+    {
+      PointFromFocus(view, -0.3, 0.0, 0.5, position);
+    }
+    else
+    {
+      PointFromFocus(view, -0.75, 0.1, 0.08, position);
+    }
     const double below[3] = { position[0], position[1], position[2] - 1.0 };
     return MakePositionalLight(position, below, 180.0);
   }
@@ -1548,7 +1561,17 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
 
 std::vector<std::string> LightSetupNames()
 {
-  return { "overhead", "perpendicular", "behind", "facing", "spot", "point" };
+  return { "overhead", "perpendicular", "behind", "facing", "spot", "point", "wide-spot",
+    "street-point" };
+}
+
+std::string LightKindOfSetup(const std::string& setup)
+{
+  if (setup == "spot" || setup == "wide-spot")
+  {
+    return "spot";
+  }
+  return setup == "point" || setup == "street-point" ? "point" : "sun";
 }
 
 bool IsLightSetup(const std::string& setup)

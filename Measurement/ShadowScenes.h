@@ -175,12 +175,15 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
 
 /**
  * The light set-ups AddLightSetup understands: "overhead", "perpendicular",
- * "behind", "facing", "spot", "point".
+ * "behind", "facing", "spot", "point", "wide-spot", "street-point".
  */
 std::vector<std::string> LightSetupNames();
 
 /** True for a name in LightSetupNames(). */
 bool IsLightSetup(const std::string& setup);
+
+/** The kind of a set-up's light: "sun", "spot" or "point". */
+std::string LightKindOfSetup(const std::string& setup);
 
 /**
  * Replaces the renderer's lights by one scene light placed relative to the
@@ -203,7 +206,13 @@ bool IsLightSetup(const std::string& setup);
  *           front of the camera), aimed at F: it covers the near part of the
  *           view,
  *  - point: 180 degree cone, 0.3 d back from F along the ground and 0.5 d
- *           above F.
+ *           above F,
+ *  - wide-spot: the spot's place and aim with a 75 degree cone (wider than
+ *           one map holds: cube faces),
+ *  - street-point: 180 degree cone at street level near the viewer, 0.75 d
+ *           back from F along the ground, 0.1 d to the left and 0.08 d above
+ *           F: its light reaches from the camera's feet to the far end of
+ *           the view.
  * Returns false, changing nothing, for an unknown set-up.
  */
 bool AddLightSetup(vtkRenderer* renderer, const std::string& setup);

@@ -177,7 +177,7 @@ void MeasureCase(SpeedView& view, const std::string& scene, const std::string& s
   std::vector<vtkRenderPass*> passes;
   for (const std::string& name : names)
   {
-    techniques.push_back(MakeTechnique(name, setup == "point", resolution));
+    techniques.push_back(MakeTechnique(name, shadowscenes::LightKindOfSetup(setup) == "point", resolution));
     passes.push_back(techniques.back().Pass);
   }
   const std::vector<Timing> timing = MeasureFrameTimes(view.Window, view.Renderer, passes,

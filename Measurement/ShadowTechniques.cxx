@@ -69,10 +69,21 @@ unsigned int VTKEqualMemoryResolution(bool pointLight, int resolution)
 int WarpModeOf(const std::string& name)
 {
   static const std::map<std::string, int> modes = { { "uniform", vtkWarpedShadowMapPass::UNIFORM },
-    { "psm", vtkWarpedShadowMapPass::PSM }, { "lispsm", vtkWarpedShadowMapPass::LISPSM },
+    { "psm", vtkWarpedShadowMapPass::PSM }, { "psm-cube", vtkWarpedShadowMapPass::PSM },
+    { "psm-single", vtkWarpedShadowMapPass::PSM }, { "lispsm", vtkWarpedShadowMapPass::LISPSM },
     { "tsm", vtkWarpedShadowMapPass::TSM }, { "gmnpr", vtkWarpedShadowMapPass::GMNPR } };
   const auto found = modes.find(name);
   return found == modes.end() ? -1 : found->second;
+}
+
+// The PSMCubeMap choice of a PSM technique name: "psm-cube" every light's
+// post-perspective cube map, "psm-single" none (suns and spots one map, point
+// lights the uniform cube faces), "psm" the default.
+int PSMCubeMapOf(const std::string& name)
+{
+  return name == "psm-cube" ? vtkWarpedShadowMapViews::PSM_CUBE_ALWAYS
+    : name == "psm-single"  ? vtkWarpedShadowMapViews::PSM_CUBE_NEVER
+                            : vtkWarpedShadowMapViews::PSM_CUBE_AUTOMATIC;
 }
 
 // The vtkDualDepthShadowMapPass mode and layer method a technique name stands
@@ -250,8 +261,8 @@ std::vector<std::string> QuickTechniqueNames()
 std::vector<std::string> TechniqueNames()
 {
   std::vector<std::string> names = DefaultTechniqueNames();
-  names.insert(names.end(), { "dual-minblend", "dual-peel", "vsm", "evsm2", "msm", "esm", "pcf3",
-                              "poisson" });
+  names.insert(names.end(), { "psm-cube", "psm-single", "dual-minblend", "dual-peel", "vsm",
+                              "evsm2", "msm", "esm", "pcf3", "poisson" });
   const std::vector<std::string> variants = MomentVariantNames();
   names.insert(names.end(), variants.begin(), variants.end());
   const std::vector<std::string> offsets = DualOffsetSweepNames();
@@ -320,6 +331,7 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
     pass->SetResolution(resolution);
     pass->SetFilter(vtkDepthShadowMapPass::PCF_2X2);
     pass->SetWarpMode(WarpModeOf(name));
+    pass->SetPSMCubeMap(PSMCubeMapOf(name));
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;

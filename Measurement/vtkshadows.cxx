@@ -93,7 +93,8 @@ void PrintUsage(std::ostream& out)
          "  --azimuth A              light azimuth in degrees, from +x towards +y [60]\n"
          "  --elevation E            light elevation above the ground, -90..90 [45]\n"
          "  --technique NAME         uniform, psm, lispsm, tsm, gmnpr: vtkWarpedShadowMapPass's\n"
-         "                           warp modes; csm, csm-tight, csm-lispsm: vtkCascadedShadowMapPass\n"
+         "                           warp modes (psm-cube, psm-single: PSMCubeMap always,\n"
+         "                           never); csm, csm-tight, csm-lispsm: vtkCascadedShadowMapPass\n"
          "                           at half the resolution; second-depth, midpoint, dual:\n"
          "                           vtkDualDepthShadowMapPass, no bias; vsm, evsm2, evsm4, msm,\n"
          "                           esm: vtkVarianceShadowMapPass; vtk, vtk-equal: VTK's\n"
@@ -109,7 +110,8 @@ void PrintUsage(std::ostream& out)
          "braces):\n"
          "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
          "  --up x|y|z|-x|-y|-z      analyze only: the model's up axis, as for render\n"
-         "  --setups LIST|all        overhead,perpendicular,behind,facing,spot,point [all]\n"
+         "  --setups LIST|all        overhead,perpendicular,behind,facing,spot,point,\n"
+         "                           wide-spot,street-point [all]\n"
          "                           {perpendicular,spot,point}\n"
          "  --techniques LIST|all    none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
          "                           csm-tight,csm-lispsm,second-depth,midpoint,dual,evsm4\n"
@@ -119,6 +121,7 @@ void PrintUsage(std::ostream& out)
          "                           dual-peel (forced layer method), dual-offsetK (K: 0.5,1,4,8\n"
          "                           texels of DualOffset) and the uniform map's bias\n"
          "                           sweep uniform-biasB, uniform-biasB-offset0 (B: 0,1,4,16,64);\n"
+         "                           psm-cube, psm-single (PSM's cube map for every light, none);\n"
          "                           the moment maps vsm, evsm2, msm, esm and the uniform map's\n"
          "                           softer filters pcf3 (3 x 3) and poisson (radius 1.5); the\n"
          "                           moment maps' sweep vsm-bleed0, vsm-bleed0.4, evsm4-bleed0,\n"
@@ -390,7 +393,8 @@ std::string CheckSetups(const std::vector<std::string>& setups)
     if (!shadowscenes::IsLightSetup(setup))
     {
       return "unknown light set-up '" + setup +
-        "' (expected overhead, perpendicular, behind, facing, spot or point)";
+        "' (expected overhead, perpendicular, behind, facing, spot, point, wide-spot or "
+        "street-point)";
     }
   }
   return setups.empty() ? "no light set-up given" : std::string();

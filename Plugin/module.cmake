@@ -66,6 +66,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapKeptViews.cxx
     Plugin/Math/ShadowMapLightDepth.cxx
     Plugin/Math/ShadowMapPerspective.cxx
+    Plugin/Math/ShadowMapPerspectiveCube.cxx
     Plugin/Math/ShadowMapTrapezoid.cxx
     Plugin/Math/ShadowMapWarping.cxx
     Plugin/OpenGL/ShadowMapAnalysis.cxx
@@ -106,6 +107,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Math/ShadowMapCrop.h
     Plugin/Math/ShadowMapKeptViews.h
     Plugin/Math/ShadowMapPerspective.h
+    Plugin/Math/ShadowMapPerspectiveCube.h
     Plugin/Math/ShadowMapTrapezoid.h
     Plugin/Math/ShadowMapWarping.h
     Plugin/OpenGL/ShadowMapAnalysis.h

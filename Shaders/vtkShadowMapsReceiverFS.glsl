@@ -29,10 +29,12 @@ struct vtkShadowView
   // coordinates (u, v, 1); their casters store z / w times W. Zero for views
   // that store z / w.
   vec3 DepthInverseW;
-  // Cascades: x = first view depth (-z in VC) it shades, y = its last (the next
-  // split), z = where the blend band into the next cascade starts. Other
-  // views: (0, 1e38, 1e38).
-  vec3 Cascade;
+  // How its layout picks the view. Cascades: x = first view depth (-z in VC)
+  // it shades, y = its last (the next split), z = where the blend band into
+  // the next cascade starts. Post-perspective cube faces: x = 1 / the light's
+  // distance to the face's platform, 0 for a face toward the light
+  // (shadowmaps::PerspectiveCube::Selection). Other views: (0, 1e38, 1e38).
+  vec3 Selection;
   // Its light's first view's texel size over its own (1 but for cascades):
   // filter offsets in texels are multiplied by it so that a kernel keeps its
   // world size in every cascade.
@@ -158,7 +160,7 @@ int vtkShadowSelectCascade(
   float depth = -positionVC.z;
   for (int i = 0; i < count - 1; ++i)
   {
-    if (depth < vtkShadowViews[firstView + i].Cascade.y)
+    if (depth < vtkShadowViews[firstView + i].Selection.y)
     {
       return firstView + i;
     }
@@ -183,6 +185,27 @@ int vtkShadowSelectTile(vec3 positionVC, vec3 normalVC, int light, int firstView
   return firstView + int(cell.y * grid.x + cell.x);
 }
 
+// The face of a post-perspective cube that holds the receiver (Kozlov's
+// displaced-centre lookup): the largest clip w times the face's Selection.x,
+// from the faces' matrices' w rows.
+int vtkShadowSelectPerspectiveFace(vec3 positionVC, int firstView)
+{
+  int face = firstView;
+  float largest = 0.0;
+  for (int i = 0; i < 6; ++i)
+  {
+    mat4 m = vtkShadowViews[firstView + i].ViewToMap;
+    float w = m[0][3] * positionVC.x + m[1][3] * positionVC.y + m[2][3] * positionVC.z + m[3][3];
+    float reach = w * vtkShadowViews[firstView + i].Selection.x;
+    if (reach > largest)
+    {
+      largest = reach;
+      face = firstView + i;
+    }
+  }
+  return face;
+}
+
 // The view of light `light` that covers the receiver. The light's views start
 // at layer firstView; a cube light has six of them, a cascaded or tiled light
 // `count`.
@@ -196,6 +219,10 @@ int vtkShadowSelectView(
   if (viewLayout == VTK_SHADOW_LAYOUT_TILES)
   {
     return vtkShadowSelectTile(positionVC, normalVC, light, firstView, features);
+  }
+  if (viewLayout == VTK_SHADOW_LAYOUT_PERSPECTIVE_CUBE)
+  {
+    return vtkShadowSelectPerspectiveFace(positionVC, firstView);
   }
   if (viewLayout != VTK_SHADOW_LAYOUT_CUBE_FACES)
   {
@@ -431,7 +458,7 @@ float vtkShadowBlendIntoNext(
   float band = vtkShadowLights[light].CoverageBand;
   if (band < 0.0)
   {
-    vec3 cascade = vtkShadowViews[view].Cascade;
+    vec3 cascade = vtkShadowViews[view].Selection;
     return clamp((depth - cascade.z) / max(cascade.y - cascade.z, 1e-30), 0.0, 1.0);
   }
   if (band <= 0.0)

@@ -123,12 +123,15 @@ glm::dvec3 NarrowestConeAxis(const glm::dvec3& eye, const std::vector<glm::dvec3
   return bestCosine > 1e-3 ? best : glm::dvec3(0.0);
 }
 
-// True when the homogeneous light point is so far from a body of this radius,
-// relative to its size, that the light is treated as directional there.
+} // namespace
+
 bool StaysDirectional(const glm::dvec4& light, double radius)
 {
   return !(std::abs(light.w) * 1e6 * radius > glm::length(glm::dvec3(light)));
 }
+
+namespace
+{
 
 // Cosine of the half-angle of the narrowest cone from the light's position in
 // post-perspective space `post` that holds the body's points; 1 for a light that
@@ -497,13 +500,8 @@ glm::dvec3 ExitFromBox(const Aabb& box, const glm::dvec3& p, const glm::dvec3& v
   return p + v * std::max(t, 0.0);
 }
 
-// The slide-back that puts every caster able to shadow B in front of the
-// virtual camera. Those casters lie on the segments from B toward the light,
-// inside the scene; the GPU clips whatever has w <= 0 in post-perspective space,
-// so a caster behind the viewer (a light behind the viewer, a building over a
-// street-level camera's shoulder) would vanish from the map and its shadow with
-// it. Stamminger and Drettakis, and Kozlov (001, the virtual slide-back), move
-// the virtual camera back until such casters are in front of it.
+} // namespace
+
 double SlideBackHoldingCasters(const glm::dmat4& cameraView, const std::vector<glm::dvec3>& body,
   const Aabb& scene, const glm::dvec4& towardLight)
 {
@@ -524,9 +522,9 @@ double SlideBackHoldingCasters(const glm::dmat4& cameraView, const std::vector<g
   return std::isfinite(nearest) && nearest < margin ? margin - nearest : 0.0;
 }
 
-// The PSM of either light kind for receivers `body` (see FitPerspective).
 namespace
 {
+// The PSM of either light kind for receivers `body` (see FitPerspective).
 // B's points in the space; its centre and radius there. False when a point lies
 // on or behind the space's w = 0 plane.
 bool AddBodyToSpace(const std::vector<glm::dvec3>& body, PerspectiveSpace& space)
@@ -558,7 +556,6 @@ glm::dvec3 LightAxisInSpace(
   forward = glm::dot(forward, space.Centre - eye) < 0.0 ? -forward : forward;
   return glm::length(forward) > 0.0 ? glm::normalize(forward) : forward;
 }
-} // namespace
 
 PerspectiveMap FitPerspectiveToBody(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const std::vector<glm::dvec3>& body, const Aabb& scene, const PerspectiveLight& light,

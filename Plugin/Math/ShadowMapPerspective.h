@@ -8,6 +8,8 @@
 
 #include "ShadowMapFocusing.h"
 
+#include <vector>
+
 #include <glm/glm.hpp>
 
 namespace shadowmaps
@@ -93,6 +95,23 @@ PerspectiveMap FitSpotPerspective(const glm::dmat4& cameraView, const glm::dmat4
 /// the strongest, and over 2 to 12 degrees its map moves by more than 5% of its
 /// width per 0.1 degree of the light's turn).
 double PerspectiveWarpWeight(const glm::dvec3& viewDirection, const glm::dvec3& lightDirection);
+
+/// True when the homogeneous light point `light` (a light in post-perspective
+/// space) is so far from a body of this radius, relative to its size, that the
+/// light is treated as directional there.
+bool StaysDirectional(const glm::dvec4& light, double radius);
+
+/// The slide-back that puts every caster able to shadow the receivers `body`
+/// in front of the virtual camera (SlideBackPostPerspective). Those casters lie
+/// on the segments from B toward the light (the homogeneous point
+/// `towardLight`), inside the scene; the GPU clips whatever has w <= 0 in
+/// post-perspective space, so a caster behind the viewer (a light behind the
+/// viewer, a building over a street-level camera's shoulder) would vanish from
+/// the map and its shadow with it. Stamminger and Drettakis, and Kozlov (001,
+/// the virtual slide-back), move the virtual camera back until such casters
+/// are in front of it. 0 when they already are.
+double SlideBackHoldingCasters(const glm::dmat4& cameraView, const std::vector<glm::dvec3>& body,
+  const Aabb& scene, const glm::dvec4& towardLight);
 
 /// Kozlov's world-space texel size L_texel at a world point: the edge of the
 /// map's coarsest texel there, across the light's ray through the point

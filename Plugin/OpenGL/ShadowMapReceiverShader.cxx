@@ -92,6 +92,7 @@ std::string ReceiverShaderConstants()
     { "VTK_SHADOW_LAYOUT_CUBE_FACES", static_cast<int>(ViewLayout::CubeFaces) },
     { "VTK_SHADOW_LAYOUT_CASCADES", static_cast<int>(ViewLayout::Cascades) },
     { "VTK_SHADOW_LAYOUT_TILES", static_cast<int>(ViewLayout::Tiles) },
+    { "VTK_SHADOW_LAYOUT_PERSPECTIVE_CUBE", static_cast<int>(ViewLayout::PerspectiveCube) },
     { "VTK_SHADOW_FEATURE_GRADIENT_TEXELS", GradientTexels },
     { "VTK_SHADOW_FEATURE_DISTANT_TEXELS", DistantTexels },
     { "VTK_SHADOW_FEATURE_LINEAR_DEPTHS", LinearDepths },
@@ -252,7 +253,11 @@ ReceiverUniforms::View ReceiverUniforms::PackView(
   packed.DepthInverseW = ToFloat(TextureToInverseW(view));
   if (light.Layout == ViewLayout::Cascades && index < light.CascadeDepths.size())
   {
-    packed.Cascade = ToFloat(light.CascadeDepths[index]);
+    packed.Selection = ToFloat(light.CascadeDepths[index]);
+  }
+  if (light.Layout == ViewLayout::PerspectiveCube && index < light.FaceSelection.size())
+  {
+    packed.Selection = glm::vec3(static_cast<float>(light.FaceSelection[index]), 0.0f, 0.0f);
   }
   packed.FilterScale = static_cast<float>(FilterScale(light, index));
   if ((ReceiverFeatures(light) & CroppedViews) != 0)
@@ -320,7 +325,7 @@ void ReceiverUniforms::NameMembers()
   for (std::size_t i = this->ViewNames.size(); i < this->Views.size(); ++i)
   {
     this->ViewNames.push_back(name(
-      "vtkShadowViews", i, { "ViewToMap", "TexelSize", "DepthInverseW", "Cascade", "FilterScale",
+      "vtkShadowViews", i, { "ViewToMap", "TexelSize", "DepthInverseW", "Selection", "FilterScale",
                               "CropScale", "CropOffset" }));
   }
   for (std::size_t i = this->LightNames.size(); i < this->Lights.size(); ++i)
@@ -348,7 +353,7 @@ void ReceiverUniforms::Apply(
     program->SetUniformMatrix4x4(names[0].c_str(), glm::value_ptr(view.ViewToMap));
     program->SetUniform2f(names[1].c_str(), glm::value_ptr(view.TexelSize));
     program->SetUniform3f(names[2].c_str(), glm::value_ptr(view.DepthInverseW));
-    program->SetUniform3f(names[3].c_str(), glm::value_ptr(view.Cascade));
+    program->SetUniform3f(names[3].c_str(), glm::value_ptr(view.Selection));
     program->SetUniformf(names[4].c_str(), view.FilterScale);
     program->SetUniform3f(names[5].c_str(), glm::value_ptr(view.CropScale));
     program->SetUniform3f(names[6].c_str(), glm::value_ptr(view.CropOffset));

@@ -104,7 +104,7 @@ private:
     glm::mat4 ViewToMap{ 1.0f };
     glm::vec2 TexelSize{ 0.0f };
     glm::vec3 DepthInverseW{ 0.0f };
-    glm::vec3 Cascade{ 0.0f, 1e38f, 1e38f };
+    glm::vec3 Selection{ 0.0f, 1e38f, 1e38f };
     float FilterScale = 1.0f;
     glm::vec3 CropScale{ 1.0f };
     glm::vec3 CropOffset{ 0.0f };

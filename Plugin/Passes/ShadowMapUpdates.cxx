@@ -233,7 +233,7 @@ void MapUpdates::Invalidate()
 }
 
 //------------------------------------------------------------------------------
-std::vector<LightView> MapUpdates::KeptViews(
+const ShadowLight* MapUpdates::KeptLight(
   const ShadowLight& light, vtkMTimeType passTime, int resolution, const Aabb& sceneBounds) const
 {
   const bool onlyTheCameraMoved = this->RenderedPassTime == passTime &&
@@ -241,7 +241,7 @@ std::vector<LightView> MapUpdates::KeptViews(
     this->RenderedSceneBounds.Max == sceneBounds.Max;
   if (!onlyTheCameraMoved)
   {
-    return {};
+    return nullptr;
   }
   for (const ShadowLight& rendered : this->RenderedLights)
   {
@@ -249,10 +249,18 @@ std::vector<LightView> MapUpdates::KeptViews(
       rendered.Position == light.Position && rendered.Direction == light.Direction &&
       rendered.ConeAngle == light.ConeAngle)
     {
-      return rendered.Views;
+      return &rendered;
     }
   }
-  return {};
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+std::vector<LightView> MapUpdates::KeptViews(
+  const ShadowLight& light, vtkMTimeType passTime, int resolution, const Aabb& sceneBounds) const
+{
+  const ShadowLight* kept = this->KeptLight(light, passTime, resolution, sceneBounds);
+  return kept ? kept->Views : std::vector<LightView>{};
 }
 
 //------------------------------------------------------------------------------

@@ -70,8 +70,12 @@ public:
   /// The maps are gone (released, or a GL failure): everything is rendered anew.
   void Invalidate();
 
-  /// The views `light` was last rendered with where only the camera moved
-  /// since (ShadowLight::LastViews), else none.
+  /// `light` as it was last rendered, where only the camera moved since (its
+  /// views are ShadowLight::LastViews), else null.
+  const ShadowLight* KeptLight(
+    const ShadowLight& light, vtkMTimeType passTime, int resolution, const Aabb& sceneBounds) const;
+
+  /// The views of KeptLight, else none.
   std::vector<LightView> KeptViews(
     const ShadowLight& light, vtkMTimeType passTime, int resolution, const Aabb& sceneBounds) const;
 

@@ -695,10 +695,13 @@ bool vtkAbstractShadowMapPass::FitViews()
   Internals& r = *this->Internal;
   for (ShadowLight& light : r.Lights)
   {
-    light.LastViews = r.Maps().Updates.KeptViews(
+    const ShadowLight* kept = r.Maps().Updates.KeptLight(
       light, this->GetMTime(), r.Frame.Resolution, r.Frame.SceneBounds);
+    light.LastViews = kept ? kept->Views : std::vector<shadowmaps::LightView>{};
+    light.LastFaceSelection = kept ? kept->FaceSelection : std::vector<double>{};
     r.Views->FitLight(r.Frame, light);
     light.LastViews.clear();
+    light.LastFaceSelection.clear();
     light.Depth = light.Kind == LightKind::Directional
       ? shadowmaps::DirectionalLightDepth(light.Direction, r.Frame.SceneBounds)
       : shadowmaps::PositionalLightDepth(light.Position, r.Frame.SceneBounds);

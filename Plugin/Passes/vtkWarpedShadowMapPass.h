@@ -73,6 +73,15 @@ public:
   ///@}
 
   ///@{
+  /** vtkWarpedShadowMapViews' PSMCubeMap (AUTOMATIC default: point lights and wide spots). */
+  void SetPSMCubeMap(int choice) { this->Warped->SetPSMCubeMap(choice); }
+  int GetPSMCubeMap() { return this->Warped->GetPSMCubeMap(); }
+  void SetPSMCubeMapToAutomatic() { this->Warped->SetPSMCubeMapToAutomatic(); }
+  void SetPSMCubeMapToAlways() { this->Warped->SetPSMCubeMapToAlways(); }
+  void SetPSMCubeMapToNever() { this->Warped->SetPSMCubeMapToNever(); }
+  ///@}
+
+  ///@{
   /** vtkWarpedShadowMapViews' TSMFocusDistance (0: a fifth of the focus body's depth). */
   void SetTSMFocusDistance(double distance) { this->Warped->SetTSMFocusDistance(distance); }
   double GetTSMFocusDistance() { return this->Warped->GetTSMFocusDistance(); }

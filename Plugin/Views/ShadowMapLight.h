@@ -36,7 +36,11 @@ enum class ViewLayout
   Cascades = 2,
   /// The tiles of one map (ShadowLight::Tiles), picked by where the receiver
   /// falls in that map.
-  Tiles = 3
+  Tiles = 3,
+  /// Kozlov's cube map in the camera's post-perspective space
+  /// (ShadowMapPerspectiveCube.h): six faces, picked by the largest of their
+  /// clip w times ShadowLight::FaceSelection.
+  PerspectiveCube = 4
 };
 
 /// Receiver code a light's views may need, as bits. Code a light cannot need is
@@ -91,6 +95,8 @@ struct ShadowLight
   /// The light depth over the scene (set by the pass for every light): what
   /// representations that store MapStorage::LightDepth store.
   LightDepth Depth;
+  /// PerspectiveCube layout, per view: PerspectiveCube::Selection.
+  std::vector<double> FaceSelection;
   /// View depths over which the shadows fade out; no fade unless y > x.
   glm::dvec2 Fade{ 0.0, 0.0 };
   /// ReceiverFeature bits the views strategy's settings may produce for this
@@ -102,6 +108,8 @@ struct ShadowLight
   /// scene bounds, settings and resolution); empty otherwise. A strategy may
   /// give them again in interactive frames (ShadowFrame::Interactive).
   std::vector<LightView> LastViews;
+  /// With LastViews, the FaceSelection they were rendered with.
+  std::vector<double> LastFaceSelection;
 };
 
 /// Cascade blend-band start meaning "no band".

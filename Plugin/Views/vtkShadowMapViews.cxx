@@ -48,6 +48,22 @@ std::optional<LightView> FitForNearbyCameras(const ShadowFrame& frame,
   const std::function<LightView(const ShadowFrame&)>& fit,
   const std::function<bool(const LightView&)>& accept)
 {
+  for (const ShadowFrame& wider : vtkShadowMapViews::WidenedFrames(frame))
+  {
+    const LightView view = fit(wider);
+    if (shadowmaps::IsFinite(view.ViewProjection()) && accept(view))
+    {
+      return view;
+    }
+  }
+  return std::nullopt;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+std::vector<ShadowFrame> vtkShadowMapViews::WidenedFrames(const ShadowFrame& frame)
+{
+  std::vector<ShadowFrame> frames;
   const double nearest =
     shadowmaps::TightDepthRange(frame.CameraView, frame.CameraProjection, frame.PropBounds, 0.01).x;
   for (const double share : WidenedShares)
@@ -59,18 +75,18 @@ std::optional<LightView> FitForNearbyCameras(const ShadowFrame& frame,
     {
       break; // a parallel projection, or no visible depth to widen by
     }
-    ShadowFrame wider = frame;
-    wider.CameraView = widened.View;
-    wider.CameraProjection = widened.Projection;
-    const LightView view = fit(wider);
-    if (shadowmaps::IsFinite(view.ViewProjection()) && accept(view))
-    {
-      return view;
-    }
+    frames.push_back(frame);
+    frames.back().CameraView = widened.View;
+    frames.back().CameraProjection = widened.Projection;
   }
-  return std::nullopt;
+  return frames;
 }
-} // namespace
+
+//------------------------------------------------------------------------------
+double vtkShadowMapViews::WidenedTexelRatio() const
+{
+  return 1.0 + WidenedShareOfTexelMargin * (this->InteractiveTexelRatio - 1.0);
+}
 
 //------------------------------------------------------------------------------
 void vtkShadowMapViews::FitUniformViews(const ShadowFrame& frame, ShadowLight& light)
@@ -120,8 +136,7 @@ LightView vtkShadowMapViews::InteractiveView(const ShadowFrame& frame, const Sha
   {
     return fresh;
   }
-  const double widenedRatio =
-    1.0 + WidenedShareOfTexelMargin * (this->InteractiveTexelRatio - 1.0);
+  const double widenedRatio = this->WidenedTexelRatio();
   const auto accept = [&](const LightView& view) { return serves(view, widenedRatio); };
   return FitForNearbyCameras(frame, fit, accept).value_or(fresh);
 }

@@ -33,6 +33,7 @@
 #include "vtkWrappingHints.h"             // For VTK_WRAPEXCLUDE
 
 #include <functional> // For ViewFit
+#include <vector>     // For WidenedFrames
 
 namespace shadowmaps
 {
@@ -87,6 +88,14 @@ public:
    */
   VTK_WRAPEXCLUDE bool MayKeepViews(const shadowmaps::ShadowFrame& frame) const;
 
+  /**
+   * The frame with its camera widened a few ways, widest first (eye moved
+   * back, sides turned out), for a fit in an interactive frame that should
+   * last several frames; none for a parallel projection or nothing visible.
+   */
+  VTK_WRAPEXCLUDE static std::vector<shadowmaps::ShadowFrame> WidenedFrames(
+    const shadowmaps::ShadowFrame& frame);
+
 protected:
   vtkShadowMapViews() = default;
   ~vtkShadowMapViews() override = default;
@@ -106,6 +115,13 @@ protected:
   shadowmaps::LightView InteractiveView(const shadowmaps::ShadowFrame& frame,
     const shadowmaps::ShadowLight& light, const shadowmaps::LightView& fresh,
     const shadowmaps::LightView* last, const ViewFit& fit) const;
+
+  /**
+   * The texel ratio a fit to a widened camera may have against the frame's own
+   * fit: a share of InteractiveTexelRatio's margin, leaving the rest to the
+   * camera's next moves.
+   */
+  double WidenedTexelRatio() const;
 
   double InteractiveTexelRatio = 1.5;
 

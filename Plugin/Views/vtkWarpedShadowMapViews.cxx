@@ -3,6 +3,7 @@
 #include "ShadowMapCascades.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapPerspective.h"
+#include "ShadowMapPerspectiveCube.h"
 #include "ShadowMapTrapezoid.h"
 #include "ShadowMapWarping.h"
 #include "vtkObjectFactory.h"
@@ -15,6 +16,7 @@
 vtkStandardNewMacro(vtkWarpedShadowMapViews);
 
 using shadowmaps::LightView;
+using shadowmaps::Plane;
 using shadowmaps::ShadowFrame;
 using shadowmaps::ShadowLight;
 
@@ -65,6 +67,41 @@ glm::dmat4 TightProjection(const glm::dmat4& cameraView, const glm::dmat4& camer
     return cameraProjection;
   }
   return shadowmaps::SubFrustumProjection(cameraProjection, range.x, range.y);
+}
+
+// The homogeneous point toward the light: (P, 1) for a positional light, (-d, 0)
+// for a sun travelling along d.
+glm::dvec4 TowardLight(const ShadowLight& light)
+{
+  return light.Kind == shadowmaps::LightKind::Directional
+    ? glm::dvec4(-shadowmaps::SafeDirection(light.Direction), 0.0)
+    : glm::dvec4(light.Position, 1.0);
+}
+
+// The world planes around the receivers a light's shadows can fall on: the
+// camera's frustum, the scene, and for a spot the half-space in front of it
+// (and its cone's map where one map holds the cone).
+std::vector<shadowmaps::Plane> ReceiversOfLight(const glm::dmat4& cameraViewProjection,
+  const shadowmaps::Aabb& scene, const ShadowLight& light, int resolution)
+{
+  std::vector<shadowmaps::Plane> planes;
+  for (const auto& set : { shadowmaps::FrustumPlanes(cameraViewProjection), shadowmaps::BoxPlanes(scene) })
+  {
+    planes.insert(planes.end(), set.begin(), set.end());
+  }
+  if (light.Kind == shadowmaps::LightKind::Spot)
+  {
+    const glm::dvec3 axis = shadowmaps::SafeDirection(light.Direction);
+    planes.push_back({ axis, -glm::dot(axis, light.Position) });
+    if (light.ConeAngle <= shadowmaps::WidestSingleMapCone)
+    {
+      const auto cone = shadowmaps::FrustumPlanes(shadowmaps::FitSpot(cameraViewProjection, scene,
+        light.Position, light.Direction, light.ConeAngle, resolution)
+                                                    .ViewProjection());
+      planes.insert(planes.end(), cone.begin(), cone.end());
+    }
+  }
+  return planes;
 }
 } // namespace
 
@@ -158,8 +195,92 @@ LightView vtkWarpedShadowMapViews::FitWarpedView(const ShadowFrame& frame, const
 }
 
 //------------------------------------------------------------------------------
+bool vtkWarpedShadowMapViews::UsesPerspectiveCube(const ShadowLight& light) const
+{
+  if (this->WarpMode != PSM)
+  {
+    return false;
+  }
+  return shadowmaps::NeedsCubeFaces(light) ? this->PSMCubeMap != PSM_CUBE_NEVER
+                                           : this->PSMCubeMap == PSM_CUBE_ALWAYS;
+}
+
+//------------------------------------------------------------------------------
+bool vtkWarpedShadowMapViews::FitPerspectiveCube(const ShadowFrame& frame, ShadowLight& light) const
+{
+  const shadowmaps::PerspectiveCube cube = this->FitCubeFor(frame, light);
+  if (!cube.Valid)
+  {
+    return false;
+  }
+  light.Layout = shadowmaps::ViewLayout::PerspectiveCube;
+  if (this->MayKeepViews(frame))
+  {
+    // A kept cube keeps its own selection: receivers pick its faces as they
+    // were rendered, however the camera has moved.
+    const auto serves = [&](const std::vector<LightView>& faces,
+                          const std::vector<double>& selection, double texelRatio) {
+      return shadowmaps::KeptCubeServes(faces, selection, this->CubeReceivers(frame, light), cube,
+        shadowmaps::NonDegenerate(frame.SceneBounds), TowardLight(light), frame.Resolution,
+        texelRatio, frame.FilterReachTexels + 1.0);
+    };
+    if (serves(light.LastViews, light.LastFaceSelection, this->InteractiveTexelRatio))
+    {
+      light.Views = light.LastViews;
+      light.FaceSelection = light.LastFaceSelection;
+      return true;
+    }
+    for (const ShadowFrame& wider : vtkShadowMapViews::WidenedFrames(frame))
+    {
+      const shadowmaps::PerspectiveCube widened = this->FitCubeFor(wider, light);
+      const std::vector<LightView> faces(widened.Faces.begin(), widened.Faces.end());
+      const std::vector<double> selection(widened.Selection.begin(), widened.Selection.end());
+      if (widened.Valid && serves(faces, selection, this->WidenedTexelRatio()))
+      {
+        light.Views = faces;
+        light.FaceSelection = selection;
+        return true;
+      }
+    }
+  }
+  light.Views.assign(cube.Faces.begin(), cube.Faces.end());
+  light.FaceSelection.assign(cube.Selection.begin(), cube.Selection.end());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<shadowmaps::Plane> vtkWarpedShadowMapViews::CubeReceivers(
+  const ShadowFrame& frame, const ShadowLight& light) const
+{
+  const glm::dmat4 projection =
+    TightProjection(frame.CameraView, frame.CameraProjection, frame.PropBounds);
+  return ReceiversOfLight(projection * frame.CameraView,
+    shadowmaps::NonDegenerate(frame.SceneBounds), light, frame.Resolution);
+}
+
+//------------------------------------------------------------------------------
+shadowmaps::PerspectiveCube vtkWarpedShadowMapViews::FitCubeFor(
+  const ShadowFrame& frame, const ShadowLight& light) const
+{
+  const glm::dmat4 projection =
+    TightProjection(frame.CameraView, frame.CameraProjection, frame.PropBounds);
+  return shadowmaps::FitPerspectiveCube(frame.CameraView, projection,
+    this->CubeReceivers(frame, light), shadowmaps::NonDegenerate(frame.SceneBounds),
+    TowardLight(light), frame.Resolution, PSMSlideBackFor(this->PSMSlideBack, projection),
+    std::max(4.0, frame.FilterReachTexels + 1.0));
+}
+
+//------------------------------------------------------------------------------
 void vtkWarpedShadowMapViews::FitLight(const ShadowFrame& frame, ShadowLight& light)
 {
+  if (this->UsesPerspectiveCube(light))
+  {
+    light.PossibleFeatures = shadowmaps::GradientTexels;
+    if (frame.SceneBounds.IsUsable() && this->FitPerspectiveCube(frame, light))
+    {
+      return;
+    }
+  }
   const bool mayWarp = this->WarpMode != UNIFORM && !shadowmaps::NeedsCubeFaces(light);
   // Every warp but PSM stores linear depth (PSM's w depends on depth).
   light.PossibleFeatures = !mayWarp ? 0
@@ -191,6 +312,7 @@ void vtkWarpedShadowMapViews::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LiSPSMFreeParameter: " << this->LiSPSMFreeParameter << "\n";
   os << indent << "LloydFalloff: " << this->LloydFalloff << "\n";
   os << indent << "PSMSlideBack: " << this->PSMSlideBack << "\n";
+  os << indent << "PSMCubeMap: " << this->PSMCubeMap << "\n";
   os << indent << "TSMFocusDistance: " << this->TSMFocusDistance << "\n";
   os << indent << "TSMFocusFraction: " << this->TSMFocusFraction << "\n";
 }

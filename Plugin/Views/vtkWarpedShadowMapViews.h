@@ -28,7 +28,11 @@
  * they are directional (the angle, depths and half angle that choose n are
  * measured in the world at B; a spot's TSM map stores z / w, so its depth is not
  * linear), and by PSM as a point light in the camera's post-perspective space.
- * Point lights, and spots wider than one map holds, use the uniform cube faces.
+ * In PSM mode, point lights and spots wider than one map holds get Kozlov's
+ * cube map in post-perspective space (PSMCubeMap, ShadowMapPerspectiveCube.h):
+ * up to six faces on the sides of the receivers' box there, looking away from
+ * the light's post-perspective position, so that texels follow screen area
+ * wherever the light is; the other modes give them the uniform cube faces.
  *
  * UNIFORM is vtkUniformShadowMapViews' fit. The views of
  * vtkWarpedShadowMapPass; any pass takes them:
@@ -46,10 +50,14 @@
 #include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 #include "vtkShadowMapViews.h"
 
+#include <vector> // For CubeReceivers
+
 namespace shadowmaps
 {
 enum class DirectionalWarp;
 struct LightView;
+struct PerspectiveCube;
+struct Plane;
 struct WarpOptions;
 }
 
@@ -110,6 +118,29 @@ public:
   vtkGetMacro(PSMSlideBack, double);
   ///@}
 
+  enum PSMCubeMapType
+  {
+    PSM_CUBE_AUTOMATIC = 0,
+    PSM_CUBE_ALWAYS = 1,
+    PSM_CUBE_NEVER = 2
+  };
+
+  ///@{
+  /**
+   * PSM: which lights get Kozlov's post-perspective cube map instead of one
+   * map. AUTOMATIC (default): point lights and spots wider than one map holds
+   * (suns and narrow spots keep the single focused PSM); ALWAYS: every light;
+   * NEVER: none (point lights and wide spots get the uniform cube faces).
+   * The cube's virtual camera slides back by PSMSlideBack as the single
+   * map's does. docs/WARPS.md compares them. Clamped to [AUTOMATIC, NEVER].
+   */
+  vtkSetClampMacro(PSMCubeMap, int, PSM_CUBE_AUTOMATIC, PSM_CUBE_NEVER);
+  vtkGetMacro(PSMCubeMap, int);
+  void SetPSMCubeMapToAutomatic() { this->SetPSMCubeMap(PSM_CUBE_AUTOMATIC); }
+  void SetPSMCubeMapToAlways() { this->SetPSMCubeMap(PSM_CUBE_ALWAYS); }
+  void SetPSMCubeMapToNever() { this->SetPSMCubeMap(PSM_CUBE_NEVER); }
+  ///@}
+
   ///@{
   /**
    * TSM: the focus distance delta beyond the camera's near plane (world units)
@@ -143,6 +174,20 @@ protected:
   /** The frame's own warped view of a directional or spot light. */
   shadowmaps::LightView FitWarpedView(
     const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
+  /** Whether the light gets the post-perspective cube map (PSMCubeMap). */
+  bool UsesPerspectiveCube(const shadowmaps::ShadowLight& light) const;
+  /**
+   * The light's post-perspective cube faces (in interactive frames the last
+   * ones while they serve, else a cube fitted to a widened camera where one
+   * serves); false, leaving the light, when none can be built.
+   */
+  bool FitPerspectiveCube(const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) const;
+  /** The frame's cube of the light. */
+  shadowmaps::PerspectiveCube FitCubeFor(
+    const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
+  /** The world planes around the receivers of the light's cube. */
+  std::vector<shadowmaps::Plane> CubeReceivers(
+    const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
   /** LiSPSM and GMNPR settings (free parameter, falloff). */
   shadowmaps::WarpOptions LightSpaceWarpOptions() const;
 
@@ -150,6 +195,7 @@ protected:
   double LiSPSMFreeParameter = 0.0;
   bool LloydFalloff = false;
   double PSMSlideBack = -1.0;
+  int PSMCubeMap = PSM_CUBE_AUTOMATIC;
   double TSMFocusDistance = 0.0;
   double TSMFocusFraction = 0.8;
 

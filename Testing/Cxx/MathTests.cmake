@@ -1,5 +1,6 @@
 # Unit tests of the fitting math (Plugin/Math/ShadowMap*.cxx): bounds, focusing,
-# cube faces, tiles, degenerate input, warping, trapezoids, perspective maps,
+# cube faces, tiles, degenerate input, warping, trapezoids, perspective maps and
+# their post-perspective cube,
 # cascades, caster reach, the light depth, crops and kept views. Included from Testing/CMakeLists.txt, so relative paths are
 # relative to Testing/. The math source is compiled into the test directly: the
 # test needs GLM and GoogleTest only, not the VTK module.
@@ -12,6 +13,7 @@ add_executable(TestShadowMapMath
   Cxx/TestShadowMapWarping.cxx
   Cxx/TestShadowMapTrapezoid.cxx
   Cxx/TestShadowMapPerspective.cxx
+  Cxx/TestShadowMapPerspectiveCube.cxx
   Cxx/TestShadowMapCascades.cxx
   Cxx/TestShadowMapCasterReach.cxx
   Cxx/TestShadowMapLightDepth.cxx
@@ -22,6 +24,7 @@ add_executable(TestShadowMapMath
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapWarping.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapTrapezoid.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapPerspective.cxx
+  ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapPerspectiveCube.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapCascades.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapCasterReach.cxx
   ${PROJECT_SOURCE_DIR}/Plugin/Math/ShadowMapCrop.cxx

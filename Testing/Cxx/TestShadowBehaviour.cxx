@@ -863,6 +863,44 @@ vtkSmartPointer<vtkWarpedShadowMapPass> WarpedPass(int mode)
   pass->SetWarpMode(mode);
   return pass;
 }
+
+constexpr int DragFrames = 12;
+
+// Drags the camera DragFrames interactive frames of 0.3 degrees, then a few
+// more until a frame keeps its maps: at most `maximumLayers` layers were
+// re-rendered over the drag, no shader was built, the kept frame's shadows are
+// a fresh pass's (up to 0.2% of the pixels), and the still render after it is
+// a fresh pass's exactly. Leaves the window rendering still frames.
+void DragKeepingMaps(
+  TestScene& scene, vtkWarpedShadowMapPass* pass, const std::string& name, int maximumLayers)
+{
+  const int builds = pass->GetNumberOfShaderBuilds();
+  int rendered = 0;
+  scene.Window->SetDesiredUpdateRate(15.0);
+  for (int frame = 0; frame < DragFrames; ++frame)
+  {
+    OrbitAndRender(scene, 0.3);
+    rendered += pass->GetNumberOfRenderedLayers();
+  }
+  // The frame compared with a fresh pass's below is one that kept its maps.
+  for (int extra = 0; extra < 4 && pass->GetNumberOfRenderedLayers() != 0; ++extra)
+  {
+    OrbitAndRender(scene, 0.3);
+  }
+  ASSERT_EQ(pass->GetNumberOfRenderedLayers(), 0) << name << ": a frame that kept its maps";
+  std::cout << "[ measured ] " << name << ": layers re-rendered in " << DragFrames
+            << " interactive frames: " << rendered << "\n";
+  EXPECT_LE(rendered, maximumLayers) << name;
+  EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds) << name;
+  const std::vector<unsigned char> interactive = RgbBytes(CaptureAsRendered(scene.Window));
+  scene.Window->SetDesiredUpdateRate(0.0001);
+  const std::vector<unsigned char> fresh = FreshPassFrame(scene, WarpedPass(pass->GetWarpMode()));
+  const double different = ShareOfDifferentPixels(interactive, fresh);
+  std::cout << "[ measured ] " << name << ": pixels unlike a fresh pass's " << different << "\n";
+  EXPECT_LT(different, 0.002) << name << ": the kept maps' shadows are a fresh fit's";
+  scene.Window->Render();
+  EXPECT_EQ(RgbBytes(CaptureAsRendered(scene.Window)), fresh) << name << ": the still frame";
+}
 } // namespace
 
 // While the user drags the camera (the window's desired update rate at the
@@ -870,7 +908,6 @@ vtkSmartPointer<vtkWarpedShadowMapPass> WarpedPass(int mode)
 // of a fresh fit; the still render that ends the drag is a fresh pass's.
 TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
 {
-  constexpr int Frames = 12;
   for (const int mode : { vtkWarpedShadowMapPass::LISPSM, vtkWarpedShadowMapPass::TSM,
          vtkWarpedShadowMapPass::PSM, vtkWarpedShadowMapPass::GMNPR })
   {
@@ -881,33 +918,7 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
       TestScene scene;
       vtkSmartPointer<vtkWarpedShadowMapPass> pass = WarpedPass(mode);
       RenderCloserWith(scene, spot, pass);
-      const int builds = pass->GetNumberOfShaderBuilds();
-      int rendered = 0;
-      scene.Window->SetDesiredUpdateRate(15.0);
-      for (int frame = 0; frame < Frames; ++frame)
-      {
-        OrbitAndRender(scene, 0.3);
-        rendered += pass->GetNumberOfRenderedLayers();
-      }
-      // The frame compared with a fresh pass's below is one that kept its map.
-      for (int extra = 0; extra < 4 && pass->GetNumberOfRenderedLayers() != 0; ++extra)
-      {
-        OrbitAndRender(scene, 0.3);
-      }
-      ASSERT_EQ(pass->GetNumberOfRenderedLayers(), 0) << name.str() << ": a frame that kept its map";
-      std::cout << "[ measured ] " << name.str() << ": layers re-rendered in " << Frames
-                << " interactive frames: " << rendered << "\n";
-      EXPECT_LE(rendered, Frames / 3) << name.str();
-      EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds) << name.str();
-      const std::vector<unsigned char> interactive = RgbBytes(CaptureAsRendered(scene.Window));
-      scene.Window->SetDesiredUpdateRate(0.0001);
-      const std::vector<unsigned char> fresh = FreshPassFrame(scene, WarpedPass(mode));
-      const double different = ShareOfDifferentPixels(interactive, fresh);
-      std::cout << "[ measured ] " << name.str() << ": pixels unlike a fresh pass's "
-                << different << "\n";
-      EXPECT_LT(different, 0.002) << name.str() << ": the kept map's shadows are a fresh fit's";
-      scene.Window->Render();
-      EXPECT_EQ(RgbBytes(CaptureAsRendered(scene.Window)), fresh) << name.str() << ": the still frame";
+      DragKeepingMaps(scene, pass, name.str(), DragFrames / 3);
 
       // A jump the kept map cannot hold is re-rendered at once.
       scene.Window->SetDesiredUpdateRate(15.0);
@@ -916,7 +927,7 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
       // Every render is a still one above any update rate.
       pass->SetInteractiveUpdateRate(VTK_DOUBLE_MAX);
       OrbitAndRender(scene, 0.3);
-      rendered = 0;
+      int rendered = 0;
       for (int frame = 0; frame < 4; ++frame)
       {
         OrbitAndRender(scene, 0.3);
@@ -926,6 +937,38 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsWarpedMapsAndTheStillFrameIsFresh)
       scene.Renderer->SetPass(nullptr);
       pass->ReleaseGraphicsResources(scene.Window);
     }
+  }
+}
+
+// PSM's post-perspective cube (a point light, a wide spot) follows the camera
+// as a warped map does: while the user drags, its six faces are kept while
+// they serve, with their own selection of faces, and re-rendered only every
+// few frames; the kept frame's shadows are a fresh fit's and the still frame
+// is a fresh pass's.
+TEST(ShadowBehaviour, AnInteractiveOrbitKeepsThePostPerspectiveCube)
+{
+  for (const bool spot : { false, true })
+  {
+    const std::string name = spot ? "wide spot" : "point light";
+    TestScene scene;
+    if (spot)
+    {
+      scene.SetSpot(glm::dvec3(2.0, -3.0, 6.0), 75.0);
+    }
+    else
+    {
+      scene.SetPoint(glm::dvec3(1.0, -3.0, 4.0));
+    }
+    scene.Renderer->GetActiveCamera()->Dolly(2.0);
+    scene.Renderer->ResetCameraClippingRange();
+    vtkSmartPointer<vtkWarpedShadowMapPass> pass = WarpedPass(vtkWarpedShadowMapPass::PSM);
+    scene.Renderer->SetPass(pass);
+    scene.Window->Render();
+    ASSERT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << name;
+    // The six faces re-rendered at most every third frame.
+    DragKeepingMaps(scene, pass, name, 6 * DragFrames / 3);
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
   }
 }
 

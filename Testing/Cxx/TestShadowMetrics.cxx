@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 using shadowmetrics::Truth;
@@ -81,6 +83,60 @@ TEST(ShadowMetrics, UndersampledFromAnalysisCountsFullRed)
   const std::vector<std::uint8_t> rgb = { 255, 10, 0, 254, 0, 0, 255, 150, 0, 255, 0, 0 };
   const std::vector<std::uint8_t> valid = { 1, 1, 1, 0 };
   EXPECT_NEAR(shadowmetrics::UndersampledFromAnalysis(rgb, valid), 200.0 / 3.0, 1e-9);
+}
+
+namespace
+{
+// vtkShadowDensityColor (Shaders/vtkShadowMapsAnalysisFS.glsl), rounded to bytes.
+std::array<std::uint8_t, 3> DensityColor(double footprint)
+{
+  const double octaves = std::log2(footprint);
+  const double limit = std::log2(1.5);
+  const auto byte = [](double v) { return static_cast<std::uint8_t>(std::lround(v * 255.0)); };
+  if (octaves <= limit)
+  {
+    const double t = std::clamp((octaves + 4.0) / (limit + 4.0), 0.0, 1.0);
+    return { byte(0.1 + 0.3 * t), byte(0.2 + 0.7 * t), byte(1.0 - 0.8 * t) };
+  }
+  const double t = std::clamp((octaves - limit) / (6.0 - limit), 0.0, 1.0);
+  return { 255, byte(0.6 * (1.0 - t)), 0 };
+}
+} // namespace
+
+TEST(ShadowMetrics, FootprintsFromAnalysisInvertTheHeatMap)
+{
+  const std::vector<double> footprints = { 0.1, 0.5, 1.0, 1.4, 2.0, 8.0, 40.0 };
+  std::vector<std::uint8_t> rgb;
+  for (double footprint : footprints)
+  {
+    const auto color = DensityColor(footprint);
+    rgb.insert(rgb.end(), color.begin(), color.end());
+  }
+  rgb.insert(rgb.end(), { 0, 0, 0, 255, 100, 0 }); // outside the maps; not valid
+  std::vector<std::uint8_t> valid(footprints.size() + 1, 1);
+  valid.push_back(0);
+  const std::vector<double> decoded = shadowmetrics::FootprintsFromAnalysis(rgb, valid);
+  ASSERT_EQ(decoded.size(), footprints.size() + 2);
+  for (size_t i = 0; i < footprints.size(); ++i)
+  {
+    // A byte of green is 1/178 of 4.6 octaves below 1.5 pixels, 1/153 of 5.4 above.
+    EXPECT_NEAR(std::log2(decoded[i]), std::log2(footprints[i]), 0.04) << footprints[i];
+  }
+  EXPECT_TRUE(std::isnan(decoded[footprints.size()]));
+  EXPECT_TRUE(std::isnan(decoded[footprints.size() + 1]));
+}
+
+TEST(ShadowMetrics, FootprintSpreadIsTheOctavesBetweenTheTenthAndNinetiethPercentiles)
+{
+  std::vector<double> footprints;
+  for (int i = 0; i <= 100; ++i)
+  {
+    footprints.push_back(std::exp2(i / 10.0)); // 0 to 10 octaves, evenly
+  }
+  footprints.push_back(std::nan(""));
+  EXPECT_NEAR(shadowmetrics::FootprintSpread(footprints), 8.0, 1e-9);
+  EXPECT_NEAR(shadowmetrics::FootprintSpread(std::vector<double>(7, 3.0)), 0.0, 1e-12);
+  EXPECT_TRUE(std::isnan(shadowmetrics::FootprintSpread({ std::nan("") })));
 }
 
 TEST(ShadowMetrics, FlickerCountsChangesTheTruthDoesNotHave)

@@ -3,7 +3,10 @@
 // facing it: strict baselines, probes near and far from the camera, and the
 // warp's effect on texel density seen through the TEXEL_DENSITY analysis view.
 #include "ShadowTestUtilities.h"
+#include "vtkDualDepthShadowMapPass.h"
+#include "vtkVarianceShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
+#include "vtkWarpedShadowMapViews.h"
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
@@ -11,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <set>
 #include <tuple>
 
 using namespace shadowtest;
@@ -278,8 +282,9 @@ TEST(ShadowWarps, SpotLightWarpsShadowNearAndFar)
   }
 }
 
-// A spot wider than one map holds keeps the foundation's six cube faces in
-// every warp mode (the warps fit one map), and still shadows.
+// A spot wider than one map holds gets six faces in every warp mode: the
+// foundation's cube faces (the warps fit one map), or in PSM mode the
+// post-perspective cube's, and still shadows.
 TEST(ShadowWarps, WideSpotKeepsCubeFacesInEveryMode)
 {
   const glm::dvec3& spot = SpotPosition;
@@ -297,5 +302,186 @@ TEST(ShadowWarps, WideSpotKeepsCubeFacesInEveryMode)
     EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << mode.Name;
     EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenterFrom(spot)), ShadowedBelow)
       << mode.Name;
+  }
+}
+
+namespace
+{
+// A point light at street level just ahead of the camera and above it: its
+// light reaches from the camera's feet to the far end of the ground.
+const glm::dvec3 StreetLight(1.0, -6.0, 3.0);
+
+void RenderCube(TestScene& scene, vtkWarpedShadowMapPass* pass, int cubeMap, int resolution)
+{
+  pass->SetWarpModeToPSM();
+  pass->SetPSMCubeMap(cubeMap);
+  pass->SetResolution(resolution);
+  scene.Renderer->SetPass(pass);
+}
+
+// The street light's frame through `pass` (already set on the scene's
+// renderer): no error, six layers, the sphere's shadow dark and the ground near
+// and far lit. The point light's ground dims with distance and incidence, so
+// the probes compare with `plain`, the frame without shadows.
+vtkSmartPointer<vtkImageData> RenderAndProbeStreetLight(
+  TestScene& scene, vtkAbstractShadowMapPass* pass, vtkImageData* plain)
+{
+  ErrorCounter errors;
+  auto image = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6);
+  const glm::dvec3 shadowed = GroundShadowOfSphereCenterFrom(StreetLight);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, shadowed),
+    0.5 * LuminanceAt(scene.Renderer, plain, shadowed));
+  for (const glm::dvec3& lit : { glm::dvec3(-2.0, -3.0, 0.0), glm::dvec3(2.0, 3.0, 0.0),
+         glm::dvec3(-5.0, 8.0, 0.0) })
+  {
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, lit), 0.95 * LuminanceAt(scene.Renderer, plain, lit))
+      << lit.x << "," << lit.y;
+  }
+  return image;
+}
+} // namespace
+
+// Kozlov's post-perspective cube map (PSM mode): a point light near the
+// viewer, a spot wider than one map holds, and, asked for, the sun facing the
+// viewer (its light in post-perspective space just beyond the far plane). The
+// sphere's shadow is dark, the ground near and far lit, the frames match their
+// baselines.
+TEST(ShadowWarps, PostPerspectiveCubeShadowsNearAndFar)
+{
+  {
+    TestScene scene;
+    LookAlongTheGround(scene);
+    scene.SetPoint(StreetLight);
+    auto plain = RenderAndCapture(scene.Window);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    RenderCube(scene, pass, vtkWarpedShadowMapViews::PSM_CUBE_AUTOMATIC, 512);
+    auto image = RenderAndProbeStreetLight(scene, pass, plain);
+    const std::string difference = CompareWithBaseline(image, "WarpPSMCubePoint");
+    EXPECT_TRUE(difference.empty()) << difference;
+  }
+  {
+    TestScene scene;
+    LookAlongTheGroundUnderTheSpot(scene, 75.0);
+    RenderAndProbe(scene, vtkWarpedShadowMapPass::PSM, "WarpPSMCubeWideSpot",
+      GroundShadowOfSphereCenterFrom(SpotPosition), { -2.0, -3.0, 0.0 }, { -3.0, 6.0, 0.0 });
+  }
+  for (const auto& setUp : SetUps)
+  {
+    TestScene scene;
+    LookAlongTheGround(scene);
+    scene.SetSun(setUp.Direction);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    RenderCube(scene, pass, vtkWarpedShadowMapViews::PSM_CUBE_ALWAYS, 512);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << setUp.Name << ": " << errors.Text();
+    EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << setUp.Name;
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(setUp.Direction)),
+      ShadowedBelow)
+      << setUp.Name;
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, setUp.LitNear), LitAbove) << setUp.Name;
+    EXPECT_GT(LuminanceAt(scene.Renderer, image, setUp.LitFar), LitAbove) << setUp.Name;
+    const std::string difference =
+      CompareWithBaseline(image, std::string("WarpPSMCube") + setUp.Name);
+    EXPECT_TRUE(difference.empty()) << difference;
+  }
+}
+
+// The cube's faces spread texels by screen area: with the light near the
+// viewer and no slide-back (Kozlov's cube map as the seed gives it), far fewer
+// pixels are undersampled than with the uniform cube faces of the same
+// resolution (PSMCubeMap NEVER), which spend as many texels per world area far
+// away as near. The automatic slide-back gives some of the near field's texels
+// to the far field, and still undersamples no more than the uniform faces.
+TEST(ShadowWarps, PostPerspectiveCubeUndersamplesFewerPixelsThanUniformCubeFaces)
+{
+  struct Choice
+  {
+    int CubeMap;
+    double SlideBack;
+  };
+  const Choice choices[3] = { { vtkWarpedShadowMapViews::PSM_CUBE_NEVER, -1.0 },
+    { vtkWarpedShadowMapViews::PSM_CUBE_AUTOMATIC, 0.0 },
+    { vtkWarpedShadowMapViews::PSM_CUBE_AUTOMATIC, -1.0 } };
+  int undersampled[3] = { 0, 0, 0 };
+  for (int i = 0; i < 3; ++i)
+  {
+    TestScene scene;
+    LookAlongTheGround(scene);
+    scene.SetPoint(StreetLight);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    RenderCube(scene, pass, choices[i].CubeMap, 256);
+    pass->SetPSMSlideBack(choices[i].SlideBack);
+    pass->SetAnalysisView(vtkAbstractShadowMapPass::TEXEL_DENSITY);
+    undersampled[i] = CountUndersampled(RenderAndCapture(scene.Window));
+  }
+  std::cout << "undersampled pixels at 256^2: uniform cube faces " << undersampled[0]
+            << ", post-perspective cube " << undersampled[1] << " (no slide-back), "
+            << undersampled[2] << " (automatic slide-back)\n";
+  EXPECT_GT(undersampled[0], 2000);
+  EXPECT_LT(undersampled[1], undersampled[0] / 4);
+  EXPECT_LE(undersampled[2], undersampled[0]);
+}
+
+// The analysis views show the cube: the partition colours the faces that shade
+// the view (more than one), the shadow-map view tiles the six layers.
+TEST(ShadowWarps, PostPerspectiveCubeInTheAnalysisViews)
+{
+  TestScene scene;
+  LookAlongTheGround(scene);
+  scene.SetPoint(StreetLight);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  RenderCube(scene, pass, vtkWarpedShadowMapViews::PSM_CUBE_AUTOMATIC, 256);
+  ErrorCounter errors;
+  pass->SetAnalysisView(vtkAbstractShadowMapPass::PARTITION);
+  const std::vector<unsigned char> partition = RgbBytes(RenderAndCapture(scene.Window));
+  std::set<int> colours;
+  for (size_t i = 0; i + 2 < partition.size(); i += 3)
+  {
+    // Lit pixels of a face show its palette colour at full brightness.
+    colours.insert((partition[i] << 16) | (partition[i + 1] << 8) | partition[i + 2]);
+  }
+  pass->SetAnalysisView(vtkAbstractShadowMapPass::SHADOW_MAP);
+  auto maps = RenderAndCapture(scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 6);
+  int faces = 0;
+  for (const glm::ivec3 face : { glm::ivec3(230, 51, 51), glm::ivec3(51, 204, 51),
+         glm::ivec3(51, 102, 255), glm::ivec3(242, 217, 51), glm::ivec3(204, 77, 230),
+         glm::ivec3(51, 217, 217) })
+  {
+    faces += colours.count((face.r << 16) | (face.g << 8) | face.b) > 0 ? 1 : 0;
+  }
+  EXPECT_GE(faces, 2);
+  const std::string difference = CompareWithBaseline(maps, "WarpPSMCubeShadowMaps");
+  EXPECT_TRUE(difference.empty()) << difference;
+}
+
+// Every representation takes the cube's faces: depth, dual depth (no bias) and
+// moments (the light depth, the same in every face). The sphere's shadow is
+// dark and the ground near and far lit, against the frame without shadows.
+TEST(ShadowWarps, PostPerspectiveCubeComposesWithEveryRepresentation)
+{
+  vtkNew<vtkWarpedShadowMapViews> views;
+  views->SetWarpModeToPSM();
+  vtkNew<vtkDepthShadowMapPass> depth;
+  vtkNew<vtkDualDepthShadowMapPass> dual;
+  vtkNew<vtkVarianceShadowMapPass> moments;
+  vtkAbstractShadowMapPass* passes[] = { depth, dual, moments };
+  for (vtkAbstractShadowMapPass* pass : passes)
+  {
+    SCOPED_TRACE(pass->GetClassName());
+    TestScene scene;
+    LookAlongTheGround(scene);
+    scene.SetPoint(StreetLight);
+    auto plain = RenderAndCapture(scene.Window);
+    pass->SetViews(views);
+    pass->SetResolution(512);
+    scene.Renderer->SetPass(pass);
+    RenderAndProbeStreetLight(scene, pass, plain);
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
   }
 }

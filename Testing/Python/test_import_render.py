@@ -136,6 +136,10 @@ LAMP = (-1.0, 0.5, 6.0)
 UNDER_THE_SPHERE_FROM_LAMP = (1.0 / 3.0, -0.5 / 3.0, 0.0)
 
 
+# make_pass's techniques, and PSM's post-perspective cube map for every light.
+TECHNIQUES_AND_THE_CUBE = list(vtkshadowmaps.TECHNIQUES) + ["psm-cube"]
+
+
 def every_technique_light_and_shading(renderer, window, grab, sphere, light):
     """vtkshadowmaps.make_pass's every technique shades its shadow with a sun,
     a spot and a point light, on Phong and on PBR surfaces."""
@@ -156,8 +160,10 @@ def every_technique_light_and_shading(renderer, window, grab, sphere, light):
             light.SetPosition(*((0, 0, 1) if kind == "sun" else LAMP))
             light.SetConeAngle(45.0 if kind == "spot" else 180.0)
             shadowed = UNDER_THE_SPHERE if kind == "sun" else UNDER_THE_SPHERE_FROM_LAMP
-            for technique in vtkshadowmaps.TECHNIQUES:
-                shadow_pass = vtkshadowmaps.make_pass(technique)
+            for technique in TECHNIQUES_AND_THE_CUBE:
+                shadow_pass = vtkshadowmaps.make_pass(technique.replace("-cube", ""))
+                if technique == "psm-cube":
+                    shadow_pass.SetPSMCubeMapToAlways()  # the sun's and the spot's too
                 _, (under, open_ground) = render_with(
                     renderer, window, grab, shadow_pass, shadowed, OPEN_GROUND)
                 renderer.SetPass(None)
@@ -167,7 +173,7 @@ def every_technique_light_and_shading(renderer, window, grab, sphere, light):
                                     f"under the sphere {under:.0f}, open ground {open_ground:.0f}")
     light.SetPositional(False)
     light.SetPosition(0, 0, 1)
-    count = 2 * 3 * len(vtkshadowmaps.TECHNIQUES)
+    count = 2 * 3 * len(TECHNIQUES_AND_THE_CUBE)
     print(f"{count - len(failures)} of {count} technique x light x shading cases shade their shadow")
     assert not failures, "\n".join(failures)
 

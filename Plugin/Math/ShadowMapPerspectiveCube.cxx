@@ -1,0 +1,351 @@
+#include "ShadowMapPerspectiveCube.h"
+
+#include "ShadowMapPerspective.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowmaps
+{
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+// Tangent window (x / Z, y / Z) and depth range Z = -z of points in a light
+// camera's view; invalid when a point is not in front of it.
+struct FaceWindow
+{
+  glm::dvec2 Lo{ Infinity }, Hi{ -Infinity };
+  double Near = Infinity, Far = 0.0;
+  bool Valid = true;
+
+  void Add(const glm::dvec3& q)
+  {
+    const double depth = -q.z;
+    if (!(depth > 0.0) || !IsFiniteVector(q))
+    {
+      this->Valid = false;
+      return;
+    }
+    this->Near = std::min(this->Near, depth);
+    this->Far = std::max(this->Far, depth);
+    this->Lo = glm::min(this->Lo, glm::dvec2(q) / depth);
+    this->Hi = glm::max(this->Hi, glm::dvec2(q) / depth);
+  }
+};
+
+// The window of face `face`'s whole platform, seen by the face's camera
+// `faceView` (post-perspective space to the face's view).
+FaceWindow PlatformWindow(const glm::dmat4& faceView, const Aabb& box, int face)
+{
+  const int axis = face / 2;
+  FaceWindow window;
+  for (glm::dvec3 corner : box.Corners())
+  {
+    corner[axis] = face % 2 == 0 ? box.Max[axis] : box.Min[axis];
+    window.Add(ProjectPoint(faceView, corner));
+  }
+  return window;
+}
+
+// A perspective frustum over the tangent window, for its side planes.
+glm::dmat4 WindowFrustum(const FaceWindow& window)
+{
+  return glm::frustum(window.Lo.x, window.Hi.x, window.Lo.y, window.Hi.y, 1.0, 2.0);
+}
+
+// The receivers of a face: those inside `receivers` and the pyramid from the
+// light through the face's platform (`platform`, the face's frustum over it).
+std::vector<glm::dvec3> FaceBody(
+  const std::vector<Plane>& receivers, const glm::dmat4& platform, double scale)
+{
+  std::vector<Plane> planes = receivers;
+  const std::array<Plane, 6> sides = FrustumPlanes(platform);
+  planes.insert(planes.end(), sides.begin(), sides.begin() + 4);
+  return ConvexPolytopeVertices(planes, scale);
+}
+
+// The face's map cropped to its receivers `body`, seen through `toFace` (world
+// to the face's view). A light among the receivers is the apex of its faces'
+// bodies (depth within `apex` of 0): the other vertices bound the window, and
+// the near plane is put at a thousandth of the farthest receiver, as the
+// uniform cube faces' (receivers nearer the light are clamped onto it with
+// their casters).
+bool FitFace(const glm::dmat4& toFace, const std::vector<glm::dvec3>& body, bool inverse,
+  int resolution, double marginTexels, double apex, LightView& view)
+{
+  FaceWindow window;
+  bool apexInBody = false;
+  for (const auto& p : body)
+  {
+    const glm::dvec3 q = ProjectPoint(toFace, p);
+    if (std::abs(q.z) <= apex)
+    {
+      apexInBody = true;
+      continue;
+    }
+    window.Add(q);
+  }
+  if (!window.Valid || !(window.Far > 0.0))
+  {
+    return false;
+  }
+  if (apexInBody)
+  {
+    window.Near = 2e-3 * window.Far;
+  }
+  const glm::dvec2 size = glm::max(window.Hi - window.Lo, glm::dvec2(1e-12));
+  const glm::dvec2 margin = size * (marginTexels / std::max(resolution, 1));
+  const glm::dvec2 lo = window.Lo - margin;
+  const glm::dvec2 hi = window.Hi + margin;
+  view.View = toFace;
+  if (inverse)
+  {
+    view.Projection = InverseProjection(lo, hi, 0.999 * window.Near);
+  }
+  else
+  {
+    // As FitPerspective's point lights: casters nearer the light are clamped
+    // onto a near plane kept close to the receivers, where depth needs its
+    // precision.
+    const double zNear = 0.5 * window.Near;
+    // The far plane a little beyond the farthest receiver, for the moves of a
+    // drag that keeps the cube (KeptCubeServes).
+    view.Projection =
+      glm::frustum(lo.x * zNear, hi.x * zNear, lo.y * zNear, hi.y * zNear, zNear, window.Far * 1.01);
+  }
+  view.Perspective = true;
+  view.TexelSizeFromGradient = true;
+  return IsFinite(view.ViewProjection());
+}
+
+// The receivers' box in post-perspective space; empty when one lies on or
+// behind the virtual camera's plane.
+Aabb PostPerspectiveBox(const glm::dmat4& postPerspective, const std::vector<glm::dvec3>& body)
+{
+  Aabb box;
+  for (const auto& p : body)
+  {
+    const glm::dvec4 q = postPerspective * glm::dvec4(p, 1.0);
+    if (!(q.w > 0.0))
+    {
+      return Aabb{};
+    }
+    box.Add(glm::dvec3(q) / q.w);
+  }
+  return box;
+}
+} // namespace
+
+glm::dvec3 PerspectiveCubeAxis(int face)
+{
+  glm::dvec3 axis(0.0);
+  axis[face / 2] = face % 2 == 0 ? 1.0 : -1.0;
+  return axis;
+}
+
+double PlatformDistance(const Aabb& box, const glm::dvec3& light, int face)
+{
+  const int axis = face / 2;
+  return face % 2 == 0 ? box.Max[axis] - light[axis] : light[axis] - box.Min[axis];
+}
+
+int DisplacedCubeFace(const Aabb& box, const glm::dvec3& light, const glm::dvec3& point)
+{
+  int best = -1;
+  double largest = 0.0;
+  for (int face = 0; face < PerspectiveCubeFaces; ++face)
+  {
+    const double distance = PlatformDistance(box, light, face);
+    if (!(distance > 0.0))
+    {
+      continue;
+    }
+    const double reach = glm::dot(point - light, PerspectiveCubeAxis(face)) / distance;
+    if (reach > largest)
+    {
+      largest = reach;
+      best = face;
+    }
+  }
+  return best;
+}
+
+PerspectiveCube FitPerspectiveCube(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
+  const std::vector<Plane>& receivers, const Aabb& scene, const glm::dvec4& towardLight,
+  int resolution, double slideBack, double marginTexels)
+{
+  PerspectiveCube cube;
+  const bool parallel = cameraProjection[2][3] == 0.0;
+  if (parallel || !IsFinite(cameraView) || !IsFinite(cameraProjection) || scene.IsEmpty())
+  {
+    return cube;
+  }
+  const double scale = std::max(scene.Diagonal(), 1e-300);
+  const std::vector<glm::dvec3> body = ConvexPolytopeVertices(receivers, scale);
+  if (body.empty())
+  {
+    return cube;
+  }
+  const double slide =
+    std::max(slideBack, SlideBackHoldingCasters(cameraView, body, scene, towardLight));
+  cube.PostPerspective = SlideBackPostPerspective(cameraView, cameraProjection, slide);
+  cube.Platforms = PostPerspectiveBox(cube.PostPerspective, body);
+  const glm::dvec4 light = cube.PostPerspective * towardLight;
+  if (cube.Platforms.IsEmpty() || StaysDirectional(light, 0.5 * cube.Platforms.Diagonal()))
+  {
+    return cube;
+  }
+  cube.Inverse = light.w < 0.0;
+  cube.LightPosition = glm::dvec3(light) / light.w;
+  // A face whose platform passes (nearly) through the light would need a
+  // half-space; the faces beside it hold its receivers' rays but for a sliver.
+  const double tiny = 1e-9 * std::max(cube.Platforms.Diagonal(), 1e-300);
+  const double step = scale * 1e-5;
+  for (int face = 0; face < PerspectiveCubeFaces; ++face)
+  {
+    LightView& view = cube.Faces[face];
+    const glm::dmat4 faceView = LightLookAt(cube.LightPosition, PerspectiveCubeAxis(face));
+    const glm::dmat4 toFace = faceView * cube.PostPerspective;
+    view.View = toFace;
+    view.Projection = glm::frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 2.0);
+    view.OutOfView = true;
+    const double distance = PlatformDistance(cube.Platforms, cube.LightPosition, face);
+    const FaceWindow platform = PlatformWindow(faceView, cube.Platforms, face);
+    if (!(distance > tiny) || !platform.Valid)
+    {
+      continue;
+    }
+    cube.Selection[face] = 1.0 / distance;
+    const std::vector<glm::dvec3> faceBody =
+      FaceBody(receivers, WindowFrustum(platform) * toFace, scale);
+    if (faceBody.empty())
+    {
+      continue;
+    }
+    if (!FitFace(toFace, faceBody, cube.Inverse, resolution, marginTexels, tiny, view))
+    {
+      return PerspectiveCube{};
+    }
+    view.OutOfView = false;
+    for (const auto& p : faceBody)
+    {
+      view.TexelConstant =
+        std::max(view.TexelConstant, WorldTexelSize(view, p, towardLight, step, resolution));
+    }
+  }
+  cube.Valid = true;
+  return cube;
+}
+
+namespace
+{
+// The plane h . (p, 1) >= 0.
+Plane HomogeneousPlane(const glm::dvec4& h)
+{
+  const double length = glm::length(glm::dvec3(h));
+  return length > 0.0 ? Plane{ glm::dvec3(h) / length, h.w / length } : Plane{};
+}
+
+// Whether face `face` of `cube` holds `p`: it picks it, or ties with the face
+// that does (on the border between faces).
+bool CubeFaceHolds(const PerspectiveCube& cube, int face, const glm::dvec3& p)
+{
+  double largest = 0.0;
+  double own = 0.0;
+  for (int other = 0; other < PerspectiveCubeFaces; ++other)
+  {
+    const double reach =
+      (cube.Faces[other].ViewProjection() * glm::dvec4(p, 1.0)).w * cube.Selection[other];
+    largest = std::max(largest, reach);
+    own = other == face ? reach : own;
+  }
+  return largest > 0.0 && own >= largest * (1.0 - 1e-9);
+}
+
+// The world region whose receivers `selection` gives to face `face`: where its
+// weighted clip w is positive and at least every other face's.
+std::vector<Plane> SelectionRegion(
+  const std::vector<LightView>& faces, const std::vector<double>& selection, size_t face)
+{
+  const glm::dvec4 own = glm::transpose(faces[face].ViewProjection())[3] * selection[face];
+  std::vector<Plane> planes{ HomogeneousPlane(own) };
+  for (size_t other = 0; other < faces.size(); ++other)
+  {
+    if (other != face && selection[other] > 0.0)
+    {
+      planes.push_back(
+        HomogeneousPlane(own - glm::transpose(faces[other].ViewProjection())[3] * selection[other]));
+    }
+  }
+  return planes;
+}
+} // namespace
+
+bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double>& selection,
+  const std::vector<Plane>& receivers, const PerspectiveCube& fresh, const Aabb& scene,
+  const glm::dvec4& towardLight, int resolution, double maximumTexelRatio, double reachTexels)
+{
+  if (kept.size() != PerspectiveCubeFaces || selection.size() != kept.size() || !fresh.Valid)
+  {
+    return false;
+  }
+  const double scale = std::max(scene.Diagonal(), 1e-300);
+  const double step = scale * 1e-5;
+  const double inside = 1.0 - 2.0 * reachTexels / std::max(resolution, 1);
+  for (size_t face = 0; face < kept.size(); ++face)
+  {
+    if (!(selection[face] > 0.0))
+    {
+      continue;
+    }
+    std::vector<Plane> planes = receivers;
+    const std::vector<Plane> region = SelectionRegion(kept, selection, face);
+    planes.insert(planes.end(), region.begin(), region.end());
+    const std::vector<glm::dvec3> body = ConvexPolytopeVertices(planes, scale);
+    if (body.empty())
+    {
+      continue;
+    }
+    const glm::dmat4 map = kept[face].ViewProjection();
+    double farthest = 0.0;
+    for (const auto& p : body)
+    {
+      farthest = std::max(farthest, (map * glm::dvec4(p, 1.0)).w);
+    }
+    if (kept[face].OutOfView || !(farthest > 0.0))
+    {
+      return false;
+    }
+    for (const auto& p : body)
+    {
+      const glm::dvec4 clip = map * glm::dvec4(p, 1.0);
+      if (clip.w <= 1e-9 * farthest)
+      {
+        continue; // the light itself, among the receivers: the apex of its faces
+      }
+      const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+      if (!(std::abs(ndc.x) <= inside && std::abs(ndc.y) <= inside && ndc.z <= 1.0))
+      {
+        return false;
+      }
+      // Texels are compared where both cubes give the receiver the same face:
+      // at a face's rim its texels grow fast, and where the camera's move
+      // shifted the faces' borders a receiver may lie at the rim of one cube's
+      // face and inside the other's.
+      const int faceIndex = static_cast<int>(face);
+      if (CubeFaceHolds(fresh, faceIndex, p) &&
+        !(WorldTexelSize(kept[face], p, towardLight, step, resolution) <=
+          maximumTexelRatio * WorldTexelSize(fresh.Faces[face], p, towardLight, step, resolution)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+} // namespace shadowmaps
