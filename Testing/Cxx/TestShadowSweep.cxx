@@ -266,6 +266,25 @@ TEST(ShadowSweepDefects, PSMSpotAheadOfAStreetLevelCameraHasNoAcne)
   }
 }
 
+// Sweep seed 3767396340924350328: a 75 degree spot just over the built-in
+// scene's ground, in view of a camera high above it. PSM's post-perspective
+// cube put its faces' near plane at a fixed share of their depth range, which
+// held most of the world's depth around the light (57.95% false shadows
+// against the uniform faces' 0); at a thousandth of the scene's reach in the
+// world, float depth left acne around the light (8.09%); at a hundredth, none.
+TEST(ShadowSweepDefects, PSMCubeOfALightAmongTheReceiversHasNoAcne)
+{
+  Case drawn = MakeCase("default", { 52.2208968, 61.6634567, 288.160774 },
+    { 41.8619547, 39.7310948, 1.52082453 }, 32.0, 3.9972, 432.063, 163, 109);
+  SetLight(drawn, LightKind::Spot, { -35.097907, -10.4518717, 2.67542445 },
+    { -31.4570361, 99.5172986, 5.27298618 }, 75.2077);
+  const CaseResult result = MeasureOne(drawn, { "uniform", "psm" });
+  ASSERT_GT(result.Counted, 300);
+  ExpectNoFlags(result);
+  EXPECT_LT(Misclassified(result, "uniform"), 0.1);
+  EXPECT_LT(Misclassified(result, "psm"), 0.5); // 0.00 after the fix
+}
+
 // Sweep seed 11504923083347240446: a parallel camera high over the outdoor
 // scene with a camera spot light. The camera's axis crossed the spot's space
 // beside B, its near-plane centre and focus point lay before the hull's top,
