@@ -69,36 +69,53 @@ std::vector<glm::dvec3> FaceBody(
 }
 
 // The face depth at which the face's pyramid (the window `window` seen from
-// the light, the origin of the face's view) reaches `reach` from the light in
-// the world, at its widest corner. Post-perspective space squeezes the depths
-// far from the camera: a near plane at a fixed share of the face's depth range
-// could hold most of the world's depth around a light far from the camera.
+// the light, the origin of the face's view) first reaches `reach` from the
+// light in the world, over its corners' edges; 0 for no reach (a sun). Found
+// by bisection along each edge: post-perspective space magnifies the world
+// around a light near the camera's plane by far more than around a light far
+// from it, so no fixed share of the face's depth range, nor a derivative at
+// the light, says where the world's reach ends.
 double NearPlaneWithin(const glm::dmat4& toFace, const FaceWindow& window, double reach)
 {
+  if (!(reach > 0.0))
+  {
+    return 0.0;
+  }
   const glm::dmat4 toWorld = glm::inverse(toFace);
   const glm::dvec3 light = ProjectPoint(toWorld, glm::dvec3(0.0));
-  const double step = 1e-6 * window.Far;
   double near = window.Far;
   for (const double x : { window.Lo.x, window.Hi.x })
   {
     for (const double y : { window.Lo.y, window.Hi.y })
     {
-      const glm::dvec3 corner = ProjectPoint(toWorld, step * glm::dvec3(x, y, -1.0));
-      const double worldPerDepth = glm::length(corner - light) / step;
-      if (worldPerDepth > 0.0 && std::isfinite(worldPerDepth))
+      const auto withinReach = [&](double depth) {
+        const glm::dvec3 p = ProjectPoint(toWorld, depth * glm::dvec3(x, y, -1.0));
+        return IsFiniteVector(p) && glm::length(p - light) < reach;
+      };
+      double lo = 0.0;
+      double hi = near;
+      if (withinReach(hi))
       {
-        near = std::min(near, reach / worldPerDepth);
+        continue;
       }
+      for (int step = 0; step < 60; ++step)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (withinReach(mid) ? lo : hi) = mid;
+      }
+      near = lo;
     }
   }
   return near;
 }
 
 // The face's map cropped to its receivers `body`, seen through `toFace` (world
-// to the face's view). A light among the receivers is the apex of its faces'
-// bodies (depth within `apex` of 0): the other vertices bound the window, and
-// the near plane keeps what lies within `nearReach` of the light in the world
-// before it: receivers there are clamped onto it with their casters.
+// to the face's view). The near plane lies at half the nearest receiver's
+// depth, casters nearer the light clamped onto it, but never nearer the light
+// than `nearReach` in the world: receivers that near it are left unshadowed.
+// A light among the receivers is the apex of its faces' bodies (depth within
+// `apex` of 0): the other vertices bound the window, and the near plane is
+// the reach's.
 bool FitFace(const glm::dmat4& toFace, const std::vector<glm::dvec3>& body, bool inverse,
   int resolution, double marginTexels, double apex, double nearReach, LightView& view)
 {
@@ -118,8 +135,8 @@ bool FitFace(const glm::dmat4& toFace, const std::vector<glm::dvec3>& body, bool
   {
     return false;
   }
-  const double zNear =
-    apexInBody ? NearPlaneWithin(toFace, window, nearReach) : 0.5 * window.Near;
+  const double nearLight = NearPlaneWithin(toFace, window, nearReach);
+  const double zNear = apexInBody ? nearLight : std::max(0.5 * window.Near, nearLight);
   const glm::dvec2 size = glm::max(window.Hi - window.Lo, glm::dvec2(1e-12));
   const glm::dvec2 margin = size * (marginTexels / std::max(resolution, 1));
   const glm::dvec2 lo = window.Lo - margin;
@@ -143,13 +160,13 @@ bool FitFace(const glm::dmat4& toFace, const std::vector<glm::dvec3>& body, bool
   return IsFinite(view.ViewProjection());
 }
 
-// The farthest the scene reaches from a positional light (its diagonal for a
-// sun).
+// The farthest the scene reaches from a positional light (0 for a sun, which
+// no receiver is near).
 double ReachFromLight(const Aabb& scene, const glm::dvec4& towardLight)
 {
   if (towardLight.w == 0.0)
   {
-    return scene.Diagonal();
+    return 0.0;
   }
   const glm::dvec3 light = glm::dvec3(towardLight) / towardLight.w;
   double farthest = 0.0;
@@ -264,13 +281,13 @@ PerspectiveCube FitPerspectiveCube(const glm::dmat4& cameraView, const glm::dmat
     {
       continue;
     }
-    cube.Selection[face] = 1.0 / distance;
     const std::vector<glm::dvec3> faceBody =
       FaceBody(receivers, WindowFrustum(platform) * toFace, scale);
     if (faceBody.empty())
     {
-      continue;
+      continue; // no receiver picks it: its selection stays 0
     }
+    cube.Selection[face] = 1.0 / distance;
     if (!FitFace(toFace, faceBody, cube.Inverse, resolution, marginTexels, tiny, nearReach, view))
     {
       return PerspectiveCube{};
@@ -295,20 +312,27 @@ Plane HomogeneousPlane(const glm::dvec4& h)
   return length > 0.0 ? Plane{ glm::dvec3(h) / length, h.w / length } : Plane{};
 }
 
-// Whether face `face` of `cube` holds `p`: it picks it, or ties with the face
-// that does (on the border between faces).
-bool CubeFaceHolds(const PerspectiveCube& cube, int face, const glm::dvec3& p)
+// Whether the fresh cube leaves the receiver `p` before the near plane of the
+// face that holds it (unshadowed; on the border between faces, before every
+// such face's).
+bool BeforeFreshNearPlane(const PerspectiveCube& cube, const glm::dvec3& p)
 {
+  std::array<glm::dvec4, PerspectiveCubeFaces> clips;
   double largest = 0.0;
-  double own = 0.0;
-  for (int other = 0; other < PerspectiveCubeFaces; ++other)
+  for (int face = 0; face < PerspectiveCubeFaces; ++face)
   {
-    const double reach =
-      (cube.Faces[other].ViewProjection() * glm::dvec4(p, 1.0)).w * cube.Selection[other];
-    largest = std::max(largest, reach);
-    own = other == face ? reach : own;
+    clips[face] = cube.Faces[face].ViewProjection() * glm::dvec4(p, 1.0);
+    largest = std::max(largest, clips[face].w * cube.Selection[face]);
   }
-  return largest > 0.0 && own >= largest * (1.0 - 1e-9);
+  bool before = largest > 0.0;
+  for (int face = 0; face < PerspectiveCubeFaces && before; ++face)
+  {
+    if (clips[face].w * cube.Selection[face] >= largest * (1.0 - 1e-9))
+    {
+      before = clips[face].z < -clips[face].w;
+    }
+  }
+  return before;
 }
 
 // The world region whose receivers `selection` gives to face `face`: where its
@@ -328,6 +352,72 @@ std::vector<Plane> SelectionRegion(
   }
   return planes;
 }
+
+
+// The vertices of the receivers `selection` gives to each face (none for a
+// face it gives none).
+std::array<std::vector<glm::dvec3>, PerspectiveCubeFaces> ReceiversOfFaces(
+  const std::vector<LightView>& faces, const std::vector<double>& selection,
+  const std::vector<Plane>& receivers, double scale)
+{
+  std::array<std::vector<glm::dvec3>, PerspectiveCubeFaces> bodies;
+  for (size_t face = 0; face < faces.size(); ++face)
+  {
+    if (selection[face] > 0.0)
+    {
+      std::vector<Plane> planes = receivers;
+      const std::vector<Plane> region = SelectionRegion(faces, selection, face);
+      planes.insert(planes.end(), region.begin(), region.end());
+      bodies[face] = ConvexPolytopeVertices(planes, scale);
+    }
+  }
+  return bodies;
+}
+
+// The coarsest texel of `face` over the receivers `body` it is given, the
+// light's own position (a light among them: the faces' apex) left out.
+double CoarsestTexel(const LightView& face, const std::vector<glm::dvec3>& body,
+  const glm::dvec4& towardLight, double step, int resolution)
+{
+  const glm::dmat4 map = face.ViewProjection();
+  double farthest = 0.0;
+  for (const auto& p : body)
+  {
+    farthest = std::max(farthest, (map * glm::dvec4(p, 1.0)).w);
+  }
+  double coarsest = 0.0;
+  for (const auto& p : body)
+  {
+    if ((map * glm::dvec4(p, 1.0)).w > 1e-9 * farthest)
+    {
+      coarsest = std::max(coarsest, WorldTexelSize(face, p, towardLight, step, resolution));
+    }
+  }
+  return coarsest;
+}
+// Whether `selection` gives every receiver inside `receivers` to a face: no
+// part of them, more than a point (a light among them, where every face's w
+// is 0), lies where every used face's weighted clip w is at most 0 (behind a
+// light that was off a corner of the box the faces were fitted to).
+bool SelectionCoversReceivers(const std::vector<LightView>& faces,
+  const std::vector<double>& selection, const std::vector<Plane>& receivers, double scale)
+{
+  std::vector<Plane> planes = receivers;
+  for (size_t face = 0; face < faces.size(); ++face)
+  {
+    if (selection[face] > 0.0)
+    {
+      planes.push_back(
+        HomogeneousPlane(-glm::transpose(faces[face].ViewProjection())[3] * selection[face]));
+    }
+  }
+  Aabb uncovered;
+  for (const auto& p : ConvexPolytopeVertices(planes, scale))
+  {
+    uncovered.Add(p);
+  }
+  return uncovered.IsEmpty() || !(uncovered.Diagonal() > 1e-6 * scale);
+}
 } // namespace
 
 bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double>& selection,
@@ -339,31 +429,40 @@ bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double
     return false;
   }
   const double scale = std::max(scene.Diagonal(), 1e-300);
-  const double step = scale * 1e-5;
-  const double inside = 1.0 - 2.0 * reachTexels / std::max(resolution, 1);
-  for (size_t face = 0; face < kept.size(); ++face)
+  if (!SelectionCoversReceivers(kept, selection, receivers, scale))
   {
-    if (!(selection[face] > 0.0))
-    {
-      continue;
-    }
-    std::vector<Plane> planes = receivers;
-    const std::vector<Plane> region = SelectionRegion(kept, selection, face);
-    planes.insert(planes.end(), region.begin(), region.end());
-    const std::vector<glm::dvec3> body = ConvexPolytopeVertices(planes, scale);
+    return false;
+  }
+  const std::vector<LightView> freshFaces(fresh.Faces.begin(), fresh.Faces.end());
+  const std::vector<double> freshSelection(fresh.Selection.begin(), fresh.Selection.end());
+  const auto keptBodies = ReceiversOfFaces(kept, selection, receivers, scale);
+  const auto freshBodies = ReceiversOfFaces(freshFaces, freshSelection, receivers, scale);
+  const double step = scale * 1e-5;
+  double freshCoarsest = 0.0;
+  std::array<double, PerspectiveCubeFaces> freshTexels{};
+  for (int face = 0; face < PerspectiveCubeFaces; ++face)
+  {
+    freshTexels[face] =
+      CoarsestTexel(fresh.Faces[face], freshBodies[face], towardLight, step, resolution);
+    freshCoarsest = std::max(freshCoarsest, freshTexels[face]);
+  }
+  const double inside = 1.0 - 2.0 * reachTexels / std::max(resolution, 1);
+  for (int face = 0; face < PerspectiveCubeFaces; ++face)
+  {
+    const std::vector<glm::dvec3>& body = keptBodies[face];
     if (body.empty())
     {
       continue;
+    }
+    if (kept[face].OutOfView)
+    {
+      return false;
     }
     const glm::dmat4 map = kept[face].ViewProjection();
     double farthest = 0.0;
     for (const auto& p : body)
     {
       farthest = std::max(farthest, (map * glm::dvec4(p, 1.0)).w);
-    }
-    if (kept[face].OutOfView || !(farthest > 0.0))
-    {
-      return false;
     }
     for (const auto& p : body)
     {
@@ -373,21 +472,24 @@ bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double
         continue; // the light itself, among the receivers: the apex of its faces
       }
       const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
-      if (!(std::abs(ndc.x) <= inside && std::abs(ndc.y) <= inside && ndc.z <= 1.0))
+      // Before the near plane a receiver is unshadowed: only where the fresh
+      // cube leaves it so too (within its reach of a light among the receivers).
+      const bool beforeNear = ndc.z < -1.0 && !BeforeFreshNearPlane(fresh, p);
+      if (!(std::abs(ndc.x) <= inside && std::abs(ndc.y) <= inside && ndc.z <= 1.0) || beforeNear)
       {
         return false;
       }
-      // Texels are compared where both cubes give the receiver the same face:
-      // at a face's rim its texels grow fast, and where the camera's move
-      // shifted the faces' borders a receiver may lie at the rim of one cube's
-      // face and inside the other's.
-      const int faceIndex = static_cast<int>(face);
-      if (CubeFaceHolds(fresh, faceIndex, p) &&
-        !(WorldTexelSize(kept[face], p, towardLight, step, resolution) <=
-          maximumTexelRatio * WorldTexelSize(fresh.Faces[face], p, towardLight, step, resolution)))
-      {
-        return false;
-      }
+    }
+    // Texels are compared face by face at their coarsest, not receiver by
+    // receiver: the faces' borders move with the camera, and a receiver on a
+    // kept face's border (where its texels are coarsest) may lie inside the
+    // fresh cube's face, whose rim is elsewhere.
+    const double reference = freshTexels[face] > 0.0 ? freshTexels[face] : freshCoarsest;
+    if (reference > 0.0 &&
+      !(CoarsestTexel(kept[face], body, towardLight, step, resolution) <=
+        maximumTexelRatio * reference))
+    {
+      return false;
     }
   }
   return true;

@@ -76,8 +76,11 @@ struct PerspectiveCube
 /// would otherwise lie behind it (SlideBackHoldingCasters). Each face's window
 /// gets a margin of marginTexels texels for filters that reach over its edge.
 /// Faces are perspective maps (depth z / w; texel sizes from the map's
-/// gradient), their near plane at half their receivers' nearest distance as
-/// FitPerspective's (casters nearer the light are clamped onto it).
+/// gradient). Their near plane lies at half their receivers' nearest distance,
+/// as FitPerspective's (casters nearer the light are clamped onto it), but no
+/// nearer a positional light than a hundredth of the scene's reach from it in
+/// the world: receivers that near it are left unshadowed (a light among the
+/// receivers, the apex of its faces, always has such).
 PerspectiveCube FitPerspectiveCube(const glm::dmat4& cameraView, const glm::dmat4& cameraProjection,
   const std::vector<Plane>& receivers, const Aabb& scene, const glm::dvec4& towardLight,
   int resolution, double slideBack, double marginTexels);
@@ -87,13 +90,14 @@ PerspectiveCube FitPerspectiveCube(const glm::dmat4& cameraView, const glm::dmat
 /// `receivers` as `fresh` (the frame's own cube) would: every receiver the
 /// kept faces' selection gives to a face lies inside that face's map, at least
 /// reachTexels from its sides (filters look beyond the receiver), before its
-/// far plane, on a face that was rendered; and that face's texels across the
-/// light are at most maximumTexelRatio times those of the same face of fresh
-/// where fresh gives the receiver that face too (checked at the vertices of
-/// each face's receivers, as KeptViewServes; a receiver the move took to
-/// another face is not compared, since texels grow fast at a face's rim).
-/// Kept faces keep their own selection, so receivers and maps agree however
-/// the camera has moved since.
+/// far plane, and not before its near plane where fresh's face has it beyond
+/// its own, on a face that was rendered; no receiver lies where no kept face
+/// looks (behind a light that was off the box's corner); and each kept face's
+/// coarsest texel across the light over its receivers is at most
+/// maximumTexelRatio times fresh's same face's over its own (or fresh's
+/// coarsest, where fresh gives that face none). Checked at the vertices of
+/// each face's receivers, as KeptViewServes. Kept faces keep their own
+/// selection, so receivers and maps agree however the camera has moved since.
 bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double>& selection,
   const std::vector<Plane>& receivers, const PerspectiveCube& fresh, const Aabb& scene,
   const glm::dvec4& towardLight, int resolution, double maximumTexelRatio, double reachTexels);

@@ -29,17 +29,38 @@ bool IsRigid(const glm::dmat4& m)
 } // namespace
 
 //------------------------------------------------------------------------------
+glm::dmat4 CameraFrameOf(const LightView& view)
+{
+  if (IsRigid(view.View))
+  {
+    return view.View;
+  }
+  const glm::dmat4 transposed = glm::transpose(view.ViewProjection());
+  const glm::dvec3 x = SafeDirection(glm::dvec3(transposed[0]));
+  glm::dvec3 y = glm::dvec3(transposed[1]) - glm::dot(glm::dvec3(transposed[1]), x) * x;
+  if (!(glm::length(y) > 1e-12 * glm::length(glm::dvec3(transposed[1]))))
+  {
+    y = glm::cross(x, std::abs(x.z) < 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(0.0, 1.0, 0.0));
+  }
+  y = glm::normalize(y);
+  const glm::dvec3 z = glm::cross(x, y);
+  // Rows x, y, z: the world's coordinates along them.
+  return glm::transpose(glm::dmat4(glm::dvec4(x, 0.0), glm::dvec4(y, 0.0), glm::dvec4(z, 0.0),
+    glm::dvec4(0.0, 0.0, 0.0, 1.0)));
+}
+
+//------------------------------------------------------------------------------
 glm::dmat4 CameraProjectionOf(const LightView& view)
 {
-  return IsRigid(view.View) ? view.Projection : view.ViewProjection();
+  return IsRigid(view.View) ? view.Projection
+                            : view.ViewProjection() * glm::inverse(CameraFrameOf(view));
 }
 
 //------------------------------------------------------------------------------
 void SetCameraToView(
   vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view, bool sceneParallel)
 {
-  const bool rigid = IsRigid(view.View);
-  const glm::dmat4 frame = rigid ? glm::inverse(view.View) : glm::dmat4(1.0);
+  const glm::dmat4 frame = glm::inverse(CameraFrameOf(view));
   const glm::dvec3 eye(frame[3]);
   const glm::dvec3 forward(-frame[2]);
   const glm::dvec3 up(frame[1]);

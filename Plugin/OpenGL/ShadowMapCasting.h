@@ -17,17 +17,25 @@ namespace shadowmaps
 {
 struct LightView;
 
-/// The projection SetCameraToView gives the light camera: the view's own for
-/// a rigid view matrix, else the whole view-projection.
+/// The frame SetCameraToView gives the light camera (world to the camera):
+/// the view itself when it is rigid. A non-rigid view (PSM: the light camera
+/// times the viewer's post-perspective transform) cannot be a camera frame; the
+/// camera then sits at the origin, turned so that its x axis runs along the
+/// first row of the view-projection: VTK sizes impostors (points as spheres,
+/// lines as tubes) by the camera projection's first element, which a warp
+/// whose image x has no world x term (a post-perspective cube face looking
+/// along the camera's x) would leave at 0.
+glm::dmat4 CameraFrameOf(const LightView& view);
+
+/// The projection SetCameraToView gives the light camera: the view-projection
+/// after CameraFrameOf (the view's own projection for a rigid view).
 glm::dmat4 CameraProjectionOf(const LightView& view);
 
-/// Points `camera` at a light view. A rigid view becomes the camera's frame and
-/// the projection (stored in `projection`) is explicit, so VTK's tiled aspect
-/// ratio cannot distort the map. The camera stays parallel or perspective as
-/// the scene's camera is (CasterShader::RouteCameraParallel says why). A
-/// non-rigid view (PSM: the light camera times the viewer's post-perspective
-/// transform) cannot be a camera frame; the camera then sits at the origin
-/// looking down -z and the whole transform is its projection.
+/// Points `camera` at a light view: CameraFrameOf becomes the camera's frame
+/// and CameraProjectionOf its explicit projection (stored in `projection`), so
+/// VTK's tiled aspect ratio cannot distort the map. The camera stays parallel
+/// or perspective as the scene's camera is (CasterShader::RouteCameraParallel
+/// says why).
 void SetCameraToView(
   vtkCamera* camera, vtkMatrix4x4* projection, const LightView& view, bool sceneParallel);
 

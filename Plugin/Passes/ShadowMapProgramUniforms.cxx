@@ -75,10 +75,7 @@ void ProgramUniforms::SetCastingView(const ShadowLight& light, const LightView& 
   }
   // Impostors (points as spheres, wide lines): their sizes follow the scene camera.
   const glm::dmat4 lightCameraProjection = CameraProjectionOf(view);
-  const glm::dvec4 toLight = light.Kind == LightKind::Directional
-    ? glm::dvec4(-glm::normalize(light.Direction), 0.0)
-    : glm::dvec4(light.Position, 1.0);
-  this->Casters.Impostors().Set(view.ViewProjection(), glm::vec4(toLight),
+  this->Casters.Impostors().Set(view.ViewProjection(), glm::vec4(TowardLight(light)),
     glm::vec4(-glm::row(frame.CameraView, 2)),
     glm::vec4(static_cast<float>(lightCameraProjection[0][0] / frame.CameraProjection[0][0]),
       settings.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(settings.Resolution),

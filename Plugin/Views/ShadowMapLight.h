@@ -123,6 +123,14 @@ inline bool NeedsCubeFaces(const ShadowLight& light)
     (light.Kind == LightKind::Spot && light.ConeAngle > WidestSingleMapCone);
 }
 
+/// The homogeneous point toward the light: (position, 1) for a positional
+/// light, (-direction, 0) for a sun.
+inline glm::dvec4 TowardLight(const ShadowLight& light)
+{
+  return light.Kind == LightKind::Directional ? glm::dvec4(-SafeDirection(light.Direction), 0.0)
+                                              : glm::dvec4(light.Position, 1.0);
+}
+
 /// The ReceiverFeature bits the light's receivers are compiled with: the
 /// possible ones and whatever this frame's views need.
 inline int ReceiverFeatures(const ShadowLight& light)

@@ -69,15 +69,6 @@ glm::dmat4 TightProjection(const glm::dmat4& cameraView, const glm::dmat4& camer
   return shadowmaps::SubFrustumProjection(cameraProjection, range.x, range.y);
 }
 
-// The homogeneous point toward the light: (P, 1) for a positional light, (-d, 0)
-// for a sun travelling along d.
-glm::dvec4 TowardLight(const ShadowLight& light)
-{
-  return light.Kind == shadowmaps::LightKind::Directional
-    ? glm::dvec4(-shadowmaps::SafeDirection(light.Direction), 0.0)
-    : glm::dvec4(light.Position, 1.0);
-}
-
 // The world planes around the receivers a light's shadows can fall on: the
 // camera's frustum, the scene, and for a spot the half-space in front of it
 // (and its cone's map where one map holds the cone).
@@ -206,23 +197,28 @@ bool vtkWarpedShadowMapViews::UsesPerspectiveCube(const ShadowLight& light) cons
 }
 
 //------------------------------------------------------------------------------
-bool vtkWarpedShadowMapViews::FitPerspectiveCube(const ShadowFrame& frame, ShadowLight& light) const
+bool vtkWarpedShadowMapViews::AssignPerspectiveCube(const ShadowFrame& frame, ShadowLight& light) const
 {
-  const shadowmaps::PerspectiveCube cube = this->FitCubeFor(frame, light);
+  std::vector<Plane> receivers;
+  const shadowmaps::PerspectiveCube cube = this->FitCubeFor(frame, light, receivers);
   if (!cube.Valid)
   {
     return false;
   }
   light.Layout = shadowmaps::ViewLayout::PerspectiveCube;
+  const auto assign = [&light](const shadowmaps::PerspectiveCube& chosen) {
+    light.Views.assign(chosen.Faces.begin(), chosen.Faces.end());
+    light.FaceSelection.assign(chosen.Selection.begin(), chosen.Selection.end());
+  };
   if (this->MayKeepViews(frame))
   {
     // A kept cube keeps its own selection: receivers pick its faces as they
     // were rendered, however the camera has moved.
     const auto serves = [&](const std::vector<LightView>& faces,
                           const std::vector<double>& selection, double texelRatio) {
-      return shadowmaps::KeptCubeServes(faces, selection, this->CubeReceivers(frame, light), cube,
-        shadowmaps::NonDegenerate(frame.SceneBounds), TowardLight(light), frame.Resolution,
-        texelRatio, frame.FilterReachTexels + 1.0);
+      return shadowmaps::KeptCubeServes(faces, selection, receivers, cube,
+        shadowmaps::NonDegenerate(frame.SceneBounds), shadowmaps::TowardLight(light),
+        frame.Resolution, texelRatio, frame.FilterReachTexels + 1.0);
     };
     if (serves(light.LastViews, light.LastFaceSelection, this->InteractiveTexelRatio))
     {
@@ -232,60 +228,53 @@ bool vtkWarpedShadowMapViews::FitPerspectiveCube(const ShadowFrame& frame, Shado
     }
     for (const ShadowFrame& wider : vtkShadowMapViews::WidenedFrames(frame))
     {
-      const shadowmaps::PerspectiveCube widened = this->FitCubeFor(wider, light);
-      const std::vector<LightView> faces(widened.Faces.begin(), widened.Faces.end());
-      const std::vector<double> selection(widened.Selection.begin(), widened.Selection.end());
-      if (widened.Valid && serves(faces, selection, this->WidenedTexelRatio()))
+      std::vector<Plane> widerReceivers;
+      const shadowmaps::PerspectiveCube widened = this->FitCubeFor(wider, light, widerReceivers);
+      if (widened.Valid &&
+        serves(std::vector<LightView>(widened.Faces.begin(), widened.Faces.end()),
+          std::vector<double>(widened.Selection.begin(), widened.Selection.end()),
+          this->WidenedTexelRatio()))
       {
-        light.Views = faces;
-        light.FaceSelection = selection;
+        assign(widened);
         return true;
       }
     }
   }
-  light.Views.assign(cube.Faces.begin(), cube.Faces.end());
-  light.FaceSelection.assign(cube.Selection.begin(), cube.Selection.end());
+  assign(cube);
   return true;
 }
 
 //------------------------------------------------------------------------------
-std::vector<shadowmaps::Plane> vtkWarpedShadowMapViews::CubeReceivers(
-  const ShadowFrame& frame, const ShadowLight& light) const
-{
-  const glm::dmat4 projection =
-    TightProjection(frame.CameraView, frame.CameraProjection, frame.PropBounds);
-  return ReceiversOfLight(projection * frame.CameraView,
-    shadowmaps::NonDegenerate(frame.SceneBounds), light, frame.Resolution);
-}
-
-//------------------------------------------------------------------------------
 shadowmaps::PerspectiveCube vtkWarpedShadowMapViews::FitCubeFor(
-  const ShadowFrame& frame, const ShadowLight& light) const
+  const ShadowFrame& frame, const ShadowLight& light, std::vector<Plane>& receivers) const
 {
   const glm::dmat4 projection =
     TightProjection(frame.CameraView, frame.CameraProjection, frame.PropBounds);
-  return shadowmaps::FitPerspectiveCube(frame.CameraView, projection,
-    this->CubeReceivers(frame, light), shadowmaps::NonDegenerate(frame.SceneBounds),
-    TowardLight(light), frame.Resolution, PSMSlideBackFor(this->PSMSlideBack, projection),
-    std::max(4.0, frame.FilterReachTexels + 1.0));
+  const shadowmaps::Aabb scene = shadowmaps::NonDegenerate(frame.SceneBounds);
+  receivers = ReceiversOfLight(projection * frame.CameraView, scene, light, frame.Resolution);
+  return shadowmaps::FitPerspectiveCube(frame.CameraView, projection, receivers, scene,
+    shadowmaps::TowardLight(light), frame.Resolution,
+    PSMSlideBackFor(this->PSMSlideBack, projection), std::max(4.0, frame.FilterReachTexels + 1.0));
 }
 
 //------------------------------------------------------------------------------
 void vtkWarpedShadowMapViews::FitLight(const ShadowFrame& frame, ShadowLight& light)
 {
-  if (this->UsesPerspectiveCube(light))
-  {
-    light.PossibleFeatures = shadowmaps::GradientTexels;
-    if (frame.SceneBounds.IsUsable() && this->FitPerspectiveCube(frame, light))
-    {
-      return;
-    }
-  }
+  const bool cube = this->UsesPerspectiveCube(light);
   const bool mayWarp = this->WarpMode != UNIFORM && !shadowmaps::NeedsCubeFaces(light);
-  // Every warp but PSM stores linear depth (PSM's w depends on depth).
-  light.PossibleFeatures = !mayWarp ? 0
-    : this->WarpMode == PSM        ? shadowmaps::GradientTexels
-                                   : shadowmaps::GradientTexels | shadowmaps::LinearDepths;
+  // Every warp but PSM stores linear depth (PSM's w depends on depth). A light
+  // that gets the cube keeps its features in a frame that falls back to
+  // another layout (no cube can be built: a parallel camera, the light in the
+  // camera's plane), which still changes the receivers' layout and so their
+  // shaders.
+  light.PossibleFeatures = (cube ? shadowmaps::GradientTexels : 0) |
+    (!mayWarp                ? 0
+        : this->WarpMode == PSM ? shadowmaps::GradientTexels
+                                : shadowmaps::GradientTexels | shadowmaps::LinearDepths);
+  if (cube && frame.SceneBounds.IsUsable() && this->AssignPerspectiveCube(frame, light))
+  {
+    return;
+  }
   if (!mayWarp)
   {
     vtkShadowMapViews::FitUniformViews(frame, light);

@@ -50,7 +50,7 @@
 #include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 #include "vtkShadowMapViews.h"
 
-#include <vector> // For CubeReceivers
+#include <vector> // For FitCubeFor
 
 namespace shadowmaps
 {
@@ -177,17 +177,15 @@ protected:
   /** Whether the light gets the post-perspective cube map (PSMCubeMap). */
   bool UsesPerspectiveCube(const shadowmaps::ShadowLight& light) const;
   /**
-   * The light's post-perspective cube faces (in interactive frames the last
-   * ones while they serve, else a cube fitted to a widened camera where one
-   * serves); false, leaving the light, when none can be built.
+   * Gives the light its post-perspective cube faces (in interactive frames the
+   * last ones while they serve, else a cube fitted to a widened camera where
+   * one serves); false, leaving the light, when none can be built.
    */
-  bool FitPerspectiveCube(const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) const;
-  /** The frame's cube of the light. */
-  shadowmaps::PerspectiveCube FitCubeFor(
-    const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
-  /** The world planes around the receivers of the light's cube. */
-  std::vector<shadowmaps::Plane> CubeReceivers(
-    const shadowmaps::ShadowFrame& frame, const shadowmaps::ShadowLight& light) const;
+  bool AssignPerspectiveCube(
+    const shadowmaps::ShadowFrame& frame, shadowmaps::ShadowLight& light) const;
+  /** The frame's cube of the light, and in `receivers` the world planes around its receivers. */
+  shadowmaps::PerspectiveCube FitCubeFor(const shadowmaps::ShadowFrame& frame,
+    const shadowmaps::ShadowLight& light, std::vector<shadowmaps::Plane>& receivers) const;
   /** LiSPSM and GMNPR settings (free parameter, falloff). */
   shadowmaps::WarpOptions LightSpaceWarpOptions() const;
 

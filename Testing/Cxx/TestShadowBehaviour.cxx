@@ -967,6 +967,11 @@ TEST(ShadowBehaviour, AnInteractiveOrbitKeepsThePostPerspectiveCube)
     ASSERT_EQ(pass->GetNumberOfShadowMapLayers(), 6) << name;
     // The six faces re-rendered at most every third frame.
     DragKeepingMaps(scene, pass, name, 6 * DragFrames / 3);
+    // The cube, not the uniform faces it falls back to.
+    const std::vector<unsigned char> cube = RgbBytes(CaptureAsRendered(scene.Window));
+    vtkSmartPointer<vtkWarpedShadowMapPass> faces = WarpedPass(vtkWarpedShadowMapPass::PSM);
+    faces->SetPSMCubeMapToNever();
+    EXPECT_NE(FreshPassFrame(scene, faces), cube) << name;
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
   }

@@ -703,6 +703,43 @@ TEST(ShadowEverydayUse, PointsAsSpheresCastTheirSpheresShadows)
     });
 }
 
+// Points drawn as spheres cast into PSM's post-perspective cube faces, whose
+// matrices are no rigid light camera (VTK sizes the sprites by the light
+// camera's projection). At 256 texels: the cube's faces are cropped to the
+// receivers, so the sphere under the light covers more of a face than of a
+// uniform cube face, and at 1024 its sprite would pass the GL's largest point
+// size (255 on llvmpipe) and be cut.
+TEST(ShadowEverydayUse, PointsAsSpheresCastIntoThePostPerspectiveCube)
+{
+  const glm::dvec3 position(0.0, 0.0, 6.0);
+  for (const bool spot : { false, true })
+  {
+    const std::string what = spot ? "wide spot" : "point light";
+    TestScene scene;
+    scene.Renderer->RemoveActor(scene.Sphere);
+    spot ? scene.SetSpot(position, 75.0) : scene.SetPoint(position);
+    PointsAsSpheres(scene, { { 0.0, 0.0, 1.5 } }, 1.0);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    pass->SetWarpModeToPSM();
+    pass->SetResolution(256);
+    scene.Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << what << ": " << errors.Text();
+    const double rim = 6.0 / 4.5;
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, Origin), ShadowedBelow) << what << ": centre";
+    for (const glm::dvec3 side : { glm::dvec3(1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(-1, 0, 0) })
+    {
+      EXPECT_LT(LuminanceAt(scene.Renderer, image, 0.75 * rim * side), ShadowedBelow)
+        << what << ": inside the rim " << side.x << "," << side.y;
+      EXPECT_GT(LuminanceAt(scene.Renderer, image, 1.35 * rim * side), LitAbove)
+        << what << ": beyond the rim " << side.x << "," << side.y;
+    }
+    scene.Renderer->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(scene.Window);
+  }
+}
+
 // Points drawn as spheres and lines drawn as tubes shadow themselves as
 // spheres and tubes do: where the surface faces the light, its points are lit
 // (the shadow factor's analysis view), at the default resolution, under a sun

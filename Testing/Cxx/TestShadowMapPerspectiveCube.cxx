@@ -182,8 +182,8 @@ TEST(PerspectiveCubeFit, EveryVisibleReceiverIsInsideTheMapOfTheFaceItPicks)
       EXPECT_LE(std::abs(ndc.x), 1.0 + ClipTolerance) << ToString(p);
       EXPECT_LE(std::abs(ndc.y), 1.0 + ClipTolerance) << ToString(p);
       EXPECT_LE(ndc.z, 1.0 + ClipTolerance) << ToString(p);
-      // Receivers within a thousandth of the farthest of a light among them
-      // are clamped onto the near plane (as with the uniform cube faces).
+      // Receivers within a hundredth of the scene's reach of a light among
+      // them lie before the near plane (unshadowed): few of the random ones.
       clamped += ndc.z < -1.0 - ClipTolerance ? 1 : 0;
       ++picked[face];
     }
@@ -265,10 +265,9 @@ TEST(PerspectiveCubeFit, FiniteFacesForLightsOnTheViewAxisAndInTheCameraPlane)
   {
     SCOPED_TRACE(ToString(glm::dvec3(light)) + " w " + std::to_string(light.w));
     const PerspectiveCube cube = Fit(light);
-    if (!cube.Valid)
-    {
-      continue; // the caller falls back to another map
-    }
+    // The casters' slide-back moves even a light at the eye or in its plane
+    // off the virtual camera's plane: every one gets a cube.
+    ASSERT_TRUE(cube.Valid);
     for (const LightView& face : cube.Faces)
     {
       EXPECT_TRUE(shadowmaps::IsFinite(face.ViewProjection()));
@@ -338,5 +337,93 @@ TEST(PerspectiveCubeKept, ACubeFittedToAWidenedCameraServesSmallMoves)
     const PerspectiveCube cube = FitFor(widened.View, widened.Projection, light.TowardLight);
     ASSERT_TRUE(cube.Valid);
     EXPECT_TRUE(Serves(cube, MovedCameraView(0.1, 0.5), light.TowardLight, 2.0));
+  }
+}
+
+namespace
+{
+std::vector<Plane> BoxAround(const glm::dvec3& centre, double half)
+{
+  const auto planes = shadowmaps::BoxPlanes(MakeBox(centre - half, centre + half));
+  return { planes.begin(), planes.end() };
+}
+
+bool KeptServes(const PerspectiveCube& kept, const std::vector<Plane>& receivers,
+  const glm::dvec4& towardLight, double texelRatio)
+{
+  const PerspectiveCube fresh = shadowmaps::FitPerspectiveCube(CameraView(), DragProjection(),
+    receivers, WarpTestGround(), towardLight, Resolution, DragSlideBack, 4.0);
+  EXPECT_TRUE(fresh.Valid);
+  const std::vector<LightView> faces(kept.Faces.begin(), kept.Faces.end());
+  const std::vector<double> selection(kept.Selection.begin(), kept.Selection.end());
+  return shadowmaps::KeptCubeServes(faces, selection, receivers, fresh, WarpTestGround(),
+    towardLight, Resolution, texelRatio, 3.0);
+}
+
+// A light above the street ahead, outside the receivers: its cube uses the
+// faces that look away from it, down over the street.
+const glm::dvec4 LampAbove(0.0, -20.0, 30.0, 1.0);
+} // namespace
+
+TEST(PerspectiveCubeKept, ReceiversNoKeptFaceLooksAtDoNotServe)
+{
+  // A light off a corner of the receivers' box in post-perspective space (to
+  // the side, above and beyond the far end): three faces look away from it.
+  const glm::dvec4 corner(300.0, 200.0, 200.0, 1.0);
+  const PerspectiveCube kept = FitFor(CameraView(), DragProjection(), corner);
+  ASSERT_TRUE(kept.Valid);
+  int used = 0;
+  for (const double selection : kept.Selection)
+  {
+    used += selection > 0.0 ? 1 : 0;
+  }
+  EXPECT_EQ(used, 3);
+  // Behind the lamp from the box the faces were fitted to (in post-perspective
+  // space, beyond the lamp away from the box's centre): no face picks it (the
+  // receivers would be drawn unshadowed).
+  // (Not so far beyond that it lies behind the camera.)
+  glm::dvec3 behind(0.0);
+  for (double t = 0.5; t > 1e-4; t *= 0.5)
+  {
+    const glm::dvec3 post =
+      kept.LightPosition + t * (kept.LightPosition - kept.Platforms.Center());
+    behind = shadowmaps::ProjectPoint(glm::inverse(kept.PostPerspective), post);
+    if ((kept.PostPerspective * glm::dvec4(behind, 1.0)).w > 0.0)
+    {
+      break;
+    }
+  }
+  ASSERT_GT((kept.PostPerspective * glm::dvec4(behind, 1.0)).w, 0.0) << ToString(behind);
+  EXPECT_LT(SelectedFace(kept, behind), 0) << ToString(behind);
+  EXPECT_FALSE(KeptServes(kept, BoxAround(behind, 0.2), corner, 1e9));
+  // On the street in view, the faces hold it.
+  const glm::dvec3 street(0.0, -20.0, 0.5);
+  EXPECT_GE(SelectedFace(kept, street), 0);
+  EXPECT_TRUE(KeptServes(kept, BoxAround(street, 0.5), corner, 1e9));
+}
+
+TEST(PerspectiveCubeKept, ReceiversBeforeAKeptFacesNearPlaneDoNotServe)
+{
+  // Fitted to the street, the faces' near planes lie far below the lamp: a
+  // receiver just under it would be drawn unshadowed, where a fresh cube
+  // shades it.
+  const PerspectiveCube kept = FitFor(CameraView(), DragProjection(), LampAbove);
+  ASSERT_TRUE(kept.Valid);
+  EXPECT_FALSE(KeptServes(kept, BoxAround({ 0.0, -20.0, 28.0 }, 0.2), LampAbove, 1e9));
+}
+
+TEST(PerspectiveCubeKept, ACubeOfAWiderCameraServesOnlyWithinItsTexelRatio)
+{
+  // Fitted to a 100 degree camera at the same place, the faces hold the 45
+  // degree camera's receivers with coarser texels.
+  const glm::dmat4 wide = glm::perspective(glm::radians(100.0), 1.5, 0.5, 200.0);
+  for (const LightCase& light : Lights)
+  {
+    SCOPED_TRACE(light.Name);
+    const PerspectiveCube kept = FitFor(CameraView(), wide, light.TowardLight);
+    ASSERT_TRUE(kept.Valid);
+    const std::vector<Plane> receivers = Receivers(DragProjection() * CameraView());
+    EXPECT_TRUE(KeptServes(kept, receivers, light.TowardLight, 1e9));
+    EXPECT_FALSE(KeptServes(kept, receivers, light.TowardLight, 1.5));
   }
 }

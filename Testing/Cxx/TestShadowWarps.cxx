@@ -358,6 +358,8 @@ TEST(ShadowWarps, PostPerspectiveCubeShadowsNearAndFar)
     vtkNew<vtkWarpedShadowMapPass> pass;
     RenderCube(scene, pass, vtkWarpedShadowMapViews::PSM_CUBE_AUTOMATIC, 512);
     auto image = RenderAndProbeStreetLight(scene, pass, plain);
+    pass->SetPSMCubeMapToNever(); // the cube, not the uniform faces it falls back to
+    EXPECT_NE(RgbBytes(RenderAndCapture(scene.Window)), RgbBytes(image));
     const std::string difference = CompareWithBaseline(image, "WarpPSMCubePoint");
     EXPECT_TRUE(difference.empty()) << difference;
   }
@@ -480,7 +482,11 @@ TEST(ShadowWarps, PostPerspectiveCubeComposesWithEveryRepresentation)
     pass->SetViews(views);
     pass->SetResolution(512);
     scene.Renderer->SetPass(pass);
-    RenderAndProbeStreetLight(scene, pass, plain);
+    const std::vector<unsigned char> cube = RgbBytes(RenderAndProbeStreetLight(scene, pass, plain));
+    // The cube, not the uniform faces it falls back to.
+    views->SetPSMCubeMapToNever();
+    EXPECT_NE(RgbBytes(RenderAndCapture(scene.Window)), cube);
+    views->SetPSMCubeMapToAutomatic();
     scene.Renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(scene.Window);
   }
