@@ -22,10 +22,21 @@ TECHNIQUES = {
 }
 
 
+def _setter(shadow_pass, name):
+    """The setter a snake_case setting names, its words matched without case:
+    ``resolution`` is SetResolution, ``psm_cube_map`` SetPSMCubeMap."""
+    wanted = "set" + name.replace("_", "").lower()
+    for attribute in dir(shadow_pass):
+        if attribute.startswith("Set") and attribute.lower() == wanted:
+            return getattr(shadow_pass, attribute)
+    setter = "Set" + "".join(word[:1].upper() + word[1:] for word in name.split("_"))
+    raise ValueError(f"{type(shadow_pass).__name__} has no {setter} (from {name!r})")
+
+
 def make_pass(technique="cascaded", **settings):
     """The shadow pass of a technique (a key of TECHNIQUES), its settings given
     as snake_case names of its setters: ``resolution=2048`` calls
-    ``SetResolution(2048)``."""
+    ``SetResolution(2048)``, ``psm_cube_map=1`` ``SetPSMCubeMap(1)``."""
     if technique not in TECHNIQUES:
         raise ValueError(
             f"unknown shadow technique {technique!r}; one of {', '.join(TECHNIQUES)}")
@@ -34,8 +45,5 @@ def make_pass(technique="cascaded", **settings):
     if warp_mode is not None:
         getattr(shadow_pass, "SetWarpModeTo" + warp_mode)()
     for name, value in settings.items():
-        setter = "Set" + "".join(word[:1].upper() + word[1:] for word in name.split("_"))
-        if not hasattr(shadow_pass, setter):
-            raise ValueError(f"{pass_class.__name__} has no {setter} (from {name!r})")
-        getattr(shadow_pass, setter)(value)
+        _setter(shadow_pass, name)(value)
     return shadow_pass

@@ -127,6 +127,11 @@ def main(output_dir):
     assert under < 80 and open_ground > 120 and sphere_top > 120
     assert variance.GetMoments() == vtkshadowmaps.vtkVarianceShadowMapPass.MSM
     every_technique_light_and_shading(renderer, window, grab, sphere, light)
+    try:
+        vtkshadowmaps.make_pass("uniform", no_such_setting=1)
+        raise AssertionError("make_pass took a setting its pass has no setter for")
+    except ValueError as error:
+        assert "SetNoSuchSetting" in str(error), error
     print(f"imported {vtkshadowmaps.__file__}")
     print("5 passed, 0 failed")
 
@@ -161,9 +166,11 @@ def every_technique_light_and_shading(renderer, window, grab, sphere, light):
             light.SetConeAngle(45.0 if kind == "spot" else 180.0)
             shadowed = UNDER_THE_SPHERE if kind == "sun" else UNDER_THE_SPHERE_FROM_LAMP
             for technique in TECHNIQUES_AND_THE_CUBE:
-                shadow_pass = vtkshadowmaps.make_pass(technique.replace("-cube", ""))
-                if technique == "psm-cube":
-                    shadow_pass.SetPSMCubeMapToAlways()  # the sun's and the spot's too
+                # psm-cube: the sun's and the spot's cube too (PSM_CUBE_ALWAYS),
+                # set by the snake_case name of a setter with an acronym.
+                settings = {"psm_cube_map": 1} if technique == "psm-cube" else {}
+                shadow_pass = vtkshadowmaps.make_pass(technique.replace("-cube", ""), **settings)
+                assert technique != "psm-cube" or shadow_pass.GetPSMCubeMap() == 1
                 _, (under, open_ground) = render_with(
                     renderer, window, grab, shadow_pass, shadowed, OPEN_GROUND)
                 renderer.SetPass(None)
