@@ -420,11 +420,33 @@ bool SelectionCoversReceivers(const std::vector<LightView>& faces,
 }
 } // namespace
 
+FreshCube MeasureFreshCube(const PerspectiveCube& cube, const std::vector<Plane>& receivers,
+  const Aabb& scene, const glm::dvec4& towardLight, int resolution)
+{
+  FreshCube fresh;
+  fresh.Cube = cube;
+  if (!cube.Valid)
+  {
+    return fresh;
+  }
+  const double scale = std::max(scene.Diagonal(), 1e-300);
+  const std::vector<LightView> faces(cube.Faces.begin(), cube.Faces.end());
+  const std::vector<double> selection(cube.Selection.begin(), cube.Selection.end());
+  const auto bodies = ReceiversOfFaces(faces, selection, receivers, scale);
+  for (int face = 0; face < PerspectiveCubeFaces; ++face)
+  {
+    fresh.CoarsestTexels[face] =
+      CoarsestTexel(cube.Faces[face], bodies[face], towardLight, scale * 1e-5, resolution);
+    fresh.Coarsest = std::max(fresh.Coarsest, fresh.CoarsestTexels[face]);
+  }
+  return fresh;
+}
+
 bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double>& selection,
-  const std::vector<Plane>& receivers, const PerspectiveCube& fresh, const Aabb& scene,
+  const std::vector<Plane>& receivers, const FreshCube& fresh, const Aabb& scene,
   const glm::dvec4& towardLight, int resolution, double maximumTexelRatio, double reachTexels)
 {
-  if (kept.size() != PerspectiveCubeFaces || selection.size() != kept.size() || !fresh.Valid)
+  if (kept.size() != PerspectiveCubeFaces || selection.size() != kept.size() || !fresh.Cube.Valid)
   {
     return false;
   }
@@ -433,19 +455,8 @@ bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double
   {
     return false;
   }
-  const std::vector<LightView> freshFaces(fresh.Faces.begin(), fresh.Faces.end());
-  const std::vector<double> freshSelection(fresh.Selection.begin(), fresh.Selection.end());
   const auto keptBodies = ReceiversOfFaces(kept, selection, receivers, scale);
-  const auto freshBodies = ReceiversOfFaces(freshFaces, freshSelection, receivers, scale);
   const double step = scale * 1e-5;
-  double freshCoarsest = 0.0;
-  std::array<double, PerspectiveCubeFaces> freshTexels{};
-  for (int face = 0; face < PerspectiveCubeFaces; ++face)
-  {
-    freshTexels[face] =
-      CoarsestTexel(fresh.Faces[face], freshBodies[face], towardLight, step, resolution);
-    freshCoarsest = std::max(freshCoarsest, freshTexels[face]);
-  }
   const double inside = 1.0 - 2.0 * reachTexels / std::max(resolution, 1);
   for (int face = 0; face < PerspectiveCubeFaces; ++face)
   {
@@ -474,7 +485,7 @@ bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double
       const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
       // Before the near plane a receiver is unshadowed: only where the fresh
       // cube leaves it so too (within its reach of a light among the receivers).
-      const bool beforeNear = ndc.z < -1.0 && !BeforeFreshNearPlane(fresh, p);
+      const bool beforeNear = ndc.z < -1.0 && !BeforeFreshNearPlane(fresh.Cube, p);
       if (!(std::abs(ndc.x) <= inside && std::abs(ndc.y) <= inside && ndc.z <= 1.0) || beforeNear)
       {
         return false;
@@ -484,7 +495,8 @@ bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double
     // receiver: the faces' borders move with the camera, and a receiver on a
     // kept face's border (where its texels are coarsest) may lie inside the
     // fresh cube's face, whose rim is elsewhere.
-    const double reference = freshTexels[face] > 0.0 ? freshTexels[face] : freshCoarsest;
+    const double reference =
+      fresh.CoarsestTexels[face] > 0.0 ? fresh.CoarsestTexels[face] : fresh.Coarsest;
     if (reference > 0.0 &&
       !(CoarsestTexel(kept[face], body, towardLight, step, resolution) <=
         maximumTexelRatio * reference))

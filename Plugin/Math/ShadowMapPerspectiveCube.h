@@ -85,6 +85,18 @@ PerspectiveCube FitPerspectiveCube(const glm::dmat4& cameraView, const glm::dmat
   const std::vector<Plane>& receivers, const Aabb& scene, const glm::dvec4& towardLight,
   int resolution, double slideBack, double marginTexels);
 
+/// What KeptCubeServes compares kept cubes with: the frame's own cube and the
+/// coarsest texel of each of its faces over the receivers it gives that face
+/// (0 for a face given none). Made once per frame for every cube tried.
+struct FreshCube
+{
+  PerspectiveCube Cube;
+  std::array<double, PerspectiveCubeFaces> CoarsestTexels{};
+  double Coarsest = 0.0;
+};
+FreshCube MeasureFreshCube(const PerspectiveCube& cube, const std::vector<Plane>& receivers,
+  const Aabb& scene, const glm::dvec4& towardLight, int resolution);
+
 /// Whether a cube fitted for an earlier camera, `kept` with its `selection`,
 /// still serves the frame whose receivers lie inside the world planes
 /// `receivers` as `fresh` (the frame's own cube) would: every receiver the
@@ -99,7 +111,7 @@ PerspectiveCube FitPerspectiveCube(const glm::dmat4& cameraView, const glm::dmat
 /// each face's receivers, as KeptViewServes. Kept faces keep their own
 /// selection, so receivers and maps agree however the camera has moved since.
 bool KeptCubeServes(const std::vector<LightView>& kept, const std::vector<double>& selection,
-  const std::vector<Plane>& receivers, const PerspectiveCube& fresh, const Aabb& scene,
+  const std::vector<Plane>& receivers, const FreshCube& fresh, const Aabb& scene,
   const glm::dvec4& towardLight, int resolution, double maximumTexelRatio, double reachTexels);
 
 } // namespace shadowmaps

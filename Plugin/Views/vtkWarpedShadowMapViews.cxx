@@ -214,11 +214,14 @@ bool vtkWarpedShadowMapViews::AssignPerspectiveCube(const ShadowFrame& frame, Sh
   {
     // A kept cube keeps its own selection: receivers pick its faces as they
     // were rendered, however the camera has moved.
+    const shadowmaps::Aabb scene = shadowmaps::NonDegenerate(frame.SceneBounds);
+    const shadowmaps::FreshCube fresh = shadowmaps::MeasureFreshCube(
+      cube, receivers, scene, shadowmaps::TowardLight(light), frame.Resolution);
     const auto serves = [&](const std::vector<LightView>& faces,
                           const std::vector<double>& selection, double texelRatio) {
-      return shadowmaps::KeptCubeServes(faces, selection, receivers, cube,
-        shadowmaps::NonDegenerate(frame.SceneBounds), shadowmaps::TowardLight(light),
-        frame.Resolution, texelRatio, frame.FilterReachTexels + 1.0);
+      return shadowmaps::KeptCubeServes(faces, selection, receivers, fresh, scene,
+        shadowmaps::TowardLight(light), frame.Resolution, texelRatio,
+        frame.FilterReachTexels + 1.0);
     };
     if (serves(light.LastViews, light.LastFaceSelection, this->InteractiveTexelRatio))
     {

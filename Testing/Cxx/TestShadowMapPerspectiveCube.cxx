@@ -305,9 +305,11 @@ bool Serves(const PerspectiveCube& kept, const glm::dmat4& view, const glm::dvec
 {
   const std::vector<LightView> faces(kept.Faces.begin(), kept.Faces.end());
   const std::vector<double> selection(kept.Selection.begin(), kept.Selection.end());
-  return shadowmaps::KeptCubeServes(faces, selection, Receivers(DragProjection() * view),
-    FitFor(view, DragProjection(), towardLight), WarpTestGround(), towardLight, Resolution,
-    texelRatio, 3.0);
+  const std::vector<Plane> receivers = Receivers(DragProjection() * view);
+  const shadowmaps::FreshCube fresh = shadowmaps::MeasureFreshCube(
+    FitFor(view, DragProjection(), towardLight), receivers, WarpTestGround(), towardLight, Resolution);
+  return shadowmaps::KeptCubeServes(
+    faces, selection, receivers, fresh, WarpTestGround(), towardLight, Resolution, texelRatio, 3.0);
 }
 } // namespace
 
@@ -356,8 +358,9 @@ bool KeptServes(const PerspectiveCube& kept, const std::vector<Plane>& receivers
   EXPECT_TRUE(fresh.Valid);
   const std::vector<LightView> faces(kept.Faces.begin(), kept.Faces.end());
   const std::vector<double> selection(kept.Selection.begin(), kept.Selection.end());
-  return shadowmaps::KeptCubeServes(faces, selection, receivers, fresh, WarpTestGround(),
-    towardLight, Resolution, texelRatio, 3.0);
+  return shadowmaps::KeptCubeServes(faces, selection, receivers,
+    shadowmaps::MeasureFreshCube(fresh, receivers, WarpTestGround(), towardLight, Resolution),
+    WarpTestGround(), towardLight, Resolution, texelRatio, 3.0);
 }
 
 // A light above the street ahead, outside the receivers: its cube uses the
