@@ -12,7 +12,7 @@ set(shadowmeasure_vtk_modules
   VTK::RenderingCore      # actors, mappers, vtkGlyph3DMapper, vtkPointGaussianMapper
   VTK::RenderingOpenGL2)  # vtkCompositePolyDataMapper2
 
-add_library(ShadowMeasure STATIC ShadowOracle.cxx)
+add_library(ShadowMeasure STATIC ShadowOracle.cxx ShadowAreaLight.cxx)
 target_include_directories(ShadowMeasure PUBLIC "${CMAKE_CURRENT_SOURCE_DIR}")
 target_link_libraries(ShadowMeasure
   PUBLIC
@@ -20,7 +20,7 @@ target_link_libraries(ShadowMeasure
     ${shadowmeasure_vtk_modules}
   PRIVATE
     embree
-    ShadowMaps::RenderingShadowMaps   # vtkAbstractShadowMapPass::CASTS_SHADOWS()
+    ShadowMaps::RenderingShadowMaps   # CASTS_SHADOWS(), GetLightSize()
     Threads::Threads)
 # Benchmarks may link it into shared libraries or Python modules.
 set_target_properties(ShadowMeasure PROPERTIES POSITION_INDEPENDENT_CODE ON)

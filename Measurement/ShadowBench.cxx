@@ -75,16 +75,33 @@ struct View
 };
 
 /// The truth of the current view: primary rays, masked where the rasteriser
-/// disagrees, then one shadow ray per pixel.
+/// disagrees, then one shadow ray per pixel; for a sized light, its
+/// visibility (into `visibilityOut`, left empty for a light without a size)
+/// thresholded at one half.
 std::vector<Truth> TruthOfView(View& view, const shadoworacle::Oracle& oracle,
-  shadoworacle::Surface* surfaceOut = nullptr)
+  shadoworacle::Surface* surfaceOut = nullptr, std::vector<float>* visibilityOut = nullptr)
 {
   shadoworacle::Surface surface =
     VisibleSurface(oracle, view.Renderer, view.Window, view.Width, view.Height);
-  std::vector<Truth> truth = oracle.Classify(surface, FirstLight(view.Renderer));
+  vtkLight* light = FirstLight(view.Renderer);
+  std::vector<Truth> truth;
+  std::vector<float> visibility;
+  if (vtkAbstractShadowMapPass::GetLightSize(light) > 0.0)
+  {
+    visibility = oracle.Visibility(surface, light);
+    truth = shadowmetrics::TruthAtHalf(visibility);
+  }
+  else
+  {
+    truth = oracle.Classify(surface, light);
+  }
   if (surfaceOut)
   {
     *surfaceOut = std::move(surface);
+  }
+  if (visibilityOut)
+  {
+    *visibilityOut = std::move(visibility);
   }
   return truth;
 }
@@ -156,7 +173,11 @@ struct Row
   std::string PassClass; // this module's techniques only
   int Resolution = 0;
   double MemoryMiB = 0.0;
+  /// Sized lights' truth thresholded at one half, as the factor is.
   shadowmetrics::Classification Errors;
+  /// Sized lights only: the factor against the fractional visibility.
+  bool Sized = false;
+  shadowmetrics::VisibilityErrors Visibility;
   /// Light leaks where the truth's shadow ray meets two or more occluders (%).
   double Bleeding = NotMeasured;
   double Undersampled = NotMeasured;
@@ -296,7 +317,8 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   view.Window->Render();
   const auto plain = CaptureRGB(view.Window);
   shadoworacle::Surface surface;
-  const auto truth = TruthOfView(view, oracle, &surface);
+  std::vector<float> visibility;
+  const auto truth = TruthOfView(view, oracle, &surface, &visibility);
   const std::vector<std::uint8_t>& valid = surface.Valid;
   const std::vector<unsigned char> occluders =
     oracle.CountOccluders(surface, FirstLight(view.Renderer), truth);
@@ -329,6 +351,12 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
       shadowmetrics::FactorFromRenders(CaptureRGB(view.Window), plain, view.Width * view.Height);
     row.Errors = shadowmetrics::Classify(truth, factor, view.Width, view.Height);
     row.Bleeding = shadowmetrics::LeakBehindSeveral(occluders, factor);
+    row.Sized = !visibility.empty();
+    if (row.Sized)
+    {
+      row.Visibility = shadowmetrics::CompareVisibility(
+        visibility, factor, occluders, view.Width, view.Height);
+    }
     row.MemoryMiB = MemoryMiB(technique);
     const Sampling sampling = technique.Ours ? OurSampling(view, technique, valid)
       : technique.VTK                        ? VTKSampling(technique, surface)
@@ -336,7 +364,9 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
     row.Undersampled = sampling.Undersampled;
     row.DensitySpread = sampling.Spread;
     const std::string errors = options.OutputDirectory + "/" + CaseName(scene, setup) + "-" + name + "-errors.png";
-    if (!WritePNG(shadowmetrics::ErrorMap(truth, factor), view.Width, view.Height, errors))
+    const auto errorMap = row.Sized ? shadowmetrics::VisibilityErrorMap(visibility, factor)
+                                    : shadowmetrics::ErrorMap(truth, factor);
+    if (!WritePNG(errorMap, view.Width, view.Height, errors))
     {
       log << "  cannot write " << errors << std::endl;
     }
@@ -437,6 +467,33 @@ void PrintTable(const std::vector<Row>& rows, std::ostream& out)
   }
 }
 
+/// The sized lights' table: the factor against the fractional visibility.
+void PrintSizedTable(const std::vector<Row>& rows, std::ostream& out)
+{
+  if (std::none_of(rows.begin(), rows.end(), [](const Row& row) { return row.Sized; }))
+  {
+    return;
+  }
+  out << "\nSized lights: the shadow factor against the ray-traced fraction of the light that "
+         "reaches each pixel\n\n"
+      << "| scene | light | technique | visibility error: mean | 95th percentile | "
+         "misclassified at 0.5 % | umbra pure % | behind several % | lit pure % |\n"
+      << "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const Row& row : rows)
+  {
+    if (!row.Sized)
+    {
+      continue;
+    }
+    const shadowmetrics::VisibilityErrors& v = row.Visibility;
+    out << "| " << row.Scene << " | " << row.Setup << " | " << row.Technique << " | "
+        << FormatNumber(v.MeanAbsolute, 4) << " | " << FormatNumber(v.Percentile95, 3) << " | "
+        << FormatNumber(v.AtHalf.Misclassified) << " | " << FormatNumber(v.UmbraPure, 1) << " | "
+        << FormatNumber(v.UmbraBehindSeveralPure, 1) << " | " << FormatNumber(v.LitPure, 1)
+        << " |\n";
+  }
+}
+
 std::vector<Recommendation> RecommendationsOf(const std::vector<Row>& rows)
 {
   std::vector<MeasuredCase> cases;
@@ -453,7 +510,8 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
 {
   std::ofstream csv(path);
   csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,bleeding,inner,"
-         "mean_abs_diff,undersampled,density_spread,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels\n";
+         "mean_abs_diff,undersampled,density_spread,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels,"
+         "visibility_mean_error,visibility_p95_error,umbra_pure,umbra_behind_several_pure,lit_pure\n";
   // Enough digits for the recommendation to be recomputed from the file.
   csv << std::setprecision(12);
   for (const Row& row : rows)
@@ -463,7 +521,17 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
         << row.Errors.LightLeak << ',' << row.Bleeding << ',' << row.Errors.InnerMisclassified << ','
         << row.Errors.MeanAbsoluteDifference << ',' << row.Undersampled << ',' << row.DensitySpread << ',' << row.Flicker << ','
         << row.Changes << ',' << row.TruthChanges << ',' << row.Time.First << ',' << row.Time.Steady << ','
-        << row.Time.Moving << ',' << row.Errors.Counted << '\n';
+        << row.Time.Moving << ',' << row.Errors.Counted << ',';
+    const shadowmetrics::VisibilityErrors& v = row.Visibility;
+    if (row.Sized)
+    {
+      csv << v.MeanAbsolute << ',' << v.Percentile95 << ',' << v.UmbraPure << ','
+          << v.UmbraBehindSeveralPure << ',' << v.LitPure << '\n';
+    }
+    else
+    {
+      csv << "nan,nan,nan,nan,nan\n";
+    }
   }
 }
 
@@ -608,6 +676,7 @@ bool Run(const Options& requested, std::ostream& out, std::ostream& log, std::st
   log << progress.Line() << "  done" << std::endl;
   std::ostringstream report;
   PrintTable(rows, report);
+  PrintSizedTable(rows, report);
   const std::vector<Recommendation> recommendations = RecommendationsOf(rows);
   WriteRecommendationsMarkdown(recommendations, report);
   out << report.str();

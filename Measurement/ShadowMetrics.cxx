@@ -114,6 +114,104 @@ Classification Classify(
 }
 
 //------------------------------------------------------------------------------
+std::vector<Truth> TruthAtHalf(const std::vector<float>& visibility)
+{
+  std::vector<Truth> truth(visibility.size(), Truth::Ignored);
+  for (std::size_t i = 0; i < visibility.size(); ++i)
+  {
+    if (visibility[i] != shadoworacle::NotCounted)
+    {
+      truth[i] = IsShadowed(visibility[i]) ? Truth::Shadowed : Truth::Lit;
+    }
+  }
+  return truth;
+}
+
+//------------------------------------------------------------------------------
+VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
+  const std::vector<float>& factor, const std::vector<unsigned char>& occluders, int width,
+  int height)
+{
+  VisibilityErrors result;
+  result.AtHalf = Classify(TruthAtHalf(visibility), factor, width, height);
+  std::vector<double> errors;
+  std::int64_t umbraPure = 0;
+  std::int64_t litPure = 0;
+  std::int64_t severalPure = 0;
+  for (std::size_t i = 0; i < visibility.size(); ++i)
+  {
+    if (visibility[i] == shadoworacle::NotCounted)
+    {
+      continue;
+    }
+    errors.push_back(std::abs(static_cast<double>(factor[i]) - visibility[i]));
+    if (visibility[i] == 0.0f)
+    {
+      const bool pure = factor[i] <= PureWithin;
+      ++result.Umbra;
+      umbraPure += pure;
+      if (i < occluders.size() && occluders[i] >= 2)
+      {
+        ++result.UmbraBehindSeveral;
+        severalPure += pure;
+      }
+    }
+    else if (visibility[i] == 1.0f)
+    {
+      ++result.Lit;
+      litPure += factor[i] >= 1.0f - PureWithin;
+    }
+  }
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  result.Counted = static_cast<std::int64_t>(errors.size());
+  result.UmbraPure = result.Umbra > 0 ? Percent(umbraPure, result.Umbra) : none;
+  result.LitPure = result.Lit > 0 ? Percent(litPure, result.Lit) : none;
+  result.UmbraBehindSeveralPure =
+    result.UmbraBehindSeveral > 0 ? Percent(severalPure, result.UmbraBehindSeveral) : none;
+  if (errors.empty())
+  {
+    result.MeanAbsolute = result.Percentile95 = none;
+    return result;
+  }
+  double sum = 0.0;
+  for (double error : errors)
+  {
+    sum += error;
+  }
+  result.MeanAbsolute = sum / static_cast<double>(errors.size());
+  // The nearest-rank 95th percentile.
+  const std::size_t rank = static_cast<std::size_t>(std::ceil(0.95 * errors.size())) - 1;
+  std::nth_element(errors.begin(), errors.begin() + rank, errors.end());
+  result.Percentile95 = errors[rank];
+  return result;
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::uint8_t> VisibilityErrorMap(
+  const std::vector<float>& visibility, const std::vector<float>& factor)
+{
+  std::vector<std::uint8_t> rgb(3 * visibility.size(), 0);
+  for (std::size_t i = 0; i < visibility.size(); ++i)
+  {
+    if (visibility[i] == shadoworacle::NotCounted)
+    {
+      continue;
+    }
+    const double grey = 60.0 + 130.0 * visibility[i];
+    const double difference = static_cast<double>(factor[i]) - visibility[i];
+    const double strength = std::min(1.0, std::abs(difference) / 0.5);
+    const double toward[3] = { difference > 0.0 ? 230.0 : 0.0, 60.0 * (difference < 0.0),
+      difference < 0.0 ? 230.0 : 0.0 };
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb[3 * i + c] =
+        static_cast<std::uint8_t>(std::lround(grey + strength * (toward[c] - grey)));
+    }
+  }
+  return rgb;
+}
+
+//------------------------------------------------------------------------------
 std::vector<float> FactorFromRenders(const std::vector<std::uint8_t>& shadowedRgb,
   const std::vector<std::uint8_t>& unshadowedRgb, int pixelCount)
 {

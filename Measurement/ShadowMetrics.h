@@ -43,6 +43,51 @@ struct Classification
 Classification Classify(
   const std::vector<Truth>& truth, const std::vector<float>& factor, int width, int height);
 
+// --- sized lights: the technique's factor against fractional visibility ------------
+
+/// The truth of a fractional visibility (Oracle::Visibility) thresholded at
+/// ShadowedBelow, as the technique's factor is: Ignored where NotCounted.
+std::vector<Truth> TruthAtHalf(const std::vector<float>& visibility);
+
+/// Where the visibility is this close to 0 (umbra) or 1 (lit), the factor
+/// must be too, to count as pure.
+constexpr float PureWithin = 0.05f;
+
+struct VisibilityErrors
+{
+  /// Pixels with a visibility (not NotCounted).
+  std::int64_t Counted = 0;
+  /// |factor - visibility| over them: mean and 95th percentile.
+  double MeanAbsolute = 0.0;
+  double Percentile95 = 0.0;
+  /// Both thresholded at ShadowedBelow (TruthAtHalf).
+  Classification AtHalf;
+  /// Umbra pixels (visibility 0) and the percentage of them whose factor is at
+  /// most PureWithin; lit pixels (visibility 1) and the percentage at least
+  /// 1 - PureWithin; NaN without any.
+  std::int64_t Umbra = 0;
+  double UmbraPure = 0.0;
+  std::int64_t Lit = 0;
+  double LitPure = 0.0;
+  /// The umbra pixels behind two or more occluders (Oracle::CountOccluders of
+  /// TruthAtHalf), where moments leak, reported apart.
+  std::int64_t UmbraBehindSeveral = 0;
+  double UmbraBehindSeveralPure = 0.0;
+};
+
+/// Compares the technique's factor with the visibility of a sized light.
+/// `occluders` may be empty (UmbraBehindSeveral 0).
+VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
+  const std::vector<float>& factor, const std::vector<unsigned char>& occluders, int width,
+  int height);
+
+/// Signed visibility error as RGB bytes: factor above the visibility (light
+/// where the truth has less) red, below it blue, in proportion to the
+/// difference (full at 0.5); agreement grey by the visibility; not counted
+/// black.
+std::vector<std::uint8_t> VisibilityErrorMap(
+  const std::vector<float>& visibility, const std::vector<float>& factor);
+
 /// Light bleeding: the percentage of the pixels whose truth's shadow ray meets
 /// two or more occluders (Oracle::CountOccluders >= 2) that the technique
 /// lights (factor at or above ShadowedBelow); NaN where there are none.

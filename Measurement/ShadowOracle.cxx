@@ -32,6 +32,7 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include "ShadowAreaLight.h"
 #include "ShadowOracleEmbree.h"
 
 #include <glm/glm.hpp>
@@ -808,6 +809,38 @@ struct Oracle::Impl
     return glm::dot(normal, towardLight) > minimumCosine;
   }
 
+  // Of `count` stratified rays toward a sized light (`size`: the light's
+  // GetLightSize) from the point, how many reach it; -1 where the point is
+  // not counted.
+  int CountUnoccluded(const LightFrame& light, double size, const glm::dvec3& position,
+    const glm::dvec3& normal, double minimumCosine, int count, std::uint64_t seed) const
+  {
+    Ray centreRay;
+    if (!this->ShadowRay(light, position, normal, minimumCosine, centreRay))
+    {
+      return -1;
+    }
+    const shadowarealight::LightCone cone = light.Positional
+      ? shadowarealight::SphereCone(centreRay.Origin, light.Position, size)
+      : shadowarealight::SunCone(light.TowardLight, size);
+    if (cone.Inside)
+    {
+      return count;
+    }
+    const int strata = static_cast<int>(std::lround(std::sqrt(static_cast<double>(count))));
+    int unoccluded = 0;
+    for (int i = 0; i < count; ++i)
+    {
+      const shadowarealight::LightRay sample =
+        shadowarealight::SampleCone(cone, centreRay.Origin, i, strata, seed);
+      const double far = std::isinf(sample.Length)
+        ? sample.Length
+        : std::max(0.0, sample.Length - this->SurfaceOffset);
+      unoccluded += this->Occluded(Ray{ centreRay.Origin, sample.Direction, far }) ? 0 : 1;
+    }
+    return unoccluded;
+  }
+
   Truth ClassifyPoint(const LightFrame& light, const glm::dvec3& position,
     const glm::dvec3& normal, double minimumCosine) const
   {
@@ -1001,6 +1034,123 @@ std::vector<Truth> Oracle::Classify(
     }
   });
   return truth;
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> Oracle::Visibility(
+  const Surface& surface, vtkLight* light, double minimumCosine, VisibilityRays* rays) const
+{
+  std::vector<float> visibility(surface.Valid.size(), NotCounted);
+  if (rays)
+  {
+    *rays = VisibilityRays();
+  }
+  const double size = vtkAbstractShadowMapPass::GetLightSize(light);
+  if (!(size > 0.0))
+  {
+    const std::vector<Truth> truth = this->Classify(surface, light, minimumCosine);
+    for (std::size_t i = 0; i < truth.size(); ++i)
+    {
+      visibility[i] = truth[i] == Truth::Lit ? 1.0f : truth[i] == Truth::Shadowed ? 0.0f : NotCounted;
+      if (rays && truth[i] != Truth::Ignored)
+      {
+        ++rays->Counted;
+        ++rays->Rays;
+      }
+    }
+    return visibility;
+  }
+  const std::size_t count = static_cast<std::size_t>(std::max(0, surface.Width)) *
+    static_cast<std::size_t>(std::max(0, surface.Height));
+  if (!light || !this->Pimpl || !this->Pimpl->Scene || surface.Valid.size() != count ||
+    surface.Position.size() != count || surface.Normal.size() != count)
+  {
+    this->Classify(surface, light, minimumCosine); // for its warning
+    return visibility;
+  }
+  const LightFrame frame = MakeLightFrame(light);
+  if (!frame.Usable)
+  {
+    Warn("light has no direction (position equals focal point): every pixel ignored");
+    return visibility;
+  }
+  const Impl& impl = *this->Pimpl;
+  const int width = surface.Width;
+  const int height = surface.Height;
+  auto unoccluded = [&](std::size_t i, int rayCount, std::uint64_t pass) {
+    return impl.CountUnoccluded(frame, size, surface.Position[i], surface.Normal[i],
+      minimumCosine, rayCount, shadowarealight::Mix(i, pass));
+  };
+  constexpr int RefineReach = 2;
+  // First pass: a few rays per pixel.
+  std::vector<int> coarse(count, -1);
+  ForEachRow(height, [&](int y) {
+    for (int x = 0; x < width; ++x)
+    {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      coarse[i] = surface.Valid[i] ? unoccluded(i, CoarseRays, 0) : -1;
+    }
+  });
+  // Second pass where the light is partly hidden here or nearby: the coarse
+  // rays of a pixel whose light is only a few percent hidden often all agree,
+  // but a pixel within RefineReach of it has seen the penumbra.
+  auto partial = [](int n) { return n > 0 && n < CoarseRays; };
+  std::vector<int> refined(count, 0);
+  ForEachRow(height, [&](int y) {
+    for (int x = 0; x < width; ++x)
+    {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      if (coarse[i] < 0)
+      {
+        continue;
+      }
+      bool refine = partial(coarse[i]);
+      for (int dy = -RefineReach; dy <= RefineReach && !refine; ++dy)
+      {
+        for (int dx = -RefineReach; dx <= RefineReach && !refine; ++dx)
+        {
+          const int nx = x + dx;
+          const int ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= width || ny >= height)
+          {
+            continue;
+          }
+          const int n = coarse[static_cast<std::size_t>(ny) * width + nx];
+          refine = n >= 0 && (partial(n) || n != coarse[i]);
+        }
+      }
+      if (refine)
+      {
+        refined[i] = 1;
+        visibility[i] = static_cast<float>(unoccluded(i, RefinedRays, 1)) / RefinedRays;
+      }
+      else
+      {
+        visibility[i] = static_cast<float>(coarse[i]) / CoarseRays;
+      }
+    }
+  });
+  if (rays)
+  {
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      if (coarse[i] < 0)
+      {
+        continue;
+      }
+      ++rays->Counted;
+      rays->Refined += refined[i];
+      const int traced = refined[i] ? CoarseRays + RefinedRays : CoarseRays;
+      rays->Rays += traced;
+      const int behind = refined[i] ? RefinedRays : CoarseRays;
+      if (visibility[i] > 0.0f && visibility[i] < 1.0f &&
+        (rays->FewestAtPartial == 0 || behind < rays->FewestAtPartial))
+      {
+        rays->FewestAtPartial = behind;
+      }
+    }
+  }
+  return visibility;
 }
 
 //------------------------------------------------------------------------------

@@ -39,6 +39,21 @@ struct Surface
   std::vector<double> ViewDepth;     ///< distance along the camera's view direction
 };
 
+/// Oracle::Visibility of a pixel it does not count.
+constexpr float NotCounted = -1.0f;
+
+/// How Oracle::Visibility sampled its lights.
+struct VisibilityRays
+{
+  /// Pixels counted, and those sampled with the full set of rays.
+  long long Counted = 0;
+  long long Refined = 0;
+  /// Rays traced in all.
+  long long Rays = 0;
+  /// The fewest rays behind a visibility strictly between 0 and 1 (0: none).
+  int FewestAtPartial = 0;
+};
+
 enum class Truth : unsigned char
 {
   Ignored = 0,
@@ -121,6 +136,28 @@ public:
    */
   std::vector<Truth> Classify(
     const Surface& surface, vtkLight* light, double minimumCosine = 0.1) const;
+
+  /**
+   * Per pixel, the fraction of a sized light that reaches the surface point:
+   * vtkAbstractShadowMapPass::GetLightSize, a sun's angular diameter or a
+   * positional light's radius (a sphere). NotCounted where Classify ignores
+   * the pixel (judged from the light's centre). Rays start off the surface as
+   * Classify's and cover the light's cone of directions, stratified and
+   * jittered, uniform over its solid angle (a sphere of uniform radiance is a
+   * disc of uniform radiance from any point). A first pass traces
+   * CoarseRays; pixels whose rays disagree, or within two pixels of one that
+   * disagrees or whose rays agree otherwise, are traced again with
+   * RefinedRays, so that
+   * every visibility strictly between 0 and 1 comes from at least that many.
+   * A light without a size gets one ray per pixel: 0 or 1, as Classify.
+   * `rays` (when given) reports the counts.
+   */
+  std::vector<float> Visibility(const Surface& surface, vtkLight* light,
+    double minimumCosine = 0.1, VisibilityRays* rays = nullptr) const;
+
+  /// Rays per pixel of Visibility's two passes (8 x 8 and 16 x 16 strata).
+  static constexpr int CoarseRays = 64;
+  static constexpr int RefinedRays = 256;
 
   /**
    * Per pixel, for the pixels `truth` (Classify's for the same surface and

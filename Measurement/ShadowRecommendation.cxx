@@ -142,7 +142,10 @@ std::vector<Recommendation> Recommend(const std::vector<MeasuredCase>& cases, do
   std::vector<std::string> techniques;
   for (const MeasuredCase& c : cases)
   {
-    const auto key = std::make_pair(c.Scene, shadowscenes::LightKindOfSetup(c.Setup));
+    // Sized lights are judged apart: their errors are a penumbra's.
+    const std::string kind = shadowscenes::LightKindOfSetup(c.Setup) +
+      (shadowscenes::IsSizedLightSetup(c.Setup) ? " (sized)" : "");
+    const auto key = std::make_pair(c.Scene, kind);
     AddOnce(keys, key);
     AddOnce(setups[key], c.Setup);
     if (!c.PassClass.empty())

@@ -1,5 +1,9 @@
 #include "ShadowScenes.h"
 
+#include "vtkAbstractShadowMapPass.h" // LIGHT_SIZE
+
+#include <vtkInformation.h>
+#include <vtkInformationDoubleKey.h>
 #include <vtkMatrix4x4.h>
 
 #include <vtkActor.h>
@@ -1001,6 +1005,8 @@ constexpr SunSetup SunSetups[] = {
 };
 constexpr double SpotConeAngleDeg = 45.0; // vtkLight's cone angle is the half-angle
 constexpr double WideSpotConeAngleDeg = 75.0;
+constexpr double SoftSunDiameterDeg = 0.53; // the sun's, seen from the earth
+constexpr double SoftLampRadiusFraction = 0.02; // of the camera's distance to its focal point
 
 /** A white directional scene light shining from `position` towards `focalPoint`. */
 vtkSmartPointer<vtkLight> MakeSceneLight(const double position[3], const double focalPoint[3])
@@ -1036,8 +1042,25 @@ vtkSmartPointer<vtkLight> MakeSun(const ViewFrame& view, const SunSetup& sun)
   return MakeSceneLight(position, view.focalPoint);
 }
 
+vtkSmartPointer<vtkLight> MakeSetupLight(const ViewFrame& view, const std::string& setup);
+
+// A sized set-up is its hard set-up's light with a size (LIGHT_SIZE).
+vtkSmartPointer<vtkLight> MakeSizedSetupLight(const ViewFrame& view, const std::string& setup)
+{
+  const bool sun = setup == "soft-sun";
+  vtkSmartPointer<vtkLight> light =
+    MakeSetupLight(view, sun ? "perpendicular" : setup == "soft-spot" ? "spot" : "point");
+  light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(),
+    sun ? SoftSunDiameterDeg : SoftLampRadiusFraction * view.distance);
+  return light;
+}
+
 vtkSmartPointer<vtkLight> MakeSetupLight(const ViewFrame& view, const std::string& setup)
 {
+  if (IsSizedLightSetup(setup))
+  {
+    return MakeSizedSetupLight(view, setup);
+  }
   double position[3];
   if (setup == "spot")
   {
@@ -1565,19 +1588,30 @@ std::vector<std::string> LightSetupNames()
     "street-point" };
 }
 
+std::vector<std::string> SizedLightSetupNames()
+{
+  return { "soft-sun", "soft-spot", "soft-point" };
+}
+
 std::string LightKindOfSetup(const std::string& setup)
 {
-  if (setup == "spot" || setup == "wide-spot")
+  if (setup == "spot" || setup == "wide-spot" || setup == "soft-spot")
   {
     return "spot";
   }
-  return setup == "point" || setup == "street-point" ? "point" : "sun";
+  return setup == "point" || setup == "street-point" || setup == "soft-point" ? "point" : "sun";
+}
+
+bool IsSizedLightSetup(const std::string& setup)
+{
+  const std::vector<std::string> names = SizedLightSetupNames();
+  return std::find(names.begin(), names.end(), setup) != names.end();
 }
 
 bool IsLightSetup(const std::string& setup)
 {
   const std::vector<std::string> names = LightSetupNames();
-  return std::find(names.begin(), names.end(), setup) != names.end();
+  return std::find(names.begin(), names.end(), setup) != names.end() || IsSizedLightSetup(setup);
 }
 
 bool AddLightSetup(vtkRenderer* renderer, const std::string& setup)

@@ -179,7 +179,18 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
  */
 std::vector<std::string> LightSetupNames();
 
-/** True for a name in LightSetupNames(). */
+/**
+ * Set-ups whose light has a size (vtkAbstractShadowMapPass::LIGHT_SIZE), so
+ * soft shadows: "soft-sun" (the perpendicular sun, 0.53 degrees across, the
+ * real sun's), "soft-spot" and "soft-point" (the spot's and the point's
+ * lights as spheres of radius 0.02 d).
+ */
+std::vector<std::string> SizedLightSetupNames();
+
+/** True for a name in SizedLightSetupNames(). */
+bool IsSizedLightSetup(const std::string& setup);
+
+/** True for a name in LightSetupNames() or SizedLightSetupNames(). */
 bool IsLightSetup(const std::string& setup);
 
 /** The kind of a set-up's light: "sun", "spot" or "point". */

@@ -110,8 +110,12 @@ void PrintUsage(std::ostream& out)
          "braces):\n"
          "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
          "  --up x|y|z|-x|-y|-z      analyze only: the model's up axis, as for render\n"
-         "  --setups LIST|all        overhead,perpendicular,behind,facing,spot,point,\n"
-         "                           wide-spot,street-point [all]\n"
+         "  --setups LIST|all|soft   overhead,perpendicular,behind,facing,spot,point,\n"
+         "                           wide-spot,street-point [these eight]; sized lights\n"
+         "                           (soft shadows, measured against ray-traced area\n"
+         "                           lights): soft-sun (0.53 degrees), soft-spot,\n"
+         "                           soft-point (radius 0.02 of the camera's distance);\n"
+         "                           soft: these three; all: all eleven\n"
          "                           {perpendicular,spot,point}\n"
          "  --techniques LIST|all    none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
          "                           csm-tight,csm-lispsm,second-depth,midpoint,dual,evsm4\n"
@@ -393,8 +397,8 @@ std::string CheckSetups(const std::vector<std::string>& setups)
     if (!shadowscenes::IsLightSetup(setup))
     {
       return "unknown light set-up '" + setup +
-        "' (expected overhead, perpendicular, behind, facing, spot, point, wide-spot or "
-        "street-point)";
+        "' (expected overhead, perpendicular, behind, facing, spot, point, wide-spot, "
+        "street-point, soft-sun, soft-spot or soft-point)";
     }
   }
   return setups.empty() ? "no light set-up given" : std::string();
@@ -402,7 +406,16 @@ std::string CheckSetups(const std::vector<std::string>& setups)
 
 std::string ParseSetups(const std::string& value, Options& options)
 {
-  options.bench.Setups = value == "all" ? shadowscenes::LightSetupNames() : SplitList(value);
+  if (value == "all" || value == "soft")
+  {
+    options.bench.Setups = value == "soft" ? std::vector<std::string>() : shadowscenes::LightSetupNames();
+    for (const std::string& sized : shadowscenes::SizedLightSetupNames())
+    {
+      options.bench.Setups.push_back(sized);
+    }
+    return {};
+  }
+  options.bench.Setups = SplitList(value);
   return CheckSetups(options.bench.Setups);
 }
 

@@ -30,6 +30,7 @@
 #include "vtkDataObject.h"
 #include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkLight.h"
@@ -73,6 +74,24 @@
 
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, CASTS_SHADOWS, Integer);
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, RECEIVES_SHADOWS, Integer);
+vtkInformationKeyMacro(vtkAbstractShadowMapPass, LIGHT_SIZE, Double);
+
+//------------------------------------------------------------------------------
+double vtkAbstractShadowMapPass::GetLightSize(vtkLight* light, bool* clamped)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  const double stored = info && info->Has(LIGHT_SIZE()) ? info->Get(LIGHT_SIZE()) : 0.0;
+  double size = std::isfinite(stored) ? std::max(stored, 0.0) : 0.0;
+  if (light && !light->GetPositional())
+  {
+    size = std::min(size, 30.0);
+  }
+  if (clamped)
+  {
+    *clamped = !(size == stored);
+  }
+  return size;
+}
 
 using shadowmaps::Aabb;
 using shadowmaps::Caster;

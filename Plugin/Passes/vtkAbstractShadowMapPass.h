@@ -65,7 +65,9 @@
 #include <string> // For ReportGLFailure
 #include <vector> // For MapSignature
 
+class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
+class vtkLight;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkOpenGLState;
@@ -102,6 +104,24 @@ public:
    * shadows. Absent means 1.
    */
   static vtkInformationIntegerKey* RECEIVES_SHADOWS();
+
+  /**
+   * Set on a light's information to give the light a size and its shadows
+   * penumbrae: a sun's (directional light's) angular diameter in degrees (the
+   * real sun's is about 0.53), a positional light's radius in world units
+   * (spots and point lights are spheres). Absent or 0: a point source, hard
+   * shadows. OSPRay's light node calls the same quantities RADIUS, in the same
+   * units (ParaView's light Radius).
+   */
+  static vtkInformationDoubleKey* LIGHT_SIZE();
+
+  /**
+   * The light's LIGHT_SIZE as the passes use it: 0 when absent, not finite or
+   * negative; a sun's clamped to 30 degrees (wider "suns" are lamps: give them
+   * a position). Sets `clamped` (when given) to whether the stored value was
+   * changed.
+   */
+  static double GetLightSize(vtkLight* light, bool* clamped = nullptr);
 
   /**
    * The pass that renders the scene with shadows applied. Defaults to a

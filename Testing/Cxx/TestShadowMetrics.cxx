@@ -173,3 +173,67 @@ TEST(ShadowMetrics, LeakBehindSeveralCountsOnlyPixelsBehindTwoOccluders)
   EXPECT_NEAR(shadowmetrics::LeakBehindSeveral(occluders, factor), 50.0, 1e-9);
   EXPECT_TRUE(std::isnan(shadowmetrics::LeakBehindSeveral({ 0, 1 }, { 1.0f, 1.0f })));
 }
+
+TEST(ShadowMetrics, TruthAtHalfThresholdsTheVisibilityAsTheFactor)
+{
+  const float none = shadoworacle::NotCounted;
+  const std::vector<float> visibility = { 0.0f, 0.49f, 0.5f, 1.0f, none };
+  EXPECT_EQ(shadowmetrics::TruthAtHalf(visibility), (std::vector<Truth>{ S, S, L, L, I }));
+}
+
+TEST(ShadowMetrics, CompareVisibilityMeasuresErrorsPurityAndSeveralOccluders)
+{
+  const float none = shadoworacle::NotCounted;
+  // 10 x 1: four umbra pixels (two behind two occluders), a penumbra of two,
+  // three lit pixels and one not counted.
+  const std::vector<float> visibility = { 0.0f, 0.0f, 0.0f, 0.0f, 0.3f, 0.7f, 1.0f, 1.0f, 1.0f,
+    none };
+  const std::vector<float> factor = { 0.0f, 0.04f, 0.2f, 0.0f, 0.5f, 0.7f, 1.0f, 0.9f, 0.96f,
+    0.0f };
+  const std::vector<unsigned char> occluders = { 1, 1, 2, 2, 1, 0, 0, 0, 0, 0 };
+  const auto v = shadowmetrics::CompareVisibility(visibility, factor, occluders, 10, 1);
+  EXPECT_EQ(v.Counted, 9);
+  const std::array<double, 9> errors = { 0.0, 0.04, 0.2, 0.0, 0.2, 0.0, 0.0, 0.1, 0.04 };
+  double sum = 0.0;
+  for (double e : errors)
+  {
+    sum += e;
+  }
+  EXPECT_NEAR(v.MeanAbsolute, sum / 9.0, 1e-6);
+  EXPECT_NEAR(v.Percentile95, 0.2, 1e-6); // the 9th of 9 by nearest rank
+  EXPECT_EQ(v.Umbra, 4);
+  EXPECT_NEAR(v.UmbraPure, 75.0, 1e-9);
+  EXPECT_EQ(v.UmbraBehindSeveral, 2);
+  EXPECT_NEAR(v.UmbraBehindSeveralPure, 50.0, 1e-9);
+  EXPECT_EQ(v.Lit, 3);
+  EXPECT_NEAR(v.LitPure, 200.0 / 3.0, 1e-9);
+  // At one half: pixel 4 (truth 0.3, factor 0.5) is a leak: lit where the
+  // truth is mostly shadowed.
+  EXPECT_EQ(v.AtHalf.Counted, 9);
+  EXPECT_NEAR(v.AtHalf.LightLeak, 100.0 / 9.0, 1e-9);
+  EXPECT_NEAR(v.AtHalf.FalseShadow, 0.0, 1e-9);
+  // Nothing counted: NaN, not 0.
+  const auto empty = shadowmetrics::CompareVisibility({ none }, { 1.0f }, {}, 1, 1);
+  EXPECT_EQ(empty.Counted, 0);
+  EXPECT_TRUE(std::isnan(empty.MeanAbsolute));
+  EXPECT_TRUE(std::isnan(empty.UmbraPure));
+  EXPECT_TRUE(std::isnan(empty.LitPure));
+}
+
+TEST(ShadowMetrics, VisibilityErrorMapColoursTheSignedError)
+{
+  const float none = shadoworacle::NotCounted;
+  const auto rgb = shadowmetrics::VisibilityErrorMap(
+    { 0.0f, 1.0f, 0.2f, 0.8f, none }, { 0.0f, 1.0f, 0.7f, 0.3f, 0.5f });
+  // Agreement: grey by the visibility.
+  EXPECT_EQ(rgb[0], 60);
+  EXPECT_EQ(rgb[0], rgb[1]);
+  EXPECT_EQ(rgb[3], 190);
+  // Too light by 0.5: full red; too dark by 0.5: full blue.
+  EXPECT_EQ(rgb[6], 230);
+  EXPECT_EQ(rgb[8], 0);
+  EXPECT_EQ(rgb[9], 0);
+  EXPECT_EQ(rgb[11], 230);
+  // Not counted: black.
+  EXPECT_EQ(rgb[12] + rgb[13] + rgb[14], 0);
+}

@@ -4,6 +4,7 @@
 // The expected areas are computed from the scene's geometry, never from a
 // previous run; the tolerance on areas is 0.1% of the image's pixels.
 #include "ShadowOracle.h"
+#include "ShadowAreaLight.h"
 
 #include "vtkAbstractShadowMapPass.h"
 
@@ -961,4 +962,216 @@ TEST(ShadowOracle, CountOccludersAlongShadowRays)
   // Capped at `most`.
   const std::vector<unsigned char> capped = oracle.CountOccluders(surface, sun, truth, 1);
   EXPECT_EQ(*std::max_element(capped.begin(), capped.end()), 1);
+}
+
+// --- sized lights ----------------------------------------------------------------
+
+namespace
+{
+/// The fraction of a uniform unit disc on the side u < c of a line (c in
+/// units of the disc's radius).
+double DiscFractionBelow(double c)
+{
+  c = std::max(-1.0, std::min(1.0, c));
+  return 0.5 + (c * std::sqrt(1.0 - c * c) + std::asin(c)) / Pi;
+}
+
+/// Ground points (z = 0, normal +z) along x from x0 to x1 at y = 0.1.
+Surface GroundLine(double x0, double x1, int count)
+{
+  Surface surface;
+  surface.Width = count;
+  surface.Height = 1;
+  for (int i = 0; i < count; ++i)
+  {
+    surface.Valid.push_back(1);
+    surface.Position.emplace_back(x0 + (x1 - x0) * i / (count - 1.0), 0.1, 0.0);
+    surface.Normal.emplace_back(0.0, 0.0, 1.0);
+    surface.ViewDepth.push_back(1.0);
+  }
+  return surface;
+}
+
+void SetLightSize(vtkLight* light, double size)
+{
+  light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), size);
+}
+
+/// A half-plane occluder, x < 0 at height `height`, over a ground.
+void AddEdgeOverGround(View& view, double height)
+{
+  AddGround(view, 30.0);
+  vtkNew<vtkPlaneSource> half;
+  half->SetOrigin(-30.0, -30.0, height);
+  half->SetPoint1(0.0, -30.0, height);
+  half->SetPoint2(-30.0, 30.0, height);
+  view.Add(half);
+}
+
+/// The x (by linear interpolation) where the visibility along a GroundLine
+/// first reaches `level`.
+double WhereVisibilityReaches(const Surface& surface, const std::vector<float>& visibility, float level)
+{
+  for (std::size_t i = 1; i < visibility.size(); ++i)
+  {
+    if (visibility[i - 1] < level && visibility[i] >= level)
+    {
+      const double t = (level - visibility[i - 1]) / (visibility[i] - visibility[i - 1]);
+      return surface.Position[i - 1].x + t * (surface.Position[i].x - surface.Position[i - 1].x);
+    }
+  }
+  return std::nan("");
+}
+} // namespace
+
+TEST(ShadowAreaLight, ConeSamplesAreUniformOverTheSolidAngleAndEndOnTheSphere)
+{
+  const glm::dvec3 point(0.3, -0.2, 0.1);
+  const glm::dvec3 centre(1.0, 2.0, 6.0);
+  const double radius = 1.5;
+  const auto cone = shadowarealight::SphereCone(point, centre, radius);
+  ASSERT_FALSE(cone.Inside);
+  const double halfAngle = std::acos(cone.CosHalfAngle);
+  EXPECT_NEAR(std::sin(halfAngle), radius / glm::length(centre - point), 1e-12);
+  // Stratified: the fraction within half the cone's solid angle is close to
+  // one half, far closer than independent samples would give.
+  const double cosHalfSolidAngle = 1.0 - 0.5 * (1.0 - cone.CosHalfAngle);
+  int inner = 0;
+  for (int i = 0; i < 256; ++i)
+  {
+    const auto ray = shadowarealight::SampleCone(cone, point, i, 16, 77);
+    const double cosine = glm::dot(ray.Direction, cone.Axis);
+    EXPECT_GE(cosine, cone.CosHalfAngle - 1e-12);
+    inner += cosine >= cosHalfSolidAngle;
+    EXPECT_NEAR(glm::length(point + ray.Length * ray.Direction - centre), radius, 1e-9);
+  }
+  EXPECT_NEAR(inner, 128, 8);
+  // The sun: the half angle is half the diameter; rays do not end.
+  const auto sun = shadowarealight::SunCone({ 0.0, 0.0, 2.0 }, 2.0);
+  EXPECT_NEAR(std::acos(sun.CosHalfAngle), glm::radians(1.0), 1e-12);
+  EXPECT_TRUE(std::isinf(shadowarealight::SampleCone(sun, point, 3, 16, 1).Length));
+  // Inside a sphere light.
+  EXPECT_TRUE(shadowarealight::SphereCone(centre, centre + 0.5, radius).Inside);
+}
+
+TEST(ShadowOracle, SunPenumbraOfAnEdgeIsTheDiscSegment)
+{
+  View view;
+  const double height = 4.0;
+  AddEdgeOverGround(view, height);
+  const double diameter = 3.0; // degrees
+  vtkLight* sun = view.SetSun({ 0.0, 0.0, 1.0 });
+  SetLightSize(sun, diameter);
+  view.LookDown({ 0.0, 0.0 }, 5.0);
+  view.Window->Render();
+  Oracle oracle;
+  std::string error;
+  ASSERT_TRUE(oracle.Build(view.Renderer, error)) << error;
+
+  const double penumbraHalf = height * std::tan(glm::radians(0.5 * diameter));
+  const Surface surface = GroundLine(-2.0 * penumbraHalf, 2.0 * penumbraHalf, 201);
+  shadoworacle::VisibilityRays rays;
+  const std::vector<float> visibility = oracle.Visibility(surface, sun, 0.1, &rays);
+  double worst = 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < visibility.size(); ++i)
+  {
+    // From x, the edge is at angle atan(x / height) off the sun's centre;
+    // the light beyond it (toward +x) is what reaches the ground.
+    const double c = std::atan(surface.Position[i].x / height) / glm::radians(0.5 * diameter);
+    const double expected = DiscFractionBelow(c);
+    worst = std::max(worst, std::abs(visibility[i] - expected));
+    sum += std::abs(visibility[i] - expected);
+  }
+  Report("sun penumbra: worst |visibility - disc segment|", worst, 0.0);
+  Report("sun penumbra: mean |visibility - disc segment|", sum / visibility.size(), 0.0);
+  EXPECT_LT(worst, 0.025);
+  EXPECT_LT(sum / visibility.size(), 0.005);
+  EXPECT_EQ(visibility.front(), 0.0f);
+  EXPECT_EQ(visibility.back(), 1.0f);
+  // 10-90% width: the segment's, where the disc fraction is 0.1 and 0.9:
+  // 2 * 0.68705 of the penumbra's half width.
+  const double width =
+    WhereVisibilityReaches(surface, visibility, 0.9f) - WhereVisibilityReaches(surface, visibility, 0.1f);
+  EXPECT_NEAR(DiscFractionBelow(0.68705), 0.9, 1e-5);
+  Report("sun penumbra 10-90% width", width, 2.0 * 0.68705 * penumbraHalf);
+  EXPECT_NEAR(width, 2.0 * 0.68705 * penumbraHalf, 0.03 * penumbraHalf);
+  EXPECT_EQ(rays.Counted, 201);
+  EXPECT_EQ(rays.FewestAtPartial, Oracle::RefinedRays);
+  EXPECT_GT(rays.Refined, 90);
+  EXPECT_LT(rays.Refined, 201);
+}
+
+TEST(ShadowOracle, SphereLightPenumbraOfAnEdgeIsTheDiscSegment)
+{
+  View view;
+  const double edgeHeight = 2.0;
+  const double lightHeight = 20.0;
+  const double radius = 0.5;
+  AddEdgeOverGround(view, edgeHeight);
+  vtkLight* lamp = view.SetLight({ 0.0, 0.0, lightHeight }, { 0.0, 0.0, 0.0 }, true);
+  SetLightSize(lamp, radius);
+  view.LookDown({ 0.0, 0.0 }, 5.0);
+  view.Window->Render();
+  Oracle oracle;
+  std::string error;
+  ASSERT_TRUE(oracle.Build(view.Renderer, error)) << error;
+
+  // The lamp seen from the ground is nearly a disc of the radius at its
+  // height: the edge hides the part of it beyond x = -x (H - h) / h.
+  const double scale = edgeHeight / (lightHeight - edgeHeight);
+  const double penumbraHalf = radius * scale;
+  const Surface surface = GroundLine(-2.0 * penumbraHalf, 2.0 * penumbraHalf, 161);
+  const std::vector<float> visibility = oracle.Visibility(surface, lamp);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < visibility.size(); ++i)
+  {
+    const double expected = DiscFractionBelow(surface.Position[i].x / penumbraHalf);
+    worst = std::max(worst, std::abs(visibility[i] - expected));
+  }
+  Report("sphere light penumbra: worst |visibility - disc segment|", worst, 0.0);
+  EXPECT_LT(worst, 0.03);
+  // Repeatable, and a point inside the lamp sees all of it.
+  EXPECT_EQ(oracle.Visibility(surface, lamp), visibility);
+  SetLightSize(lamp, lightHeight + 1.0);
+  const std::vector<float> inside = oracle.Visibility(surface, lamp);
+  EXPECT_TRUE(std::all_of(inside.begin(), inside.end(), [](float v) { return v == 1.0f; }));
+}
+
+TEST(ShadowOracle, LightsWithoutASizeGetTheClassification)
+{
+  View view;
+  AddEdgeOverGround(view, 2.0);
+  vtkLight* sun = view.SetSun(TowardLight(30.0, 50.0));
+  view.LookDown({ 0.0, 0.0 }, 5.0);
+  view.Window->Render();
+  Oracle oracle;
+  std::string error;
+  ASSERT_TRUE(oracle.Build(view.Renderer, error)) << error;
+  Surface surface = GroundLine(-3.0, 3.0, 121);
+  surface.Normal[5] = glm::dvec3(0.0, 0.0, -1.0); // turned away: not counted
+  for (double size : { 0.0, -2.0, std::nan("") })
+  {
+    SetLightSize(sun, size);
+    EXPECT_EQ(vtkAbstractShadowMapPass::GetLightSize(sun), 0.0);
+    shadoworacle::VisibilityRays rays;
+    const std::vector<float> visibility = oracle.Visibility(surface, sun, 0.1, &rays);
+    const std::vector<Truth> truth = oracle.Classify(surface, sun);
+    for (std::size_t i = 0; i < truth.size(); ++i)
+    {
+      const float expected = truth[i] == Truth::Lit ? 1.0f
+        : truth[i] == Truth::Shadowed               ? 0.0f
+                                                    : shadoworacle::NotCounted;
+      EXPECT_EQ(visibility[i], expected) << i;
+    }
+    EXPECT_EQ(visibility[5], shadoworacle::NotCounted);
+    EXPECT_EQ(rays.Rays, 120);
+  }
+  bool clamped = false;
+  SetLightSize(sun, 45.0);
+  EXPECT_EQ(vtkAbstractShadowMapPass::GetLightSize(sun, &clamped), 30.0);
+  EXPECT_TRUE(clamped);
+  SetLightSize(sun, 0.53);
+  EXPECT_EQ(vtkAbstractShadowMapPass::GetLightSize(sun, &clamped), 0.53);
+  EXPECT_FALSE(clamped);
 }

@@ -154,11 +154,37 @@ def test_errors(program):
         check_usage_error(program, arguments, expected)
 
 
+def test_bench_sized_lights(program, output):
+    """The sized set-ups are measured against the fraction of the light that
+    reaches each pixel: hard shadows have a visibility error (their edges lie
+    in penumbrae), no shadows a larger one and no pure umbra."""
+    directory = os.path.join(output, "bench-soft")
+    result = run(program, "bench", "--scenes", "model", "--setups", "soft",
+                 "--techniques", "uniform", "--flicker-frames", "0", "--out", directory, *SMALL)
+    check(result.returncode == 0, "bench failed: " + result.stderr[-2000:])
+    check("Sized lights: the shadow factor against" in result.stdout, "the sized table is printed")
+    rows = rows_by_case(os.path.join(directory, "results.csv"))
+    for setup in ("soft-sun", "soft-spot", "soft-point"):
+        none = rows[("model", setup, "none")]
+        uniform = rows[("model", setup, "uniform")]
+        check(float(none["visibility_mean_error"]) > 0.01, setup + ": the scene has shadows")
+        check(float(none["umbra_pure"]) == 0.0, setup + ": no shadows has no umbra")
+        check(float(none["lit_pure"]) == 100.0, setup + ": no shadows lights every lit pixel")
+        check(0.0 < float(uniform["visibility_mean_error"]) < float(none["visibility_mean_error"]),
+              setup + ": hard shadows are closer than none, not exact")
+        check(float(uniform["umbra_pure"]) > 90.0, setup + ": hard shadows darken the umbra")
+    check(rows[("model", "soft-sun", "uniform")]["light"] == "soft-sun", "the set-up is named")
+    hard = rows_by_case(os.path.join(output, "bench", "results.csv"))
+    check(hard[("model", "perpendicular", "uniform")]["visibility_mean_error"] == "nan",
+          "lights without a size have no visibility columns")
+
+
 def main():
     program, output = sys.argv[1], sys.argv[2]
     os.makedirs(output, exist_ok=True)
     test_errors(program)
     test_bench(program, output)
+    test_bench_sized_lights(program, output)
     test_analyze(program, output)
     test_analyze_recommends(program, output)
     print("ok")
