@@ -7,6 +7,8 @@
 #include "vtkAbstractShadowMapPass.h"
 
 #include <vtkCamera.h>
+#include <vtkInformation.h>
+#include <vtkInformationDoubleKey.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
@@ -369,6 +371,10 @@ void ApplyLight(const LightCase& drawn, vtkRenderer* renderer)
   }
   light->SetPositional(drawn.Kind != LightKind::Directional);
   light->SetConeAngle(drawn.ConeAngle);
+  if (drawn.Size > 0.0)
+  {
+    light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), drawn.Size);
+  }
   light->SetPosition(drawn.Position.x, drawn.Position.y, drawn.Position.z);
   light->SetFocalPoint(drawn.FocalPoint.x, drawn.FocalPoint.y, drawn.FocalPoint.z);
   renderer->RemoveAllLights();
@@ -426,7 +432,8 @@ void WriteReplayImages(SceneView& view, const Case& drawn, const std::string& na
 }
 
 TechniqueResult MeasureTechnique(SceneView& view, const Case& drawn, const std::string& name,
-  const std::vector<std::uint8_t>& plain, const std::vector<Truth>& truth, const Options& options)
+  const std::vector<std::uint8_t>& plain, const std::vector<Truth>& truth,
+  const std::vector<float>& visibility, const Options& options)
 {
   TechniqueResult result;
   result.Technique = name;
@@ -446,13 +453,22 @@ TechniqueResult MeasureTechnique(SceneView& view, const Case& drawn, const std::
   const auto factor = shadowmetrics::FactorFromRenders(rgb, plain, drawn.Width * drawn.Height);
   result.Errors = shadowmetrics::Classify(truth, factor, drawn.Width, drawn.Height);
   result.ShadowLost = LostTheShadow(truth, factor);
+  result.Sized = !visibility.empty();
+  if (result.Sized)
+  {
+    result.Visibility =
+      shadowmetrics::CompareVisibility(visibility, factor, {}, drawn.Width, drawn.Height);
+  }
   if (technique.Ours)
   {
     result.NonFiniteViews = technique.Ours->GetNumberOfNonFiniteViews();
   }
   if (options.Replay)
   {
-    WriteReplayImages(view, drawn, name, technique, rgb, shadowmetrics::ErrorMap(truth, factor), options);
+    WriteReplayImages(view, drawn, name, technique, rgb,
+      result.Sized ? shadowmetrics::VisibilityErrorMap(visibility, factor)
+                   : shadowmetrics::ErrorMap(truth, factor),
+      options);
   }
   view.Renderer->SetPass(nullptr);
   technique.Pass->ReleaseGraphicsResources(view.Window);
@@ -470,9 +486,19 @@ CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& option
   view.Window->Render();
   const auto plain = shadowbench::CaptureRGB(view.Window);
   vtkLight* light = shadowbench::FirstLight(view.Renderer);
-  const auto truth = view.Oracle.Classify(
-    shadowbench::VisibleSurface(view.Oracle, view.Renderer, view.Window, drawn.Width, drawn.Height),
-    light);
+  const shadoworacle::Surface surface =
+    shadowbench::VisibleSurface(view.Oracle, view.Renderer, view.Window, drawn.Width, drawn.Height);
+  std::vector<float> visibility;
+  std::vector<Truth> truth;
+  if (drawn.Light.Size > 0.0)
+  {
+    visibility = view.Oracle.Visibility(surface, light);
+    truth = shadowmetrics::TruthAtHalf(visibility);
+  }
+  else
+  {
+    truth = view.Oracle.Classify(surface, light);
+  }
   light->GetTransformedPosition(glm::value_ptr(result.LightWorldPosition));
   light->GetTransformedFocalPoint(glm::value_ptr(result.LightWorldFocalPoint));
   result.Counted = std::count_if(
@@ -484,7 +510,8 @@ CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& option
   }
   for (const std::string& name : options.Techniques)
   {
-    result.Techniques.push_back(MeasureTechnique(view, drawn, name, plain, truth, options));
+    result.Techniques.push_back(
+      MeasureTechnique(view, drawn, name, plain, truth, visibility, options));
   }
   return result;
 }
@@ -539,16 +566,20 @@ double UniformMisclassified(const CaseResult& result)
   return uniform ? uniform->Errors.Misclassified : std::numeric_limits<double>::quiet_NaN();
 }
 
-void PrintDistributions(const std::vector<Distribution>& distributions, std::ostream& out)
+/// `unit`: " %" for misclassified percentages, "" for visibility errors.
+void PrintDistributions(
+  const std::vector<Distribution>& distributions, std::ostream& out, const std::string& unit = " %")
 {
-  out << "| technique | cases | median % | 95th percentile % | worst % | worst seed | "
-         "uniform's worst % | worst / uniform's worst | flagged cases |\n"
+  out << "| technique | cases | median" << unit << " | 95th percentile" << unit << " | worst" << unit
+      << " | worst seed | uniform's worst" << unit
+      << " | worst / uniform's worst | flagged cases |\n"
       << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  const int digits = unit.empty() ? 4 : 2;
   for (const Distribution& d : distributions)
   {
-    out << "| " << d.Technique << " | " << d.Cases << " | " << FormatNumber(d.Median) << " | "
-        << FormatNumber(d.Percentile95) << " | " << FormatNumber(d.Worst) << " | " << d.WorstSeed << " | "
-        << FormatNumber(d.UniformWorst) << " | "
+    out << "| " << d.Technique << " | " << d.Cases << " | " << FormatNumber(d.Median, digits)
+        << " | " << FormatNumber(d.Percentile95, digits) << " | " << FormatNumber(d.Worst, digits)
+        << " | " << d.WorstSeed << " | " << FormatNumber(d.UniformWorst, digits) << " | "
         << FormatNumber(d.UniformWorst > 0.0 ? d.Worst / d.UniformWorst
                                        : std::numeric_limits<double>::quiet_NaN())
         << " | " << d.Flagged << " |\n";
@@ -654,7 +685,8 @@ void WriteCSV(const std::vector<CaseResult>& results, const std::string& path)
 {
   std::ofstream csv(path);
   csv << "seed,scene,width,height,counted,truth_shadowed,technique,misclassified,false_shadow,"
-         "leak,gl_errors,vtk_errors,vtk_warnings,nonfinite_views,shadow_lost,case\n";
+         "leak,gl_errors,vtk_errors,vtk_warnings,nonfinite_views,shadow_lost,light_size,"
+         "visibility_mean_error,visibility_p95_error,case\n";
   for (const CaseResult& result : results)
   {
     for (const TechniqueResult& t : result.Techniques)
@@ -663,8 +695,17 @@ void WriteCSV(const std::vector<CaseResult>& results, const std::string& path)
           << result.Drawn.Height << ',' << result.Counted << ',' << result.TruthShadowed << ','
           << t.Technique << ',' << t.Errors.Misclassified << ',' << t.Errors.FalseShadow << ','
           << t.Errors.LightLeak << ',' << t.GLErrors << ',' << t.VTKErrors << ','
-          << t.VTKWarnings << ',' << t.NonFiniteViews << ',' << (t.ShadowLost ? 1 : 0) << ",\""
-          << Describe(result.Drawn) << "\"\n";
+          << t.VTKWarnings << ',' << t.NonFiniteViews << ',' << (t.ShadowLost ? 1 : 0) << ','
+          << result.Drawn.Light.Size << ',';
+      if (t.Sized)
+      {
+        csv << t.Visibility.MeanAbsolute << ',' << t.Visibility.Percentile95;
+      }
+      else
+      {
+        csv << "nan,nan";
+      }
+      csv << ",\"" << Describe(result.Drawn) << "\"\n";
     }
   }
 }
@@ -777,8 +818,13 @@ std::string Describe(const Case& drawn)
     text << std::fixed << std::setprecision(1) << drawn.Camera.ViewAngle << " deg";
   }
   text << std::defaultfloat << std::setprecision(2) << ", near/far "
-       << drawn.Camera.Near / drawn.Camera.Far << "; " << drawn.Light.Description << "; "
-       << drawn.Width << "x" << drawn.Height;
+       << drawn.Camera.Near / drawn.Camera.Far << "; " << drawn.Light.Description;
+  if (drawn.Light.Size > 0.0)
+  {
+    text << (drawn.Light.Kind == LightKind::Directional ? ", " : ", radius ") << drawn.Light.Size
+         << (drawn.Light.Kind == LightKind::Directional ? " deg across" : "");
+  }
+  text << "; " << drawn.Width << "x" << drawn.Height;
   return text.str();
 }
 
@@ -825,6 +871,65 @@ std::vector<Distribution> Summarise(const std::vector<CaseResult>& results, int 
 }
 
 //------------------------------------------------------------------------------
+std::vector<Distribution> SummariseVisibility(
+  const std::vector<CaseResult>& results, int minimumCounted)
+{
+  std::vector<Distribution> distributions;
+  if (results.empty())
+  {
+    return distributions;
+  }
+  for (std::size_t t = 0; t < results.front().Techniques.size(); ++t)
+  {
+    Distribution d;
+    d.Technique = results.front().Techniques[t].Technique;
+    d.UniformWorst = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> values;
+    for (const CaseResult& result : results)
+    {
+      const TechniqueResult& measured = result.Techniques[t];
+      d.Flagged += measured.Flagged() ? 1 : 0;
+      if (result.Counted < minimumCounted || !measured.Sized)
+      {
+        continue;
+      }
+      const double error = measured.Visibility.MeanAbsolute;
+      values.push_back(error);
+      if (values.size() == 1 || error > d.Worst)
+      {
+        d.Worst = error;
+        d.WorstSeed = result.Drawn.Seed;
+      }
+      const TechniqueResult* uniform = Find(result, "uniform");
+      if (uniform && uniform->Sized)
+      {
+        d.UniformWorst = std::isnan(d.UniformWorst)
+          ? uniform->Visibility.MeanAbsolute
+          : std::max(d.UniformWorst, uniform->Visibility.MeanAbsolute);
+      }
+    }
+    d.Cases = static_cast<int>(values.size());
+    d.Median = Percentile(values, 0.5);
+    d.Percentile95 = Percentile(values, 0.95);
+    distributions.push_back(d);
+  }
+  return distributions;
+}
+
+//------------------------------------------------------------------------------
+void DrawLightSize(Case& sweepCase, const double bounds[6])
+{
+  // A stream of its own: the rest of the case is drawn as without a size.
+  Random random(sweepCase.Seed ^ 0x5153495a45ull);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  sweepCase.Light.Size = sweepCase.Light.Kind == LightKind::Directional
+    ? random.LogUniform(0.25, 8.0)
+    : random.LogUniform(0.002, 0.05) * diagonal;
+}
+
+//------------------------------------------------------------------------------
 bool MeasureCases(const std::vector<Case>& cases, const Options& options,
   std::vector<CaseResult>& results, std::ostream& log, std::string& error)
 {
@@ -862,7 +967,11 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
   const bool measured = MeasureInSceneOrder(
     seeds, [](std::uint64_t seed) { return SceneOfCase(seed); },
     [&](SceneView& view, std::uint64_t seed) {
-      const Case drawn = DrawCase(seed, view.Bounds, options.BaseWidth, options.BaseHeight);
+      Case drawn = DrawCase(seed, view.Bounds, options.BaseWidth, options.BaseHeight);
+      if (options.SizedLights)
+      {
+        DrawLightSize(drawn, view.Bounds);
+      }
       if (options.Replay)
       {
         out << "scene bounds: x [" << view.Bounds[0] << ", " << view.Bounds[1] << "], y ["
@@ -888,6 +997,12 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
            << options.Resolution << "², distributions over the cases with at least "
            << options.MinimumCounted << " counted pixels.\n\n";
     PrintDistributions(Summarise(results, options.MinimumCounted), report);
+    if (options.SizedLights)
+    {
+      report << "\nSized lights: the mean absolute difference between the shadow factor and the "
+                "ray-traced visibility, per case (not percent).\n\n";
+      PrintDistributions(SummariseVisibility(results, options.MinimumCounted), report, "");
+    }
     PrintWorstCases(results, options, report);
     PrintFlagged(results, report);
   }

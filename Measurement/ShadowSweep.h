@@ -34,6 +34,9 @@ struct LightCase
   glm::dvec3 Position{ 0.0, 0.0, 1.0 };
   glm::dvec3 FocalPoint{ 0.0 };
   double ConeAngle = 180.0; ///< vtkLight's half-angle, degrees (spots below 90)
+  /// vtkAbstractShadowMapPass::LIGHT_SIZE (0: none): a sun's angular diameter
+  /// in degrees, a positional light's radius.
+  double Size = 0.0;
   std::string Description;  ///< e.g. "sun along the view"
 };
 
@@ -79,6 +82,14 @@ std::string SceneOfCase(std::uint64_t caseSeed);
  */
 Case DrawCase(std::uint64_t caseSeed, const double bounds[6], int baseWidth, int baseHeight);
 
+/**
+ * Gives the case's light a size drawn from its seed apart from everything
+ * else (the case is otherwise the same): suns 0.25 to 8 degrees across,
+ * positional lights a radius of 0.2% to 5% of the scene's diagonal, both
+ * log-uniform.
+ */
+void DrawLightSize(Case& sweepCase, const double bounds[6]);
+
 /// One line describing a case (scene, camera, light, window).
 std::string Describe(const Case& sweepCase);
 
@@ -94,6 +105,9 @@ struct Options
   int BaseHeight = 144;
   /// Cases with fewer counted pixels (visible, lit-facing) enter no distribution.
   int MinimumCounted = 300;
+  /// Every case's light gets a size (DrawLightSize): soft shadows, measured
+  /// against the oracle's visibility as well.
+  bool SizedLights = false;
   std::string OutputDirectory = "sweep";
   /// Replay this case seed alone, with images and error maps.
   bool Replay = false;
@@ -112,6 +126,10 @@ struct TechniqueResult
   int NonFiniteViews = 0;
   /// The truth has shadow on counted pixels, the technique none on any of them.
   bool ShadowLost = false;
+  /// Sized lights: the factor against the visibility (the truth the other
+  /// figures use is that visibility thresholded at one half).
+  bool Sized = false;
+  shadowmetrics::VisibilityErrors Visibility;
   std::string Messages;
 
   bool Flagged() const;
@@ -148,6 +166,12 @@ struct Distribution
 
 /// The distributions of `results` (one per technique, in the order measured).
 std::vector<Distribution> Summarise(const std::vector<CaseResult>& results, int minimumCounted);
+
+/// Sized lights: the distribution of the mean absolute visibility error per
+/// technique (Distribution's fields in visibility, not percent; UniformWorst
+/// the uniform map's worst mean error).
+std::vector<Distribution> SummariseVisibility(
+  const std::vector<CaseResult>& results, int minimumCounted);
 
 /**
  * Measures given cases (a regression test builds its case by hand) with

@@ -170,12 +170,19 @@ void ApplyMomentVariant(const std::string& name, vtkVarianceShadowMapPass* pass)
 }
 
 // The depth filters of the uniform map that soften like the moment maps'
-// default blur: "pcf3" (3 x 3 bilinear PCF) and "poisson" (16 taps).
+// default blur: "pcf3" (3 x 3 bilinear PCF) and "poisson" (16 taps), and the
+// fixed-radius filters a sized light's soft shadows are measured against:
+// "poisson-r<R>", R texels, soft shadows off.
 int DepthFilterOf(const std::string& name)
 {
-  return name == "pcf3" ? vtkDepthShadowMapPass::PCF_NXN
-    : name == "poisson" ? vtkDepthShadowMapPass::POISSON
-                        : -1;
+  return name == "pcf3"                                                ? vtkDepthShadowMapPass::PCF_NXN
+    : name == "poisson" || name.rfind("poisson-r", 0) == 0 ? vtkDepthShadowMapPass::POISSON
+                                                                       : -1;
+}
+
+std::vector<std::string> PoissonRadiusSweepNames()
+{
+  return { "poisson-r1", "poisson-r2", "poisson-r4", "poisson-r8", "poisson-r16" };
 }
 
 // The dual mode's offset sweep: "dual-offset<K>", K texels ("dual" is K = 2).
@@ -269,6 +276,8 @@ std::vector<std::string> TechniqueNames()
   names.insert(names.end(), offsets.begin(), offsets.end());
   const std::vector<std::string> biases = BiasSweepNames();
   names.insert(names.end(), biases.begin(), biases.end());
+  const std::vector<std::string> radii = PoissonRadiusSweepNames();
+  names.insert(names.end(), radii.begin(), radii.end());
   return names;
 }
 
@@ -395,6 +404,12 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
     pass->SetFilter(DepthFilterOf(name));
     pass->SetKernelSize(3);
     pass->SetFilterRadius(1.5);
+    if (name.rfind("poisson-r", 0) == 0)
+    {
+      pass->SetFilterRadius(std::stod(name.substr(std::string("poisson-r").size())));
+      pass->SetPoissonSamples(32);
+      pass->SoftShadowsOff();
+    }
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;

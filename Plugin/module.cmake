@@ -22,6 +22,7 @@ set(shadowmaps_shaders
   vtkShadowMapsLinearDepthResolveFS
   vtkShadowMapsMomentsFS
   vtkShadowMapsReceiverFS
+  vtkShadowMapsSoftFS
   vtkShadowMapsVarianceLookupFS
   vtkShadowMapsViewFS)
 set(shadowmaps_shader_sources)

@@ -8,3 +8,14 @@ float vtkShadowCompare(vec2 uv, float depth, int layer)
 {
   return texture(vtkShadowMaps, vec4(uv, float(layer), depth));
 }
+
+#ifdef VTK_SHADOW_SIZED_LIGHTS
+// The same maps without comparison (a sampler object on another unit), for
+// the soft shadows' blocker search (vtkShadowMapsSoftFS).
+uniform sampler2DArray vtkShadowDepths;
+
+float vtkShadowBlockerDepth(vec2 uv, int layer)
+{
+  return texture(vtkShadowDepths, vec3(uv, float(layer))).r;
+}
+#endif

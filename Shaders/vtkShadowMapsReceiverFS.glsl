@@ -65,6 +65,11 @@ struct vtkShadowLight
   vec4 DepthPlane;
   vec3 DepthOrigin;
   float DepthPerDistance;
+  // Lights with a size (VTK_SHADOW_FEATURE_SIZED_LIGHT): (position, 1) or
+  // (unit direction toward a sun, 0), and the size as the penumbra needs it:
+  // a sun's tan(half its angular diameter), a positional light's radius.
+  vec4 TowardLightVC;
+  float Size;
 };
 uniform vtkShadowLight vtkShadowLights[VTK_SHADOW_MAX_LIGHTS];
 
@@ -425,8 +430,13 @@ void vtkShadowMeasureReceiver(vec3 positionVC, vec3 normalVC, vec3 mapCoord, int
 }
 #endif
 
-float vtkShadowViewVisibility(
-  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
+#ifdef VTK_SHADOW_SIZED_LIGHTS
+float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, int view,
+  int viewLayout, int count, int features);
+#endif
+
+float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, int view,
+  int viewLayout, int count, int features)
 {
   vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
   vec4 clip = vtkShadowMapTransform(firstView, view, biased, features);
@@ -434,6 +444,13 @@ float vtkShadowViewVisibility(
   {
     return 1.0;
   }
+#ifdef VTK_SHADOW_SIZED_LIGHTS
+  if (vtkShadowHas(features, VTK_SHADOW_FEATURE_SIZED_LIGHT))
+  {
+    return vtkShadowSoftVisibility(
+      biased, normalVC, light, firstView, view, viewLayout, count, features);
+  }
+#endif
   vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
 #ifdef VTK_SHADOW_RECEIVER_PLANE
   vtkShadowMeasureReceiver(
@@ -477,7 +494,8 @@ float vtkShadowVisibility(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int viewLayout, int count, int features)
 {
   int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, viewLayout, count, features);
-  float visibility = vtkShadowViewVisibility(positionVC, normalVC, light, firstView, view, features);
+  float visibility = vtkShadowViewVisibility(
+    positionVC, normalVC, light, firstView, view, viewLayout, count, features);
   float depth = -positionVC.z;
   if (viewLayout == VTK_SHADOW_LAYOUT_CASCADES &&
     vtkShadowHas(features, VTK_SHADOW_FEATURE_CASCADE_BLENDS))
@@ -487,7 +505,8 @@ float vtkShadowVisibility(
     if (view < firstView + count - 1 && weight > 0.0)
     {
       float next =
-        vtkShadowViewVisibility(positionVC, normalVC, light, firstView, view + 1, features);
+        vtkShadowViewVisibility(
+          positionVC, normalVC, light, firstView, view + 1, viewLayout, count, features);
       visibility = mix(visibility, next, weight);
     }
   }

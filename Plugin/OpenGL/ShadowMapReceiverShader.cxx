@@ -98,6 +98,7 @@ std::string ReceiverShaderConstants()
     { "VTK_SHADOW_FEATURE_LINEAR_DEPTHS", LinearDepths },
     { "VTK_SHADOW_FEATURE_CROPPED_VIEWS", CroppedViews },
     { "VTK_SHADOW_FEATURE_CASCADE_BLENDS", CascadeBlends },
+    { "VTK_SHADOW_FEATURE_SIZED_LIGHT", SizedLight },
   };
   std::ostringstream defines;
   for (const auto& constant : constants)
@@ -289,6 +290,13 @@ ReceiverUniforms::Light ReceiverUniforms::PackLight(
   packed.DepthPlane = glm::vec4(depthVC.Plane);
   packed.DepthOrigin = glm::vec3(depthVC.Origin);
   packed.DepthPerDistance = static_cast<float>(depthVC.PerDistance);
+  const bool sun = light.Kind == LightKind::Directional;
+  packed.TowardLightVC = glm::vec4(cameraView * TowardLight(light));
+  if (sun)
+  {
+    packed.TowardLightVC = glm::vec4(glm::normalize(glm::vec3(packed.TowardLightVC)), 0.0f);
+  }
+  packed.Size = static_cast<float>(sun ? std::tan(glm::radians(0.5 * light.Size)) : light.Size);
   return packed;
 }
 
@@ -332,7 +340,8 @@ void ReceiverUniforms::NameMembers()
   {
     this->LightNames.push_back(name(
       "vtkShadowLights", i, { "PositionVC", "Attenuation", "Fade", "CoverageBand", "TileGrid",
-                              "DepthPlane", "DepthOrigin", "DepthPerDistance" }));
+                              "DepthPlane", "DepthOrigin", "DepthPerDistance", "TowardLightVC",
+                              "Size" }));
   }
 }
 
@@ -343,8 +352,19 @@ bool ReceiverUniforms::IsReceiver(vtkShaderProgram* program)
 }
 
 //------------------------------------------------------------------------------
-void ReceiverUniforms::Apply(
-  vtkShaderProgram* program, int mapUnit, int resolution, double normalOffset)
+void ReceiverUniforms::ApplyTextureUnits(
+  vtkShaderProgram* program, const ReceiverTextureUnits& units)
+{
+  program->SetUniformi("vtkShadowMaps", units.Maps);
+  if (units.RawDepths >= 0)
+  {
+    program->SetUniformi("vtkShadowDepths", units.RawDepths);
+  }
+}
+
+//------------------------------------------------------------------------------
+void ReceiverUniforms::Apply(vtkShaderProgram* program, const ReceiverTextureUnits& units,
+  int resolution, double normalOffset)
 {
   for (std::size_t i = 0; i < this->Views.size(); ++i)
   {
@@ -370,8 +390,13 @@ void ReceiverUniforms::Apply(
     program->SetUniform4f(names[5].c_str(), glm::value_ptr(light.DepthPlane));
     program->SetUniform3f(names[6].c_str(), glm::value_ptr(light.DepthOrigin));
     program->SetUniformf(names[7].c_str(), light.DepthPerDistance);
+    if (light.Size > 0.0f)
+    {
+      program->SetUniform4f(names[8].c_str(), glm::value_ptr(light.TowardLightVC));
+      program->SetUniformf(names[9].c_str(), light.Size);
+    }
   }
-  program->SetUniformi("vtkShadowMaps", mapUnit);
+  ApplyTextureUnits(program, units);
   program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(this->ViewToWorld));
   program->SetUniformf("vtkShadowMapResolution", static_cast<float>(resolution));
   program->SetUniformf("vtkShadowNormalOffset", static_cast<float>(normalOffset));

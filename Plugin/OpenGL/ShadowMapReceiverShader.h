@@ -77,6 +77,16 @@ struct ProbeShaders
 };
 ProbeShaders MakeProbeShaders(const std::vector<ShadowLight>& lights);
 
+/// The texture units the receivers' samplers read.
+struct ReceiverTextureUnits
+{
+  /// The maps (vtkShadowMaps).
+  int Maps = -1;
+  /// The maps' depths without comparison (vtkShadowDepths), for the soft
+  /// shadows of depth maps; -1 when nobody reads them.
+  int RawDepths = -1;
+};
+
 /// The uniforms of the receiver functions for one map update: one struct per
 /// view (vtkShadowViews) and per light (vtkShadowLights).
 class ReceiverUniforms
@@ -94,9 +104,13 @@ public:
   /// True on a program's first use in this frame since the last Pack.
   bool FirstUseThisFrame(vtkShaderProgram* program) { return this->Programs.FirstUse(program); }
 
-  /// Sets the packed uniforms, the maps' texture unit and resolution and the
+  /// Sets the packed uniforms, the maps' texture units and resolution and the
   /// receivers' normal offset (texels).
-  void Apply(vtkShaderProgram* program, int mapUnit, int resolution, double normalOffset);
+  void Apply(vtkShaderProgram* program, const ReceiverTextureUnits& units, int resolution,
+    double normalOffset);
+
+  /// Points the program's samplers at the units (each sampler type its own).
+  static void ApplyTextureUnits(vtkShaderProgram* program, const ReceiverTextureUnits& units);
 
 private:
   struct View
@@ -119,6 +133,8 @@ private:
     glm::vec4 DepthPlane{ 0.0f };
     glm::vec3 DepthOrigin{ 0.0f };
     float DepthPerDistance = 0.0f;
+    glm::vec4 TowardLightVC{ 0.0f };
+    float Size = 0.0f;
   };
   static View PackView(const ShadowLight& light, std::size_t index, const glm::dmat4& viewToWorld);
   static Light PackLight(const ShadowLight& light, const glm::dmat4& cameraView);

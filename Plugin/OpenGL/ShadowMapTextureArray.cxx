@@ -423,6 +423,41 @@ void TextureArray::BindToUnit(vtkOpenGLState* state, int unit) const
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
 }
 
+bool SamplerObjectsAvailable()
+{
+  return glGenSamplers && glBindSampler && glSamplerParameteri && glDeleteSamplers;
+}
+
+bool TextureArray::BindRawDepthToUnit(vtkOpenGLState* state, int unit)
+{
+  if (!SamplerObjectsAvailable())
+  {
+    return false;
+  }
+  if (this->RawDepthSampler == 0)
+  {
+    glGenSamplers(1, &this->RawDepthSampler);
+    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  this->BindToUnit(state, unit);
+  glBindSampler(static_cast<GLuint>(unit), this->RawDepthSampler);
+  return true;
+}
+
+void TextureArray::UnbindRawDepth(vtkOpenGLState* state, int unit)
+{
+  state->vtkglActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  if (glBindSampler)
+  {
+    glBindSampler(static_cast<GLuint>(unit), 0);
+  }
+}
+
 void TextureArray::ReleaseSecondOutput()
 {
   DeleteTexture(this->SecondOutput);
@@ -435,6 +470,11 @@ void TextureArray::Release()
   this->ReleaseSamples();
   DeleteRenderbuffer(this->DepthBuffer);
   DeleteTexture(this->Texture);
+  if (this->RawDepthSampler != 0)
+  {
+    glDeleteSamplers(1, &this->RawDepthSampler);
+    this->RawDepthSampler = 0;
+  }
   this->Resolution = 0;
   this->Layers = 0;
   this->LinearFiltering = -1;

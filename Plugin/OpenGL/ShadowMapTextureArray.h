@@ -83,6 +83,9 @@ unsigned int InternalFormat(TexelFormat format);
 /// unit, and limits sampling to them.
 void AllocateValueLevels(int resolution, int layers, TexelFormat format, int levels);
 
+/// Whether the current GL has sampler objects (3.3).
+bool SamplerObjectsAvailable();
+
 /// Drops the GL errors pending, so that the next glGetError reports only what follows.
 void ClearGLErrors();
 
@@ -187,6 +190,16 @@ public:
   /// the state cache, which VTK's textures rely on to find their units).
   void BindToUnit(vtkOpenGLState* state, int unit) const;
 
+  /// Depth formats: binds the texture to `unit` too, read through a sampler
+  /// object that returns the stored depths (no comparison, nearest) for
+  /// shaders that need them (the soft shadows' blocker search), whatever the
+  /// texture's own comparison and filtering. Leaves `unit` active. False where
+  /// the GL has no sampler objects (before 3.3).
+  bool BindRawDepthToUnit(vtkOpenGLState* state, int unit);
+
+  /// Takes the sampler object off `unit` (BindRawDepthToUnit's).
+  static void UnbindRawDepth(vtkOpenGLState* state, int unit);
+
   void Release();
 
   std::size_t GetMemoryBytes() const;
@@ -205,6 +218,7 @@ private:
   unsigned int SampleFramebuffer = 0; // BindSamples' buffers, made on first use
   unsigned int SampleColor = 0;
   unsigned int SampleDepth = 0;
+  unsigned int RawDepthSampler = 0; // BindRawDepthToUnit's, made on first use
   int Samples = 0;
   int AllocatedSamples = 0;
   TexelFormat Format = TexelFormat::Depth;

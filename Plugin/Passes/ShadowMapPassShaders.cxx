@@ -8,6 +8,9 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkShadowMapsSoftFS.h"
+
+#include <algorithm>
 
 #include <utility>
 
@@ -17,10 +20,13 @@ namespace shadowmaps
 bool PassShaders::Update(const MapStorage& storage, vtkShadowMapRepresentation* representation,
   const std::vector<ShadowLight>& lights, int layers, const ShaderChoices& choices)
 {
+  const bool sized = std::any_of(lights.begin(), lights.end(),
+    [](const ShadowLight& light) { return light.Size > 0.0; });
   this->Receivers.Definitions =
     std::string(storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
-    representation->GetReceiverDefinitions();
-  this->Receivers.Lookup = representation->GetReceiverLookupCode();
+    (sized ? "#define VTK_SHADOW_SIZED_LIGHTS\n" : "") + representation->GetReceiverDefinitions();
+  this->Receivers.Lookup =
+    representation->GetReceiverLookupCode() + (sized ? vtkShadowMapsSoftFS : "");
   AddAnalysisReceiverCode(choices.AnalysisView, choices.AnalysisLight, lights, this->Receivers);
   this->Receivers.Rehash();
 

@@ -97,8 +97,8 @@ void ProgramUniforms::SetDrawnRadius(float radius)
 }
 
 //------------------------------------------------------------------------------
-void ProgramUniforms::Casting(
-  vtkShaderProgram* program, int mapUnit, vtkShadowMapRepresentation* representation)
+void ProgramUniforms::Casting(vtkShaderProgram* program, const ReceiverTextureUnits& units,
+  vtkShadowMapRepresentation* representation)
 {
   if (!this->CasterPrograms.FirstUse(program))
   {
@@ -110,14 +110,14 @@ void ProgramUniforms::Casting(
   {
     // Not sampled while casting, but a sampler must not share a unit with
     // one of another type.
-    program->SetUniformi("vtkShadowMaps", mapUnit);
+    ReceiverUniforms::ApplyTextureUnits(program, units);
     representation->SetReceiverUniforms(program);
   }
 }
 
 //------------------------------------------------------------------------------
-void ProgramUniforms::Receiving(vtkShaderProgram* program, RendererMaps& maps, int mapUnit,
-  int resolution, double normalOffset, vtkShadowMapRepresentation* representation)
+void ProgramUniforms::Receiving(vtkShaderProgram* program, RendererMaps& maps,
+  const ReceiverTextureUnits& units, int resolution, double normalOffset, vtkShadowMapRepresentation* representation)
 {
   if (!maps.Uniforms.FirstUseThisFrame(program))
   {
@@ -138,7 +138,7 @@ void ProgramUniforms::Receiving(vtkShaderProgram* program, RendererMaps& maps, i
   }
   if (ReceiverUniforms::IsReceiver(program))
   {
-    maps.Uniforms.Apply(program, mapUnit, resolution, normalOffset);
+    maps.Uniforms.Apply(program, units, resolution, normalOffset);
     representation->SetReceiverUniforms(program);
   }
 }

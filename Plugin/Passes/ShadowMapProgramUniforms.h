@@ -10,6 +10,7 @@
 #include "ShadowMapCasterShader.h" // For CasterUniforms
 #include "ShadowMapLight.h"        // For ShadowFrame
 #include "ShadowMapProgramStamps.h"
+#include "ShadowMapReceiverShader.h" // For ReceiverTextureUnits
 
 #include <unordered_map>
 #include <unordered_set>
@@ -52,10 +53,12 @@ public:
   void SetDrawnRadius(float radius);
 
   /// Before a caster draw with `program`.
-  void Casting(vtkShaderProgram* program, int mapUnit, vtkShadowMapRepresentation* representation);
+  void Casting(vtkShaderProgram* program, const ReceiverTextureUnits& units,
+    vtkShadowMapRepresentation* representation);
 
   /// Before a scene draw with `program`, shaded with `maps`.
-  void Receiving(vtkShaderProgram* program, RendererMaps& maps, int mapUnit, int resolution,
+  void Receiving(vtkShaderProgram* program, RendererMaps& maps, const ReceiverTextureUnits& units,
+    int resolution,
     double normalOffset, vtkShadowMapRepresentation* representation);
 
   /// `maps` are going: no program was last drawn for them.

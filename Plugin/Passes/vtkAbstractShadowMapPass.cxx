@@ -62,6 +62,7 @@
 #include "ShadowMapVTKCompat.h"
 
 #include <algorithm>
+#include <sstream>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -79,18 +80,7 @@ vtkInformationKeyMacro(vtkAbstractShadowMapPass, LIGHT_SIZE, Double);
 //------------------------------------------------------------------------------
 double vtkAbstractShadowMapPass::GetLightSize(vtkLight* light, bool* clamped)
 {
-  vtkInformation* info = light ? light->GetInformation() : nullptr;
-  const double stored = info && info->Has(LIGHT_SIZE()) ? info->Get(LIGHT_SIZE()) : 0.0;
-  double size = std::isfinite(stored) ? std::max(stored, 0.0) : 0.0;
-  if (light && !light->GetPositional())
-  {
-    size = std::min(size, 30.0);
-  }
-  if (clamped)
-  {
-    *clamped = !(size == stored);
-  }
-  return size;
+  return shadowmaps::LightSizeOf(light, LIGHT_SIZE(), clamped);
 }
 
 using shadowmaps::Aabb;
@@ -198,6 +188,8 @@ struct vtkAbstractShadowMapPass::Internals
   int MapUnit = -1;
   // Depth peeling's first-pass depths, while casting.
   int PeelUnit = -1;
+  /// The maps read without comparison (ReadsRawDepths), -1 when not.
+  int RawDepthUnit = -1;
   bool TextureUnitsReserved = false;
   bool ShaderCodeCompiles = true;
   // The props whose render passes this pass joined in this frame.
@@ -223,6 +215,8 @@ struct vtkAbstractShadowMapPass::Internals
   // once, and only by maps that may be multisampled.
   int MaximumSamples = 0;
   bool WarnedTooManyLights = false;
+  /// The last warning about light sizes, so that a frame repeats none.
+  std::string WarnedLightSizes;
   bool WarnedNonFiniteViews = false;
   bool WarnedResolution = false;
   std::string LastGLError;
@@ -547,15 +541,66 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::CollectLights(vtkOpenGLRenderer* renderer)
 {
+  Internals& r = *this->Internal;
   int skipped = 0;
-  this->Internal->Lights =
-    shadowmaps::CollectShadowedLights(renderer, CASTS_SHADOWS(), VTK_MAX_SHADOWED_LIGHTS, skipped);
-  if (skipped > 0 && !this->Internal->WarnedTooManyLights)
+  std::vector<vtkLight*> clamped;
+  r.Lights = shadowmaps::CollectShadowedLights(
+    renderer, CASTS_SHADOWS(), LIGHT_SIZE(), VTK_MAX_SHADOWED_LIGHTS, skipped, clamped);
+  if (skipped > 0 && !r.WarnedTooManyLights)
   {
     vtkWarningMacro(<< skipped << " light(s) beyond the first " << VTK_MAX_SHADOWED_LIGHTS
                     << " shadowed lights cast no shadows; they still light the scene.");
   }
-  this->Internal->WarnedTooManyLights = skipped > 0;
+  r.WarnedTooManyLights = skipped > 0;
+  this->WarnAboutLightSizes(clamped);
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::WarnAboutLightSizes(const std::vector<vtkLight*>& clamped)
+{
+  Internals& r = *this->Internal;
+  std::ostringstream warning;
+  if (!clamped.empty())
+  {
+    vtkInformation* info = clamped.front()->GetInformation();
+    warning << clamped.size()
+            << " light(s) have a LIGHT_SIZE that is not finite, negative, or a sun wider than "
+            << shadowmaps::WidestSun << " degrees: the first's " << info->Get(LIGHT_SIZE())
+            << " is taken as " << shadowmaps::LightSizeOf(clamped.front(), LIGHT_SIZE()) << ". ";
+  }
+  if (!this->SoftShadows)
+  {
+    for (shadowmaps::ShadowLight& light : r.Lights)
+    {
+      light.Size = 0.0;
+    }
+  }
+  const bool sized = std::any_of(r.Lights.begin(), r.Lights.end(),
+    [](const shadowmaps::ShadowLight& light) { return light.Size > 0.0; });
+  const bool samplers = shadowmaps::SamplerObjectsAvailable();
+  if (sized && (!r.Representation->GetSupportsSizedLights() || !samplers))
+  {
+    if (!samplers)
+    {
+      warning << "This OpenGL has no sampler objects (3.3): lights with a LIGHT_SIZE cast hard "
+                 "shadows.";
+    }
+    else
+    {
+      warning << r.Representation->GetClassName()
+              << " draws hard shadows of lights with a LIGHT_SIZE: soft shadows come from "
+                 "vtkDepthShadowMapRepresentation for now.";
+    }
+    for (shadowmaps::ShadowLight& light : r.Lights)
+    {
+      light.Size = 0.0;
+    }
+  }
+  if (!warning.str().empty() && warning.str() != r.WarnedLightSizes)
+  {
+    vtkWarningMacro(<< warning.str());
+  }
+  r.WarnedLightSizes = warning.str();
 }
 
 //------------------------------------------------------------------------------
@@ -1147,6 +1192,10 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
     r.PeelUnit = window->GetTextureUnitManager()->Allocate();
     r.Programs.SetPeeling(false, r.PeelUnit);
   }
+  if (this->ReadsRawDepths())
+  {
+    r.RawDepthUnit = window->GetTextureUnitManager()->Allocate();
+  }
   r.Representation->ActivateReceiverResources(window);
   r.TextureUnitsReserved = true;
 }
@@ -1160,7 +1209,26 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   maps.Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
   maps.Maps.BindToUnit(window->GetState(), r.MapUnit);
+  if (r.RawDepthUnit >= 0)
+  {
+    maps.Maps.BindRawDepthToUnit(window->GetState(), r.RawDepthUnit);
+  }
   maps.Uniforms.NewFrame();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::ReadsRawDepths() const
+{
+  const Internals& r = *this->Internal;
+  return shadowmaps::IsDepth(r.Maps().Storage.Format) &&
+    std::any_of(r.Lights.begin(), r.Lights.end(),
+      [](const shadowmaps::ShadowLight& light) { return light.Size > 0.0; });
+}
+
+//------------------------------------------------------------------------------
+shadowmaps::ReceiverTextureUnits vtkAbstractShadowMapPass::ReceiverUnits() const
+{
+  return { this->Internal->MapUnit, this->Internal->RawDepthUnit };
 }
 
 //------------------------------------------------------------------------------
@@ -1180,6 +1248,12 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
   {
     window->GetTextureUnitManager()->Free(r.PeelUnit);
     r.PeelUnit = -1;
+  }
+  if (r.RawDepthUnit >= 0)
+  {
+    shadowmaps::TextureArray::UnbindRawDepth(window->GetState(), r.RawDepthUnit);
+    window->GetTextureUnitManager()->Free(r.RawDepthUnit);
+    r.RawDepthUnit = -1;
   }
   r.Representation->DeactivateReceiverResources();
   r.TextureUnitsReserved = false;
@@ -1240,12 +1314,13 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   if (r.Casting)
   {
     r.CastingState->UseProgramPointSize(shadowmaps::ImpostorShader::IsSized(program));
-    r.Programs.Casting(program, r.MapUnit, r.Representation);
+    r.Programs.Casting(program, this->ReceiverUnits(), r.Representation);
   }
   else if (r.Active)
   {
     r.Programs.Receiving(
-      program, r.Maps(), r.MapUnit, r.Frame.Resolution, this->NormalOffset, r.Representation);
+      program, r.Maps(), this->ReceiverUnits(), r.Frame.Resolution, this->NormalOffset,
+      r.Representation);
   }
   return true;
 }
@@ -1306,6 +1381,7 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "Exchange: " << this->Exchange << "\n";
   os << indent << "UseSceneBounds: " << this->UseSceneBounds << "\n";
+  os << indent << "SoftShadows: " << this->SoftShadows << "\n";
   os << indent << "SceneBounds: " << this->SceneBounds[0] << " " << this->SceneBounds[1] << " "
      << this->SceneBounds[2] << " " << this->SceneBounds[3] << " " << this->SceneBounds[4] << " "
      << this->SceneBounds[5] << "\n";

@@ -81,6 +81,7 @@ namespace shadowmaps
 {
 enum class Combination : int;
 struct LightView;
+struct ReceiverTextureUnits;
 struct RenderedLayer;
 struct ShadowLight;
 }
@@ -122,6 +123,18 @@ public:
    * changed.
    */
   static double GetLightSize(vtkLight* light, bool* clamped = nullptr);
+
+  ///@{
+  /**
+   * Whether lights with a LIGHT_SIZE get contact-hardening soft shadows
+   * (blocker search, penumbra estimate, a filter of the penumbra's width, in
+   * world units). Off: every light's shadow is hard, filtered by the
+   * representation's own filter. Default on.
+   */
+  vtkSetMacro(SoftShadows, vtkTypeBool);
+  vtkGetMacro(SoftShadows, vtkTypeBool);
+  vtkBooleanMacro(SoftShadows, vtkTypeBool);
+  ///@}
 
   /**
    * The pass that renders the scene with shadows applied. Defaults to a
@@ -391,6 +404,7 @@ protected:
   vtkShadowMapExchange* Exchange = nullptr;
   double SceneBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
   bool UseSceneBounds = false;
+  vtkTypeBool SoftShadows = 1;
   int Resolution = 2048;
   int CasterFaces = BOTH_FACES;
   double NormalOffset = 1.0;
@@ -418,6 +432,11 @@ private:
 
   bool PrepareShadows(vtkOpenGLRenderer* renderer, const vtkRenderState* s);
   void CollectLights(vtkOpenGLRenderer* renderer);
+  void WarnAboutLightSizes(const std::vector<vtkLight*>& clamped);
+  /// Whether receivers read the depth maps without comparison this frame
+  /// (the soft shadows' blocker search).
+  bool ReadsRawDepths() const;
+  shadowmaps::ReceiverTextureUnits ReceiverUnits() const;
   void CollectCastersAndCamera(vtkOpenGLRenderer* renderer);
   void RebuildShadersOfChangedReceivers(const vtkRenderState* s);
   /** Records the window `renderer` draws in and that it draws through the pass. */

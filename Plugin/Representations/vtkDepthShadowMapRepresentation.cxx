@@ -77,6 +77,12 @@ double vtkDepthShadowMapRepresentation::GetFilterReachTexels() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkDepthShadowMapRepresentation::GetSupportsSizedLights() const
+{
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkDepthShadowMapRepresentation::GetLinearFiltering() const
 {
   return this->Filter != HARD;

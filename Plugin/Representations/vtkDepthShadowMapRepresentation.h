@@ -107,6 +107,8 @@ public:
   std::string GetReceiverLookupCode() const override;
   std::string GetReceiverDefinitions() const override;
   double GetFilterReachTexels() const override;
+  /** True: sized lights get contact-hardening soft shadows (vtkShadowMapsSoftFS). */
+  bool GetSupportsSizedLights() const override;
   bool GetLinearFiltering() const override;
   /** False: depth maps are not post-processed. */
   bool GetPostProcessingFollowsFilterScale() const override;

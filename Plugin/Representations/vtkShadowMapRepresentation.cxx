@@ -44,6 +44,12 @@ bool vtkShadowMapRepresentation::GetPostProcessingFollowsFilterScale() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowMapRepresentation::GetSupportsSizedLights() const
+{
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow*) {}
 
 //------------------------------------------------------------------------------

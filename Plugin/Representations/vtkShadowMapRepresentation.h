@@ -122,6 +122,17 @@ public:
   /** How far the lookup reaches from a receiver's texel, in texels. Default 1. */
   virtual double GetFilterReachTexels() const;
 
+  /**
+   * Whether the lookup makes soft shadows of lights with a size
+   * (vtkAbstractShadowMapPass::LIGHT_SIZE): it then defines, when
+   * VTK_SHADOW_SIZED_LIGHTS is defined, `float vtkShadowBlockerDepth(vec2 uv,
+   * int layer)`, the nearest caster's depth at uv, and `float
+   * vtkShadowCompare(vec2 uv, float depth, int layer)`, and the shared soft
+   * filter (vtkShadowMapsSoftFS.glsl) does the rest. Default false: sized
+   * lights cast hard shadows, with a warning.
+   */
+  virtual bool GetSupportsSizedLights() const;
+
   /** Whether the maps are sampled with linear filtering. Default true. */
   virtual bool GetLinearFiltering() const;
 

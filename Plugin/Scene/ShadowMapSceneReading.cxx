@@ -5,6 +5,7 @@
 
 #include "vtkCamera.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -28,11 +29,30 @@ bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
 }
 
 //------------------------------------------------------------------------------
-std::vector<ShadowLight> CollectShadowedLights(
-  vtkRenderer* renderer, vtkInformationIntegerKey* castsShadows, int maximum, int& skipped)
+double LightSizeOf(vtkLight* light, vtkInformationDoubleKey* key, bool* clamped)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  const double stored = info && info->Has(key) ? info->Get(key) : 0.0;
+  double size = std::isfinite(stored) ? std::max(stored, 0.0) : 0.0;
+  if (light && !light->GetPositional())
+  {
+    size = std::min(size, WidestSun);
+  }
+  if (clamped)
+  {
+    *clamped = !(size == stored);
+  }
+  return size;
+}
+
+//------------------------------------------------------------------------------
+std::vector<ShadowLight> CollectShadowedLights(vtkRenderer* renderer,
+  vtkInformationIntegerKey* castsShadows, vtkInformationDoubleKey* lightSize, int maximum,
+  int& skipped, std::vector<vtkLight*>& clampedSizes)
 {
   std::vector<ShadowLight> lights;
   skipped = 0;
+  clampedSizes.clear();
   int shaderIndex = 0;
   vtkCollectionSimpleIterator it;
   vtkLightCollection* collection = renderer->GetLights();
@@ -63,6 +83,12 @@ std::vector<ShadowLight> CollectShadowedLights(
     shadowLight.Kind = !light->GetPositional() ? LightKind::Directional
       : shadowLight.ConeAngle < 90.0           ? LightKind::Spot
                                                : LightKind::Point;
+    bool clamped = false;
+    shadowLight.Size = LightSizeOf(light, lightSize, &clamped);
+    if (clamped)
+    {
+      clampedSizes.push_back(light);
+    }
     lights.push_back(shadowLight);
   }
   return lights;

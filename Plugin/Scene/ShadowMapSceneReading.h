@@ -13,7 +13,9 @@
 #include <vector>
 
 class vtkInformation;
+class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
+class vtkLight;
 class vtkProp;
 class vtkRenderer;
 
@@ -34,12 +36,23 @@ struct Caster
 /// An opt-out key: absent (or no information at all) means yes.
 bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key);
 
+/// Suns wider than this (degrees) are clamped to it: wider is a lamp.
+constexpr double WidestSun = 30.0;
+
+/// The light's size stored under `key` (vtkAbstractShadowMapPass::LIGHT_SIZE):
+/// 0 when absent, not finite or negative, a sun's at most WidestSun. Sets
+/// `clamped` (when given) to whether that changed the stored value.
+double LightSizeOf(vtkLight* light, vtkInformationDoubleKey* key, bool* clamped = nullptr);
+
 /// The renderer's switched-on lights that cast shadows (not headlights, not
 /// opted out by `castsShadows`), at most `maximum` of them, without views;
 /// `skipped` counts those beyond the maximum. Each keeps its index among the
-/// switched-on lights, the mappers' shaders' light index.
-std::vector<ShadowLight> CollectShadowedLights(
-  vtkRenderer* renderer, vtkInformationIntegerKey* castsShadows, int maximum, int& skipped);
+/// switched-on lights, the mappers' shaders' light index, and its size
+/// (LightSizeOf `lightSize`); `clampedSizes` lists the lights whose stored
+/// size was not usable as it was.
+std::vector<ShadowLight> CollectShadowedLights(vtkRenderer* renderer,
+  vtkInformationIntegerKey* castsShadows, vtkInformationDoubleKey* lightSize, int maximum,
+  int& skipped, std::vector<vtkLight*>& clampedSizes);
 
 /// The scene camera as the frame needs it.
 struct SceneCamera

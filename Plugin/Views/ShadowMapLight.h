@@ -59,7 +59,9 @@ enum ReceiverFeature : int
   /// tiles are. Receivers then transform by the first view only.
   CroppedViews = 8,
   /// Cascades with a blend band: receivers in it look up two cascades.
-  CascadeBlends = 16
+  CascadeBlends = 16,
+  /// A light with a size (ShadowLight::Size): contact-hardening soft shadows.
+  SizedLight = 32
 };
 
 /// Cones wider than this (half angle, degrees) are rendered as six cube faces:
@@ -78,6 +80,11 @@ struct ShadowLight
   glm::dvec3 Direction{ 0.0, 0.0, -1.0 };
   double ConeAngle = 90.0;
   float Attenuation = 1.0f;
+  /// vtkAbstractShadowMapPass::LIGHT_SIZE as validated by LightSizeOf: a
+  /// sun's angular diameter in degrees, a positional light's radius; 0: a
+  /// point source. The pass zeroes it where its representation has no soft
+  /// shadows.
+  double Size = 0.0;
   /// The first map layer of the light's views (set by the pass).
   int FirstLayer = 0;
 
@@ -135,7 +142,7 @@ inline glm::dvec4 TowardLight(const ShadowLight& light)
 /// possible ones and whatever this frame's views need.
 inline int ReceiverFeatures(const ShadowLight& light)
 {
-  int features = light.PossibleFeatures;
+  int features = light.PossibleFeatures | (light.Size > 0.0 ? SizedLight : 0);
   if (light.Kind != LightKind::Directional)
   {
     features |= DistantTexels;

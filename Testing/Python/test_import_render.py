@@ -45,6 +45,7 @@ def render_with(renderer, window, grab, shadow_pass, *points):
 UNDER_THE_SPHERE = (0.0, 0.0, 0.0)
 OPEN_GROUND = (3.0, -3.0, 0.0)
 SPHERE_TOP = (0.0, 0.0, 2.5)
+SHADOW_RIM = (0.5, 0.0, 0.0)  # the sphere's radius: the hard shadow's edge
 
 
 def main(output_dir):
@@ -90,6 +91,19 @@ def main(output_dir):
     print(f"under the sphere {under:.1f}, open ground {open_ground:.1f}")
     assert under < 80, "the sun straight above puts the ground under the sphere in shadow"
     assert open_ground > 120, "open ground is lit"
+
+    # A sun with a size (LIGHT_SIZE: 10 degrees across): the ground under the
+    # sphere stays in its umbra, the rim of its shadow is a penumbra.
+    size_key = vtkshadowmaps.vtkAbstractShadowMapPass.LIGHT_SIZE()
+    light.GetInformation().Set(size_key, 10.0)
+    assert vtkshadowmaps.vtkAbstractShadowMapPass.GetLightSize(light) == 10.0
+    _, (under, open_ground, rim) = render_with(
+        renderer, window, grab, vtkshadowmaps.vtkWarpedShadowMapPass(), UNDER_THE_SPHERE,
+        OPEN_GROUND, SHADOW_RIM)
+    print(f"sized sun: under the sphere {under:.1f}, open ground {open_ground:.1f}, rim {rim:.1f}")
+    assert under < 80 and open_ground > 120
+    assert under + 15 < rim < open_ground - 15, "the shadow's rim is half lit"
+    light.GetInformation().Remove(size_key)
 
     # The two strategies from Python: depth maps with cascaded views.
     cascades = vtkshadowmaps.vtkCascadedShadowMapViews()

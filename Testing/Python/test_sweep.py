@@ -56,6 +56,33 @@ def test_sweep_and_replay(program, output):
         check(os.path.isfile(path) and os.path.getsize(path) > 0, path + " written")
 
 
+def test_sized_lights(program, output):
+    """--lights sized: the same cases with a size each, measured against the
+    visibility; a replay reproduces it."""
+    directory = os.path.join(output, "sweep-sized")
+    result = run(program, "sweep", "--cases", "4", "--seed", "4", "--techniques", "uniform",
+                 "--min-counted", "0", "--lights", "sized", "--out", directory, *SMALL)
+    check(result.returncode == 0, "sized sweep failed: " + result.stderr[-2000:])
+    check("Sized lights: the mean absolute difference" in result.stdout, "the visibility table")
+    rows = read_rows(os.path.join(directory, "results.csv"))
+    hard = {row["seed"]: row for row in read_rows(os.path.join(output, "sweep", "results.csv"))
+            if row["technique"] == "uniform"}
+    for row in rows:
+        check(float(row["light_size"]) > 0.0, "every light has a size")
+        check(0.0 <= float(row["visibility_mean_error"]) <= 1.0, "a visibility error")
+        check(row["case"].split(";")[0] == hard[row["seed"]]["case"].split(";")[0],
+              "the same scene and camera as without sizes")
+        check(hard[row["seed"]]["visibility_mean_error"] == "nan", "hard lights: no visibility")
+    seed = rows[0]["seed"]
+    replay_dir = os.path.join(output, "replay-sized")
+    result = run(program, "sweep", "--replay", seed, "--techniques", "uniform", "--lights",
+                 "sized", "--out", replay_dir, *SMALL)
+    check(result.returncode == 0, "sized replay failed: " + result.stderr[-2000:])
+    replayed = read_rows(os.path.join(replay_dir, "results.csv"))[0]
+    check(replayed["visibility_mean_error"] == rows[0]["visibility_mean_error"],
+          "the replay reproduces the visibility error")
+
+
 def test_errors(program):
     for arguments, expected in [
         (["sweep", "--cases", "0"], "cases"),
@@ -64,6 +91,7 @@ def test_errors(program):
         (["sweep", "--techniques", "none"], "no shadows"),
         (["sweep", "--techniques", "magic"], "unknown technique"),
         (["sweep", "--bogus", "1"], "unknown option"),
+        (["sweep", "--lights", "soft"], "neither hard nor sized"),
     ]:
         lines = check_usage_error(program, arguments, expected)
         check(len(lines) == 1, "%s: one error line, got %r" % (arguments, lines))
@@ -74,6 +102,7 @@ def main():
     os.makedirs(output, exist_ok=True)
     test_errors(program)
     test_sweep_and_replay(program, output)
+    test_sized_lights(program, output)
     print("ok")
 
 

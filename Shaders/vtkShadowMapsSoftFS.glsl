@@ -1,0 +1,182 @@
+// Contact-hardening soft shadows of lights with a size (percentage-closer soft
+// shadows: a blocker search, a penumbra estimate, a filter of that size;
+// Fernando 2005), appended after a representation's lookup when a light has a
+// size (VTK_SHADOW_SIZED_LIGHTS). The representation gives
+//   float vtkShadowBlockerDepth(vec2 uv, int layer)  the nearest caster's depth
+//   float vtkShadowCompare(vec2 uv, float depth, int layer)
+// in its map's depth convention (vtkShadowMapCoord's).
+//
+// Both kernels are discs in world space, centred on the receiver, in the plane
+// at right angles to its light ray, sheared along the ray onto the receiver's
+// own plane (so that a flat receiver's taps lie on it and cannot shadow it).
+// Each tap is a world point taken through its view's own matrix: the kernel
+// keeps its world size whatever the map's texel size there, under every warp,
+// in every cascade, and in the face of a cube that holds the tap, so it
+// crosses faces and tiles without a seam. The warp's local texel size enters
+// only as the floor of both kernels (about a texel, below which a narrower
+// penumbra cannot be resolved). Neither has a ceiling: the taps are as many whatever the
+// radius, and a kernel cut short would draw a penumbra too narrow.
+//
+// Under a disc light the visible fraction behind one straight edge is the
+// fraction of a disc cut by a line; a uniform disc kernel of the penumbra's
+// half width over a hard map is exactly that, so the taps cover a disc
+// evenly (a Vogel spiral, turned per map texel so that the pattern stays on
+// the light's texels and does not crawl as the camera moves).
+
+const int VTK_SHADOW_BLOCKER_TAPS = 16;
+const int VTK_SHADOW_SOFT_TAPS = 32;
+const float VTK_SHADOW_GOLDEN_ANGLE = 2.39996323;
+
+// Tap i of n of a disc of radius 1, evenly spread, turned by `rotation` (cos, sin).
+vec2 vtkShadowDiscTap(int i, int n, vec2 rotation)
+{
+  float radius = sqrt((float(i) + 0.5) / float(n));
+  float angle = float(i) * VTK_SHADOW_GOLDEN_ANGLE;
+  vec2 p = radius * vec2(cos(angle), sin(angle));
+  return vec2(p.x * rotation.x - p.y * rotation.y, p.x * rotation.y + p.y * rotation.x);
+}
+
+// The view that holds a tap of a kernel centred in view `view`: the light's
+// views that part space among themselves (cube faces, tiles) pick their own;
+// cascades keep the receiver's, whose map holds the kernel around it.
+int vtkShadowTapView(vec3 tapVC, int light, int firstView, int view, int viewLayout, int count,
+  int features)
+{
+  if (viewLayout == VTK_SHADOW_LAYOUT_CUBE_FACES || viewLayout == VTK_SHADOW_LAYOUT_TILES ||
+    viewLayout == VTK_SHADOW_LAYOUT_PERSPECTIVE_CUBE)
+  {
+    return vtkShadowSelectView(tapVC, vec3(0.0), light, firstView, viewLayout, count, features);
+  }
+  return view;
+}
+
+// Unit vector from a point toward the light.
+vec3 vtkShadowTowardLightAt(vec3 pointVC, int light)
+{
+  vec4 toward = vtkShadowLights[light].TowardLightVC;
+  return normalize(toward.xyz - toward.w * pointVC);
+}
+
+// How far along its light ray a blocker may lie from a receiver: to where the
+// ray enters the scene (the light depth, which spans the scene, in world units).
+float vtkShadowBlockerReach(vec3 pointVC, int light)
+{
+  vec4 plane = vtkShadowLights[light].DepthPlane;
+  vec3 relative = pointVC - vtkShadowLights[light].DepthOrigin;
+  float perDistance = vtkShadowLights[light].DepthPerDistance;
+  float depth = dot(plane.xyz, relative) + plane.w + perDistance * length(relative);
+  return max(depth, 0.0) / max(length(plane.xyz) + perDistance, 1e-30);
+}
+
+// Half width, at the receiver, of the shadow a blocker `blockerDistance` away
+// along the ray casts: the light's size seen from the receiver (a sun's
+// tan(half angle), a sphere's radius over the distance to it) times the
+// blocker's distance, over what remains of the way to a positional light.
+float vtkShadowPenumbraHalfWidth(float blockerDistance, float lightDistance, int light)
+{
+  float size = vtkShadowLights[light].Size;
+  if (vtkShadowLights[light].TowardLightVC.w == 0.0)
+  {
+    return size * blockerDistance;
+  }
+  return size * blockerDistance / max(lightDistance - blockerDistance, 1e-3 * lightDistance);
+}
+
+// Distance from a tap along its light ray to the caster whose depth the map
+// stores there. Along the ray the map coordinates stay put and the depth is a
+// ratio of two linear functions of the distance, from the tap's clip
+// coordinates and those of a point one unit further toward the light.
+float vtkShadowDistanceToDepth(vec3 tapVC, vec4 tapClip, vec3 tapMap, float storedDepth,
+  int light, int firstView, int view, int features)
+{
+  float depth = storedDepth;
+  vec3 inverseW = vtkShadowViews[view].DepthInverseW;
+  if (vtkShadowHas(features, VTK_SHADOW_FEATURE_LINEAR_DEPTHS) && inverseW != vec3(0.0))
+  {
+    depth = (storedDepth - 0.5) * dot(inverseW, vec3(tapMap.xy, 1.0)) + 0.5;
+  }
+  vec3 toward = vtkShadowTowardLightAt(tapVC, light);
+  vec4 perUnit = vtkShadowMapTransform(firstView, view, tapVC + toward, features) - tapClip;
+  float denominator = perUnit.z - depth * perUnit.w;
+  if (abs(denominator) < 1e-30)
+  {
+    return 0.0;
+  }
+  return max((depth * tapClip.w - tapClip.z) / denominator, 0.0);
+}
+
+// Visibility of a sized light at a receiver (positionVC already moved along its
+// normal) whose centre falls in view `view`.
+float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, int view,
+  int viewLayout, int count, int features)
+{
+  vec3 toward = vtkShadowTowardLightAt(positionVC, light);
+  vec4 towardLight = vtkShadowLights[light].TowardLightVC;
+  float lightDistance = length(towardLight.xyz - towardLight.w * positionVC);
+  // The kernel's axes: at right angles to the ray, sheared along it onto the
+  // receiver's plane. Where the light grazes the receiver the disc stretches
+  // far along the plane, as the penumbra does; taps that left the plane would
+  // shadow it.
+  float facing = max(dot(normalVC, toward), 0.02);
+  vec3 side = abs(toward.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  vec3 axis1 = normalize(cross(toward, side));
+  vec3 axis2 = cross(toward, axis1);
+  axis1 -= toward * (dot(normalVC, axis1) / facing);
+  axis2 -= toward * (dot(normalVC, axis2) / facing);
+
+  float texel = vtkShadowTexelWorldSize(positionVC, light, firstView, view, features);
+  vec3 centre = vtkShadowMapCoord(
+    vtkShadowMapTransform(firstView, view, positionVC, features), view, features);
+  vec2 rotation = texture(vtkShadowNoise, centre.xy * vtkShadowMapResolution / 32.0).xy;
+
+  // Blocker search over the disc where a blocker can hide part of the light.
+  float reach = vtkShadowBlockerReach(positionVC, light);
+  if (towardLight.w != 0.0)
+  {
+    reach = min(reach, 0.8 * lightDistance);
+  }
+  float search = max(vtkShadowPenumbraHalfWidth(reach, lightDistance, light), texel);
+  float blockers = 0.0;
+  float blockerDistance = 0.0;
+  for (int i = 0; i < VTK_SHADOW_BLOCKER_TAPS; ++i)
+  {
+    vec2 disc = vtkShadowDiscTap(i, VTK_SHADOW_BLOCKER_TAPS, rotation) * search;
+    vec3 tapVC = positionVC + disc.x * axis1 + disc.y * axis2;
+    int tapView = vtkShadowTapView(tapVC, light, firstView, view, viewLayout, count, features);
+    vec4 tapClip = vtkShadowMapTransform(firstView, tapView, tapVC, features);
+    vec3 tapMap = vtkShadowMapCoord(tapClip, tapView, features);
+    if (!vtkShadowInsideMap(tapClip, tapView, features))
+    {
+      continue;
+    }
+    float stored = vtkShadowBlockerDepth(tapMap.xy, tapView);
+    if (stored < tapMap.z)
+    {
+      blockers += 1.0;
+      blockerDistance += vtkShadowDistanceToDepth(
+        tapVC, tapClip, tapMap, stored, light, firstView, tapView, features);
+    }
+  }
+  if (blockers == 0.0)
+  {
+    return 1.0;
+  }
+  float penumbra = vtkShadowPenumbraHalfWidth(blockerDistance / blockers, lightDistance, light);
+  // Half a texel: the maps' bilinear comparison blurs over the other half.
+  float radius = max(penumbra, 0.5 * texel);
+
+  // A disc of the penumbra's half width over the map's comparisons.
+  float lit = 0.0;
+  for (int i = 0; i < VTK_SHADOW_SOFT_TAPS; ++i)
+  {
+    vec2 disc = vtkShadowDiscTap(i, VTK_SHADOW_SOFT_TAPS, rotation) * radius;
+    vec3 tapVC = positionVC + disc.x * axis1 + disc.y * axis2;
+    int tapView = vtkShadowTapView(tapVC, light, firstView, view, viewLayout, count, features);
+    vec4 tapClip = vtkShadowMapTransform(firstView, tapView, tapVC, features);
+    vec3 tapMap = vtkShadowMapCoord(tapClip, tapView, features);
+    lit += vtkShadowInsideMap(tapClip, tapView, features)
+      ? vtkShadowCompare(tapMap.xy, tapMap.z, tapView)
+      : 1.0;
+  }
+  return lit / float(VTK_SHADOW_SOFT_TAPS);
+}

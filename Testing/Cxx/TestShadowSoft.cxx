@@ -1,0 +1,371 @@
+// Soft shadows of lights with a size (vtkAbstractShadowMapPass::LIGHT_SIZE):
+// the penumbra of a straight edge against its closed form, under the uniform
+// map, LiSPSM and cascades, for suns and spots at several blocker heights;
+// contact hardening; hard shadows untouched by the soft code; bad sizes.
+#include "ShadowTestUtilities.h"
+
+#include "vtkAbstractShadowMapPass.h"
+#include "vtkCascadedShadowMapPass.h"
+#include "vtkDepthShadowMapRepresentation.h"
+#include "vtkVarianceShadowMapPass.h"
+#include "vtkWarpedShadowMapPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+/// The fraction of a uniform unit disc on the side u < c of a line.
+double DiscFractionBelow(double c)
+{
+  c = std::max(-1.0, std::min(1.0, c));
+  return 0.5 + (c * std::sqrt(1.0 - c * c) + std::asin(c)) / Pi;
+}
+
+/// A ground (z = 0) and, at `height`, a half-plane occluder over x < 0, lit
+/// by one light; a perspective camera looks down at the edge's shadow.
+struct EdgeScene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLight> Light;
+  double Height;
+
+  explicit EdgeScene(double height)
+    : Height(height)
+  {
+    this->Window->SetSize(400, 400);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->AutomaticLightCreationOff();
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->AddQuad({ -20.0, -20.0, 0.0 }, { 20.0, -20.0, 0.0 }, { -20.0, 20.0, 0.0 });
+    this->AddQuad({ -20.0, -20.0, height }, { 0.0, -20.0, height }, { -20.0, 20.0, height });
+    this->Light->SetLightTypeToSceneLight();
+    this->Renderer->AddLight(this->Light);
+  }
+
+  void AddQuad(const glm::dvec3& origin, const glm::dvec3& point1, const glm::dvec3& point2)
+  {
+    vtkNew<vtkPlaneSource> quad;
+    quad->SetOrigin(origin.x, origin.y, origin.z);
+    quad->SetPoint1(point1.x, point1.y, point1.z);
+    quad->SetPoint2(point2.x, point2.y, point2.z);
+    quad->SetResolution(16, 16);
+    vtkSmartPointer<vtkActor> actor = shadowtest::AddSourceActor(this->Renderer, quad);
+    actor->GetProperty()->SetAmbient(0.0);
+    actor->GetProperty()->SetDiffuse(1.0);
+    actor->GetProperty()->SetSpecular(0.0);
+  }
+
+  /// A sun shining from `towardLight` with an angular diameter in degrees.
+  void SetSun(const glm::dvec3& towardLight, double diameter)
+  {
+    this->Light->SetPositional(false);
+    this->Light->SetPosition(towardLight.x, towardLight.y, towardLight.z);
+    this->Light->SetFocalPoint(0.0, 0.0, 0.0);
+    this->Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), diameter);
+  }
+
+  /// A spot at `position` of `radius`, aimed at `focus`.
+  void SetSpot(const glm::dvec3& position, const glm::dvec3& focus, double radius)
+  {
+    this->Light->SetPositional(true);
+    this->Light->SetPosition(position.x, position.y, position.z);
+    this->Light->SetFocalPoint(focus.x, focus.y, focus.z);
+    this->Light->SetConeAngle(60.0);
+    this->Light->SetAttenuationValues(1.0, 0.0, 0.0);
+    this->Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), radius);
+  }
+
+  /// Looks down at `focus` from `distance`, or from above the occluder.
+  void LookAt(const glm::dvec3& focus, double distance)
+  {
+    distance = std::max(distance, 2.0 * this->Height);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetFocalPoint(focus.x, focus.y, focus.z);
+    camera->SetPosition(focus.x + 0.2 * distance, focus.y - 0.5 * distance, focus.z + distance);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetViewAngle(30.0);
+    this->Renderer->ResetCameraClippingRange();
+  }
+
+  /// The shadow factor at ground points x along y = 0 (white diffuse surfaces,
+  /// no ambient light: the ratio of the shadowed to the unshadowed render).
+  std::vector<double> FactorAlongX(vtkRenderPass* pass, const std::vector<double>& xs)
+  {
+    this->Renderer->SetPass(nullptr);
+    vtkSmartPointer<vtkImageData> plain = shadowtest::RenderAndCapture(this->Window);
+    this->Renderer->SetPass(pass);
+    vtkSmartPointer<vtkImageData> shadowed = shadowtest::RenderAndCapture(this->Window);
+    this->Renderer->SetPass(nullptr);
+    std::vector<double> factor;
+    for (double x : xs)
+    {
+      const glm::dvec3 ground(x, 0.0, 0.0);
+      const double lit = shadowtest::LuminanceAt(this->Renderer, plain, ground);
+      factor.push_back(
+        lit > 0.0 ? shadowtest::LuminanceAt(this->Renderer, shadowed, ground) / lit : 1.0);
+    }
+    return factor;
+  }
+};
+
+/// The visibility of the light at ground point (x, 0, 0) behind the edge, from
+/// the light's axis (unit, toward it) and the sine of its angular radius there.
+double EdgeVisibility(double x, double height, const glm::dvec3& axis, double sinRadius)
+{
+  // The plane through the point and the edge (x = 0, z = height).
+  const glm::dvec3 normal = glm::normalize(glm::dvec3(height, 0.0, x));
+  // Rays toward the light on the side of the plane away from the occluder
+  // (toward +x at the edge's height) pass it.
+  return DiscFractionBelow(glm::dot(axis, normal) / sinRadius);
+}
+
+/// Where a monotonic profile first reaches `level`, by linear interpolation.
+double Crossing(const std::vector<double>& xs, const std::vector<double>& values, double level)
+{
+  for (std::size_t i = 1; i < xs.size(); ++i)
+  {
+    if ((values[i - 1] - level) * (values[i] - level) <= 0.0 && values[i] != values[i - 1])
+    {
+      return xs[i - 1] + (level - values[i - 1]) / (values[i] - values[i - 1]) * (xs[i] - xs[i - 1]);
+    }
+  }
+  return std::nan("");
+}
+
+struct Measured
+{
+  double Width = 0.0;
+  double Expected = 0.0;
+  double Texel = 0.0;
+};
+
+/// The 10-90% width of the rendered penumbra and of the analytic one.
+Measured MeasurePenumbra(EdgeScene& scene, vtkRenderPass* pass,
+  const std::function<double(double)>& visibility, double centre, double halfWidth)
+{
+  std::vector<double> xs;
+  for (int i = 0; i <= 400; ++i)
+  {
+    xs.push_back(centre - 2.0 * halfWidth + 4.0 * halfWidth * i / 400.0);
+  }
+  std::vector<double> truth;
+  for (double x : xs)
+  {
+    truth.push_back(visibility(x));
+  }
+  const std::vector<double> factor = scene.FactorAlongX(pass, xs);
+  Measured m;
+  m.Expected = std::abs(Crossing(xs, truth, 0.9) - Crossing(xs, truth, 0.1));
+  m.Width = std::abs(Crossing(xs, factor, 0.9) - Crossing(xs, factor, 0.1));
+  return m;
+}
+
+vtkSmartPointer<vtkRenderPass> MakePass(const std::string& views, int resolution)
+{
+  if (views == "cascades")
+  {
+    auto pass = vtkSmartPointer<vtkCascadedShadowMapPass>::New();
+    pass->SetResolution(resolution);
+    return pass;
+  }
+  auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+  pass->SetWarpMode(views == "lispsm" ? vtkWarpedShadowMapPass::LISPSM : vtkWarpedShadowMapPass::UNIFORM);
+  pass->SetResolution(resolution);
+  return pass;
+}
+
+const char* const ViewKinds[] = { "uniform", "lispsm", "cascades" };
+constexpr int Resolution = 2048;
+} // namespace
+
+TEST(ShadowSoft, SunPenumbraWidthOfAnEdgeIsTheDiscs)
+{
+  const double diameter = 4.0;
+  const double elevation = 55.0;
+  const glm::dvec3 towardLight(
+    -std::cos(glm::radians(elevation)), 0.0, std::sin(glm::radians(elevation)));
+  const double sinRadius = std::sin(glm::radians(0.5 * diameter));
+  for (double height : { 0.5, 1.5, 3.0 })
+  {
+    EdgeScene scene(height);
+    scene.SetSun(towardLight, diameter);
+    const double centre = height * towardLight.x / -towardLight.z;
+    const double halfWidth = height * std::tan(glm::radians(0.5 * diameter)) /
+      (towardLight.z * towardLight.z);
+    scene.LookAt({ centre, 0.0, 0.0 }, 12.0 * halfWidth);
+    for (const char* views : ViewKinds)
+    {
+      vtkSmartPointer<vtkRenderPass> pass = MakePass(views, Resolution);
+      const Measured m = MeasurePenumbra(scene, pass,
+        [&](double x) { return EdgeVisibility(x, height, towardLight, sinRadius); }, centre,
+        halfWidth);
+      std::cout << "[ measured ] sun " << diameter << " deg, edge at " << height << ", " << views
+                << ": 10-90% width " << m.Width << " (analytic " << m.Expected << ", "
+                << 100.0 * (m.Width / m.Expected - 1.0) << "%)\n";
+      EXPECT_NEAR(m.Width, m.Expected, 0.1 * m.Expected) << views << " at height " << height;
+      pass->ReleaseGraphicsResources(scene.Window);
+    }
+  }
+}
+
+TEST(ShadowSoft, SpotPenumbraWidthOfAnEdgeIsTheSpheres)
+{
+  const glm::dvec3 lamp(-3.0, 0.0, 8.0);
+  const double radius = 0.4;
+  for (double height : { 0.5, 1.5, 3.0 })
+  {
+    EdgeScene scene(height);
+    // Where the light's centre sees the edge on the ground.
+    const double centre = height * -lamp.x / (lamp.z - height);
+    scene.SetSpot(lamp, { centre, 0.0, 0.0 }, radius);
+    const double halfWidth = radius * height / (lamp.z - height);
+    scene.LookAt({ centre, 0.0, 0.0 }, 12.0 * halfWidth);
+    const auto visibility = [&](double x) {
+      const glm::dvec3 toLamp = lamp - glm::dvec3(x, 0.0, 0.0);
+      return EdgeVisibility(x, height, glm::normalize(toLamp), radius / glm::length(toLamp));
+    };
+    for (const char* views : ViewKinds)
+    {
+      vtkSmartPointer<vtkRenderPass> pass = MakePass(views, Resolution);
+      const Measured m = MeasurePenumbra(scene, pass, visibility, centre, halfWidth);
+      std::cout << "[ measured ] spot radius " << radius << ", edge at " << height << ", " << views
+                << ": 10-90% width " << m.Width << " (analytic " << m.Expected << ", "
+                << 100.0 * (m.Width / m.Expected - 1.0) << "%)\n";
+      EXPECT_NEAR(m.Width, m.Expected, 0.1 * m.Expected) << views << " at height " << height;
+      pass->ReleaseGraphicsResources(scene.Window);
+    }
+  }
+}
+
+// A point light whose edge shadow falls across the boundary of two cube faces
+// (the direction from the light to the penumbra's centre is the faces'
+// diagonal): the width holds, and the profile has no step at the seam, for
+// the uniform cube faces and the post-perspective cube.
+TEST(ShadowSoft, PointPenumbraCrossesCubeFacesWithoutASeam)
+{
+  const double height = 1.0;
+  const glm::dvec3 lamp(-3.0, 0.0, 4.0);
+  const double radius = 0.3;
+  const double centre = height * -lamp.x / (lamp.z - height); // 1: from the lamp, (4, 0, -4)
+  EdgeScene scene(height);
+  scene.SetSpot(lamp, { lamp.x, 0.0, 0.0 }, radius);
+  scene.Light->SetConeAngle(180.0);
+  const double halfWidth = radius * height / (lamp.z - height);
+  scene.LookAt({ centre, 0.0, 0.0 }, 12.0 * halfWidth);
+  const auto visibility = [&](double x) {
+    const glm::dvec3 toLamp = lamp - glm::dvec3(x, 0.0, 0.0);
+    return EdgeVisibility(x, height, glm::normalize(toLamp), radius / glm::length(toLamp));
+  };
+  for (int mode : { vtkWarpedShadowMapPass::UNIFORM, vtkWarpedShadowMapPass::PSM })
+  {
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    pass->SetWarpMode(mode);
+    pass->SetResolution(Resolution);
+    const Measured m = MeasurePenumbra(scene, pass, visibility, centre, halfWidth);
+    std::cout << "[ measured ] point radius " << radius << " across cube faces, warp " << mode
+              << ": 10-90% width " << m.Width << " (analytic " << m.Expected << ")\n";
+    EXPECT_NEAR(m.Width, m.Expected, 0.1 * m.Expected) << "warp " << mode;
+    // No step: neighbouring samples (a 200th of the penumbra apart) differ
+    // by little, and the profile only rises.
+    std::vector<double> xs;
+    for (int i = 0; i <= 200; ++i)
+    {
+      xs.push_back(centre - 1.2 * halfWidth + 2.4 * halfWidth * i / 200.0);
+    }
+    const std::vector<double> factor = scene.FactorAlongX(pass, xs);
+    double largestStep = 0.0;
+    double largestDrop = 0.0;
+    for (std::size_t i = 1; i < factor.size(); ++i)
+    {
+      largestStep = std::max(largestStep, std::abs(factor[i] - factor[i - 1]));
+      largestDrop = std::max(largestDrop, factor[i - 1] - factor[i]);
+    }
+    EXPECT_LT(largestStep, 0.06) << "warp " << mode;
+    EXPECT_LT(largestDrop, 0.04) << "warp " << mode;
+    pass->ReleaseGraphicsResources(scene.Window);
+  }
+}
+
+// Size 0, a negative or non-finite size: the hard shadow, byte for byte, and a
+// warning only for the bad values. A representation without soft shadows
+// (moments, for now) draws the hard shadow with one warning.
+TEST(ShadowSoft, BadSizesAndRepresentationsWithoutSoftShadowsCastHardShadows)
+{
+  EdgeScene scene(1.0);
+  const glm::dvec3 towardLight(-0.5, 0.0, 0.8);
+  scene.SetSun(towardLight, 0.0);
+  scene.Light->GetInformation()->Remove(vtkAbstractShadowMapPass::LIGHT_SIZE());
+  scene.LookAt({ 0.6, 0.0, 0.0 }, 3.0);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  const std::vector<unsigned char> hard =
+    shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window));
+  for (double size : { 0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity() })
+  {
+    scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), size);
+    shadowtest::ErrorCounter counter;
+    EXPECT_EQ(shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window)), hard) << size;
+    shadowtest::RenderAndCapture(scene.Window);
+    EXPECT_EQ(counter.Errors(), 0) << counter.Text();
+    EXPECT_EQ(counter.Warnings(), size == 0.0 ? 0 : 1) << size << ": " << counter.Text();
+    if (size != 0.0)
+    {
+      EXPECT_NE(counter.Text().find("LIGHT_SIZE"), std::string::npos) << counter.Text();
+    }
+  }
+  // A sun wider than 30 degrees is drawn as a 30 degree one.
+  scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 30.0);
+  const std::vector<unsigned char> widest =
+    shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window));
+  EXPECT_NE(widest, hard);
+  scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 50.0);
+  {
+    shadowtest::ErrorCounter counter;
+    EXPECT_EQ(shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window)), widest);
+    EXPECT_EQ(counter.Warnings(), 1) << counter.Text();
+  }
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
+
+  vtkNew<vtkVarianceShadowMapPass> moments;
+  scene.Light->GetInformation()->Remove(vtkAbstractShadowMapPass::LIGHT_SIZE());
+  scene.Renderer->SetPass(moments);
+  const std::vector<unsigned char> hardMoments =
+    shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window));
+  scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 2.0);
+  shadowtest::ErrorCounter counter;
+  EXPECT_EQ(shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window)), hardMoments);
+  shadowtest::RenderAndCapture(scene.Window);
+  EXPECT_EQ(counter.Warnings(), 1) << counter.Text();
+  EXPECT_NE(counter.Text().find("hard shadows"), std::string::npos) << counter.Text();
+  scene.Renderer->SetPass(nullptr);
+  moments->ReleaseGraphicsResources(scene.Window);
+}
