@@ -26,6 +26,7 @@
 const int VTK_SHADOW_BLOCKER_TAPS = 16;
 const int VTK_SHADOW_SOFT_TAPS = 32;
 const float VTK_SHADOW_GOLDEN_ANGLE = 2.39996323;
+const float VTK_SHADOW_MOST_STRETCH = 4.0;
 
 // Tap i of n of a disc of radius 1, evenly spread, turned by `rotation` (cos, sin).
 vec2 vtkShadowDiscTap(int i, int n, vec2 rotation)
@@ -105,42 +106,17 @@ float vtkShadowDistanceToDepth(vec3 tapVC, vec4 tapClip, vec3 tapMap, float stor
   return max((depth * tapClip.w - tapClip.z) / denominator, 0.0);
 }
 
-// Visibility of a sized light at a receiver (positionVC already moved along its
-// normal) whose centre falls in view `view`.
-float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, int view,
-  int viewLayout, int count, int features)
+// Casters in front of the receiver's plane over a disc of `radius` (world, at
+// right angles to the light ray) around the receiver: how many taps found one
+// (x) and their mean distance along the ray (y).
+vec2 vtkShadowSearchBlockers(vec3 positionVC, vec3 axis1, vec3 axis2, float radius,
+  vec2 rotation, int light, int firstView, int view, int viewLayout, int count, int features)
 {
-  vec3 toward = vtkShadowTowardLightAt(positionVC, light);
-  vec4 towardLight = vtkShadowLights[light].TowardLightVC;
-  float lightDistance = length(towardLight.xyz - towardLight.w * positionVC);
-  // The kernel's axes: at right angles to the ray, sheared along it onto the
-  // receiver's plane. Where the light grazes the receiver the disc stretches
-  // far along the plane, as the penumbra does; taps that left the plane would
-  // shadow it.
-  float facing = max(dot(normalVC, toward), 0.02);
-  vec3 side = abs(toward.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
-  vec3 axis1 = normalize(cross(toward, side));
-  vec3 axis2 = cross(toward, axis1);
-  axis1 -= toward * (dot(normalVC, axis1) / facing);
-  axis2 -= toward * (dot(normalVC, axis2) / facing);
-
-  float texel = vtkShadowTexelWorldSize(positionVC, light, firstView, view, features);
-  vec3 centre = vtkShadowMapCoord(
-    vtkShadowMapTransform(firstView, view, positionVC, features), view, features);
-  vec2 rotation = texture(vtkShadowNoise, centre.xy * vtkShadowMapResolution / 32.0).xy;
-
-  // Blocker search over the disc where a blocker can hide part of the light.
-  float reach = vtkShadowBlockerReach(positionVC, light);
-  if (towardLight.w != 0.0)
-  {
-    reach = min(reach, 0.8 * lightDistance);
-  }
-  float search = max(vtkShadowPenumbraHalfWidth(reach, lightDistance, light), texel);
   float blockers = 0.0;
-  float blockerDistance = 0.0;
+  float distance = 0.0;
   for (int i = 0; i < VTK_SHADOW_BLOCKER_TAPS; ++i)
   {
-    vec2 disc = vtkShadowDiscTap(i, VTK_SHADOW_BLOCKER_TAPS, rotation) * search;
+    vec2 disc = vtkShadowDiscTap(i, VTK_SHADOW_BLOCKER_TAPS, rotation) * radius;
     vec3 tapVC = positionVC + disc.x * axis1 + disc.y * axis2;
     int tapView = vtkShadowTapView(tapVC, light, firstView, view, viewLayout, count, features);
     vec4 tapClip = vtkShadowMapTransform(firstView, tapView, tapVC, features);
@@ -153,15 +129,65 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
     if (stored < tapMap.z)
     {
       blockers += 1.0;
-      blockerDistance += vtkShadowDistanceToDepth(
+      distance += vtkShadowDistanceToDepth(
         tapVC, tapClip, tapMap, stored, light, firstView, tapView, features);
     }
   }
-  if (blockers == 0.0)
+  return vec2(blockers, blockers > 0.0 ? distance / blockers : 0.0);
+}
+
+// Visibility of a sized light at a receiver (positionVC already moved along its
+// normal) whose centre falls in view `view`.
+float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, int view,
+  int viewLayout, int count, int features)
+{
+  vec3 toward = vtkShadowTowardLightAt(positionVC, light);
+  vec4 towardLight = vtkShadowLights[light].TowardLightVC;
+  float lightDistance = length(towardLight.xyz - towardLight.w * positionVC);
+  // The kernel's axes: at right angles to the ray, sheared along it onto the
+  // receiver's plane (taps that left the plane would shadow it). Where the
+  // light grazes the receiver the disc stretches along the plane as the
+  // penumbra does, but no further than VTK_SHADOW_MOST_STRETCH times: beyond
+  // that the plane leaves the surface (into the ground at a wall's foot).
+  float facing = max(dot(normalVC, toward), 1e-3);
+  vec3 side = abs(toward.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  vec3 axis1 = normalize(cross(toward, side));
+  vec3 axis2 = cross(toward, axis1);
+  axis1 -= toward * (dot(normalVC, axis1) / facing);
+  axis2 -= toward * (dot(normalVC, axis2) / facing);
+  axis1 *= min(1.0, VTK_SHADOW_MOST_STRETCH / length(axis1));
+  axis2 *= min(1.0, VTK_SHADOW_MOST_STRETCH / length(axis2));
+
+  float texel = vtkShadowTexelWorldSize(positionVC, light, firstView, view, features);
+  vec3 centre = vtkShadowMapCoord(
+    vtkShadowMapTransform(firstView, view, positionVC, features), view, features);
+  vec2 rotation = texture(vtkShadowNoise, centre.xy * vtkShadowMapResolution / 32.0).xy;
+
+  // Blocker search over the disc where a blocker can hide part of the light,
+  // then again over the disc the blockers found there reach: the first disc
+  // also holds casters beyond the receiver's own (the rest of a wall whose
+  // foot it stands at), whose distance would widen a contact's penumbra.
+  float reach = vtkShadowBlockerReach(positionVC, light);
+  if (towardLight.w != 0.0)
+  {
+    reach = min(reach, 0.8 * lightDistance);
+  }
+  float search = max(vtkShadowPenumbraHalfWidth(reach, lightDistance, light), texel);
+  vec2 found = vtkShadowSearchBlockers(positionVC, axis1, axis2, search, rotation, light,
+    firstView, view, viewLayout, count, features);
+  if (found.x == 0.0)
   {
     return 1.0;
   }
-  float penumbra = vtkShadowPenumbraHalfWidth(blockerDistance / blockers, lightDistance, light);
+  float blockerDistance = found.y;
+  float nearer = max(vtkShadowPenumbraHalfWidth(blockerDistance, lightDistance, light), texel);
+  if (nearer < search)
+  {
+    found = vtkShadowSearchBlockers(positionVC, axis1, axis2, nearer, rotation, light, firstView,
+      view, viewLayout, count, features);
+    blockerDistance = found.x > 0.0 ? found.y : blockerDistance;
+  }
+  float penumbra = vtkShadowPenumbraHalfWidth(blockerDistance, lightDistance, light);
   // Half a texel: the maps' bilinear comparison blurs over the other half.
   float radius = max(penumbra, 0.5 * texel);
 

@@ -119,18 +119,28 @@ struct EdgeScene
   /// no ambient light: the ratio of the shadowed to the unshadowed render).
   std::vector<double> FactorAlongX(vtkRenderPass* pass, const std::vector<double>& xs)
   {
+    std::vector<glm::dvec3> points;
+    for (double x : xs)
+    {
+      points.emplace_back(x, 0.0, 0.0);
+    }
+    return this->FactorAt(pass, points);
+  }
+
+  /// The shadow factor at world points (seen in the view).
+  std::vector<double> FactorAt(vtkRenderPass* pass, const std::vector<glm::dvec3>& points)
+  {
     this->Renderer->SetPass(nullptr);
     vtkSmartPointer<vtkImageData> plain = shadowtest::RenderAndCapture(this->Window);
     this->Renderer->SetPass(pass);
     vtkSmartPointer<vtkImageData> shadowed = shadowtest::RenderAndCapture(this->Window);
     this->Renderer->SetPass(nullptr);
     std::vector<double> factor;
-    for (double x : xs)
+    for (const glm::dvec3& point : points)
     {
-      const glm::dvec3 ground(x, 0.0, 0.0);
-      const double lit = shadowtest::LuminanceAt(this->Renderer, plain, ground);
+      const double lit = shadowtest::LuminanceAt(this->Renderer, plain, point);
       factor.push_back(
-        lit > 0.0 ? shadowtest::LuminanceAt(this->Renderer, shadowed, ground) / lit : 1.0);
+        lit > 0.0 ? shadowtest::LuminanceAt(this->Renderer, shadowed, point) / lit : 1.0);
     }
     return factor;
   }
@@ -368,4 +378,58 @@ TEST(ShadowSoft, BadSizesAndRepresentationsWithoutSoftShadowsCastHardShadows)
   EXPECT_NE(counter.Text().find("hard shadows"), std::string::npos) << counter.Text();
   scene.Renderer->SetPass(nullptr);
   moments->ReleaseGraphicsResources(scene.Window);
+}
+
+// Contact hardening: a wall standing on the ground (the plane x = 0, from
+// y = -20 to y = 1, 3 high), a sun from +x 45 degrees up. The shadow of the
+// wall's end (the vertical edge at y = 1) runs along y = 1 from the wall's foot
+// (x = 0) to x = -3: its penumbra is sharp at the foot and widens to about
+// 3 sqrt(2) tan(3 deg) = 0.22 on each side at the far end. And a still
+// camera's frames are the same, byte for byte.
+TEST(ShadowSoft, PenumbraeHardenAtContactAndStillFramesRepeat)
+{
+  EdgeScene scene(3.0);
+  scene.Renderer->RemoveAllViewProps();
+  scene.AddQuad({ -20.0, -20.0, 0.0 }, { 20.0, -20.0, 0.0 }, { -20.0, 20.0, 0.0 });
+  scene.AddQuad({ 0.0, -20.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, -20.0, 3.0 });
+  const double diameter = 6.0;
+  scene.SetSun({ 1.0, 0.0, 1.0 }, diameter);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(-1.5, 1.0, 0.0);
+  camera->SetPosition(-1.5, 0.0, 5.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(40.0);
+  scene.Renderer->ResetCameraClippingRange();
+  for (const char* views : ViewKinds)
+  {
+    vtkSmartPointer<vtkRenderPass> pass = MakePass(views, Resolution);
+    scene.Renderer->SetPass(pass);
+    const auto first = shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window));
+    const auto second = shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window));
+    EXPECT_EQ(first, second) << views << ": a still camera's frames repeat";
+    scene.Renderer->SetPass(nullptr);
+    // Profiles across y = 1 near the foot and toward the far end, 0.01 apart.
+    const auto width = [&](double x) {
+      std::vector<glm::dvec3> points;
+      std::vector<double> ys;
+      for (int i = 0; i <= 80; ++i)
+      {
+        ys.push_back(0.6 + 0.8 * i / 80.0);
+        points.emplace_back(x, ys.back(), 0.0);
+      }
+      const auto factor = scene.FactorAt(pass, points);
+      return std::abs(Crossing(ys, factor, 0.9) - Crossing(ys, factor, 0.1));
+    };
+    const double nearFoot = width(-0.15);
+    // Short of the far end, where the top edge's own penumbra begins.
+    const double farEnd = width(-2.5);
+    // The analytic 10-90% widths: 2 x 0.687 x the penumbra's half width.
+    const double expectedFar = 2.0 * 0.687 * 2.5 * std::sqrt(2.0) * std::tan(glm::radians(3.0));
+    std::cout << "[ measured ] " << views << ": 10-90% width " << nearFoot << " near the foot, "
+              << farEnd << " at the far end (analytic " << expectedFar << ")\n";
+    const double expectedNear = 2.0 * 0.687 * 0.15 * std::sqrt(2.0) * std::tan(glm::radians(3.0));
+    EXPECT_NEAR(farEnd, expectedFar, 0.1 * expectedFar) << views;
+    EXPECT_NEAR(nearFoot, expectedNear, 0.01) << views << ": hard at the contact";
+    pass->ReleaseGraphicsResources(scene.Window);
+  }
 }
