@@ -188,8 +188,8 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
     blockerDistance = found.x > 0.0 ? found.y : blockerDistance;
   }
   float penumbra = vtkShadowPenumbraHalfWidth(blockerDistance, lightDistance, light);
-  // Half a texel: the maps' bilinear comparison blurs over the other half.
-  float radius = max(penumbra, 0.5 * texel);
+  // The maps' bilinear comparison blurs over about half a texel more.
+  float radius = max(penumbra - 0.5 * texel, 0.5 * texel);
 
   // A disc of the penumbra's half width over the map's comparisons.
   float lit = 0.0;
