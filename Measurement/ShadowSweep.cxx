@@ -748,6 +748,56 @@ double Percentile(std::vector<double> values, double fraction)
   const std::size_t rank = static_cast<std::size_t>(std::ceil(fraction * values.size()));
   return values[std::min(values.size() - 1, rank > 0 ? rank - 1 : 0)];
 }
+
+/// Per technique, the distribution of `value` (NaN: the case does not
+/// count) over the cases with at least `minimumCounted` counted pixels, and
+/// the uniform map's worst of the same value.
+template <typename Value>
+std::vector<Distribution> SummariseBy(
+  const std::vector<CaseResult>& results, int minimumCounted, Value value)
+{
+  std::vector<Distribution> distributions;
+  if (results.empty())
+  {
+    return distributions;
+  }
+  for (std::size_t t = 0; t < results.front().Techniques.size(); ++t)
+  {
+    Distribution d;
+    d.Technique = results.front().Techniques[t].Technique;
+    d.UniformWorst = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> values;
+    for (const CaseResult& result : results)
+    {
+      const TechniqueResult& measured = result.Techniques[t];
+      d.Flagged += measured.Flagged() ? 1 : 0;
+      const double figure = value(measured);
+      if (result.Counted < minimumCounted || std::isnan(figure))
+      {
+        continue;
+      }
+      values.push_back(figure);
+      if (values.size() == 1 || figure > d.Worst)
+      {
+        d.Worst = figure;
+        d.WorstSeed = result.Drawn.Seed;
+      }
+      const TechniqueResult* uniform = Find(result, "uniform");
+      const double uniformFigure =
+        uniform ? value(*uniform) : std::numeric_limits<double>::quiet_NaN();
+      if (!std::isnan(uniformFigure))
+      {
+        d.UniformWorst =
+          std::isnan(d.UniformWorst) ? uniformFigure : std::max(d.UniformWorst, uniformFigure);
+      }
+    }
+    d.Cases = static_cast<int>(values.size());
+    d.Median = Percentile(values, 0.5);
+    d.Percentile95 = Percentile(values, 0.95);
+    distributions.push_back(d);
+  }
+  return distributions;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -831,89 +881,17 @@ std::string Describe(const Case& drawn)
 //------------------------------------------------------------------------------
 std::vector<Distribution> Summarise(const std::vector<CaseResult>& results, int minimumCounted)
 {
-  std::vector<Distribution> distributions;
-  if (results.empty())
-  {
-    return distributions;
-  }
-  for (std::size_t t = 0; t < results.front().Techniques.size(); ++t)
-  {
-    Distribution d;
-    d.Technique = results.front().Techniques[t].Technique;
-    d.UniformWorst = std::numeric_limits<double>::quiet_NaN();
-    std::vector<double> values;
-    for (const CaseResult& result : results)
-    {
-      const TechniqueResult& measured = result.Techniques[t];
-      d.Flagged += measured.Flagged() ? 1 : 0;
-      if (result.Counted < minimumCounted)
-      {
-        continue;
-      }
-      values.push_back(measured.Errors.Misclassified);
-      if (values.size() == 1 || measured.Errors.Misclassified > d.Worst)
-      {
-        d.Worst = measured.Errors.Misclassified;
-        d.WorstSeed = result.Drawn.Seed;
-      }
-      const double uniform = UniformMisclassified(result);
-      if (!std::isnan(uniform))
-      {
-        d.UniformWorst = std::isnan(d.UniformWorst) ? uniform : std::max(d.UniformWorst, uniform);
-      }
-    }
-    d.Cases = static_cast<int>(values.size());
-    d.Median = Percentile(values, 0.5);
-    d.Percentile95 = Percentile(values, 0.95);
-    distributions.push_back(d);
-  }
-  return distributions;
+  return SummariseBy(results, minimumCounted,
+    [](const TechniqueResult& t) { return t.Errors.Misclassified; });
 }
 
 //------------------------------------------------------------------------------
 std::vector<Distribution> SummariseVisibility(
   const std::vector<CaseResult>& results, int minimumCounted)
 {
-  std::vector<Distribution> distributions;
-  if (results.empty())
-  {
-    return distributions;
-  }
-  for (std::size_t t = 0; t < results.front().Techniques.size(); ++t)
-  {
-    Distribution d;
-    d.Technique = results.front().Techniques[t].Technique;
-    d.UniformWorst = std::numeric_limits<double>::quiet_NaN();
-    std::vector<double> values;
-    for (const CaseResult& result : results)
-    {
-      const TechniqueResult& measured = result.Techniques[t];
-      d.Flagged += measured.Flagged() ? 1 : 0;
-      if (result.Counted < minimumCounted || !measured.Sized)
-      {
-        continue;
-      }
-      const double error = measured.Visibility.MeanAbsolute;
-      values.push_back(error);
-      if (values.size() == 1 || error > d.Worst)
-      {
-        d.Worst = error;
-        d.WorstSeed = result.Drawn.Seed;
-      }
-      const TechniqueResult* uniform = Find(result, "uniform");
-      if (uniform && uniform->Sized)
-      {
-        d.UniformWorst = std::isnan(d.UniformWorst)
-          ? uniform->Visibility.MeanAbsolute
-          : std::max(d.UniformWorst, uniform->Visibility.MeanAbsolute);
-      }
-    }
-    d.Cases = static_cast<int>(values.size());
-    d.Median = Percentile(values, 0.5);
-    d.Percentile95 = Percentile(values, 0.95);
-    distributions.push_back(d);
-  }
-  return distributions;
+  return SummariseBy(results, minimumCounted, [](const TechniqueResult& t) {
+    return t.Sized ? t.Visibility.MeanAbsolute : std::numeric_limits<double>::quiet_NaN();
+  });
 }
 
 //------------------------------------------------------------------------------

@@ -51,6 +51,17 @@ int vtkShadowTapView(vec3 tapVC, int light, int firstView, int view, int viewLay
   return view;
 }
 
+// A kernel's tap in the maps: the view that holds it, its clip and map
+// coordinates; false outside that view's map.
+bool vtkShadowTapInMap(vec3 tapVC, int light, int firstView, int view, int viewLayout, int count,
+  int features, out int tapView, out vec4 tapClip, out vec3 tapMap)
+{
+  tapView = vtkShadowTapView(tapVC, light, firstView, view, viewLayout, count, features);
+  tapClip = vtkShadowMapTransform(firstView, tapView, tapVC, features);
+  tapMap = vtkShadowMapCoord(tapClip, tapView, features);
+  return vtkShadowInsideMap(tapClip, tapView, features);
+}
+
 // Unit vector from a point toward the light.
 vec3 vtkShadowTowardLightAt(vec3 pointVC, int light)
 {
@@ -118,10 +129,11 @@ vec2 vtkShadowSearchBlockers(vec3 positionVC, vec3 axis1, vec3 axis2, float radi
   {
     vec2 disc = vtkShadowDiscTap(i, VTK_SHADOW_BLOCKER_TAPS, rotation) * radius;
     vec3 tapVC = positionVC + disc.x * axis1 + disc.y * axis2;
-    int tapView = vtkShadowTapView(tapVC, light, firstView, view, viewLayout, count, features);
-    vec4 tapClip = vtkShadowMapTransform(firstView, tapView, tapVC, features);
-    vec3 tapMap = vtkShadowMapCoord(tapClip, tapView, features);
-    if (!vtkShadowInsideMap(tapClip, tapView, features))
+    int tapView;
+    vec4 tapClip;
+    vec3 tapMap;
+    if (!vtkShadowTapInMap(
+          tapVC, light, firstView, view, viewLayout, count, features, tapView, tapClip, tapMap))
     {
       continue;
     }
@@ -197,10 +209,11 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
   {
     vec2 disc = vtkShadowDiscTap(i, VTK_SHADOW_SOFT_TAPS, rotation) * radius;
     vec3 tapVC = positionVC + disc.x * axis1 + disc.y * axis2;
-    int tapView = vtkShadowTapView(tapVC, light, firstView, view, viewLayout, count, features);
-    vec4 tapClip = vtkShadowMapTransform(firstView, tapView, tapVC, features);
-    vec3 tapMap = vtkShadowMapCoord(tapClip, tapView, features);
-    lit += vtkShadowInsideMap(tapClip, tapView, features)
+    int tapView;
+    vec4 tapClip;
+    vec3 tapMap;
+    lit += vtkShadowTapInMap(
+             tapVC, light, firstView, view, viewLayout, count, features, tapView, tapClip, tapMap)
       ? vtkShadowCompare(tapMap.xy, tapMap.z, tapView)
       : 1.0;
   }
