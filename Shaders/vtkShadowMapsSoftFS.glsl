@@ -119,12 +119,14 @@ float vtkShadowDistanceToDepth(vec3 tapVC, vec4 tapClip, vec3 tapMap, float stor
 
 // Casters in front of the receiver's plane over a disc of `radius` (world, at
 // right angles to the light ray) around the receiver: how many taps found one
-// (x) and their mean distance along the ray (y).
-vec2 vtkShadowSearchBlockers(vec3 positionVC, vec3 axis1, vec3 axis2, float radius,
+// (x), their mean distance along the ray (y) and how many taps fell in a map
+// (z).
+vec3 vtkShadowSearchBlockers(vec3 positionVC, vec3 axis1, vec3 axis2, float radius,
   vec2 rotation, int light, int firstView, int view, int viewLayout, int count, int features)
 {
   float blockers = 0.0;
   float distance = 0.0;
+  float inside = 0.0;
   for (int i = 0; i < VTK_SHADOW_BLOCKER_TAPS; ++i)
   {
     vec2 disc = vtkShadowDiscTap(i, VTK_SHADOW_BLOCKER_TAPS, rotation) * radius;
@@ -137,6 +139,7 @@ vec2 vtkShadowSearchBlockers(vec3 positionVC, vec3 axis1, vec3 axis2, float radi
     {
       continue;
     }
+    inside += 1.0;
     float stored = vtkShadowBlockerDepth(tapMap.xy, tapView);
     if (stored < tapMap.z)
     {
@@ -145,7 +148,7 @@ vec2 vtkShadowSearchBlockers(vec3 positionVC, vec3 axis1, vec3 axis2, float radi
         tapVC, tapClip, tapMap, stored, light, firstView, tapView, features);
     }
   }
-  return vec2(blockers, blockers > 0.0 ? distance / blockers : 0.0);
+  return vec3(blockers, blockers > 0.0 ? distance / blockers : 0.0, inside);
 }
 
 // Visibility of a sized light at a receiver (positionVC already moved along its
@@ -185,8 +188,13 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
     reach = min(reach, 0.8 * lightDistance);
   }
   float search = max(vtkShadowPenumbraHalfWidth(reach, lightDistance, light), texel);
-  vec2 found = vtkShadowSearchBlockers(positionVC, axis1, axis2, search, rotation, light,
+  vec3 found = vtkShadowSearchBlockers(positionVC, axis1, axis2, search, rotation, light,
     firstView, view, viewLayout, count, features);
+  if (found.z == 0.0)
+  {
+    // A disc wider than the maps around a receiver at their rim: the hard shadow.
+    return vtkShadowCompare(centre.xy, centre.z, view);
+  }
   if (found.x == 0.0)
   {
     return 1.0;
@@ -203,8 +211,10 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
   // The maps' bilinear comparison blurs over about half a texel more.
   float radius = max(penumbra - 0.5 * texel, 0.5 * texel);
 
-  // A disc of the penumbra's half width over the map's comparisons.
+  // A disc of the penumbra's half width over the map's comparisons; taps
+  // beyond the maps do not count.
   float lit = 0.0;
+  float inside = 0.0;
   for (int i = 0; i < VTK_SHADOW_SOFT_TAPS; ++i)
   {
     vec2 disc = vtkShadowDiscTap(i, VTK_SHADOW_SOFT_TAPS, rotation) * radius;
@@ -212,10 +222,12 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
     int tapView;
     vec4 tapClip;
     vec3 tapMap;
-    lit += vtkShadowTapInMap(
-             tapVC, light, firstView, view, viewLayout, count, features, tapView, tapClip, tapMap)
-      ? vtkShadowCompare(tapMap.xy, tapMap.z, tapView)
-      : 1.0;
+    if (vtkShadowTapInMap(
+          tapVC, light, firstView, view, viewLayout, count, features, tapView, tapClip, tapMap))
+    {
+      lit += vtkShadowCompare(tapMap.xy, tapMap.z, tapView);
+      inside += 1.0;
+    }
   }
-  return lit / float(VTK_SHADOW_SOFT_TAPS);
+  return inside > 0.0 ? lit / inside : vtkShadowCompare(centre.xy, centre.z, view);
 }

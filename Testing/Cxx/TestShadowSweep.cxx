@@ -285,6 +285,26 @@ TEST(ShadowSweepDefects, PSMCubeOfALightAmongTheReceiversHasNoAcne)
   EXPECT_LT(Misclassified(result, "psm"), 0.5); // 0.00 after the fix
 }
 
+// Sized-light sweep (--lights sized, seed 40) case 8974905881529135808: a
+// street-level camera in the city sees a strip of wall by a spot 3.1 in
+// radius. The soft shadows' blocker search spread its disc beyond the spot's
+// map, found no caster in it and lit the wall (100% misclassified, the hard
+// filter 0): taps beyond the maps no longer count, and a disc with none
+// inside keeps the hard shadow.
+TEST(ShadowSweepDefects, SoftKernelWiderThanTheMapsKeepsTheShadow)
+{
+  Case drawn = CityCase({ 9.70104981, 74.4174163, 2.3821113 },
+    { 90.8211052, 74.4174163, -11.3783483 }, 19.4, 0.0603944, 269.568, 208, 214);
+  SetLight(drawn, LightKind::Spot, { -81.0271995, -71.3854717, 13.7687159 },
+    { -38.8065383, 94.0083326, 23.4412747 }, 44.8511);
+  drawn.Light.Size = 3.07148;
+  const CaseResult result = MeasureOne(drawn, { "uniform", "poisson-r2" });
+  ASSERT_GT(result.TruthShadowed, 250);
+  ExpectNoFlags(result);
+  EXPECT_LT(Misclassified(result, "poisson-r2"), 1.0);
+  EXPECT_LT(Misclassified(result, "uniform"), 1.0); // 100 before the fix
+}
+
 // Sweep seed 11504923083347240446: a parallel camera high over the outdoor
 // scene with a camera spot light. The camera's axis crossed the spot's space
 // beside B, its near-plane centre and focus point lay before the hull's top,
