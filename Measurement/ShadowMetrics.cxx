@@ -133,6 +133,12 @@ VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
   int height)
 {
   VisibilityErrors result;
+  if (factor.size() != visibility.size())
+  {
+    result.MeanAbsolute = result.Percentile95 = result.UmbraPure = result.LitPure =
+      result.UmbraBehindSeveralPure = std::numeric_limits<double>::quiet_NaN();
+    return result;
+  }
   result.AtHalf = Classify(TruthAtHalf(visibility), factor, width, height);
   std::vector<double> errors;
   std::int64_t umbraPure = 0;

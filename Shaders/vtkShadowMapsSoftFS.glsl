@@ -197,7 +197,9 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
   }
   if (found.x == 0.0)
   {
-    return 1.0;
+    // A caster thinner than the taps' spacing (a pole, a wire) may slip
+    // between them: the hard shadow of the centre still holds.
+    return vtkShadowCompare(centre.xy, centre.z, view);
   }
   float blockerDistance = found.y;
   float nearer = max(vtkShadowPenumbraHalfWidth(blockerDistance, lightDistance, light), texel);
@@ -208,8 +210,12 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
     blockerDistance = found.x > 0.0 ? found.y : blockerDistance;
   }
   float penumbra = vtkShadowPenumbraHalfWidth(blockerDistance, lightDistance, light);
+#if VTK_SHADOW_FILTER == 0
+  float radius = max(penumbra, 0.5 * texel);
+#else
   // The maps' bilinear comparison blurs over about half a texel more.
   float radius = max(penumbra - 0.5 * texel, 0.5 * texel);
+#endif
 
   // A disc of the penumbra's half width over the map's comparisons; taps
   // beyond the maps do not count.

@@ -296,6 +296,7 @@ ReceiverUniforms::Light ReceiverUniforms::PackLight(
   {
     packed.TowardLightVC = glm::vec4(glm::normalize(glm::vec3(packed.TowardLightVC)), 0.0f);
   }
+  packed.Sized = light.Size > 0.0; // the SizedLight feature's condition
   packed.Size = static_cast<float>(sun ? std::tan(glm::radians(0.5 * light.Size)) : light.Size);
   return packed;
 }
@@ -390,7 +391,7 @@ void ReceiverUniforms::Apply(vtkShaderProgram* program, const ReceiverTextureUni
     program->SetUniform4f(names[5].c_str(), glm::value_ptr(light.DepthPlane));
     program->SetUniform3f(names[6].c_str(), glm::value_ptr(light.DepthOrigin));
     program->SetUniformf(names[7].c_str(), light.DepthPerDistance);
-    if (light.Size > 0.0f)
+    if (light.Sized)
     {
       program->SetUniform4f(names[8].c_str(), glm::value_ptr(light.TowardLightVC));
       program->SetUniformf(names[9].c_str(), light.Size);

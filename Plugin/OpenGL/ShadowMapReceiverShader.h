@@ -135,6 +135,7 @@ private:
     float DepthPerDistance = 0.0f;
     glm::vec4 TowardLightVC{ 0.0f };
     float Size = 0.0f;
+    bool Sized = false;
   };
   static View PackView(const ShadowLight& light, std::size_t index, const glm::dmat4& viewToWorld);
   static Light PackLight(const ShadowLight& light, const glm::dmat4& cameraView);

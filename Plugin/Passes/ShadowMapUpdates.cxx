@@ -102,6 +102,12 @@ double ReachMargin(const ShadowLight& light, size_t index, const std::vector<glm
 {
   const double texel = CoarsestTexel(light, light.Views[index], body);
   const double first = CoarsestTexel(light, light.Views.front(), body);
+  if (light.Size > 0.0)
+  {
+    // A sized light's soft kernels have a world size of their own, as wide as
+    // the largest penumbra: every caster in the view may reach a receiver.
+    return std::numeric_limits<double>::infinity();
+  }
   return filterReachTexels * std::max(texel, first) + (normalOffsetTexels + 1.0) * texel;
 }
 
@@ -208,6 +214,8 @@ std::vector<vtkMTimeType> MapUpdates::Signature(const MapInputs& inputs, const S
   {
     signature.push_back(reinterpret_cast<vtkMTimeType>(light.Light));
     signature.push_back(light.Light->GetMTime());
+    // A light's MTime does not follow its information (LIGHT_SIZE).
+    AppendBits(light.Size, signature);
   }
   for (const auto& caster : casters)
   {

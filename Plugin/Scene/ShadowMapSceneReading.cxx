@@ -34,10 +34,8 @@ double LightSizeOf(vtkLight* light, vtkInformationDoubleKey* key, bool* clamped)
   vtkInformation* info = light ? light->GetInformation() : nullptr;
   const double stored = info && info->Has(key) ? info->Get(key) : 0.0;
   double size = std::isfinite(stored) ? std::max(stored, 0.0) : 0.0;
-  if (light && !light->GetPositional())
-  {
-    size = std::min(size, WidestSun);
-  }
+  // Suns at most WidestSun; lamps finite in the shaders' single precision.
+  size = std::min(size, light && !light->GetPositional() ? WidestSun : 1e30);
   if (clamped)
   {
     *clamped = !(size == stored);

@@ -40,7 +40,8 @@ bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key);
 constexpr double WidestSun = 30.0;
 
 /// The light's size stored under `key` (vtkAbstractShadowMapPass::LIGHT_SIZE):
-/// 0 when absent, not finite or negative, a sun's at most WidestSun. Sets
+/// 0 when absent, not finite or negative, a sun's at most WidestSun, a
+/// positional light's at most 1e30 (single precision). Sets
 /// `clamped` (when given) to whether that changed the stored value.
 double LightSizeOf(vtkLight* light, vtkInformationDoubleKey* key, bool* clamped = nullptr);
 

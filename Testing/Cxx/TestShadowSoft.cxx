@@ -7,6 +7,7 @@
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkDepthShadowMapRepresentation.h"
+#include "vtkDualDepthShadowMapPass.h"
 #include "vtkVarianceShadowMapPass.h"
 #include "vtkWarpedShadowMapPass.h"
 
@@ -365,19 +366,60 @@ TEST(ShadowSoft, BadSizesAndRepresentationsWithoutSoftShadowsCastHardShadows)
   scene.Renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(scene.Window);
 
+  // Representations without soft shadows: the hard shadow, one warning.
   vtkNew<vtkVarianceShadowMapPass> moments;
+  vtkNew<vtkDualDepthShadowMapPass> dual;
+  for (vtkAbstractShadowMapPass* hardOnly :
+    { static_cast<vtkAbstractShadowMapPass*>(moments), static_cast<vtkAbstractShadowMapPass*>(dual) })
+  {
+    scene.Light->GetInformation()->Remove(vtkAbstractShadowMapPass::LIGHT_SIZE());
+    scene.Renderer->SetPass(hardOnly);
+    const std::vector<unsigned char> hardFrame =
+      shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window));
+    EXPECT_NE(hardFrame, widest) << hardOnly->GetClassName() << " draws a shadow";
+    scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 2.0);
+    shadowtest::ErrorCounter counter;
+    EXPECT_EQ(shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window)), hardFrame)
+      << hardOnly->GetClassName();
+    shadowtest::RenderAndCapture(scene.Window);
+    EXPECT_EQ(counter.Errors(), 0) << counter.Text();
+    EXPECT_EQ(counter.Warnings(), 1) << counter.Text();
+    EXPECT_NE(counter.Text().find("hard shadows"), std::string::npos) << counter.Text();
+    EXPECT_EQ(hardOnly->GetNumberOfShadowedLights(), 1) << hardOnly->GetClassName();
+    scene.Renderer->SetPass(nullptr);
+    hardOnly->ReleaseGraphicsResources(scene.Window);
+  }
+}
+
+// A still camera: giving the light a size, changing it and taking it away each
+// redraw the shadow at once (a light's MTime does not follow its information),
+// and taking it away gives back the hard frame byte for byte.
+TEST(ShadowSoft, ChangingTheSizeRedrawsAtOnce)
+{
+  EdgeScene scene(1.0);
+  scene.SetSun({ -0.5, 0.0, 0.8 }, 0.0);
+  scene.LookAt({ 0.6, 0.0, 0.0 }, 3.0);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  const auto frame = [&]() {
+    scene.Window->Render();
+    return shadowtest::RgbBytes(shadowtest::CaptureAsRendered(scene.Window));
+  };
+  const auto hard = frame();
+  EXPECT_EQ(frame(), hard);
+  scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 4.0);
+  const auto soft = frame();
+  EXPECT_NE(soft, hard);
+  scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 8.0);
+  const auto softer = frame();
+  EXPECT_NE(softer, soft);
   scene.Light->GetInformation()->Remove(vtkAbstractShadowMapPass::LIGHT_SIZE());
-  scene.Renderer->SetPass(moments);
-  const std::vector<unsigned char> hardMoments =
-    shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window));
-  scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 2.0);
-  shadowtest::ErrorCounter counter;
-  EXPECT_EQ(shadowtest::RgbBytes(shadowtest::RenderAndCapture(scene.Window)), hardMoments);
-  shadowtest::RenderAndCapture(scene.Window);
-  EXPECT_EQ(counter.Warnings(), 1) << counter.Text();
-  EXPECT_NE(counter.Text().find("hard shadows"), std::string::npos) << counter.Text();
+  EXPECT_EQ(frame(), hard);
+  pass->SoftShadowsOff();
+  scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 4.0);
+  EXPECT_EQ(frame(), hard) << "SoftShadowsOff draws the hard shadow";
   scene.Renderer->SetPass(nullptr);
-  moments->ReleaseGraphicsResources(scene.Window);
+  pass->ReleaseGraphicsResources(scene.Window);
 }
 
 // Contact hardening: a wall standing on the ground (the plane x = 0, from
