@@ -112,7 +112,8 @@ public:
    * real sun's is about 0.53), a positional light's radius in world units
    * (spots and point lights are spheres). Absent or 0: a point source, hard
    * shadows. OSPRay's light node calls the same quantities RADIUS, in the same
-   * units (ParaView's light Radius).
+   * units (ParaView's light Radius): where VTK's ray tracing module is loaded, a
+   * light with an OSPRay radius and no LIGHT_SIZE takes that radius.
    */
   static vtkInformationDoubleKey* LIGHT_SIZE();
 

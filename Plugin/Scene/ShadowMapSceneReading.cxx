@@ -7,6 +7,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
+#include "vtkInformationKeyLookup.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
@@ -29,10 +30,22 @@ bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
 }
 
 //------------------------------------------------------------------------------
+vtkInformationDoubleKey* OSPRayRadiusKey()
+{
+  // Registered by name when VTK's ray tracing module is loaded; nullptr else.
+  return vtkInformationDoubleKey::SafeDownCast(
+    vtkInformationKeyLookup::Find("RADIUS", "vtkOSPRayLightNode"));
+}
+
+//------------------------------------------------------------------------------
 double LightSizeOf(vtkLight* light, vtkInformationDoubleKey* key, bool* clamped)
 {
   vtkInformation* info = light ? light->GetInformation() : nullptr;
-  const double stored = info && info->Has(key) ? info->Get(key) : 0.0;
+  vtkInformationDoubleKey* radius = OSPRayRadiusKey();
+  const double stored = !info       ? 0.0
+    : info->Has(key)                ? info->Get(key)
+    : radius && info->Has(radius)   ? info->Get(radius)
+                                    : 0.0;
   double size = std::isfinite(stored) ? std::max(stored, 0.0) : 0.0;
   // Suns at most WidestSun; lamps finite in the shaders' single precision.
   size = std::min(size, light && !light->GetPositional() ? WidestSun : 1e30);

@@ -39,7 +39,12 @@ bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key);
 /// Suns wider than this (degrees) are clamped to it: wider is a lamp.
 constexpr double WidestSun = 30.0;
 
-/// The light's size stored under `key` (vtkAbstractShadowMapPass::LIGHT_SIZE):
+/// OSPRay's light radius key (vtkOSPRayLightNode::RADIUS, which ParaView's
+/// Light Inspector sets), found by name: nullptr without VTK's ray tracing.
+vtkInformationDoubleKey* OSPRayRadiusKey();
+
+/// The light's size stored under `key` (vtkAbstractShadowMapPass::LIGHT_SIZE),
+/// or else under OSPRayRadiusKey() (the same units):
 /// 0 when absent, not finite or negative, a sun's at most WidestSun, a
 /// positional light's at most 1e30 (single precision). Sets
 /// `clamped` (when given) to whether that changed the stored value.

@@ -4,6 +4,7 @@
 // contact hardening; hard shadows untouched by the soft code; bad sizes.
 #include "ShadowTestUtilities.h"
 
+#include "ShadowMapSceneReading.h"
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkDepthShadowMapRepresentation.h"
@@ -38,6 +39,15 @@
 
 namespace
 {
+// Stands in for VTK's ray tracing module, not loaded here: its light node's
+// RADIUS key, registered by the same name and place.
+class vtkOSPRayLightNode
+{
+public:
+  static vtkInformationDoubleKey* RADIUS();
+};
+vtkInformationKeyMacro(vtkOSPRayLightNode, RADIUS, Double);
+
 constexpr double Pi = 3.14159265358979323846;
 
 /// The fraction of a uniform unit disc on the side u < c of a line.
@@ -474,4 +484,32 @@ TEST(ShadowSoft, PenumbraeHardenAtContactAndStillFramesRepeat)
     EXPECT_NEAR(nearFoot, expectedNear, 0.01) << views << ": hard at the contact";
     pass->ReleaseGraphicsResources(scene.Window);
   }
+}
+
+// A light sized for OSPRay (vtkOSPRayLightNode::RADIUS, ParaView's light
+// Radius) and without LIGHT_SIZE casts the same soft shadow; LIGHT_SIZE wins
+// where both are set.
+TEST(ShadowSoft, OSPRayRadiusSizesTheLight)
+{
+  ASSERT_EQ(shadowmaps::OSPRayRadiusKey(), vtkOSPRayLightNode::RADIUS());
+  EdgeScene scene(1.0);
+  scene.SetSun({ -0.5, 0.0, 0.8 }, 4.0);
+  scene.LookAt({ 0.6, 0.0, 0.0 }, 3.0);
+  vtkNew<vtkWarpedShadowMapPass> pass;
+  scene.Renderer->SetPass(pass);
+  const auto frame = [&]() {
+    scene.Window->Render();
+    return shadowtest::RgbBytes(shadowtest::CaptureAsRendered(scene.Window));
+  };
+  const auto sized = frame();
+  scene.Light->GetInformation()->Remove(vtkAbstractShadowMapPass::LIGHT_SIZE());
+  const auto hard = frame();
+  EXPECT_NE(sized, hard);
+  scene.Light->GetInformation()->Set(vtkOSPRayLightNode::RADIUS(), 4.0);
+  EXPECT_EQ(vtkAbstractShadowMapPass::GetLightSize(scene.Light), 4.0);
+  EXPECT_EQ(frame(), sized);
+  scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 0.0);
+  EXPECT_EQ(frame(), hard) << "LIGHT_SIZE 0 says hard, whatever OSPRay's radius";
+  scene.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(scene.Window);
 }
