@@ -563,10 +563,15 @@ void vtkAbstractShadowMapPass::WarnAboutLightSizes(const std::vector<vtkLight*>&
   if (!clamped.empty())
   {
     vtkInformation* info = clamped.front()->GetInformation();
+    vtkInformationDoubleKey* radius = shadowmaps::OSPRayRadiusKey();
+    const double stored = info->Has(LIGHT_SIZE()) ? info->Get(LIGHT_SIZE())
+      : radius && info->Has(radius)               ? info->Get(radius)
+                                                  : 0.0;
     warning << clamped.size()
-            << " light(s) have a LIGHT_SIZE that is not finite, negative, or a sun wider than "
-            << shadowmaps::WidestSun << " degrees: the first's " << info->Get(LIGHT_SIZE())
-            << " is taken as " << shadowmaps::LightSizeOf(clamped.front(), LIGHT_SIZE()) << ". ";
+            << " light(s) have a LIGHT_SIZE (or OSPRay radius) that is not finite, negative, or a "
+               "sun wider than "
+            << shadowmaps::WidestSun << " degrees: the first's " << stored << " is taken as "
+            << shadowmaps::LightSizeOf(clamped.front(), LIGHT_SIZE()) << ". ";
   }
   if (!this->SoftShadows)
   {

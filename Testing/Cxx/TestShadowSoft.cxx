@@ -508,6 +508,15 @@ TEST(ShadowSoft, OSPRayRadiusSizesTheLight)
   scene.Light->GetInformation()->Set(vtkOSPRayLightNode::RADIUS(), 4.0);
   EXPECT_EQ(vtkAbstractShadowMapPass::GetLightSize(scene.Light), 4.0);
   EXPECT_EQ(frame(), sized);
+  {
+    // A bad radius is named as such.
+    scene.Light->GetInformation()->Set(vtkOSPRayLightNode::RADIUS(), 50.0);
+    shadowtest::ErrorCounter counter;
+    frame();
+    EXPECT_EQ(counter.Warnings(), 1) << counter.Text();
+    EXPECT_NE(counter.Text().find("first's 50 is taken as 30"), std::string::npos)
+      << counter.Text();
+  }
   scene.Light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), 0.0);
   EXPECT_EQ(frame(), hard) << "LIGHT_SIZE 0 says hard, whatever OSPRay's radius";
   scene.Renderer->SetPass(nullptr);
