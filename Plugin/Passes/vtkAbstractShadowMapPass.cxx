@@ -562,43 +562,32 @@ void vtkAbstractShadowMapPass::WarnAboutLightSizes(const std::vector<vtkLight*>&
   std::ostringstream warning;
   if (!clamped.empty())
   {
-    vtkInformation* info = clamped.front()->GetInformation();
-    vtkInformationDoubleKey* radius = shadowmaps::OSPRayRadiusKey();
-    const double stored = info->Has(LIGHT_SIZE()) ? info->Get(LIGHT_SIZE())
-      : radius && info->Has(radius)               ? info->Get(radius)
-                                                  : 0.0;
+    const double stored = shadowmaps::StoredLightSize(clamped.front(), LIGHT_SIZE());
     warning << clamped.size()
             << " light(s) have a LIGHT_SIZE (or OSPRay radius) that is not finite, negative, or a "
                "sun wider than "
             << shadowmaps::WidestSun << " degrees: the first's " << stored << " is taken as "
             << shadowmaps::LightSizeOf(clamped.front(), LIGHT_SIZE()) << ". ";
   }
-  if (!this->SoftShadows)
-  {
-    for (shadowmaps::ShadowLight& light : r.Lights)
-    {
-      light.Size = 0.0;
-    }
-  }
   const bool sized = std::any_of(r.Lights.begin(), r.Lights.end(),
     [](const shadowmaps::ShadowLight& light) { return light.Size > 0.0; });
   const bool samplers = shadowmaps::SamplerObjectsAvailable();
-  if (sized && (!r.Representation->GetSupportsSizedLights() || !samplers))
+  if (sized && this->SoftShadows && !samplers)
   {
-    if (!samplers)
-    {
-      warning << "This OpenGL has no sampler objects (3.3): lights with a LIGHT_SIZE cast hard "
-                 "shadows.";
-    }
-    else
-    {
-      warning << r.Representation->GetClassName()
-              << " draws hard shadows of lights with a LIGHT_SIZE: soft shadows come from "
-                 "vtkDepthShadowMapRepresentation for now.";
-    }
+    warning << "This OpenGL has no sampler objects (3.3): lights with a LIGHT_SIZE cast hard "
+               "shadows.";
+  }
+  else if (sized && this->SoftShadows && !r.Representation->GetSupportsSizedLights())
+  {
+    warning << r.Representation->GetClassName()
+            << " draws hard shadows of lights with a LIGHT_SIZE: soft shadows come from "
+               "vtkDepthShadowMapRepresentation for now.";
+  }
+  if (!this->SoftShadows || !samplers || !r.Representation->GetSupportsSizedLights())
+  {
     for (shadowmaps::ShadowLight& light : r.Lights)
     {
-      light.Size = 0.0;
+      light.Size = 0.0; // hard shadows
     }
   }
   if (!warning.str().empty() && warning.str() != r.WarnedLightSizes)

@@ -32,20 +32,32 @@ bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
 //------------------------------------------------------------------------------
 vtkInformationDoubleKey* OSPRayRadiusKey()
 {
-  // Registered by name when VTK's ray tracing module is loaded; nullptr else.
-  return vtkInformationDoubleKey::SafeDownCast(
-    vtkInformationKeyLookup::Find("RADIUS", "vtkOSPRayLightNode"));
+  // Registered by name when VTK's ray tracing module is loaded (which may be
+  // after the first frame): looked up until found.
+  static vtkInformationDoubleKey* found = nullptr;
+  if (!found)
+  {
+    found = vtkInformationDoubleKey::SafeDownCast(
+      vtkInformationKeyLookup::Find("RADIUS", "vtkOSPRayLightNode"));
+  }
+  return found;
+}
+
+//------------------------------------------------------------------------------
+double StoredLightSize(vtkLight* light, vtkInformationDoubleKey* key)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  vtkInformationDoubleKey* radius = OSPRayRadiusKey();
+  return !info                    ? 0.0
+    : info->Has(key)              ? info->Get(key)
+    : radius && info->Has(radius) ? info->Get(radius)
+                                  : 0.0;
 }
 
 //------------------------------------------------------------------------------
 double LightSizeOf(vtkLight* light, vtkInformationDoubleKey* key, bool* clamped)
 {
-  vtkInformation* info = light ? light->GetInformation() : nullptr;
-  vtkInformationDoubleKey* radius = OSPRayRadiusKey();
-  const double stored = !info       ? 0.0
-    : info->Has(key)                ? info->Get(key)
-    : radius && info->Has(radius)   ? info->Get(radius)
-                                    : 0.0;
+  const double stored = StoredLightSize(light, key);
   double size = std::isfinite(stored) ? std::max(stored, 0.0) : 0.0;
   // Suns at most WidestSun; lamps finite in the shaders' single precision.
   size = std::min(size, light && !light->GetPositional() ? WidestSun : 1e30);

@@ -43,8 +43,11 @@ constexpr double WidestSun = 30.0;
 /// Light Inspector sets), found by name: nullptr without VTK's ray tracing.
 vtkInformationDoubleKey* OSPRayRadiusKey();
 
-/// The light's size stored under `key` (vtkAbstractShadowMapPass::LIGHT_SIZE),
-/// or else under OSPRayRadiusKey() (the same units):
+/// The value stored under `key` (vtkAbstractShadowMapPass::LIGHT_SIZE), or
+/// else under OSPRayRadiusKey() (the same units); 0 when neither is set.
+double StoredLightSize(vtkLight* light, vtkInformationDoubleKey* key);
+
+/// StoredLightSize made usable:
 /// 0 when absent, not finite or negative, a sun's at most WidestSun, a
 /// positional light's at most 1e30 (single precision). Sets
 /// `clamped` (when given) to whether that changed the stored value.
