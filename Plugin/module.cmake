@@ -23,6 +23,8 @@ set(shadowmaps_shaders
   vtkShadowMapsMomentsFS
   vtkShadowMapsReceiverFS
   vtkShadowMapsSoftFS
+  vtkShadowMapsSoftKernelFS
+  vtkShadowMapsSoftMomentsFS
   vtkShadowMapsVarianceLookupFS
   vtkShadowMapsViewFS)
 set(shadowmaps_shader_sources)
@@ -78,6 +80,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapLinearDepthResolve.cxx
     Plugin/OpenGL/ShadowMapStoreFromLightDepths.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
+    Plugin/OpenGL/ShadowMapRotationNoise.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
@@ -122,6 +125,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapProgramStamps.h
     Plugin/OpenGL/ShadowMapQuad.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
+    Plugin/OpenGL/ShadowMapRotationNoise.h
     Plugin/Passes/ShadowMapCombination.h
     Plugin/Passes/ShadowMapLayerContent.h
     Plugin/Passes/ShadowMapPassShaders.h

@@ -14,8 +14,8 @@ float vtkShadowCompare(vec2 uv, float depth, int layer)
 // the soft shadows' blocker search (vtkShadowMapsSoftFS).
 uniform sampler2DArray vtkShadowDepths;
 
-float vtkShadowBlockerDepth(vec2 uv, int layer)
+vec2 vtkShadowBlockerDepth(vec2 uv, int layer)
 {
-  return texture(vtkShadowDepths, vec3(uv, float(layer))).r;
+  return vec2(texture(vtkShadowDepths, vec3(uv, float(layer))).r);
 }
 #endif

@@ -59,6 +59,24 @@ float vtkShadowCompareTexel(ivec2 texel, vec2 uv, float depth, int layer, float 
   return planeDepth <= vtkShadowVirtualSurface(stored, offset) ? 1.0 : 0.0;
 }
 
+#ifdef VTK_SHADOW_SIZED_LIGHTS
+// For the soft shadows' blocker search (vtkShadowMapsSoftFS): the virtual
+// surface of the texel at uv, moved along the receiver's plane from the
+// texel's centre to uv, so that it lies in front of a receiver at uv exactly
+// where vtkShadowCompare finds it shadowed there (x); the nearest caster
+// surface, whose distance sets the penumbra in every mode (y).
+vec2 vtkShadowBlockerDepth(vec2 uv, int layer)
+{
+  int last = int(vtkShadowMapResolution) - 1;
+  ivec2 texel = clamp(ivec2(floor(uv * vtkShadowMapResolution)), ivec2(0), ivec2(last));
+  vec2 center = (vec2(texel) + 0.5) / vtkShadowMapResolution;
+  vec2 stored = texelFetch(vtkShadowMaps, ivec3(texel, layer), 0).xy;
+  float offset = vtkShadowDualOffset * vtkShadowDepthPerTexel;
+  float shift = dot(vtkShadowReceiverSlope, center - uv);
+  return vec2(vtkShadowVirtualSurface(stored, offset) - shift, min(stored.x, stored.y));
+}
+#endif
+
 // One comparison as the depth maps' hardware makes it: of the nearest texel
 // (hard), or the bilinear weighting of the four around uv (the other filters).
 float vtkShadowCompare(vec2 uv, float depth, int layer)

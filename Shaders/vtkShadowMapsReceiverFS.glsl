@@ -444,17 +444,17 @@ float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
   {
     return 1.0;
   }
+  vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
+#ifdef VTK_SHADOW_RECEIVER_PLANE
+  vtkShadowMeasureReceiver(
+    biased, vtkShadowPlaneNormalVC, mapCoord, light, firstView, view, features);
+#endif
 #ifdef VTK_SHADOW_SIZED_LIGHTS
   if (vtkShadowHas(features, VTK_SHADOW_FEATURE_SIZED_LIGHT))
   {
     return vtkShadowSoftVisibility(
       biased, normalVC, light, firstView, view, viewLayout, count, features);
   }
-#endif
-  vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
-#ifdef VTK_SHADOW_RECEIVER_PLANE
-  vtkShadowMeasureReceiver(
-    biased, vtkShadowPlaneNormalVC, mapCoord, light, firstView, view, features);
 #endif
 #ifdef VTK_SHADOW_MAP_FOOTPRINT
   vtkShadowMeasureFootprint(biased, light, firstView, view, features);

@@ -12,6 +12,8 @@ uniform float vtkShadowLightBleeding;
 uniform float vtkShadowMinimumVariance;
 // MSM: the weight of the safe moment vector mixed into the stored one.
 uniform float vtkShadowMomentBias;
+// Per-texel rotations (cos, sin) of the soft shadows' kernels.
+uniform sampler2D vtkShadowNoise;
 
 // Chebyshev's one-sided bound on the fraction of the distribution with mean
 // and second moment `moments` that lies at or beyond t: the visibility.
@@ -103,9 +105,10 @@ float vtkShadowMomentsLevel()
   return log2(max(texels, 1.0));
 }
 
-// The visibility of a receiver at light depth t from the stored moments, with
-// `variance` the least variance of the depth distribution.
-float vtkShadowMomentsVisibility(vec4 moments, float t, float variance)
+// The fraction of the occluders' depths whose moments are `moments` that lies
+// at or beyond a receiver at light depth t, with `variance` the least variance
+// of the depth distribution: the visibility before light-bleeding reduction.
+float vtkShadowMomentsBound(vec4 moments, float t, float variance)
 {
 #if VTK_SHADOW_MOMENTS == 0
   float visibility = vtkShadowChebyshev(moments.xy, t, variance);
@@ -140,10 +143,16 @@ float vtkShadowMomentsVisibility(vec4 moments, float t, float variance)
   // ESM: exp(c (2d - 1)) averaged over the occluders, over the receiver's.
   float visibility = clamp(moments.x / vtkShadowWarpDepth(t).x, 0.0, 1.0);
 #endif
-#if VTK_SHADOW_MOMENTS == 4
   return visibility;
+}
+
+// The visibility of a receiver at light depth t from the stored moments.
+float vtkShadowMomentsVisibility(vec4 moments, float t, float variance)
+{
+#if VTK_SHADOW_MOMENTS == 4
+  return vtkShadowMomentsBound(moments, t, variance);
 #else
-  return vtkShadowReduceBleeding(visibility);
+  return vtkShadowReduceBleeding(vtkShadowMomentsBound(moments, t, variance));
 #endif
 }
 

@@ -8,7 +8,6 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
-#include "vtkShadowMapsSoftFS.h"
 
 #include <algorithm>
 
@@ -26,7 +25,7 @@ bool PassShaders::Update(const MapStorage& storage, vtkShadowMapRepresentation* 
     std::string(storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
     (sized ? "#define VTK_SHADOW_SIZED_LIGHTS\n" : "") + representation->GetReceiverDefinitions();
   this->Receivers.Lookup =
-    representation->GetReceiverLookupCode() + (sized ? vtkShadowMapsSoftFS : "");
+    representation->GetReceiverLookupCode() + (sized ? representation->GetSoftShadowCode() : "");
   AddAnalysisReceiverCode(choices.AnalysisView, choices.AnalysisLight, lights, this->Receivers);
   this->Receivers.Rehash();
 

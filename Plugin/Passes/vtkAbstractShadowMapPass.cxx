@@ -571,17 +571,22 @@ void vtkAbstractShadowMapPass::WarnAboutLightSizes(const std::vector<vtkLight*>&
   }
   const bool sized = std::any_of(r.Lights.begin(), r.Lights.end(),
     [](const shadowmaps::ShadowLight& light) { return light.Size > 0.0; });
-  const bool samplers = shadowmaps::SamplerObjectsAvailable();
+  // Depth textures' soft shadows read their depths through a sampler object.
+  shadowmaps::MapStorage storage;
+  r.Representation->GetMapStorage(storage);
+  const bool samplers =
+    !shadowmaps::IsDepth(storage.Format) || shadowmaps::SamplerObjectsAvailable();
   if (sized && this->SoftShadows && !samplers)
   {
     warning << "This OpenGL has no sampler objects (3.3): lights with a LIGHT_SIZE cast hard "
-               "shadows.";
+               "shadows from depth maps.";
   }
   else if (sized && this->SoftShadows && !r.Representation->GetSupportsSizedLights())
   {
     warning << r.Representation->GetClassName()
-            << " draws hard shadows of lights with a LIGHT_SIZE: soft shadows come from "
-               "vtkDepthShadowMapRepresentation for now.";
+            << " draws hard shadows of lights with a LIGHT_SIZE in its present settings: soft "
+               "shadows come from depth maps, dual-depth maps and mipmapped moments other than "
+               "ESM.";
   }
   if (!this->SoftShadows || !samplers || !r.Representation->GetSupportsSizedLights())
   {

@@ -1,47 +1,24 @@
 #include "vtkDepthShadowMapRepresentation.h"
 
+#include "ShadowMapRotationNoise.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsDepthLookupFS.h"
 #include "vtkShadowMapsFilterFS.h"
-#include "vtkTextureObject.h"
+#include "vtkShadowMapsSoftFS.h"
+#include "vtkShadowMapsSoftKernelFS.h"
 
-#include <cmath>
-#include <random>
 #include <sstream>
-#include <vector>
 
 vtkStandardNewMacro(vtkDepthShadowMapRepresentation);
 
-namespace
-{
-constexpr int NoiseSize = 32;
-
-vtkSmartPointer<vtkTextureObject> CreateRotationNoise(vtkOpenGLRenderWindow* window)
-{
-  std::mt19937 generator(20261122);
-  std::uniform_real_distribution<float> angle(0.0f, 6.2831853f);
-  std::vector<float> rotations(NoiseSize * NoiseSize * 2);
-  for (size_t i = 0; i < rotations.size(); i += 2)
-  {
-    const float a = angle(generator);
-    rotations[i] = std::cos(a);
-    rotations[i + 1] = std::sin(a);
-  }
-  auto noise = vtkSmartPointer<vtkTextureObject>::New();
-  noise->SetContext(window);
-  noise->SetWrapS(vtkTextureObject::Repeat);
-  noise->SetWrapT(vtkTextureObject::Repeat);
-  noise->SetMinificationFilter(vtkTextureObject::Nearest);
-  noise->SetMagnificationFilter(vtkTextureObject::Nearest);
-  noise->Create2DFromRaw(NoiseSize, NoiseSize, 2, VTK_FLOAT, rotations.data());
-  return noise;
-}
-} // namespace
 
 //------------------------------------------------------------------------------
-vtkDepthShadowMapRepresentation::vtkDepthShadowMapRepresentation() = default;
+vtkDepthShadowMapRepresentation::vtkDepthShadowMapRepresentation()
+  : Noise(new shadowmaps::RotationNoise())
+{
+}
 
 //------------------------------------------------------------------------------
 vtkDepthShadowMapRepresentation::~vtkDepthShadowMapRepresentation() = default;
@@ -77,9 +54,9 @@ double vtkDepthShadowMapRepresentation::GetFilterReachTexels() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkDepthShadowMapRepresentation::GetSupportsSizedLights() const
+std::string vtkDepthShadowMapRepresentation::GetSoftShadowCode() const
 {
-  return true;
+  return std::string(vtkShadowMapsSoftKernelFS) + vtkShadowMapsSoftFS;
 }
 
 //------------------------------------------------------------------------------
@@ -106,43 +83,26 @@ shadowmaps::DepthOffset vtkDepthShadowMapRepresentation::GetCasterDepthOffset() 
 //------------------------------------------------------------------------------
 void vtkDepthShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow* window)
 {
-  // A representation may serve passes in several windows: each GL context
-  // gets its own texture.
-  vtkSmartPointer<vtkTextureObject>& noise = this->NoisePerWindow[window];
-  if (!noise)
-  {
-    noise = CreateRotationNoise(window);
-  }
-  this->Noise = noise;
-  this->Noise->Activate();
+  this->Noise->Activate(window);
 }
 
 //------------------------------------------------------------------------------
 void vtkDepthShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* program)
 {
-  program->SetUniformi("vtkShadowNoise", this->Noise->GetTextureUnit());
+  this->Noise->SetUniform(program);
   program->SetUniformf("vtkShadowFilterRadius", static_cast<float>(this->FilterRadius));
 }
 
 //------------------------------------------------------------------------------
 void vtkDepthShadowMapRepresentation::DeactivateReceiverResources()
 {
-  if (this->Noise)
-  {
-    this->Noise->Deactivate();
-    this->Noise = nullptr;
-  }
+  this->Noise->Deactivate();
 }
 
 //------------------------------------------------------------------------------
 void vtkDepthShadowMapRepresentation::ReleaseGraphicsResources(vtkWindow* window)
 {
-  const auto found = this->NoisePerWindow.find(window);
-  if (found != this->NoisePerWindow.end())
-  {
-    found->second->ReleaseGraphicsResources(window);
-    this->NoisePerWindow.erase(found);
-  }
+  this->Noise->ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------

@@ -23,11 +23,13 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkShadowMapRepresentation.h"
 #include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
-#include "vtkSmartPointer.h" // For the noise textures
 
-#include <map> // For the noise textures
+#include <memory> // For std::unique_ptr
 
-class vtkTextureObject;
+namespace shadowmaps
+{
+class RotationNoise;
+}
 
 class VTKRENDERINGSHADOWMAPS_EXPORT vtkDepthShadowMapRepresentation
   : public vtkShadowMapRepresentation
@@ -107,8 +109,8 @@ public:
   std::string GetReceiverLookupCode() const override;
   std::string GetReceiverDefinitions() const override;
   double GetFilterReachTexels() const override;
-  /** True: sized lights get contact-hardening soft shadows (vtkShadowMapsSoftFS). */
-  bool GetSupportsSizedLights() const override;
+  /** Percentage-closer soft shadows of sized lights (vtkShadowMapsSoftFS). */
+  std::string GetSoftShadowCode() const override;
   bool GetLinearFiltering() const override;
   /** False: depth maps are not post-processed. */
   bool GetPostProcessingFollowsFilterScale() const override;
@@ -129,12 +131,8 @@ protected:
   double ConstantBias = 4.0;
   double SlopeScaledBias = 2.0;
 
-  /**
-   * Per-texel rotations (cos, sin) of the Poisson disc, one texture per window
-   * (GL context) the representation serves; Noise is the active window's.
-   */
-  std::map<vtkWindow*, vtkSmartPointer<vtkTextureObject>> NoisePerWindow;
-  vtkTextureObject* Noise = nullptr;
+  /** Per-texel rotations of the Poisson disc and the soft shadows' kernels. */
+  std::unique_ptr<shadowmaps::RotationNoise> Noise;
 
 private:
   vtkDepthShadowMapRepresentation(const vtkDepthShadowMapRepresentation&) = delete;

@@ -41,12 +41,6 @@ void vtkDualDepthShadowMapRepresentation::GetMapStorage(shadowmaps::MapStorage& 
 }
 
 //------------------------------------------------------------------------------
-bool vtkDualDepthShadowMapRepresentation::GetSupportsSizedLights() const
-{
-  return false;
-}
-
-//------------------------------------------------------------------------------
 std::string vtkDualDepthShadowMapRepresentation::GetReceiverLookupCode() const
 {
   return std::string(vtkShadowMapsDualDepthLookupFS) + vtkShadowMapsFilterFS;

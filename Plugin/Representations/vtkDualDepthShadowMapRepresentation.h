@@ -92,8 +92,6 @@ public:
 
   VTK_WRAPEXCLUDE void GetMapStorage(shadowmaps::MapStorage& storage) const override;
   std::string GetReceiverLookupCode() const override;
-  /** False for now: sized lights cast hard shadows here (with a warning). */
-  bool GetSupportsSizedLights() const override;
   std::string GetReceiverDefinitions() const override;
   bool GetLinearFiltering() const override;
   VTK_WRAPEXCLUDE void SetReceiverUniforms(vtkShaderProgram* program) override;

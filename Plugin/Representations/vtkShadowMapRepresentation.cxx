@@ -44,9 +44,15 @@ bool vtkShadowMapRepresentation::GetPostProcessingFollowsFilterScale() const
 }
 
 //------------------------------------------------------------------------------
+std::string vtkShadowMapRepresentation::GetSoftShadowCode() const
+{
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
 bool vtkShadowMapRepresentation::GetSupportsSizedLights() const
 {
-  return false;
+  return !this->GetSoftShadowCode().empty();
 }
 
 //------------------------------------------------------------------------------

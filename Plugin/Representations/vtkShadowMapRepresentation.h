@@ -123,15 +123,20 @@ public:
   virtual double GetFilterReachTexels() const;
 
   /**
-   * Whether the lookup makes soft shadows of lights with a size
-   * (vtkAbstractShadowMapPass::LIGHT_SIZE): it then defines, when
-   * VTK_SHADOW_SIZED_LIGHTS is defined, `float vtkShadowBlockerDepth(vec2 uv,
-   * int layer)`, the nearest caster's depth at uv, and `float
-   * vtkShadowCompare(vec2 uv, float depth, int layer)`, and the shared soft
-   * filter (vtkShadowMapsSoftFS.glsl) does the rest. Default false: sized
-   * lights cast hard shadows, with a warning.
+   * GLSL appended after the lookup code when a light has a size
+   * (vtkAbstractShadowMapPass::LIGHT_SIZE; VTK_SHADOW_SIZED_LIGHTS is then
+   * defined): it defines `float vtkShadowSoftVisibility(...)`, the soft
+   * shadow's visibility (vtkShadowMapsSoftKernelFS.glsl says what the
+   * techniques share). Maps of depths give vtkShadowMapsSoftFS (percentage-
+   * closer soft shadows), whose lookup then also defines `vec2
+   * vtkShadowBlockerDepth(vec2 uv, int layer)`: the depth in front of which a
+   * receiver at uv is shadowed, and the nearest caster's depth there. Default
+   * empty: sized lights cast hard shadows, with a warning.
    */
-  virtual bool GetSupportsSizedLights() const;
+  virtual std::string GetSoftShadowCode() const;
+
+  /** Whether sized lights get soft shadows here: GetSoftShadowCode is not empty. */
+  bool GetSupportsSizedLights() const;
 
   /** Whether the maps are sampled with linear filtering. Default true. */
   virtual bool GetLinearFiltering() const;

@@ -2,11 +2,14 @@
 
 #include "ShadowMapBlur.h"
 #include "ShadowMapGlslLiteral.h"
+#include "ShadowMapRotationNoise.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsMomentsFS.h"
+#include "vtkShadowMapsSoftKernelFS.h"
+#include "vtkShadowMapsSoftMomentsFS.h"
 #include "vtkShadowMapsVarianceLookupFS.h"
 
 #include <algorithm>
@@ -25,7 +28,10 @@ constexpr double LargestExponent16 = 11.08;
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkVarianceShadowMapRepresentation::vtkVarianceShadowMapRepresentation() = default;
+vtkVarianceShadowMapRepresentation::vtkVarianceShadowMapRepresentation()
+  : Noise(new shadowmaps::RotationNoise())
+{
+}
 
 //------------------------------------------------------------------------------
 vtkVarianceShadowMapRepresentation::~vtkVarianceShadowMapRepresentation() = default;
@@ -212,6 +218,19 @@ std::string vtkVarianceShadowMapRepresentation::GetReceiverLookupCode() const
 }
 
 //------------------------------------------------------------------------------
+std::string vtkVarianceShadowMapRepresentation::GetSoftShadowCode() const
+{
+  // ESM keeps no variance; EVSM2's one warp squeezes the blockers' depths,
+  // far in front of a receiver, into too few digits of the moments' mean for
+  // their own mean to be recovered (docs/SOFT.md).
+  if (this->Moments == ESM || this->Moments == EVSM2 || !this->Mipmaps)
+  {
+    return std::string();
+  }
+  return std::string(vtkShadowMapsSoftKernelFS) + vtkShadowMapsSoftMomentsFS;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkVarianceShadowMapRepresentation::GetReceiverDefinitions() const
 {
   std::ostringstream definitions;
@@ -258,16 +277,30 @@ bool vtkVarianceShadowMapRepresentation::GetPostProcessingFollowsFilterScale() c
 }
 
 //------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow* window)
+{
+  this->Noise->Activate(window);
+}
+
+//------------------------------------------------------------------------------
 void vtkVarianceShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* program)
 {
+  this->Noise->SetUniform(program);
   program->SetUniformf("vtkShadowLightBleeding", static_cast<float>(this->LightBleedingReduction));
   program->SetUniformf("vtkShadowMinimumVariance", static_cast<float>(this->MinimumVariance));
   program->SetUniformf("vtkShadowMomentBias", static_cast<float>(this->MomentBias));
 }
 
 //------------------------------------------------------------------------------
+void vtkVarianceShadowMapRepresentation::DeactivateReceiverResources()
+{
+  this->Noise->Deactivate();
+}
+
+//------------------------------------------------------------------------------
 void vtkVarianceShadowMapRepresentation::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->Noise->ReleaseGraphicsResources(window);
   const auto found = this->BlurPerWindow.find(window);
   if (found != this->BlurPerWindow.end())
   {

@@ -44,6 +44,7 @@
 namespace shadowmaps
 {
 class MapBlur;
+class RotationNoise;
 }
 
 class VTKRENDERINGSHADOWMAPS_EXPORT vtkVarianceShadowMapRepresentation
@@ -209,13 +210,23 @@ public:
 
   VTK_WRAPEXCLUDE void GetMapStorage(shadowmaps::MapStorage& storage) const override;
   std::string GetReceiverLookupCode() const override;
+  /**
+   * Soft shadows of sized lights from the moments themselves
+   * (vtkShadowMapsSoftMomentsFS), at a cost that does not grow with the
+   * penumbra; none (hard shadows, with a warning) for ESM, which keeps no
+   * variance, EVSM2, whose one warp loses the blockers' mean depth, and
+   * without Mipmaps, which the filter needs.
+   */
+  std::string GetSoftShadowCode() const override;
   std::string GetReceiverDefinitions() const override;
   double GetFilterReachTexels() const override;
   VTK_WRAPEXCLUDE bool PostProcessMaps(vtkOpenGLRenderer* renderer, shadowmaps::TextureArray& maps,
     const std::vector<shadowmaps::RenderedLayer>& layers) override;
   /** True while BlurRadius > 0: the blur keeps one world size in every cascade. */
   bool GetPostProcessingFollowsFilterScale() const override;
+  VTK_WRAPEXCLUDE void ActivateReceiverResources(vtkOpenGLRenderWindow* window) override;
   VTK_WRAPEXCLUDE void SetReceiverUniforms(vtkShaderProgram* program) override;
+  void DeactivateReceiverResources() override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
@@ -243,6 +254,8 @@ protected:
 
   /** The blur's GL objects, per window (GL context) the representation serves. */
   std::map<vtkWindow*, std::unique_ptr<shadowmaps::MapBlur>> BlurPerWindow;
+  /** Per-texel rotations of the soft shadows' kernels. */
+  std::unique_ptr<shadowmaps::RotationNoise> Noise;
 
 private:
   vtkVarianceShadowMapRepresentation(const vtkVarianceShadowMapRepresentation&) = delete;
