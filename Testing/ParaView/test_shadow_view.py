@@ -4,7 +4,8 @@ sphere's shadow falls and keeps it lit elsewhere; the default and cascaded views
 equal their baselines; ParaView's plain render view (no plugin pass) leaves the
 shadow point lit, so the probes can fail; the light kit's key light is the only
 kit light that casts, and only while KeyLightShadows is on; a representation's
-Casts Shadows and Receives Shadows turn its part off.
+Casts Shadows and Receives Shadows turn its part off; SunDiameter softens the
+sun's shadow.
 
   xvfb-run -a pvpython Testing/ParaView/test_shadow_view.py PLUGIN OUTDIR
   (SHADOWMAPS_UPDATE_BASELINES=1 writes the baselines; look at them.)
@@ -14,7 +15,7 @@ import subprocess
 import sys
 
 from paraview import servermanager
-from paraview.simple import (ClearSelection, ColorBy, Delete, ExtractSelection, GetDisplayProperties,
+from paraview.simple import (AddLight, ClearSelection, ColorBy, Delete, ExtractSelection, GetDisplayProperties,
                              Hide, LoadPlugin, SelectSurfaceCells, SetActiveSource, SetActiveView, Show,
                              Sphere, Tessellate, Text, Transform, Wavelet)
 
@@ -222,6 +223,59 @@ for kind, source, proxy in (("image data", box, "UniformGridRepresentation"),
     check(not shadow_is_dark(render(view, "ParaViewShadowViewRoles" + proxy + "Off")),
           f"{kind} with Casts Shadows off leaves the ground lit")
     Hide(source, view)
+Delete(view)
+
+# Soft shadows: SunDiameter sizes the sun. Across the sphere's shadow (at right
+# angles to the sun's horizontal direction its half width is the sphere's
+# radius), the hard edge falls from lit to dark within a few pixels; an 8 degree
+# sun's penumbra, about 0.22 wide, leaves its middle half lit and lightens the
+# umbra's rim, while the umbra's centre stays dark and the lit ground lit.
+# LampRadius sizes positional lights only: under the sun it changes nothing.
+across = [-1.0 / 5 ** 0.5, 2.0 / 5 ** 0.5, 0.0]
+def across_shadow(distance):
+    return [SHADOWED[i] + distance * across[i] for i in range(3)]
+view = make_view("ShadowRenderView")
+show_scene(view)
+hard = render(view, "ParaViewShadowViewHardSun")
+view.LampRadius = 0.5
+check_same_image(hard, render(view, "ParaViewShadowViewLampRadius"),
+                 "LampRadius leaves a sun's shadow as it was")
+view.SunDiameter = 8.0
+soft = render(view, "ParaViewShadowViewSoftSun")
+check(mean_difference(hard, soft) > 0.0, "SunDiameter 8 changes the frame")
+lit = luminance_at(view, soft, LIT)
+dark = luminance_at(view, soft, SHADOWED)
+check(dark < 0.2 * lit, f"the umbra stays dark under the 8 degree sun ({dark:.0f} of {lit:.0f})")
+edge = (luminance_at(view, soft, across_shadow(1.0)) - dark) / (lit - dark)
+check(0.25 < edge < 0.75, f"the shadow's edge is half lit under the 8 degree sun ({edge:.2f})")
+rim_soft = luminance_at(view, soft, across_shadow(0.95))
+rim_hard = luminance_at(view, hard, across_shadow(0.95))
+check(rim_soft > rim_hard + 10, f"the umbra's rim is lighter under the 8 degree sun "
+      f"({rim_soft:.0f} against {rim_hard:.0f})")
+view.SunDiameter = 0.0
+check_same_image(hard, render(view, "ParaViewShadowViewHardSunAgain"),
+                 "SunDiameter 0 gives the hard frame back")
+Delete(view)
+
+# LampRadius sizes a positional light; SunDiameter leaves it as it was.
+view = make_view("ShadowRenderView")
+show_scene(view, sun=False)
+view.UseLight = 0
+lamp = AddLight(view=view)
+lamp.Coords = "Scene"
+lamp.Type = "Positional"
+lamp.Position = [2 * c for c in SUN]
+lamp.FocalPoint = [0, 0, 0]
+lamp.ConeAngle = 60
+hard = render(view, "ParaViewShadowViewHardLamp")
+view.SunDiameter = 8.0
+check_same_image(hard, render(view, "ParaViewShadowViewLampSunDiameter"),
+                 "SunDiameter leaves a lamp's shadow as it was")
+view.LampRadius = 0.5
+check(mean_difference(hard, render(view, "ParaViewShadowViewSoftLamp")) > 0.0,
+      "LampRadius 0.5 softens the lamp's shadow")
+view.UpdatePropertyInformation()
+check(view.GetPropertyValue("NumberOfShadowedLights") == 1, "the sized lamp casts")
 Delete(view)
 
 # The light kit: its key light casts, the others do not.

@@ -25,8 +25,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 vtkStandardNewMacro(vtkPVShadowRenderView);
+vtkInformationKeyMacro(vtkPVShadowRenderView, SIZED_BY_VIEW, Integer);
 
 namespace
 {
@@ -242,7 +244,33 @@ void vtkPVShadowRenderView::Render(bool interactive, bool skip_rendering)
   }
   pass->SetUseSceneBounds(global);
   this->ApplyShadowRoles();
+  this->ApplyLightSizes();
   this->Superclass::Render(interactive, skip_rendering);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::ApplyLightSizes()
+{
+  vtkLightCollection* lights = this->GetRenderer()->GetLights();
+  lights->InitTraversal();
+  for (vtkLight* light = lights->GetNextItem(); light; light = lights->GetNextItem())
+  {
+    vtkInformation* information = light->GetInformation();
+    if (information->Has(vtkAbstractShadowMapPass::LIGHT_SIZE()) &&
+      !information->Has(SIZED_BY_VIEW()))
+    {
+      continue; // sized by the user (a script): theirs
+    }
+    // Without LIGHT_SIZE, the size read is the light's own Radius, if any.
+    information->Remove(vtkAbstractShadowMapPass::LIGHT_SIZE());
+    information->Remove(SIZED_BY_VIEW());
+    const double size = light->GetPositional() ? this->LampRadius : this->SunDiameter;
+    if (size > 0.0 && !(vtkAbstractShadowMapPass::GetLightSize(light) > 0.0))
+    {
+      information->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), size);
+      information->Set(SIZED_BY_VIEW(), 1);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -274,6 +302,38 @@ void vtkPVShadowRenderView::ApplyShadowRoles()
       }
       prop->GetPropertyKeys()->Set(key, roles->Get(key));
     }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetSunDiameter(double degrees)
+{
+  if (!std::isfinite(degrees))
+  {
+    vtkWarningMacro(<< "SunDiameter " << degrees << " is not finite; keeping " << this->SunDiameter << ".");
+    return;
+  }
+  degrees = Clamped(this, "SunDiameter", degrees, 0.0, 30.0);
+  if (degrees != this->SunDiameter)
+  {
+    this->SunDiameter = degrees;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetLampRadius(double radius)
+{
+  if (!std::isfinite(radius))
+  {
+    vtkWarningMacro(<< "LampRadius " << radius << " is not finite; keeping " << this->LampRadius << ".");
+    return;
+  }
+  radius = Clamped(this, "LampRadius", radius, 0.0, std::numeric_limits<double>::max());
+  if (radius != this->LampRadius)
+  {
+    this->LampRadius = radius;
+    this->Modified();
   }
 }
 
@@ -410,4 +470,6 @@ void vtkPVShadowRenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowConstantBias: " << this->GetShadowConstantBias() << "\n";
   os << indent << "ShadowSlopeScaledBias: " << this->GetShadowSlopeScaledBias() << "\n";
   os << indent << "MomentsBlurRadius: " << this->GetMomentsBlurRadius() << "\n";
+  os << indent << "SunDiameter: " << this->SunDiameter << "\n";
+  os << indent << "LampRadius: " << this->LampRadius << "\n";
 }

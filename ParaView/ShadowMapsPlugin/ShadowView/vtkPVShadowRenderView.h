@@ -38,6 +38,7 @@ class vtkAbstractShadowMapPass;
 class vtkCascadedShadowMapViews;
 class vtkPVDefaultPass;
 class vtkDepthShadowMapPass;
+class vtkInformationIntegerKey;
 class vtkPVShadowMapExchange;
 class vtkVarianceShadowMapPass;
 class vtkWarpedShadowMapViews;
@@ -130,6 +131,21 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Sizes for soft shadows (vtkAbstractShadowMapPass::LIGHT_SIZE) of the
+   * view's lights: SunDiameter, directional lights' angular diameter in
+   * degrees, [0, 30]; LampRadius, positional lights' radius in world units,
+   * [0, inf). 0 (default): hard shadows. A light with a Radius of its own
+   * (vtkOSPRayLightNode's, which the Light Inspector sets where ParaView has
+   * ray tracing) keeps it, and so does one a script gave a LIGHT_SIZE.
+   */
+  void SetSunDiameter(double degrees);
+  vtkGetMacro(SunDiameter, double);
+  void SetLampRadius(double radius);
+  vtkGetMacro(LampRadius, double);
+  ///@}
+
+  ///@{
   /** Whether the light kit's key light casts shadows (default on). */
   void SetKeyLightShadows(bool on);
   vtkGetMacro(KeyLightShadows, bool);
@@ -183,7 +199,16 @@ private:
    * representation to the prop its active surface representation renders.
    */
   void ApplyShadowRoles();
+  /**
+   * Gives the renderer's lights the view's sizes (SunDiameter, LampRadius),
+   * but those with a LIGHT_SIZE the view did not set, or a Radius of their own.
+   */
+  void ApplyLightSizes();
+  /** Marks the lights whose LIGHT_SIZE the view set. */
+  static vtkInformationIntegerKey* SIZED_BY_VIEW();
 
+  double SunDiameter = 0.0;
+  double LampRadius = 0.0;
   int ShadowViews = UNIFORM;
   int ShadowStorage = DEPTH;
   int ShadowMapResolution = 2048;
