@@ -53,6 +53,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -1044,14 +1045,31 @@ vtkSmartPointer<vtkLight> MakeSun(const ViewFrame& view, const SunSetup& sun)
 
 vtkSmartPointer<vtkLight> MakeSetupLight(const ViewFrame& view, const std::string& setup);
 
+// The diameter in degrees of a "soft-sun-D" set-up's sun (D in (0, 30]), or 0.
+double WiderSunDiameter(const std::string& setup)
+{
+  const std::string prefix = "soft-sun-";
+  if (setup.compare(0, prefix.size(), prefix) != 0)
+  {
+    return 0.0;
+  }
+  const std::string number = setup.substr(prefix.size());
+  char* end = nullptr;
+  const double diameter = std::strtod(number.c_str(), &end);
+  const bool parsed = !number.empty() && end == number.c_str() + number.size();
+  return parsed && diameter > 0.0 && diameter <= 30.0 ? diameter : 0.0;
+}
+
 // A sized set-up is its hard set-up's light with a size (LIGHT_SIZE).
 vtkSmartPointer<vtkLight> MakeSizedSetupLight(const ViewFrame& view, const std::string& setup)
 {
-  const bool sun = setup == "soft-sun";
+  const double wider = WiderSunDiameter(setup);
+  const bool sun = setup == "soft-sun" || wider > 0.0;
   vtkSmartPointer<vtkLight> light =
     MakeSetupLight(view, sun ? "perpendicular" : setup == "soft-spot" ? "spot" : "point");
+  const double sunDiameter = wider > 0.0 ? wider : SoftSunDiameterDeg;
   light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(),
-    sun ? SoftSunDiameterDeg : SoftLampRadiusFraction * view.distance);
+    sun ? sunDiameter : SoftLampRadiusFraction * view.distance);
   return light;
 }
 
@@ -1605,7 +1623,8 @@ std::string LightKindOfSetup(const std::string& setup)
 bool IsSizedLightSetup(const std::string& setup)
 {
   const std::vector<std::string> names = SizedLightSetupNames();
-  return std::find(names.begin(), names.end(), setup) != names.end();
+  return std::find(names.begin(), names.end(), setup) != names.end() ||
+    WiderSunDiameter(setup) > 0.0;
 }
 
 bool IsLightSetup(const std::string& setup)

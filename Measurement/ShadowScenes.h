@@ -183,11 +183,12 @@ std::vector<std::string> LightSetupNames();
  * Set-ups whose light has a size (vtkAbstractShadowMapPass::LIGHT_SIZE), so
  * soft shadows: "soft-sun" (the perpendicular sun, 0.53 degrees across, the
  * real sun's), "soft-spot" and "soft-point" (the spot's and the point's
- * lights as spheres of radius 0.02 d).
+ * lights as spheres of radius 0.02 d). "soft-sun-D" also names the sun
+ * D degrees across (D in (0, 30]), for a size's effect on cost.
  */
 std::vector<std::string> SizedLightSetupNames();
 
-/** True for a name in SizedLightSetupNames(). */
+/** True for a name in SizedLightSetupNames() or a "soft-sun-D". */
 bool IsSizedLightSetup(const std::string& setup);
 
 /** True for a name in LightSetupNames() or SizedLightSetupNames(). */

@@ -128,7 +128,8 @@ int MomentsOf(const std::string& name)
 // The parameter sweep of the moment maps: "-half" (16-bit storage, exponents 5;
 // MSM's moments in the Chebyshev basis),
 // "-bleedX" (LightBleedingReduction X), "-blurX" (BlurRadius X texels),
-// "-samplesN" (CasterSamples N), "-biasX" (MomentBias X).
+// "-samplesN" (CasterSamples N), "-biasX" (MomentBias X), "-hard" (soft
+// shadows off: the fixed blur a sized light's soft shadows are measured against).
 std::vector<std::string> MomentVariantNames()
 {
   return { "vsm-bleed0", "vsm-bleed0.4", "evsm4-bleed0", "evsm4-half", "evsm4-blur0", "evsm4-blur2",
@@ -167,6 +168,17 @@ void ApplyMomentVariant(const std::string& name, vtkVarianceShadowMapPass* pass)
   {
     pass->SetCasterSamples(static_cast<int>(valueAfter("-samples")));
   }
+  if (name.find("-hard") != std::string::npos)
+  {
+    pass->SoftShadowsOff();
+  }
+}
+
+// The fixed blurs of the default moments, soft shadows off.
+std::vector<std::string> MomentBlurSweepNames()
+{
+  return { "evsm4-hard-blur0", "evsm4-hard-blur1", "evsm4-hard-blur2", "evsm4-hard-blur4",
+    "evsm4-hard-blur8", "evsm4-hard-blur16" };
 }
 
 // The depth filters of the uniform map that soften like the moment maps'
@@ -278,6 +290,8 @@ std::vector<std::string> TechniqueNames()
   names.insert(names.end(), biases.begin(), biases.end());
   const std::vector<std::string> radii = PoissonRadiusSweepNames();
   names.insert(names.end(), radii.begin(), radii.end());
+  const std::vector<std::string> blurs = MomentBlurSweepNames();
+  names.insert(names.end(), blurs.begin(), blurs.end());
   return names;
 }
 

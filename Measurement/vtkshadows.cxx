@@ -114,7 +114,8 @@ void PrintUsage(std::ostream& out)
          "                           wide-spot,street-point [these eight]; sized lights\n"
          "                           (soft shadows, measured against ray-traced area\n"
          "                           lights): soft-sun (0.53 degrees), soft-spot,\n"
-         "                           soft-point (radius 0.02 of the camera's distance);\n"
+         "                           soft-point (radius 0.02 of the camera's distance),\n"
+         "                           soft-sun-D (the sun D degrees across, up to 30);\n"
          "                           soft: these three; all: all eleven\n"
          "                           {perpendicular,spot,point}\n"
          "  --techniques LIST|all    none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
@@ -131,7 +132,10 @@ void PrintUsage(std::ostream& out)
          "                           moment maps' sweep vsm-bleed0, vsm-bleed0.4, evsm4-bleed0,\n"
          "                           evsm4-half, evsm4-blur0, evsm4-blur2, evsm4-blur4, msm-bleed0,\n"
          "                           evsm4-samples4, msm-biasX (X: 0.0001, 0.001), msm-half\n"
-         "                           (16 bits), msm-half-biasX;\n"
+         "                           (16 bits), msm-half-biasX; the fixed filters that sized\n"
+         "                           lights' soft shadows are measured against (soft shadows\n"
+         "                           off): poisson-rR (32 taps, R: 1,2,4,8,16 texels) and\n"
+         "                           evsm4-hard-blurB (B: 0,1,2,4,8,16 texels);\n"
          "                           none and vtk are always measured (frame-time references)\n"
          "  --technique NAME         one technique (with none and vtk)\n"
          "  --resolution N           map size of this project's techniques [2048]\n"
@@ -401,7 +405,8 @@ std::string CheckSetups(const std::vector<std::string>& setups)
     {
       return "unknown light set-up '" + setup +
         "' (expected overhead, perpendicular, behind, facing, spot, point, wide-spot, "
-        "street-point, soft-sun, soft-spot or soft-point)";
+        "street-point, soft-sun, soft-sun-D (D degrees across, up to 30), soft-spot or "
+        "soft-point)";
     }
   }
   return setups.empty() ? "no light set-up given" : std::string();
