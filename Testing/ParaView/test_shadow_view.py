@@ -21,7 +21,7 @@ from paraview.simple import (AddLight, ClearSelection, ColorBy, Delete, ExtractS
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
-from shadow_view_testing import (LIT, SHADOWED, check, check_same_image,  # noqa: E402
+from shadow_view_testing import (LIT, SHADOWED, SUN, check, check_same_image,  # noqa: E402
                                  compare_with_baseline, failures, in_frame, luminance_at,
                                  make_view, render, shadow_probes, show_scene)
 
