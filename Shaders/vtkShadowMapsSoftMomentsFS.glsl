@@ -112,16 +112,22 @@ vec4 vtkShadowDiscMoments(vec3 positionVC, vtkShadowSoftKernel kernel, float rad
   return inside > 0.0 ? sum / inside : sum;
 }
 
-// The least variance of the depths a tap averages over its square of `side`:
-// the receiver's own plane, whose light depth is linear there (moving the
-// moments flattens the plane between taps, not within one), over the
-// representation's floor.
-float vtkShadowTapVariance(vec3 positionVC, vtkShadowSoftKernel kernel, float side, int light)
+// The least variance of the depths a tap averages around the kernel's centre:
+// the receiver's own plane, linear there (moving the moments flattens the
+// plane between taps, not within one), over the tap's footprint (twice its
+// square's `side`, its trilinear sample's spread, and no less than the texel
+// its bilinear sample spans) and the maps' blur, over the representation's
+// floor.
+float vtkShadowTapVariance(
+  vec3 positionVC, vtkShadowSoftKernel kernel, float side, int light, int view)
 {
   float t = vtkShadowLightDepth(positionVC, light);
-  float d1 = vtkShadowLightDepth(positionVC + side * kernel.Axis1, light) - t;
-  float d2 = vtkShadowLightDepth(positionVC + side * kernel.Axis2, light) - t;
-  return vtkShadowMinimumVariance + (d1 * d1 + d2 * d2) / 12.0;
+  float perUnit1 = vtkShadowLightDepth(positionVC + kernel.Axis1, light) - t;
+  float perUnit2 = vtkShadowLightDepth(positionVC + kernel.Axis2, light) - t;
+  float footprint = max(2.0 * side, kernel.Texel);
+  float blur = VTK_SHADOW_BLUR_SIGMA * vtkShadowViews[view].FilterScale * kernel.Texel;
+  return vtkShadowMinimumVariance +
+    (perUnit1 * perUnit1 + perUnit2 * perUnit2) * (footprint * footprint / 12.0 + blur * blur);
 }
 
 // The mean light depth of the occluders in front of a receiver at t, among
@@ -154,8 +160,11 @@ float vtkShadowMomentBlockerDistance(vec3 positionVC, vtkShadowSoftKernel kernel
   float t = vtkShadowLightDepth(positionVC, light);
   float side = vtkShadowMomentTapSide(radius, VTK_SHADOW_MOMENT_SEARCH_TAPS);
   float lit = vtkShadowMomentsBound(
-    moments, clamp(t, 0.0, 1.0), vtkShadowTapVariance(positionVC, kernel, side, light));
-  if (inside == 0.0 || lit >= 1.0)
+    moments, clamp(t, 0.0, 1.0), vtkShadowTapVariance(positionVC, kernel, side, light, view));
+  // Fewer blockers than half a tap's share of the disc are the bound's own
+  // slack, not casters: their mean depth, divided by so small a fraction, is
+  // noise (an open ground's penumbrae grew over its neighbours' shadows).
+  if (inside == 0.0 || lit > 1.0 - 0.5 / float(VTK_SHADOW_MOMENT_SEARCH_TAPS))
   {
     return 0.0;
   }
@@ -190,8 +199,10 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
       positionVC, kernel, nearer, light, firstView, view, viewLayout, count, features);
     blockerDistance = again > 0.0 ? again : blockerDistance;
   }
+  // At least half a texel, as the depth maps' filter: a caster a texel or two
+  // wide (a pole far off) keeps its umbra.
   float radius = max(
-    vtkShadowPenumbraHalfWidth(blockerDistance, kernel.LightDistance, light), kernel.Texel);
+    vtkShadowPenumbraHalfWidth(blockerDistance, kernel.LightDistance, light), 0.5 * kernel.Texel);
   float inside;
   vec4 moments = vtkShadowDiscMoments(positionVC, kernel, radius, VTK_SHADOW_MOMENT_FILTER_TAPS,
     light, firstView, view, viewLayout, count, features, inside);
@@ -203,5 +214,5 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
   float t = clamp(vtkShadowLightDepth(positionVC, light), 0.0, 1.0);
   float side = vtkShadowMomentTapSide(radius, VTK_SHADOW_MOMENT_FILTER_TAPS);
   return vtkShadowMomentsVisibility(
-    moments, t, vtkShadowTapVariance(positionVC, kernel, side, light));
+    moments, t, vtkShadowTapVariance(positionVC, kernel, side, light, view));
 }

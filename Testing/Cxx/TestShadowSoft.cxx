@@ -297,14 +297,8 @@ vtkSmartPointer<vtkAbstractShadowMapPass> MakePass(
 const char* const ViewKinds[] = { "uniform", "lispsm", "cascades" };
 const std::vector<std::string> AllMaps = { "depth", "dual", "evsm4", "vsm", "msm" };
 
-/// The penumbra width's tolerance, a fraction of the analytic width: 10%, but
-/// 20% for MSM, whose moment bias (3e-5, against acne) adds a variance of
-/// 7.5e-6 to every disc: as much as an edge 0.5 over the ground spreads the
-/// light depths here (a gap of 0.008), which widens that penumbra 16%.
-double WidthTolerance(const std::string& maps)
-{
-  return maps.rfind("msm", 0) == 0 ? 0.2 : 0.1;
-}
+/// The penumbra width's tolerance, a fraction of the analytic width.
+constexpr double WidthTolerance = 0.1;
 constexpr int Resolution = 2048;
 
 /// The 10-90% width of the penumbra within 10% of the analytic one under the
@@ -322,7 +316,7 @@ void ExpectPenumbraWidthsInEveryView(EdgeScene& scene,
       std::cout << "[ measured ] " << light << ", edge at " << scene.Height << ", " << maps
                 << " maps, " << views << ": 10-90% width " << m.Width << " (analytic "
                 << m.Expected << ", " << 100.0 * (m.Width / m.Expected - 1.0) << "%)\n";
-      EXPECT_NEAR(m.Width, m.Expected, WidthTolerance(maps) * m.Expected)
+      EXPECT_NEAR(m.Width, m.Expected, WidthTolerance * m.Expected)
         << maps << " maps, " << views << " at height " << scene.Height;
       pass->ReleaseGraphicsResources(scene.Window);
     }
@@ -380,7 +374,7 @@ TEST(ShadowSoft, ASmallSpotsPenumbraScalesWithIt)
     const Measured m = MeasurePenumbra(scene, pass, edge.Visibility, edge.Centre, edge.HalfWidth);
     std::cout << "[ measured ] spot radius " << radius << ", edge at " << height << ", " << maps
               << ": 10-90% width " << m.Width << " (analytic " << m.Expected << ")\n";
-    EXPECT_NEAR(m.Width, m.Expected, WidthTolerance(maps) * m.Expected) << maps;
+    EXPECT_NEAR(m.Width, m.Expected, WidthTolerance * m.Expected) << maps;
     pass->ReleaseGraphicsResources(scene.Window);
   }
 }
@@ -410,7 +404,7 @@ TEST(ShadowSoft, EveryKindOfMomentsDrawsTheEdgesPenumbra)
       halfWidth);
     std::cout << "[ measured ] sun " << diameter << " deg, edge at " << height << ", " << maps
               << ": 10-90% width " << m.Width << " (analytic " << m.Expected << ")\n";
-    EXPECT_NEAR(m.Width, m.Expected, WidthTolerance(maps) * m.Expected) << maps;
+    EXPECT_NEAR(m.Width, m.Expected, WidthTolerance * m.Expected) << maps;
     const std::vector<double> ends =
       scene.FactorAlongX(pass, { centre - 2.0 * halfWidth, centre + 2.0 * halfWidth });
     EXPECT_LT(ends[0], 0.05) << maps << ": the umbra is dark";
@@ -449,7 +443,7 @@ TEST(ShadowSoft, PointPenumbraCrossesCubeFacesWithoutASeam)
       const Measured m = MeasurePenumbra(scene, pass, visibility, centre, halfWidth);
       std::cout << "[ measured ] point radius " << radius << " across cube faces, " << what
                 << ": 10-90% width " << m.Width << " (analytic " << m.Expected << ")\n";
-      EXPECT_NEAR(m.Width, m.Expected, WidthTolerance(maps) * m.Expected) << what;
+      EXPECT_NEAR(m.Width, m.Expected, WidthTolerance * m.Expected) << what;
       // No step: neighbouring samples (a 200th of the penumbra apart) differ
       // by little, and the profile only rises.
       std::vector<double> xs;
