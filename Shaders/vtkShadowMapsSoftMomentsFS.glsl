@@ -79,16 +79,41 @@ float vtkShadowMomentTapSide(float radius, int n)
   return VTK_SHADOW_MOMENT_SIDE * radius * sqrt(3.14159265 / float(n));
 }
 
+// The receiver's light depth (unclamped), the sum of its squared changes per
+// unit along the kernel's two axes (its plane's slope), and its decrease per
+// unit toward the light (along a light ray the distance from a positional
+// light falls at unit rate): what every disc of the kernel compares with.
+struct vtkShadowReceiverDepth
+{
+  float Depth;
+  float SlopeSquared;
+  float PerDistance;
+};
+
+vtkShadowReceiverDepth vtkShadowReceiverDepthAt(
+  vec3 positionVC, vtkShadowSoftKernel kernel, int light)
+{
+  vtkShadowReceiverDepth receiver;
+  receiver.Depth = vtkShadowLightDepth(positionVC, light);
+  float perUnit1 = vtkShadowLightDepth(positionVC + kernel.Axis1, light) - receiver.Depth;
+  float perUnit2 = vtkShadowLightDepth(positionVC + kernel.Axis2, light) - receiver.Depth;
+  receiver.SlopeSquared = perUnit1 * perUnit1 + perUnit2 * perUnit2;
+  vec3 toward = vtkShadowTowardLightAt(positionVC, light);
+  receiver.PerDistance =
+    vtkShadowLights[light].DepthPerDistance - dot(vtkShadowLights[light].DepthPlane.xyz, toward);
+  return receiver;
+}
+
 // The moments averaged over the kernel's disc of `radius`: n taps, each a
 // mipmapped sample over about the tap's share of the disc's area, the sides of
 // its square along the kernel's axes taken into the tap's own view, its
 // moments moved to the receiver's depth at the centre. `inside`: how many taps
 // fell in a map (the others do not count).
-vec4 vtkShadowDiscMoments(vec3 positionVC, vtkShadowSoftKernel kernel, float radius, int n,
-  int light, int firstView, int view, int viewLayout, int count, int features, out float inside)
+vec4 vtkShadowDiscMoments(vec3 positionVC, vtkShadowSoftKernel kernel,
+  vtkShadowReceiverDepth receiver, float radius, int n, int light, int firstView, int view,
+  int viewLayout, int count, int features, out float inside)
 {
   float side = vtkShadowMomentTapSide(radius, n);
-  float depth = vtkShadowLightDepth(positionVC, light);
   vec4 sum = vec4(0.0);
   inside = 0.0;
   for (int i = 0; i < n; ++i)
@@ -106,7 +131,7 @@ vec4 vtkShadowDiscMoments(vec3 positionVC, vtkShadowSoftKernel kernel, float rad
                                   firstView, tap.View, tap.VC + side * kernel.Axis2, features),
                 tap.View, features).xy - tap.Map.xy;
     vec4 moments = textureGrad(vtkShadowMaps, vec3(tap.Map.xy, float(tap.View)), dx, dy);
-    sum += vtkShadowShiftMoments(moments, depth - vtkShadowLightDepth(tap.VC, light));
+    sum += vtkShadowShiftMoments(moments, receiver.Depth - vtkShadowLightDepth(tap.VC, light));
     inside += 1.0;
   }
   return inside > 0.0 ? sum / inside : sum;
@@ -119,15 +144,12 @@ vec4 vtkShadowDiscMoments(vec3 positionVC, vtkShadowSoftKernel kernel, float rad
 // its bilinear sample spans) and the maps' blur, over the representation's
 // floor.
 float vtkShadowTapVariance(
-  vec3 positionVC, vtkShadowSoftKernel kernel, float side, int light, int view)
+  vtkShadowSoftKernel kernel, vtkShadowReceiverDepth receiver, float side, int view)
 {
-  float t = vtkShadowLightDepth(positionVC, light);
-  float perUnit1 = vtkShadowLightDepth(positionVC + kernel.Axis1, light) - t;
-  float perUnit2 = vtkShadowLightDepth(positionVC + kernel.Axis2, light) - t;
   float footprint = max(2.0 * side, kernel.Texel);
   float blur = VTK_SHADOW_BLUR_SIGMA * vtkShadowViews[view].FilterScale * kernel.Texel;
   return vtkShadowMinimumVariance +
-    (perUnit1 * perUnit1 + perUnit2 * perUnit2) * (footprint * footprint / 12.0 + blur * blur);
+    receiver.SlopeSquared * (footprint * footprint / 12.0 + blur * blur);
 }
 
 // The mean light depth of the occluders in front of a receiver at t, among
@@ -151,16 +173,17 @@ float vtkShadowMeanBlockerDepth(vec4 moments, float t, float lit)
 
 // The distance along the ray from the receiver to its blockers over the
 // kernel's disc of `radius`, from their mean depth; 0 where none is in front.
-float vtkShadowMomentBlockerDistance(vec3 positionVC, vtkShadowSoftKernel kernel, float radius,
-  int light, int firstView, int view, int viewLayout, int count, int features)
+float vtkShadowMomentBlockerDistance(vec3 positionVC, vtkShadowSoftKernel kernel,
+  vtkShadowReceiverDepth receiver, float radius, int light, int firstView, int view,
+  int viewLayout, int count, int features)
 {
   float inside;
-  vec4 moments = vtkShadowDiscMoments(positionVC, kernel, radius,
+  vec4 moments = vtkShadowDiscMoments(positionVC, kernel, receiver, radius,
     VTK_SHADOW_MOMENT_SEARCH_TAPS, light, firstView, view, viewLayout, count, features, inside);
-  float t = vtkShadowLightDepth(positionVC, light);
+  float t = receiver.Depth;
   float side = vtkShadowMomentTapSide(radius, VTK_SHADOW_MOMENT_SEARCH_TAPS);
   float lit = vtkShadowMomentsBound(
-    moments, clamp(t, 0.0, 1.0), vtkShadowTapVariance(positionVC, kernel, side, light, view));
+    moments, clamp(t, 0.0, 1.0), vtkShadowTapVariance(kernel, receiver, side, view));
   // Fewer blockers than half a tap's share of the disc are the bound's own
   // slack, not casters: their mean depth, divided by so small a fraction, is
   // noise (an open ground's penumbrae grew over its neighbours' shadows).
@@ -170,11 +193,7 @@ float vtkShadowMomentBlockerDistance(vec3 positionVC, vtkShadowSoftKernel kernel
   }
   float blocker =
     clamp(vtkShadowMeanBlockerDepth(moments, clamp(t, 0.0, 1.0), lit), 0.0, max(t, 0.0));
-  // The light depth's decrease per unit toward the light: along a light ray
-  // the distance from a positional light falls at unit rate.
-  vec3 toward = vtkShadowTowardLightAt(positionVC, light);
-  float perDistance =
-    vtkShadowLights[light].DepthPerDistance - dot(vtkShadowLights[light].DepthPlane.xyz, toward);
+  float perDistance = receiver.PerDistance;
   return perDistance > 0.0 ? max(t - blocker, 0.0) / perDistance : 0.0;
 }
 
@@ -185,18 +204,19 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
 {
   vtkShadowSoftKernel kernel =
     vtkShadowKernelAt(positionVC, normalVC, light, firstView, view, features);
+  vtkShadowReceiverDepth receiver = vtkShadowReceiverDepthAt(positionVC, kernel, light);
   // As the depth maps' search (vtkShadowMapsSoftFS): over the disc where a
   // blocker can hide part of the light, then over the disc those blockers
   // reach, whose own distance holds at a contact.
   float search = kernel.SearchRadius;
   float blockerDistance = vtkShadowMomentBlockerDistance(
-    positionVC, kernel, search, light, firstView, view, viewLayout, count, features);
+    positionVC, kernel, receiver, search, light, firstView, view, viewLayout, count, features);
   float nearer = max(
     vtkShadowPenumbraHalfWidth(blockerDistance, kernel.LightDistance, light), kernel.Texel);
   if (blockerDistance > 0.0 && nearer < search)
   {
     float again = vtkShadowMomentBlockerDistance(
-      positionVC, kernel, nearer, light, firstView, view, viewLayout, count, features);
+      positionVC, kernel, receiver, nearer, light, firstView, view, viewLayout, count, features);
     blockerDistance = again > 0.0 ? again : blockerDistance;
   }
   // At least half a texel, as the depth maps' filter: a caster a texel or two
@@ -204,15 +224,14 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
   float radius = max(
     vtkShadowPenumbraHalfWidth(blockerDistance, kernel.LightDistance, light), 0.5 * kernel.Texel);
   float inside;
-  vec4 moments = vtkShadowDiscMoments(positionVC, kernel, radius, VTK_SHADOW_MOMENT_FILTER_TAPS,
-    light, firstView, view, viewLayout, count, features, inside);
+  vec4 moments = vtkShadowDiscMoments(positionVC, kernel, receiver, radius,
+    VTK_SHADOW_MOMENT_FILTER_TAPS, light, firstView, view, viewLayout, count, features, inside);
   if (inside == 0.0)
   {
     // A disc wider than the maps around a receiver at their rim: its own texel.
     moments = textureLod(vtkShadowMaps, vec3(kernel.Centre.xy, float(view)), 0.0);
   }
-  float t = clamp(vtkShadowLightDepth(positionVC, light), 0.0, 1.0);
   float side = vtkShadowMomentTapSide(radius, VTK_SHADOW_MOMENT_FILTER_TAPS);
-  return vtkShadowMomentsVisibility(
-    moments, t, vtkShadowTapVariance(positionVC, kernel, side, light, view));
+  return vtkShadowMomentsVisibility(moments, clamp(receiver.Depth, 0.0, 1.0),
+    vtkShadowTapVariance(kernel, receiver, side, view));
 }

@@ -569,26 +569,32 @@ void vtkAbstractShadowMapPass::WarnAboutLightSizes(const std::vector<vtkLight*>&
             << shadowmaps::WidestSun << " degrees: the first's " << stored << " is taken as "
             << shadowmaps::LightSizeOf(clamped.front(), LIGHT_SIZE()) << ". ";
   }
-  const bool sized = std::any_of(r.Lights.begin(), r.Lights.end(),
-    [](const shadowmaps::ShadowLight& light) { return light.Size > 0.0; });
-  // Depth textures' soft shadows read their depths through a sampler object.
-  shadowmaps::MapStorage storage;
-  r.Representation->GetMapStorage(storage);
-  const bool samplers =
-    !shadowmaps::IsDepth(storage.Format) || shadowmaps::SamplerObjectsAvailable();
-  if (sized && this->SoftShadows && !samplers)
+  // Asked of the representation only with a sized light: its storage and soft
+  // code are strings built on each call.
+  bool soft = this->SoftShadows &&
+    std::any_of(r.Lights.begin(), r.Lights.end(),
+      [](const shadowmaps::ShadowLight& light) { return light.Size > 0.0; });
+  if (soft)
   {
-    warning << "This OpenGL has no sampler objects (3.3): lights with a LIGHT_SIZE cast hard "
-               "shadows from depth maps.";
+    // Depth textures' soft shadows read their depths through a sampler object.
+    shadowmaps::MapStorage storage;
+    r.Representation->GetMapStorage(storage);
+    if (shadowmaps::IsDepth(storage.Format) && !shadowmaps::SamplerObjectsAvailable())
+    {
+      warning << "This OpenGL has no sampler objects (3.3): lights with a LIGHT_SIZE cast hard "
+                 "shadows from depth maps.";
+      soft = false;
+    }
+    else if (!r.Representation->GetSupportsSizedLights())
+    {
+      warning << r.Representation->GetClassName()
+              << " draws hard shadows of lights with a LIGHT_SIZE in its present settings: soft "
+                 "shadows come from depth maps, dual-depth maps and mipmapped VSM, EVSM4 and MSM "
+                 "moments.";
+      soft = false;
+    }
   }
-  else if (sized && this->SoftShadows && !r.Representation->GetSupportsSizedLights())
-  {
-    warning << r.Representation->GetClassName()
-            << " draws hard shadows of lights with a LIGHT_SIZE in its present settings: soft "
-               "shadows come from depth maps, dual-depth maps and mipmapped moments other than "
-               "ESM.";
-  }
-  if (!this->SoftShadows || !samplers || !r.Representation->GetSupportsSizedLights())
+  if (!soft)
   {
     for (shadowmaps::ShadowLight& light : r.Lights)
     {
