@@ -31,6 +31,9 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkScalarsToColors.h>
 
 #include "ShadowAreaLight.h"
 #include "ShadowOracleEmbree.h"
@@ -97,6 +100,10 @@ struct Mesh
 {
   std::vector<float> Points; // x, y, z per point
   std::vector<unsigned> Triangles;
+  std::vector<vtkIdType> TriangleCells; // the polydata cell each triangle comes from
+  // Translucent meshes: colour and opacity at each triangle's corners, three
+  // per triangle; empty for opaque ones.
+  std::vector<glm::vec4> CornerColors;
 };
 
 bool SamePosition(const std::vector<float>& points, vtkIdType a, vtkIdType b)
@@ -106,7 +113,7 @@ bool SamePosition(const std::vector<float>& points, vtkIdType a, vtkIdType b)
 }
 
 // Like VTK's index buffers, drops triangles with two points at the same place.
-void AppendTriangle(Mesh& mesh, vtkIdType a, vtkIdType b, vtkIdType c)
+void AppendTriangle(Mesh& mesh, vtkIdType cell, vtkIdType a, vtkIdType b, vtkIdType c)
 {
   if (SamePosition(mesh.Points, a, b) || SamePosition(mesh.Points, b, c) ||
     SamePosition(mesh.Points, a, c))
@@ -115,44 +122,48 @@ void AppendTriangle(Mesh& mesh, vtkIdType a, vtkIdType b, vtkIdType c)
   }
   mesh.Triangles.insert(mesh.Triangles.end(),
     { static_cast<unsigned>(a), static_cast<unsigned>(b), static_cast<unsigned>(c) });
+  mesh.TriangleCells.push_back(cell);
 }
 
+// Calls function(cellId, size, ids) for each cell; ids count from firstCell,
+// VTK's cell numbering of a polydata (vertices, lines, polygons, strips).
 template <typename CellFunction>
-void ForEachCell(vtkCellArray* cells, CellFunction&& function)
+void ForEachCell(vtkCellArray* cells, vtkIdType firstCell, CellFunction&& function)
 {
   if (!cells)
   {
     return;
   }
   auto iter = vtk::TakeSmartPointer(cells->NewIterator());
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  vtkIdType cell = firstCell;
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cell)
   {
     vtkIdType size = 0;
     const vtkIdType* ids = nullptr;
     iter->GetCurrentCell(size, ids);
-    function(size, ids);
+    function(cell, size, ids);
   }
 }
 
 // VTK 9.1's OpenGL mappers draw a polygon as a fan around its first point
 // (vtkOpenGLIndexBufferObject::AppendTriangleIndexBuffer): so does the oracle,
 // which matters for non-planar polygons.
-void AppendPolygons(vtkCellArray* polygons, Mesh& mesh)
+void AppendPolygons(vtkCellArray* polygons, vtkIdType firstCell, Mesh& mesh)
 {
-  ForEachCell(polygons, [&mesh](vtkIdType size, const vtkIdType* ids) {
+  ForEachCell(polygons, firstCell, [&mesh](vtkIdType cell, vtkIdType size, const vtkIdType* ids) {
     for (vtkIdType i = 1; i + 1 < size; ++i)
     {
-      AppendTriangle(mesh, ids[0], ids[i], ids[i + 1]);
+      AppendTriangle(mesh, cell, ids[0], ids[i], ids[i + 1]);
     }
   });
 }
 
-void AppendStrips(vtkCellArray* strips, Mesh& mesh)
+void AppendStrips(vtkCellArray* strips, vtkIdType firstCell, Mesh& mesh)
 {
-  ForEachCell(strips, [&mesh](vtkIdType size, const vtkIdType* ids) {
+  ForEachCell(strips, firstCell, [&mesh](vtkIdType cell, vtkIdType size, const vtkIdType* ids) {
     for (vtkIdType j = 0; j + 2 < size; ++j)
     {
-      AppendTriangle(mesh, ids[j], ids[j + 1 + j % 2], ids[j + 1 + (j + 1) % 2]);
+      AppendTriangle(mesh, cell, ids[j], ids[j + 1 + j % 2], ids[j + 1 + (j + 1) % 2]);
     }
   });
 }
@@ -178,17 +189,27 @@ Mesh WorldMesh(vtkPolyData* polyData, vtkMatrix4x4* matrix)
       mesh.Points.push_back(static_cast<float>(world[k] / world[3]));
     }
   }
-  AppendPolygons(polyData->GetPolys(), mesh);
-  AppendStrips(polyData->GetStrips(), mesh);
+  const vtkIdType firstPolygon = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
+  AppendPolygons(polyData->GetPolys(), firstPolygon, mesh);
+  AppendStrips(polyData->GetStrips(), firstPolygon + polyData->GetNumberOfPolys(), mesh);
   return mesh;
 }
 
-using PolyDataList = std::vector<vtkSmartPointer<vtkPolyData>>;
+// A polydata to trace, with what the composite mapper says of its block.
+struct Part
+{
+  vtkSmartPointer<vtkPolyData> Data;
+  double Opacity = 1.0;   // the block's, times the actor's
+  bool HasColor = false;  // a block colour, drawn instead of the property's
+  glm::dvec3 Color{ 1.0 };
+  bool MapsScalars = true; // glyph copies are coloured by the property only
+};
+using PartList = std::vector<Part>;
 
-// The composite mapper lets a block inherit its parent's visibility and
-// opacity unless it has its own.
+// The composite mapper lets a block inherit its parent's visibility, opacity
+// and colour unless it has its own.
 void CollectVisibleLeaves(vtkDataObject* object, vtkCompositeDataDisplayAttributes* attributes,
-  bool visible, double opacity, PolyDataList& leaves)
+  bool visible, Part block, PartList& leaves)
 {
   if (!object)
   {
@@ -200,7 +221,12 @@ void CollectVisibleLeaves(vtkDataObject* object, vtkCompositeDataDisplayAttribut
   }
   if (attributes && attributes->HasBlockOpacity(object))
   {
-    opacity = attributes->GetBlockOpacity(object);
+    block.Opacity = attributes->GetBlockOpacity(object);
+  }
+  if (attributes && attributes->HasBlockColor(object))
+  {
+    block.HasColor = true;
+    block.Color = ToGlm(attributes->GetBlockColor(object).GetData());
   }
   if (auto* tree = vtkDataObjectTree::SafeDownCast(object))
   {
@@ -209,23 +235,24 @@ void CollectVisibleLeaves(vtkDataObject* object, vtkCompositeDataDisplayAttribut
     iter->VisitOnlyLeavesOff();
     for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
     {
-      CollectVisibleLeaves(iter->GetCurrentDataObject(), attributes, visible, opacity, leaves);
+      CollectVisibleLeaves(iter->GetCurrentDataObject(), attributes, visible, block, leaves);
     }
     return;
   }
   auto* polyData = vtkPolyData::SafeDownCast(object);
-  if (polyData && visible && opacity >= 1.0)
+  if (polyData && visible && block.Opacity > 0.0)
   {
-    leaves.emplace_back(polyData);
+    block.Data = polyData;
+    leaves.push_back(block);
   }
 }
 
-PolyDataList CompositeGeometry(vtkShadowCompositeMapper* mapper)
+PartList CompositeGeometry(vtkShadowCompositeMapper* mapper)
 {
   mapper->Update();
-  PolyDataList leaves;
+  PartList leaves;
   CollectVisibleLeaves(mapper->GetInputDataObject(0, 0),
-    mapper->GetCompositeDataDisplayAttributes(), true, 1.0, leaves);
+    mapper->GetCompositeDataDisplayAttributes(), true, Part(), leaves);
   return leaves;
 }
 
@@ -348,14 +375,14 @@ std::string ConfigureGlyph(vtkGlyph3DMapper* mapper, vtkDataSet* points, vtkGlyp
   return {};
 }
 
-PolyDataList GlyphGeometry(vtkGlyph3DMapper* mapper)
+PartList GlyphGeometry(vtkGlyph3DMapper* mapper)
 {
   mapper->Update();
   if (!mapper->GetSource(0))
   {
     return {}; // the default glyph is a line
   }
-  PolyDataList glyphs;
+  PartList glyphs;
   for (vtkDataSet* points : DataSetsOf(mapper->GetInputDataObject(0, 0)))
   {
     vtkNew<vtkGlyph3D> glyph;
@@ -366,12 +393,15 @@ PolyDataList GlyphGeometry(vtkGlyph3DMapper* mapper)
       return {};
     }
     glyph->Update();
-    glyphs.emplace_back(glyph->GetOutput());
+    Part copies;
+    copies.Data = glyph->GetOutput();
+    copies.MapsScalars = false;
+    glyphs.push_back(copies);
   }
   return glyphs;
 }
 
-PolyDataList MapperGeometry(vtkMapper* mapper)
+PartList MapperGeometry(vtkMapper* mapper)
 {
   if (auto* composite = vtkShadowCompositeMapper::SafeDownCast(mapper))
   {
@@ -387,7 +417,9 @@ PolyDataList MapperGeometry(vtkMapper* mapper)
     polyDataMapper->Update();
     if (vtkPolyData* input = polyDataMapper->GetInput())
     {
-      return { input };
+      Part whole;
+      whole.Data = input;
+      return { whole };
     }
     return {};
   }
@@ -406,16 +438,82 @@ bool CastsShadows(vtkActor* actor)
   return !keys || !keys->Has(key) || keys->Get(key) != 0;
 }
 
-bool IsOpaqueVisibleCaster(vtkActor* actor)
+bool IsVisibleCaster(vtkActor* actor)
 {
-  return actor->GetVisibility() && actor->GetMapper() &&
-    actor->GetProperty()->GetOpacity() >= 1.0 && !actor->GetForceTranslucent() &&
+  return actor->GetVisibility() && actor->GetMapper() && actor->GetProperty()->GetOpacity() > 0.0 &&
     CastsShadows(actor);
 }
 
-std::vector<Mesh> CasterMeshes(vtkRenderer* renderer)
+// The mapper's scalars as VTK colours them (RGBA, alpha from the lookup
+// table), or null where it draws without them. cellFlag: 0 per point, 1 per
+// cell; field-data colours (one tuple for everything) are left out.
+vtkSmartPointer<vtkUnsignedCharArray> MappedScalars(vtkMapper* mapper, vtkDataSet* data, int& cellFlag)
 {
-  std::vector<Mesh> meshes;
+  cellFlag = 0;
+  if (!mapper->GetScalarVisibility())
+  {
+    return nullptr;
+  }
+  vtkAbstractArray* scalars = vtkAbstractMapper::GetAbstractScalars(data, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  if (!scalars || cellFlag > 1)
+  {
+    return nullptr;
+  }
+  return vtk::TakeSmartPointer(
+    mapper->GetLookupTable()->MapScalars(scalars, mapper->GetColorMode(), -1));
+}
+
+glm::vec4 ColorOf(vtkUnsignedCharArray* colors, vtkIdType tuple, double opacity)
+{
+  const unsigned char* rgba = colors->GetPointer(4 * tuple);
+  return { rgba[0] / 255.0f, rgba[1] / 255.0f, rgba[2] / 255.0f,
+    static_cast<float>(opacity * rgba[3] / 255.0) };
+}
+
+// The colour and opacity VTK draws at each triangle corner: the mapped
+// scalars (their alpha times the part's opacity), or the block's or the
+// property's diffuse colour with the part's opacity. Textures are not read.
+void ColorCorners(Mesh& mesh, const Part& part, vtkMapper* mapper, vtkProperty* property)
+{
+  const double opacity = part.Opacity * property->GetOpacity();
+  const glm::vec4 uniform(
+    part.HasColor ? part.Color : ToGlm(property->GetDiffuseColor()), opacity);
+  int cellFlag = 0;
+  vtkSmartPointer<vtkUnsignedCharArray> colors =
+    part.MapsScalars ? MappedScalars(mapper, part.Data, cellFlag) : nullptr;
+  if (colors && colors->GetNumberOfComponents() != 4)
+  {
+    colors = nullptr;
+  }
+  mesh.CornerColors.clear();
+  mesh.CornerColors.reserve(mesh.Triangles.size());
+  for (std::size_t t = 0; t < mesh.TriangleCells.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType tuple = cellFlag == 1 ? mesh.TriangleCells[t] : mesh.Triangles[3 * t + k];
+      mesh.CornerColors.push_back(colors ? ColorOf(colors, tuple, opacity) : uniform);
+    }
+  }
+}
+
+bool IsTranslucent(const Mesh& mesh)
+{
+  return std::any_of(mesh.CornerColors.begin(), mesh.CornerColors.end(),
+    [](const glm::vec4& rgba) { return rgba.a < 1.0f; });
+}
+
+// The renderer's casters split into opaque and translucent meshes.
+struct CasterGeometry
+{
+  std::vector<Mesh> Opaque;
+  std::vector<Mesh> Translucent;
+};
+
+CasterGeometry CasterMeshes(vtkRenderer* renderer)
+{
+  CasterGeometry casters;
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator iter;
   props->InitTraversal(iter);
@@ -430,20 +528,34 @@ std::vector<Mesh> CasterMeshes(vtkRenderer* renderer)
       }
       continue;
     }
-    if (!IsOpaqueVisibleCaster(actor))
+    if (!IsVisibleCaster(actor))
     {
       continue;
     }
-    for (const auto& polyData : MapperGeometry(actor->GetMapper()))
+    if (actor->GetTexture() && actor->GetTexture()->IsTranslucent())
     {
-      Mesh mesh = WorldMesh(polyData, actor->GetMatrix());
-      if (!mesh.Triangles.empty())
+      Warn("a texture's alpha is not reproduced: its actor traced with its property's opacity");
+    }
+    for (const Part& part : MapperGeometry(actor->GetMapper()))
+    {
+      Mesh mesh = WorldMesh(part.Data, actor->GetMatrix());
+      if (mesh.Triangles.empty())
       {
-        meshes.push_back(std::move(mesh));
+        continue;
+      }
+      ColorCorners(mesh, part, actor->GetMapper(), actor->GetProperty());
+      if (IsTranslucent(mesh))
+      {
+        casters.Translucent.push_back(std::move(mesh));
+      }
+      else
+      {
+        mesh.CornerColors.clear();
+        casters.Opaque.push_back(std::move(mesh));
       }
     }
   }
-  return meshes;
+  return casters;
 }
 
 std::size_t CountTriangles(const std::vector<Mesh>& meshes)
@@ -456,15 +568,15 @@ std::size_t CountTriangles(const std::vector<Mesh>& meshes)
   return count;
 }
 
-double SurfaceOffsetOf(const std::vector<Mesh>& meshes)
+double SurfaceOffsetOf(const std::vector<const Mesh*>& meshes)
 {
   glm::dvec3 low(std::numeric_limits<double>::max());
   glm::dvec3 high(std::numeric_limits<double>::lowest());
-  for (const Mesh& mesh : meshes)
+  for (const Mesh* mesh : meshes)
   {
-    for (std::size_t i = 0; i < mesh.Points.size(); i += 3)
+    for (std::size_t i = 0; i < mesh->Points.size(); i += 3)
     {
-      const glm::dvec3 p(mesh.Points[i], mesh.Points[i + 1], mesh.Points[i + 2]);
+      const glm::dvec3 p(mesh->Points[i], mesh->Points[i + 1], mesh->Points[i + 2]);
       low = glm::min(low, p);
       high = glm::max(high, p);
     }
@@ -636,22 +748,54 @@ struct TriangleBuffers
   const unsigned* Triangles = nullptr;
 };
 
+// One Embree scene and what the oracle keeps of its geometries.
+struct TracedScene
+{
+  SceneHandle Scene;
+  std::vector<TriangleBuffers> Geometries; // by geometry id; owned by Scene
+  // Translucent scenes: colour and opacity at each triangle's corners.
+  std::vector<std::vector<glm::vec4>> CornerColors; // by geometry id
+};
+
+// What the light a ray carries keeps after its translucent crossings, and
+// how many rays of a sample there were and whether they all agreed.
+struct LightSample
+{
+  glm::dvec3 Sum{ 0.0 };
+  int Rays = 0;
+  bool Agree = true;
+};
+
 } // namespace
+
+//------------------------------------------------------------------------------
+glm::dvec3 SurfaceTransmittance(const glm::dvec3& color, double opacity)
+{
+  const double a = std::min(1.0, std::max(0.0, opacity));
+  const glm::dvec3 c = glm::clamp(color, 0.0, 1.0);
+  return (1.0 - a) * ((1.0 - a) + a * c);
+}
 
 //------------------------------------------------------------------------------
 struct Oracle::Impl
 {
   DeviceHandle Device;
-  SceneHandle Scene;
-  std::vector<TriangleBuffers> Geometries; // by geometry id; owned by Scene
+  TracedScene Opaque;
+  TracedScene Translucent; // no Scene without translucent casters
   std::size_t NumberOfTriangles = 0;
+  std::size_t NumberOfTranslucentTriangles = 0;
   double SurfaceOffset = 0.0;
+
+  // A ray crosses at most this many translucent surfaces; past them its light
+  // is taken as spent.
+  static constexpr int MostCrossings = 1024;
 
   void Clear()
   {
-    this->Scene.reset();
-    this->Geometries.clear();
+    this->Opaque = TracedScene();
+    this->Translucent = TracedScene();
     this->NumberOfTriangles = 0;
+    this->NumberOfTranslucentTriangles = 0;
     this->SurfaceOffset = 0.0;
   }
 
@@ -669,7 +813,12 @@ struct Oracle::Impl
     return true;
   }
 
-  bool Attach(RTCScene scene, const Mesh& mesh)
+  std::string DeviceError(const std::string& what) const
+  {
+    return "Embree: cannot " + what + " (" + ErrorName(rtcGetDeviceError(this->Device.get())) + ")";
+  }
+
+  bool Attach(TracedScene& traced, const Mesh& mesh)
   {
     RTCGeometry geometry = rtcNewGeometry(this->Device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
     if (!geometry)
@@ -690,13 +839,45 @@ struct Oracle::Impl
     std::copy(mesh.Points.begin(), mesh.Points.end(), points);
     std::copy(mesh.Triangles.begin(), mesh.Triangles.end(), triangles);
     rtcCommitGeometry(geometry);
-    const unsigned id = rtcAttachGeometry(scene, geometry);
+    const unsigned id = rtcAttachGeometry(traced.Scene.get(), geometry);
     rtcReleaseGeometry(geometry); // the scene keeps it
-    if (id >= this->Geometries.size())
+    if (id >= traced.Geometries.size())
     {
-      this->Geometries.resize(id + 1);
+      traced.Geometries.resize(id + 1);
+      traced.CornerColors.resize(id + 1);
     }
-    this->Geometries[id] = { points, triangles };
+    traced.Geometries[id] = { points, triangles };
+    traced.CornerColors[id] = mesh.CornerColors;
+    return true;
+  }
+
+  // A BVH of the meshes in `traced`; false with `error` if Embree fails.
+  bool BuildScene(const std::vector<Mesh>& meshes, TracedScene& traced, std::string& error)
+  {
+    traced = TracedScene();
+    traced.Scene.reset(rtcNewScene(this->Device.get()));
+    if (!traced.Scene)
+    {
+      error = this->DeviceError("create a scene");
+      return false;
+    }
+    // ROBUST: no optimisations that trade accuracy for speed; this is ground truth.
+    rtcSetSceneFlags(traced.Scene.get(), RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(traced.Scene.get(), RTC_BUILD_QUALITY_HIGH);
+    for (const Mesh& mesh : meshes)
+    {
+      if (!this->Attach(traced, mesh))
+      {
+        error = this->DeviceError("create a triangle geometry");
+        return false;
+      }
+    }
+    rtcCommitScene(traced.Scene.get());
+    if (rtcGetDeviceError(this->Device.get()) != RTC_ERROR_NONE)
+    {
+      error = this->DeviceError("build the BVH");
+      return false;
+    }
     return true;
   }
 
@@ -711,7 +892,7 @@ struct Oracle::Impl
   // shadow rays can start a small, scale-relative distance off it.
   Hit MakeHit(const Ray& ray, const RTCRayHit& rayHit) const
   {
-    const TriangleBuffers& buffers = this->Geometries[rayHit.hit.geomID];
+    const TriangleBuffers& buffers = this->Opaque.Geometries[rayHit.hit.geomID];
     const unsigned* triangle = buffers.Triangles + 3 * static_cast<std::size_t>(rayHit.hit.primID);
     const glm::dvec3 a = this->Point(buffers, triangle[0]);
     const glm::dvec3 normal =
@@ -728,21 +909,29 @@ struct Oracle::Impl
     return hit;
   }
 
-  // The nearest hit along the ray from t = near; geomID is invalid without one.
-  RTCRayHit Nearest(const Ray& ray, float near = 0.0f) const
+  // The nearest hit in `traced` along the ray from t = near; geomID is
+  // invalid without one.
+  static RTCRayHit Nearest(const TracedScene& traced, const Ray& ray, float near = 0.0f)
   {
     RTCRayHit rayHit{};
     rayHit.ray = ToEmbree(ray);
     rayHit.ray.tnear = near;
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    shadoworacle::IntersectNearest(this->Scene.get(), rayHit);
+    shadoworacle::IntersectNearest(traced.Scene.get(), rayHit);
     return rayHit;
+  }
+
+  // Where a ray that hit at t goes on, just beyond the hit.
+  float Beyond(float t) const
+  {
+    const float next = t + std::max(t * 1e-6f, static_cast<float>(this->SurfaceOffset));
+    return next > t ? next : std::nextafter(t, std::numeric_limits<float>::infinity());
   }
 
   bool Intersect(const Ray& ray, Hit& hit) const
   {
-    const RTCRayHit rayHit = this->Nearest(ray);
+    const RTCRayHit rayHit = Nearest(this->Opaque, ray);
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
     {
       return false;
@@ -754,8 +943,53 @@ struct Oracle::Impl
   bool Occluded(const Ray& ray) const
   {
     RTCRay shadowRay = ToEmbree(ray);
-    shadoworacle::TestOcclusion(this->Scene.get(), shadowRay);
+    shadoworacle::TestOcclusion(this->Opaque.Scene.get(), shadowRay);
     return shadowRay.tfar < 0.0f; // Embree sets -inf on a hit
+  }
+
+  // The colour and opacity at a translucent hit, interpolated between the
+  // triangle's corners as the rasteriser interpolates vertex colours.
+  glm::dvec4 ColorAt(const RTCHit& hit) const
+  {
+    const std::vector<glm::vec4>& corners = this->Translucent.CornerColors[hit.geomID];
+    const std::size_t first = 3 * static_cast<std::size_t>(hit.primID);
+    return glm::dvec4(corners[first]) * static_cast<double>(1.0f - hit.u - hit.v) +
+      glm::dvec4(corners[first + 1]) * static_cast<double>(hit.u) +
+      glm::dvec4(corners[first + 2]) * static_cast<double>(hit.v);
+  }
+
+  // The product of SurfaceTransmittance over every translucent surface the
+  // ray crosses, each once, in any order.
+  glm::dvec3 TranslucentProduct(const Ray& ray) const
+  {
+    glm::dvec3 product(1.0);
+    if (!this->Translucent.Scene)
+    {
+      return product;
+    }
+    float near = 0.0f;
+    for (int crossing = 0; crossing < MostCrossings; ++crossing)
+    {
+      const RTCRayHit rayHit = Nearest(this->Translucent, ray, near);
+      if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+      {
+        return product;
+      }
+      const glm::dvec4 rgba = this->ColorAt(rayHit.hit);
+      product *= SurfaceTransmittance(glm::dvec3(rgba), rgba.a);
+      if (product == glm::dvec3(0.0))
+      {
+        return product;
+      }
+      near = this->Beyond(rayHit.ray.tfar);
+    }
+    return glm::dvec3(0.0);
+  }
+
+  // What of the light reaches the ray's end, per channel.
+  glm::dvec3 Transmittance(const Ray& ray) const
+  {
+    return this->Occluded(ray) ? glm::dvec3(0.0) : this->TranslucentProduct(ray);
   }
 
   // Distinct geometries along the ray, up to `most`: each hit restarts the
@@ -766,7 +1000,7 @@ struct Oracle::Impl
     float near = 0.0f;
     while (static_cast<int>(seen.size()) < most)
     {
-      const RTCRayHit rayHit = this->Nearest(ray, near);
+      const RTCRayHit rayHit = Nearest(this->Opaque, ray, near);
       if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
       {
         break;
@@ -775,9 +1009,7 @@ struct Oracle::Impl
       {
         seen.push_back(rayHit.hit.geomID);
       }
-      const float t = rayHit.ray.tfar;
-      const float next = t + std::max(t * 1e-6f, static_cast<float>(this->SurfaceOffset));
-      near = next > t ? next : std::nextafter(t, std::numeric_limits<float>::infinity());
+      near = this->Beyond(rayHit.ray.tfar);
     }
     return static_cast<int>(seen.size());
   }
@@ -809,36 +1041,134 @@ struct Oracle::Impl
     return glm::dot(normal, towardLight) > minimumCosine;
   }
 
-  // Of `count` stratified rays toward a sized light (`size`: the light's
-  // GetLightSize) from the point, how many reach it; -1 where the point is
-  // not counted.
-  int CountUnoccluded(const LightFrame& light, double size, const glm::dvec3& position,
-    const glm::dvec3& normal, double minimumCosine, int count, std::uint64_t seed) const
+  // Sums rayValue(ray) (a dvec3) over `count` stratified rays from the point
+  // toward a light of `size` (its GetLightSize; 0: the one ray to its
+  // centre); false where the point is not counted.
+  template <typename RayValue>
+  bool SampleLight(const LightFrame& light, double size, const glm::dvec3& position,
+    const glm::dvec3& normal, double minimumCosine, int count, std::uint64_t seed,
+    RayValue&& rayValue, LightSample& sample) const
   {
+    sample = LightSample();
     Ray centreRay;
     if (!this->ShadowRay(light, position, normal, minimumCosine, centreRay))
     {
-      return -1;
+      return false;
+    }
+    if (!(size > 0.0))
+    {
+      sample.Sum = rayValue(centreRay);
+      sample.Rays = 1;
+      return true;
     }
     const shadowarealight::LightCone cone = light.Positional
       ? shadowarealight::SphereCone(centreRay.Origin, light.Position, size)
       : shadowarealight::SunCone(light.TowardLight, size);
+    sample.Rays = count;
     if (cone.Inside)
     {
-      return count;
+      sample.Sum = glm::dvec3(count);
+      return true;
     }
     const int strata = static_cast<int>(std::lround(std::sqrt(static_cast<double>(count))));
-    int unoccluded = 0;
+    glm::dvec3 first(0.0);
     for (int i = 0; i < count; ++i)
     {
-      const shadowarealight::LightRay sample =
+      const shadowarealight::LightRay ray =
         shadowarealight::SampleCone(cone, centreRay.Origin, i, strata, seed);
-      const double far = std::isinf(sample.Length)
-        ? sample.Length
-        : std::max(0.0, sample.Length - this->SurfaceOffset);
-      unoccluded += this->Occluded(Ray{ centreRay.Origin, sample.Direction, far }) ? 0 : 1;
+      const double far =
+        std::isinf(ray.Length) ? ray.Length : std::max(0.0, ray.Length - this->SurfaceOffset);
+      const glm::dvec3 value = rayValue(Ray{ centreRay.Origin, ray.Direction, far });
+      first = i == 0 ? value : first;
+      sample.Agree = sample.Agree && value == first;
+      sample.Sum += value;
     }
-    return unoccluded;
+    return true;
+  }
+
+  // Per pixel, the mean of rayValue over a sized light's rays (NotCounted in
+  // every channel where the pixel is not counted): CoarseRays first, then
+  // RefinedRays where the rays disagree, or within two pixels of a pixel whose
+  // rays disagree or whose mean differs.
+  template <typename RayValue>
+  std::vector<glm::vec3> SampleLightPerPixel(const Surface& surface, const LightFrame& frame,
+    double size, double minimumCosine, VisibilityRays* rays, RayValue&& rayValue) const
+  {
+    const int width = surface.Width;
+    const int height = surface.Height;
+    const std::size_t count = surface.Valid.size();
+    std::vector<glm::vec3> mean(count, glm::vec3(NotCounted));
+    auto sample = [&](std::size_t i, int rayCount, std::uint64_t pass, LightSample& result) {
+      return surface.Valid[i] &&
+        this->SampleLight(frame, size, surface.Position[i], surface.Normal[i], minimumCosine,
+          rayCount, shadowarealight::Mix(i, pass), rayValue, result);
+    };
+    auto average = [](const LightSample& s) {
+      return glm::vec3(static_cast<float>(s.Sum.x) / s.Rays, static_cast<float>(s.Sum.y) / s.Rays,
+        static_cast<float>(s.Sum.z) / s.Rays);
+    };
+    std::vector<LightSample> coarse(count);
+    std::vector<unsigned char> counted(count, 0);
+    ForEachRow(height, [&](int y) {
+      for (int x = 0; x < width; ++x)
+      {
+        const std::size_t i = static_cast<std::size_t>(y) * width + x;
+        counted[i] = sample(i, CoarseRays, 0, coarse[i]) ? 1 : 0;
+      }
+    });
+    constexpr int RefineReach = 2;
+    const bool sized = size > 0.0;
+    std::vector<LightSample> final(coarse);
+    std::vector<unsigned char> refined(count, 0);
+    ForEachRow(height, [&](int y) {
+      for (int x = 0; x < width; ++x)
+      {
+        const std::size_t i = static_cast<std::size_t>(y) * width + x;
+        if (!counted[i])
+        {
+          continue;
+        }
+        bool refine = sized && !coarse[i].Agree;
+        for (int dy = -RefineReach; sized && dy <= RefineReach && !refine; ++dy)
+        {
+          for (int dx = -RefineReach; dx <= RefineReach && !refine; ++dx)
+          {
+            const int nx = x + dx;
+            const int ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= width || ny >= height)
+            {
+              continue;
+            }
+            const std::size_t n = static_cast<std::size_t>(ny) * width + nx;
+            refine = counted[n] && (!coarse[n].Agree || coarse[n].Sum != coarse[i].Sum);
+          }
+        }
+        if (refine)
+        {
+          refined[i] = 1;
+          sample(i, RefinedRays, 1, final[i]);
+        }
+        mean[i] = average(final[i]);
+      }
+    });
+    if (rays)
+    {
+      for (std::size_t i = 0; i < count; ++i)
+      {
+        if (!counted[i])
+        {
+          continue;
+        }
+        ++rays->Counted;
+        rays->Refined += refined[i];
+        rays->Rays += coarse[i].Rays + (refined[i] ? final[i].Rays : 0);
+        if (!final[i].Agree && (rays->FewestAtPartial == 0 || final[i].Rays < rays->FewestAtPartial))
+        {
+          rays->FewestAtPartial = final[i].Rays;
+        }
+      }
+    }
+    return mean;
   }
 
   Truth ClassifyPoint(const LightFrame& light, const glm::dvec3& position,
@@ -868,6 +1198,11 @@ std::size_t Oracle::GetNumberOfTriangles() const
   return this->Pimpl ? this->Pimpl->NumberOfTriangles : 0;
 }
 
+std::size_t Oracle::GetNumberOfTranslucentTriangles() const
+{
+  return this->Pimpl ? this->Pimpl->NumberOfTranslucentTriangles : 0;
+}
+
 double Oracle::GetSurfaceOffset() const
 {
   return this->Pimpl ? this->Pimpl->SurfaceOffset : 0.0;
@@ -887,47 +1222,30 @@ bool Oracle::Build(vtkRenderer* renderer, std::string& error)
     error = "no renderer";
     return false;
   }
-  const std::vector<Mesh> meshes = CasterMeshes(renderer);
-  if (CountTriangles(meshes) == 0)
+  const CasterGeometry casters = CasterMeshes(renderer);
+  if (CountTriangles(casters.Opaque) == 0)
   {
     error = "the renderer has no visible, opaque, shadow-casting triangles";
     return false;
   }
-  if (!impl.EnsureDevice(error))
+  if (!impl.EnsureDevice(error) || !impl.BuildScene(casters.Opaque, impl.Opaque, error) ||
+    (!casters.Translucent.empty() &&
+      !impl.BuildScene(casters.Translucent, impl.Translucent, error)))
   {
-    return false;
-  }
-  SceneHandle scene(rtcNewScene(impl.Device.get()));
-  if (!scene)
-  {
-    error =
-      "Embree: cannot create a scene (" + ErrorName(rtcGetDeviceError(impl.Device.get())) + ")";
-    return false;
-  }
-  // ROBUST: no optimisations that trade accuracy for speed; this is ground truth.
-  rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_HIGH);
-  for (const Mesh& mesh : meshes)
-  {
-    if (!impl.Attach(scene.get(), mesh))
-    {
-      error = "Embree: cannot create a triangle geometry (" +
-        ErrorName(rtcGetDeviceError(impl.Device.get())) + ")";
-      impl.Clear();
-      return false;
-    }
-  }
-  rtcCommitScene(scene.get());
-  const RTCError code = rtcGetDeviceError(impl.Device.get());
-  if (code != RTC_ERROR_NONE)
-  {
-    error = "Embree: cannot build the BVH (" + ErrorName(code) + ")";
     impl.Clear();
     return false;
   }
-  impl.Scene = std::move(scene);
-  impl.NumberOfTriangles = CountTriangles(meshes);
-  impl.SurfaceOffset = SurfaceOffsetOf(meshes);
+  impl.NumberOfTriangles = CountTriangles(casters.Opaque);
+  impl.NumberOfTranslucentTriangles = CountTriangles(casters.Translucent);
+  std::vector<const Mesh*> all;
+  for (const auto* meshes : { &casters.Opaque, &casters.Translucent })
+  {
+    for (const Mesh& mesh : *meshes)
+    {
+      all.push_back(&mesh);
+    }
+  }
+  impl.SurfaceOffset = SurfaceOffsetOf(all);
   return true;
 }
 
@@ -935,7 +1253,7 @@ bool Oracle::Build(vtkRenderer* renderer, std::string& error)
 Surface Oracle::Trace(vtkRenderer* renderer, int width, int height) const
 {
   Surface surface = EmptySurface(width, height);
-  if (!renderer || !this->Pimpl || !this->Pimpl->Scene || surface.Valid.empty())
+  if (!renderer || !this->Pimpl || !this->Pimpl->Opaque.Scene || surface.Valid.empty())
   {
     return surface;
   }
@@ -1003,7 +1321,7 @@ std::vector<Truth> Oracle::Classify(
   const Surface& surface, vtkLight* light, double minimumCosine) const
 {
   std::vector<Truth> truth(surface.Valid.size(), Truth::Ignored);
-  if (!light || !this->Pimpl || !this->Pimpl->Scene)
+  if (!light || !this->Pimpl || !this->Pimpl->Opaque.Scene)
   {
     return truth;
   }
@@ -1045,112 +1363,54 @@ std::vector<float> Oracle::Visibility(
   {
     *rays = VisibilityRays();
   }
-  const double size = vtkAbstractShadowMapPass::GetLightSize(light);
-  if (!(size > 0.0))
+  const Impl* impl = this->SampleableImpl(surface, light, minimumCosine);
+  if (!impl)
   {
-    const std::vector<Truth> truth = this->Classify(surface, light, minimumCosine);
-    for (std::size_t i = 0; i < truth.size(); ++i)
-    {
-      visibility[i] = truth[i] == Truth::Lit ? 1.0f : truth[i] == Truth::Shadowed ? 0.0f : NotCounted;
-      if (rays && truth[i] != Truth::Ignored)
-      {
-        ++rays->Counted;
-        ++rays->Rays;
-      }
-    }
     return visibility;
   }
+  const std::vector<glm::vec3> mean = impl->SampleLightPerPixel(surface, MakeLightFrame(light),
+    vtkAbstractShadowMapPass::GetLightSize(light), minimumCosine, rays,
+    [impl](const Ray& ray) { return impl->Occluded(ray) ? glm::dvec3(0.0) : glm::dvec3(1.0); });
+  std::transform(mean.begin(), mean.end(), visibility.begin(), [](const glm::vec3& v) { return v.x; });
+  return visibility;
+}
+
+//------------------------------------------------------------------------------
+std::vector<glm::vec3> Oracle::Transmittance(
+  const Surface& surface, vtkLight* light, double minimumCosine, VisibilityRays* rays) const
+{
+  if (rays)
+  {
+    *rays = VisibilityRays();
+  }
+  const Impl* impl = this->SampleableImpl(surface, light, minimumCosine);
+  if (!impl)
+  {
+    return std::vector<glm::vec3>(surface.Valid.size(), glm::vec3(NotCounted));
+  }
+  return impl->SampleLightPerPixel(surface, MakeLightFrame(light),
+    vtkAbstractShadowMapPass::GetLightSize(light), minimumCosine, rays,
+    [impl](const Ray& ray) { return impl->Transmittance(ray); });
+}
+
+//------------------------------------------------------------------------------
+const Oracle::Impl* Oracle::SampleableImpl(
+  const Surface& surface, vtkLight* light, double minimumCosine) const
+{
   const std::size_t count = static_cast<std::size_t>(std::max(0, surface.Width)) *
     static_cast<std::size_t>(std::max(0, surface.Height));
-  if (!light || !this->Pimpl || !this->Pimpl->Scene || surface.Valid.size() != count ||
+  if (!light || !this->Pimpl || !this->Pimpl->Opaque.Scene || surface.Valid.size() != count ||
     surface.Position.size() != count || surface.Normal.size() != count)
   {
     this->Classify(surface, light, minimumCosine); // for its warning
-    return visibility;
+    return nullptr;
   }
-  const LightFrame frame = MakeLightFrame(light);
-  if (!frame.Usable)
+  if (!MakeLightFrame(light).Usable)
   {
     Warn("light has no direction (position equals focal point): every pixel ignored");
-    return visibility;
+    return nullptr;
   }
-  const Impl& impl = *this->Pimpl;
-  const int width = surface.Width;
-  const int height = surface.Height;
-  auto unoccluded = [&](std::size_t i, int rayCount, std::uint64_t pass) {
-    return impl.CountUnoccluded(frame, size, surface.Position[i], surface.Normal[i],
-      minimumCosine, rayCount, shadowarealight::Mix(i, pass));
-  };
-  constexpr int RefineReach = 2;
-  // First pass: a few rays per pixel.
-  std::vector<int> coarse(count, -1);
-  ForEachRow(height, [&](int y) {
-    for (int x = 0; x < width; ++x)
-    {
-      const std::size_t i = static_cast<std::size_t>(y) * width + x;
-      coarse[i] = surface.Valid[i] ? unoccluded(i, CoarseRays, 0) : -1;
-    }
-  });
-  // Second pass where the light is partly hidden here or nearby: the coarse
-  // rays of a pixel whose light is only a few percent hidden often all agree,
-  // but a pixel within RefineReach of it has seen the penumbra.
-  auto partial = [](int n) { return n > 0 && n < CoarseRays; };
-  std::vector<int> refined(count, 0);
-  ForEachRow(height, [&](int y) {
-    for (int x = 0; x < width; ++x)
-    {
-      const std::size_t i = static_cast<std::size_t>(y) * width + x;
-      if (coarse[i] < 0)
-      {
-        continue;
-      }
-      bool refine = partial(coarse[i]);
-      for (int dy = -RefineReach; dy <= RefineReach && !refine; ++dy)
-      {
-        for (int dx = -RefineReach; dx <= RefineReach && !refine; ++dx)
-        {
-          const int nx = x + dx;
-          const int ny = y + dy;
-          if (nx < 0 || ny < 0 || nx >= width || ny >= height)
-          {
-            continue;
-          }
-          const int n = coarse[static_cast<std::size_t>(ny) * width + nx];
-          refine = n >= 0 && (partial(n) || n != coarse[i]);
-        }
-      }
-      if (refine)
-      {
-        refined[i] = 1;
-        visibility[i] = static_cast<float>(unoccluded(i, RefinedRays, 1)) / RefinedRays;
-      }
-      else
-      {
-        visibility[i] = static_cast<float>(coarse[i]) / CoarseRays;
-      }
-    }
-  });
-  if (rays)
-  {
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      if (coarse[i] < 0)
-      {
-        continue;
-      }
-      ++rays->Counted;
-      rays->Refined += refined[i];
-      const int traced = refined[i] ? CoarseRays + RefinedRays : CoarseRays;
-      rays->Rays += traced;
-      const int behind = refined[i] ? RefinedRays : CoarseRays;
-      if (visibility[i] > 0.0f && visibility[i] < 1.0f &&
-        (rays->FewestAtPartial == 0 || behind < rays->FewestAtPartial))
-      {
-        rays->FewestAtPartial = behind;
-      }
-    }
-  }
-  return visibility;
+  return this->Pimpl.get();
 }
 
 //------------------------------------------------------------------------------
@@ -1159,7 +1419,7 @@ std::vector<unsigned char> Oracle::CountOccluders(
 {
   std::vector<unsigned char> counts(truth.size(), 0);
   const LightFrame frame = light ? MakeLightFrame(light) : LightFrame();
-  if (!light || !this->Pimpl || !this->Pimpl->Scene || !frame.Usable ||
+  if (!light || !this->Pimpl || !this->Pimpl->Opaque.Scene || !frame.Usable ||
     truth.size() != surface.Valid.size() || surface.Position.size() != truth.size() ||
     surface.Normal.size() != truth.size())
   {

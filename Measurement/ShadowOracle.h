@@ -62,7 +62,19 @@ enum class Truth : unsigned char
 };
 
 /**
- * The triangles of a renderer's shadow casters in one Embree BVH.
+ * What a translucent surface of `color` and `opacity` (a, clamped to [0, 1])
+ * lets through of the light that crosses it, per channel c:
+ * (1 - a) (1 - a + a c). A white surface lets 1 - a through, what VTK's
+ * blending shows of what lies behind it; a coloured one also filters that
+ * light toward its colour in proportion to its opacity; an opaque one (a = 1)
+ * lets nothing through. Crossings multiply, so their order does not matter.
+ * The passes' transmittance layers use the same model (docs/TRANSLUCENT.md).
+ */
+glm::dvec3 SurfaceTransmittance(const glm::dvec3& color, double opacity);
+
+/**
+ * The triangles of a renderer's shadow casters in Embree BVHs: one of the
+ * opaque casters, one of the translucent ones.
  *
  * Geometry is triangulated exactly as VTK 9.1's OpenGL mapper does (polygons
  * as fans from their first point, strips with alternating winding), in single
@@ -83,17 +95,25 @@ public:
   Oracle& operator=(const Oracle&) = delete;
 
   /**
-   * Builds the BVH from the renderer's visible, opaque (opacity 1, not forced
-   * translucent) vtkActors that cast shadows (no vtkAbstractShadowMapPass::
-   * CASTS_SHADOWS() key in their property keys, or a non-zero one), each
-   * placed by actor->GetMatrix(). Mappers: vtkPolyDataMapper (its input after
-   * Update), the composite polydata mapper (every polydata leaf whose block is
-   * visible and opaque) and vtkGlyph3DMapper (the same glyphs built by
+   * Builds the BVHs from the renderer's visible vtkActors of non-zero opacity
+   * that cast shadows (no vtkAbstractShadowMapPass::CASTS_SHADOWS() key in
+   * their property keys, or a non-zero one), each placed by
+   * actor->GetMatrix(). A caster is translucent where its colour's alpha is
+   * below 1: the actor's opacity times a composite block's, times the alpha
+   * of the mapper's scalar colours (lookup tables with alpha, direct RGBA
+   * scalars); its colour is the mapped scalars' or else the block's or the
+   * property's diffuse colour, per triangle corner (interpolated as vertex
+   * colours; scalars interpolated before mapping and textures are not read,
+   * a translucent texture with a warning). Opaque casters are the only
+   * occluders of Classify, Visibility and CountOccluders, and the only
+   * surfaces Trace sees; Transmittance also crosses the translucent ones.
+   * Mappers: vtkPolyDataMapper (its input after Update), the composite
+   * polydata mapper (every polydata leaf whose block is visible) and vtkGlyph3DMapper (the same glyphs built by
    * vtkGlyph3D; configurations vtkGlyph3D cannot reproduce are skipped with a
    * warning on std::cerr, as are other mappers and non-actor props).
    * Polygons and strips become triangles; lines and vertices are ignored.
-   * Returns false with a one-line `error` when there is nothing to trace or
-   * Embree fails; the previous BVH is then gone.
+   * Returns false with a one-line `error` when there are no opaque triangles
+   * to trace or Embree fails; the previous BVHs are then gone.
    */
   bool Build(vtkRenderer* renderer, std::string& error);
 
@@ -155,6 +175,19 @@ public:
   std::vector<float> Visibility(const Surface& surface, vtkLight* light,
     double minimumCosine = 0.1, VisibilityRays* rays = nullptr) const;
 
+  /**
+   * Per pixel and channel, the fraction of the light's colour that reaches
+   * the surface point through the opaque and translucent casters: each ray
+   * carries 0 if an opaque caster blocks it, or else the product of
+   * SurfaceTransmittance over the translucent surfaces it crosses. A sized
+   * light's rays are Visibility's (refined where they disagree) and averaged;
+   * a light without a size gets its centre ray. NotCounted in every channel
+   * where Classify ignores the pixel. Without translucent casters, each
+   * channel equals Visibility.
+   */
+  std::vector<glm::vec3> Transmittance(const Surface& surface, vtkLight* light,
+    double minimumCosine = 0.1, VisibilityRays* rays = nullptr) const;
+
   /// Rays per pixel of Visibility's two passes (8 x 8 and 16 x 16 strata).
   static constexpr int CoarseRays = 64;
   static constexpr int RefinedRays = 256;
@@ -169,8 +202,11 @@ public:
   std::vector<unsigned char> CountOccluders(const Surface& surface, vtkLight* light,
     const std::vector<Truth>& truth, int most = 2) const;
 
-  /// Triangles in the BVH (0 before a successful Build).
+  /// Triangles of opaque casters (0 before a successful Build).
   std::size_t GetNumberOfTriangles() const;
+
+  /// Triangles of translucent casters.
+  std::size_t GetNumberOfTranslucentTriangles() const;
 
   /// How far shadow rays start off the surface: 1e-5 of the scene's size
   /// (the larger of its bounding-box diagonal and its largest coordinate).
@@ -179,6 +215,10 @@ public:
 private:
   struct Impl;
   std::unique_ptr<Impl> Pimpl;
+
+  // The built oracle if the surface and light can be sampled; null (after
+  // a warning) otherwise.
+  const Impl* SampleableImpl(const Surface& surface, vtkLight* light, double minimumCosine) const;
 };
 
 } // namespace shadoworacle

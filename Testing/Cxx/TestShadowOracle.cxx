@@ -12,12 +12,15 @@
 #include "vtkCamera.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "ShadowMapVTKCompat.h"
+#include "vtkCellData.h"
+#include "vtkColor.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
+#include "vtkLookupTable.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
@@ -31,6 +34,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
 
@@ -998,14 +1002,28 @@ void SetLightSize(vtkLight* light, double size)
 }
 
 /// A half-plane occluder, x < 0 at height `height`, over a ground.
-void AddEdgeOverGround(View& view, double height)
+vtkActor* AddEdgeOverGround(View& view, double height)
 {
   AddGround(view, 30.0);
   vtkNew<vtkPlaneSource> half;
   half->SetOrigin(-30.0, -30.0, height);
   half->SetPoint1(0.0, -30.0, height);
   half->SetPoint2(-30.0, 30.0, height);
-  view.Add(half);
+  return view.Add(half);
+}
+
+/// Under an overhead sun of `diameter` degrees, the camera looking down,
+/// rendered once: the oracle of the view's casters.
+Oracle BuildUnderOverheadSun(View& view, vtkLight*& sun, double diameter = 0.0)
+{
+  sun = view.SetSun({ 0.0, 0.0, 1.0 });
+  SetLightSize(sun, diameter);
+  view.LookDown({ 0.0, 0.0 }, 5.0);
+  view.Window->Render();
+  Oracle oracle;
+  std::string error;
+  EXPECT_TRUE(oracle.Build(view.Renderer, error)) << error;
+  return oracle;
 }
 
 /// The x (by linear interpolation) where the visibility along a GroundLine
@@ -1060,13 +1078,8 @@ TEST(ShadowOracle, SunPenumbraOfAnEdgeIsTheDiscSegment)
   const double height = 4.0;
   AddEdgeOverGround(view, height);
   const double diameter = 3.0; // degrees
-  vtkLight* sun = view.SetSun({ 0.0, 0.0, 1.0 });
-  SetLightSize(sun, diameter);
-  view.LookDown({ 0.0, 0.0 }, 5.0);
-  view.Window->Render();
-  Oracle oracle;
-  std::string error;
-  ASSERT_TRUE(oracle.Build(view.Renderer, error)) << error;
+  vtkLight* sun = nullptr;
+  const Oracle oracle = BuildUnderOverheadSun(view, sun, diameter);
 
   const double penumbraHalf = height * std::tan(glm::radians(0.5 * diameter));
   const Surface surface = GroundLine(-2.0 * penumbraHalf, 2.0 * penumbraHalf, 201);
@@ -1174,4 +1187,254 @@ TEST(ShadowOracle, LightsWithoutASizeGetTheClassification)
   SetLightSize(sun, 0.53);
   EXPECT_EQ(vtkAbstractShadowMapPass::GetLightSize(sun, &clamped), 0.53);
   EXPECT_FALSE(clamped);
+}
+
+//------------------------------------------------------------------------------
+// Transmittance through translucent casters
+
+namespace
+{
+/// A horizontal square of `side` centred on (centre, height).
+vtkActor* AddSlab(View& view, const glm::dvec2& centre, double side, double height,
+  const glm::dvec3& color, double opacity)
+{
+  vtkActor* slab = view.Add(Square(side, 2));
+  slab->SetPosition(centre.x, centre.y, height);
+  slab->GetProperty()->SetDiffuseColor(color.x, color.y, color.z);
+  slab->GetProperty()->SetOpacity(opacity);
+  return slab;
+}
+
+/// The ground point at x of a GroundLine(-3, 3, 61): x = -3 + 0.1 i.
+std::size_t GroundIndex(double x)
+{
+  return static_cast<std::size_t>(std::lround((x + 3.0) / 0.1));
+}
+
+void ExpectTransmittance(const glm::vec3& measured, const glm::dvec3& expected, double tolerance,
+  const std::string& where)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(measured[c], expected[c], tolerance) << where << ", channel " << c;
+  }
+}
+} // namespace
+
+TEST(ShadowOracle, SurfaceTransmittanceIsTheDocumentedModel)
+{
+  using shadoworacle::SurfaceTransmittance;
+  const glm::dvec3 white(1.0);
+  for (double a : { 0.0, 0.25, 0.5, 0.75, 1.0 })
+  {
+    EXPECT_EQ(SurfaceTransmittance(white, a), glm::dvec3(1.0 - a)) << a;
+  }
+  EXPECT_EQ(SurfaceTransmittance({ 1.0, 0.0, 0.5 }, 0.5), glm::dvec3(0.5, 0.25, 0.375));
+  EXPECT_EQ(SurfaceTransmittance({ 0.3, 0.2, 0.1 }, 1.0), glm::dvec3(0.0));
+  EXPECT_EQ(SurfaceTransmittance({ 0.3, 0.2, 0.1 }, 0.0), glm::dvec3(1.0));
+  // Out of range: clamped.
+  EXPECT_EQ(SurfaceTransmittance(white, 2.0), glm::dvec3(0.0));
+  EXPECT_EQ(SurfaceTransmittance(white, -1.0), glm::dvec3(1.0));
+  EXPECT_EQ(SurfaceTransmittance({ 2.0, -1.0, 1.0 }, 0.5), glm::dvec3(0.5, 0.25, 0.5));
+}
+
+TEST(ShadowOracle, TranslucentSlabLetsThroughTheModelsShare)
+{
+  const glm::dvec3 color(0.9, 0.6, 0.3);
+  for (double opacity : { 0.0, 0.25, 0.5, 0.75, 1.0 })
+  {
+    View view;
+    AddGround(view, 8.0);
+    AddSlab(view, { 0.0, 0.0 }, 2.0, 1.0, color, opacity);
+    vtkLight* sun = nullptr;
+    Oracle oracle = BuildUnderOverheadSun(view, sun);
+    const Surface surface = GroundLine(-3.0, 3.0, 61);
+    const std::vector<glm::vec3> transmittance = oracle.Transmittance(surface, sun);
+    const glm::dvec3 expected = shadoworacle::SurfaceTransmittance(color, opacity);
+    const std::string what = "opacity " + std::to_string(opacity);
+    ExpectTransmittance(transmittance[GroundIndex(0.0)], expected, 1e-6, what + ", under the slab");
+    ExpectTransmittance(transmittance[GroundIndex(-0.9)], expected, 1e-6, what + ", under its edge");
+    ExpectTransmittance(transmittance[GroundIndex(-1.1)], glm::dvec3(1.0), 0.0, what + ", beside it");
+    ExpectTransmittance(transmittance[GroundIndex(2.5)], glm::dvec3(1.0), 0.0, what + ", far off");
+    // Opacity 1 is an opaque caster, opacity 0 none; translucent casters
+    // never change the classification.
+    EXPECT_EQ(oracle.GetNumberOfTranslucentTriangles(), opacity > 0.0 && opacity < 1.0 ? 8u : 0u);
+    const std::vector<float> visibility = oracle.Visibility(surface, sun);
+    const std::vector<Truth> truth = oracle.Classify(surface, sun);
+    for (std::size_t i = 0; i < surface.Valid.size(); ++i)
+    {
+      const double x = std::abs(surface.Position[i].x);
+      if (std::abs(x - 1.0) > 0.05)
+      {
+        EXPECT_EQ(truth[i] == Truth::Shadowed, opacity == 1.0 && x < 1.0) << what << ", x " << x;
+      }
+      if (opacity == 1.0)
+      {
+        EXPECT_EQ(transmittance[i], glm::vec3(visibility[i])) << i;
+      }
+    }
+  }
+}
+
+TEST(ShadowOracle, TranslucentLayersMultiplyInEitherOrder)
+{
+  const glm::dvec3 red(1.0, 0.1, 0.1), blue(0.2, 0.3, 1.0);
+  std::vector<std::vector<glm::vec3>> results;
+  for (bool redFirst : { true, false })
+  {
+    View view;
+    AddGround(view, 8.0);
+    auto addRed = [&] { AddSlab(view, { -0.5, 0.0 }, 2.0, 1.0, red, 0.5); };
+    auto addBlue = [&] { AddSlab(view, { 0.5, 0.0 }, 2.0, 2.0, blue, 0.3); };
+    redFirst ? (addRed(), addBlue()) : (addBlue(), addRed());
+    vtkLight* sun = nullptr;
+    Oracle oracle = BuildUnderOverheadSun(view, sun);
+    results.push_back(oracle.Transmittance(GroundLine(-3.0, 3.0, 61), sun));
+  }
+  EXPECT_EQ(results[0], results[1]);
+  const glm::dvec3 redShare = shadoworacle::SurfaceTransmittance(red, 0.5);
+  const glm::dvec3 blueShare = shadoworacle::SurfaceTransmittance(blue, 0.3);
+  const std::vector<glm::vec3>& transmittance = results[0];
+  ExpectTransmittance(transmittance[GroundIndex(-1.0)], redShare, 1e-6, "red alone");
+  ExpectTransmittance(transmittance[GroundIndex(1.0)], blueShare, 1e-6, "blue alone");
+  ExpectTransmittance(transmittance[GroundIndex(0.0)], redShare * blueShare, 1e-6, "both");
+  ExpectTransmittance(transmittance[GroundIndex(2.0)], glm::dvec3(1.0), 0.0, "neither");
+}
+
+TEST(ShadowOracle, TranslucentColoursComeFromScalarsLookupTablesAndBlocks)
+{
+  View view;
+  AddGround(view, 8.0);
+  // Left: point scalars through a one-colour lookup table with alpha, times
+  // the actor's opacity. Values in 1/255 steps, as VTK's colours are bytes.
+  vtkActor* mapped = AddSlab(view, { -1.5, 0.0 }, 1.0, 1.0, glm::dvec3(1.0), 0.5);
+  auto* mappedMapper = vtkPolyDataMapper::SafeDownCast(mapped->GetMapper());
+  mappedMapper->Update();
+  vtkNew<vtkPolyData> withScalars;
+  withScalars->DeepCopy(mappedMapper->GetInput());
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfTuples(withScalars->GetNumberOfPoints());
+  values->FillValue(1.0f);
+  withScalars->GetPointData()->SetScalars(values);
+  vtkNew<vtkLookupTable> table;
+  table->SetNumberOfTableValues(1);
+  table->SetTableValue(0, 51 / 255.0, 204 / 255.0, 102 / 255.0, 153 / 255.0);
+  table->SetRange(0.0, 2.0);
+  table->Build();
+  mappedMapper->SetInputData(withScalars);
+  mappedMapper->SetLookupTable(table);
+  mappedMapper->SetScalarVisibility(1);
+  mappedMapper->UseLookupTableScalarRangeOn();
+
+  // Middle: direct RGBA cell colours, one per half; the actor is opaque.
+  vtkActor* direct = AddSlab(view, { 0.0, 0.0 }, 1.0, 1.0, glm::dvec3(1.0), 1.0);
+  auto* directMapper = vtkPolyDataMapper::SafeDownCast(direct->GetMapper());
+  vtkNew<vtkPlaneSource> halves;
+  halves->SetOrigin(-0.5, -0.5, 0.0);
+  halves->SetPoint1(0.5, -0.5, 0.0);
+  halves->SetPoint2(-0.5, 0.5, 0.0);
+  halves->SetResolution(2, 1);
+  halves->Update();
+  vtkNew<vtkPolyData> withCellColors;
+  withCellColors->DeepCopy(halves->GetOutput());
+  vtkNew<vtkUnsignedCharArray> rgba;
+  rgba->SetNumberOfComponents(4);
+  rgba->InsertNextTuple4(255, 0, 0, 102);
+  rgba->InsertNextTuple4(0, 0, 255, 204);
+  withCellColors->GetCellData()->SetScalars(rgba);
+  directMapper->SetInputData(withCellColors);
+  directMapper->SetColorModeToDirectScalars();
+  directMapper->SetScalarVisibility(1);
+
+  // Right: a composite block's opacity and colour.
+  vtkNew<vtkPlaneSource> blockSquare;
+  blockSquare->SetOrigin(1.0, -0.5, 1.0);
+  blockSquare->SetPoint1(2.0, -0.5, 1.0);
+  blockSquare->SetPoint2(1.0, 0.5, 1.0);
+  blockSquare->Update();
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(1);
+  blocks->SetBlock(0, blockSquare->GetOutput());
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  attributes->SetBlockOpacity(blockSquare->GetOutput(), 0.4);
+  attributes->SetBlockColor(blockSquare->GetOutput(), vtkColor3d(0.0, 1.0, 0.0).GetData());
+  vtkNew<vtkShadowCompositeMapper> compositeMapper;
+  compositeMapper->SetInputDataObject(blocks);
+  compositeMapper->SetCompositeDataDisplayAttributes(attributes);
+  compositeMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> compositeActor;
+  compositeActor->SetMapper(compositeMapper);
+  view.Renderer->AddActor(compositeActor);
+
+  vtkLight* sun = nullptr;
+  Oracle oracle = BuildUnderOverheadSun(view, sun);
+  const std::vector<glm::vec3> transmittance = oracle.Transmittance(GroundLine(-3.0, 3.0, 61), sun);
+  using shadoworacle::SurfaceTransmittance;
+  ExpectTransmittance(transmittance[GroundIndex(-1.5)],
+    SurfaceTransmittance({ 0.2, 0.8, 0.4 }, 0.3), 1e-6, "lookup table");
+  ExpectTransmittance(transmittance[GroundIndex(-0.3)], SurfaceTransmittance({ 1.0, 0.0, 0.0 }, 0.4),
+    1e-6, "first cell");
+  ExpectTransmittance(transmittance[GroundIndex(0.3)], SurfaceTransmittance({ 0.0, 0.0, 1.0 }, 0.8),
+    1e-6, "second cell");
+  ExpectTransmittance(transmittance[GroundIndex(1.5)], SurfaceTransmittance({ 0.0, 1.0, 0.0 }, 0.4),
+    1e-6, "block");
+}
+
+TEST(ShadowOracle, OpaqueCastersBlockWhateverTranslucentOnesAreAbove)
+{
+  View view;
+  AddGround(view, 8.0);
+  AddSlab(view, { 0.0, 0.0 }, 4.0, 3.0, { 1.0, 1.0, 1.0 }, 0.5);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(1.0, 0.0, 1.0);
+  view.Add(cube);
+  vtkActor* optedOut = AddSlab(view, { -1.0, 0.0 }, 1.0, 2.0, { 1.0, 0.0, 0.0 }, 0.5);
+  vtkNew<vtkInformation> keys;
+  keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  optedOut->SetPropertyKeys(keys);
+  vtkLight* sun = nullptr;
+  Oracle oracle = BuildUnderOverheadSun(view, sun);
+  const std::vector<glm::vec3> transmittance = oracle.Transmittance(GroundLine(-3.0, 3.0, 61), sun);
+  ExpectTransmittance(transmittance[GroundIndex(1.0)], glm::dvec3(0.0), 0.0, "under the cube");
+  ExpectTransmittance(transmittance[GroundIndex(-1.0)], glm::dvec3(0.5), 1e-6, "opted-out slab");
+  ExpectTransmittance(transmittance[GroundIndex(2.5)], glm::dvec3(1.0), 0.0, "beside the slab");
+}
+
+TEST(ShadowOracle, SizedLightsTransmittanceAveragesItsRays)
+{
+  const double height = 4.0;
+  const double diameter = 3.0;
+  const double penumbraHalf = height * std::tan(glm::radians(0.5 * diameter));
+  const Surface surface = GroundLine(-2.0 * penumbraHalf, 2.0 * penumbraHalf, 201);
+  for (double opacity : { 1.0, 0.5 })
+  {
+    View view;
+    AddEdgeOverGround(view, height)->GetProperty()->SetOpacity(opacity);
+    vtkLight* sun = nullptr;
+    const Oracle oracle = BuildUnderOverheadSun(view, sun, diameter);
+    shadoworacle::VisibilityRays rays;
+    const std::vector<glm::vec3> transmittance = oracle.Transmittance(surface, sun, 0.1, &rays);
+    EXPECT_EQ(rays.FewestAtPartial, Oracle::RefinedRays);
+    if (opacity == 1.0)
+    {
+      // Without translucent casters, every channel is the visibility.
+      const std::vector<float> visibility = oracle.Visibility(surface, sun);
+      for (std::size_t i = 0; i < surface.Valid.size(); ++i)
+      {
+        EXPECT_EQ(transmittance[i], glm::vec3(visibility[i])) << i;
+      }
+      continue;
+    }
+    double worst = 0.0;
+    for (std::size_t i = 0; i < surface.Valid.size(); ++i)
+    {
+      const double c = std::atan(surface.Position[i].x / height) / glm::radians(0.5 * diameter);
+      const double slab = shadoworacle::SurfaceTransmittance(glm::dvec3(1.0), opacity).x;
+      const double expected = 1.0 - (1.0 - slab) * (1.0 - DiscFractionBelow(c));
+      worst = std::max(worst, std::abs(transmittance[i].x - expected));
+      EXPECT_EQ(transmittance[i].x, transmittance[i].y);
+    }
+    Report("translucent edge under a sun: worst |transmittance - expected|", worst, 0.0);
+    EXPECT_LT(worst, 0.02);
+  }
 }
