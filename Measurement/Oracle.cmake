@@ -12,7 +12,7 @@ set(shadowmeasure_vtk_modules
   VTK::RenderingCore      # actors, mappers, vtkGlyph3DMapper, vtkPointGaussianMapper
   VTK::RenderingOpenGL2)  # vtkCompositePolyDataMapper2
 
-add_library(ShadowMeasure STATIC ShadowOracle.cxx ShadowAreaLight.cxx)
+add_library(ShadowMeasure STATIC ShadowOracle.cxx ShadowOracleVolumes.cxx ShadowAreaLight.cxx)
 target_include_directories(ShadowMeasure PUBLIC "${CMAKE_CURRENT_SOURCE_DIR}")
 target_link_libraries(ShadowMeasure
   PUBLIC

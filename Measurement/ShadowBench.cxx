@@ -178,6 +178,10 @@ struct Row
   /// Sized lights only: the factor against the fractional visibility.
   bool Sized = false;
   shadowmetrics::VisibilityErrors Visibility;
+  /// Scenes with translucent casters: the factor per channel against the
+  /// transmittance.
+  bool Translucent = false;
+  shadowmetrics::TransmittanceErrors Transmittance;
   /// Light leaks where the truth's shadow ray meets two or more occluders (%).
   double Bleeding = NotMeasured;
   double Undersampled = NotMeasured;
@@ -322,6 +326,9 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   const std::vector<std::uint8_t>& valid = surface.Valid;
   const std::vector<unsigned char> occluders =
     oracle.CountOccluders(surface, FirstLight(view.Renderer), truth);
+  const std::vector<glm::vec3> transmittance = oracle.GetNumberOfTranslucentTriangles() + oracle.GetNumberOfVolumes() > 0
+    ? oracle.Transmittance(surface, FirstLight(view.Renderer))
+    : std::vector<glm::vec3>();
   progress.Advance(TruthFrames);
 
   std::vector<TechniqueInstance> techniques;
@@ -347,8 +354,15 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
     row.Resolution = technique.Resolution;
     row.Time = timing[t];
     view.Window->Render();
-    const auto factor =
-      shadowmetrics::FactorFromRenders(CaptureRGB(view.Window), plain, view.Width * view.Height);
+    const auto rgb = CaptureRGB(view.Window);
+    const auto factor = shadowmetrics::FactorFromRenders(rgb, plain, view.Width * view.Height);
+    row.Translucent = !transmittance.empty();
+    if (row.Translucent)
+    {
+      row.Transmittance = shadowmetrics::CompareTransmittance(transmittance,
+        shadowmetrics::ChannelFactorsFromRenders(rgb, plain, view.Width * view.Height),
+        surface.SeenThroughTranslucent);
+    }
     row.Errors = shadowmetrics::Classify(truth, factor, view.Width, view.Height);
     row.Bleeding = shadowmetrics::LeakBehindSeveral(occluders, factor);
     row.Sized = !visibility.empty();
@@ -494,6 +508,35 @@ void PrintSizedTable(const std::vector<Row>& rows, std::ostream& out)
   }
 }
 
+/// Scenes with translucent casters: the factor per channel against the
+/// ray-traced transmittance.
+void PrintTranslucentTable(const std::vector<Row>& rows, std::ostream& out)
+{
+  if (std::none_of(rows.begin(), rows.end(), [](const Row& row) { return row.Translucent; }))
+  {
+    return;
+  }
+  out << "\nTranslucent casters: the shadow factor per channel against the ray-traced "
+         "transmittance (pixels seen through a translucent surface left out)\n\n"
+      << "| scene | light | technique | mean error r | g | b | 95th percentile | "
+         "partial pixels | their mean error r | g | b |\n"
+      << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Row& row : rows)
+  {
+    if (!row.Translucent)
+    {
+      continue;
+    }
+    const shadowmetrics::TransmittanceErrors& t = row.Transmittance;
+    out << "| " << row.Scene << " | " << row.Setup << " | " << row.Technique << " | "
+        << FormatNumber(t.MeanAbsolute.x, 4) << " | " << FormatNumber(t.MeanAbsolute.y, 4) << " | "
+        << FormatNumber(t.MeanAbsolute.z, 4) << " | " << FormatNumber(t.Percentile95, 3) << " | "
+        << t.Partial << " | " << FormatNumber(t.PartialMeanAbsolute.x, 4) << " | "
+        << FormatNumber(t.PartialMeanAbsolute.y, 4) << " | "
+        << FormatNumber(t.PartialMeanAbsolute.z, 4) << " |\n";
+  }
+}
+
 std::vector<Recommendation> RecommendationsOf(const std::vector<Row>& rows)
 {
   std::vector<MeasuredCase> cases;
@@ -511,7 +554,10 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
   std::ofstream csv(path);
   csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,bleeding,inner,"
          "mean_abs_diff,undersampled,density_spread,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels,"
-         "visibility_mean_error,visibility_p95_error,umbra_pure,umbra_behind_several_pure,lit_pure\n";
+         "visibility_mean_error,visibility_p95_error,umbra_pure,umbra_behind_several_pure,lit_pure,"
+         "transmittance_mean_error_r,transmittance_mean_error_g,transmittance_mean_error_b,"
+         "transmittance_p95_error,transmittance_partial_pixels,transmittance_partial_error_r,"
+         "transmittance_partial_error_g,transmittance_partial_error_b\n";
   // Enough digits for the recommendation to be recomputed from the file.
   csv << std::setprecision(12);
   for (const Row& row : rows)
@@ -526,11 +572,22 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
     if (row.Sized)
     {
       csv << v.MeanAbsolute << ',' << v.Percentile95 << ',' << v.UmbraPure << ','
-          << v.UmbraBehindSeveralPure << ',' << v.LitPure << '\n';
+          << v.UmbraBehindSeveralPure << ',' << v.LitPure << ',';
     }
     else
     {
-      csv << "nan,nan,nan,nan,nan\n";
+      csv << "nan,nan,nan,nan,nan,";
+    }
+    const shadowmetrics::TransmittanceErrors& t = row.Transmittance;
+    if (row.Translucent)
+    {
+      csv << t.MeanAbsolute.x << ',' << t.MeanAbsolute.y << ',' << t.MeanAbsolute.z << ','
+          << t.Percentile95 << ',' << t.Partial << ',' << t.PartialMeanAbsolute.x << ','
+          << t.PartialMeanAbsolute.y << ',' << t.PartialMeanAbsolute.z << '\n';
+    }
+    else
+    {
+      csv << "nan,nan,nan,nan,nan,nan,nan,nan\n";
     }
   }
 }
@@ -677,6 +734,7 @@ bool Run(const Options& requested, std::ostream& out, std::ostream& log, std::st
   std::ostringstream report;
   PrintTable(rows, report);
   PrintSizedTable(rows, report);
+  PrintTranslucentTable(rows, report);
   const std::vector<Recommendation> recommendations = RecommendationsOf(rows);
   WriteRecommendationsMarkdown(recommendations, report);
   out << report.str();

@@ -1,5 +1,7 @@
 #include "ShadowMetrics.h"
 
+#include <glm/glm.hpp>
+
 #include <limits>
 
 #include <algorithm>
@@ -433,4 +435,72 @@ std::vector<std::uint8_t> ErrorMap(const std::vector<Truth>& truth, const std::v
   return rgb;
 }
 
+//------------------------------------------------------------------------------
+std::vector<glm::vec3> ChannelFactorsFromRenders(const std::vector<std::uint8_t>& shadowedRgb,
+  const std::vector<std::uint8_t>& unshadowedRgb, int pixelCount)
+{
+  std::vector<glm::vec3> factor(pixelCount, glm::vec3(1.0f));
+  for (int i = 0; i < pixelCount; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const int unshadowed = unshadowedRgb[3 * i + c];
+      if (unshadowed > 0)
+      {
+        factor[i][c] =
+          std::min(1.0f, static_cast<float>(shadowedRgb[3 * i + c]) / static_cast<float>(unshadowed));
+      }
+    }
+  }
+  return factor;
+}
+
+//------------------------------------------------------------------------------
+TransmittanceErrors CompareTransmittance(const std::vector<glm::vec3>& transmittance,
+  const std::vector<glm::vec3>& factor, const std::vector<std::uint8_t>& seenThroughTranslucent)
+{
+  TransmittanceErrors result;
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  if (factor.size() != transmittance.size())
+  {
+    result.MeanAbsolute = result.PartialMeanAbsolute = glm::dvec3(none);
+    result.Percentile95 = none;
+    return result;
+  }
+  std::vector<double> largest;
+  for (std::size_t i = 0; i < transmittance.size(); ++i)
+  {
+    const glm::vec3& truth = transmittance[i];
+    if (truth.x == shadoworacle::NotCounted ||
+      (i < seenThroughTranslucent.size() && seenThroughTranslucent[i]))
+    {
+      continue;
+    }
+    const glm::dvec3 error = glm::abs(glm::dvec3(factor[i]) - glm::dvec3(truth));
+    result.MeanAbsolute += error;
+    largest.push_back(std::max(error.x, std::max(error.y, error.z)));
+    const bool partial = (truth.x > 0.0f && truth.x < 1.0f) || (truth.y > 0.0f && truth.y < 1.0f) ||
+      (truth.z > 0.0f && truth.z < 1.0f);
+    if (partial)
+    {
+      ++result.Partial;
+      result.PartialMeanAbsolute += error;
+    }
+  }
+  result.Counted = static_cast<std::int64_t>(largest.size());
+  result.PartialMeanAbsolute = result.Partial > 0
+    ? result.PartialMeanAbsolute / static_cast<double>(result.Partial)
+    : glm::dvec3(none);
+  if (largest.empty())
+  {
+    result.MeanAbsolute = glm::dvec3(none);
+    result.Percentile95 = none;
+    return result;
+  }
+  result.MeanAbsolute /= static_cast<double>(largest.size());
+  const std::size_t rank = static_cast<std::size_t>(std::ceil(0.95 * largest.size())) - 1;
+  std::nth_element(largest.begin(), largest.begin() + rank, largest.end());
+  result.Percentile95 = largest[rank];
+  return result;
+}
 } // namespace shadowmetrics

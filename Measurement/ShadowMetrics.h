@@ -7,6 +7,7 @@
 #include "ShadowOracle.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -87,6 +88,38 @@ VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
 /// black.
 std::vector<std::uint8_t> VisibilityErrorMap(
   const std::vector<float>& visibility, const std::vector<float>& factor);
+
+// --- translucent casters: the factor per channel against the transmittance --------
+
+/// Per pixel and channel, the shadow factor from two renders of the same view
+/// with white, purely diffuse receivers: with the technique and without
+/// shadows (FactorFromRenders channel by channel); 1 where the unshadowed
+/// channel is black.
+std::vector<glm::vec3> ChannelFactorsFromRenders(const std::vector<std::uint8_t>& shadowedRgb,
+  const std::vector<std::uint8_t>& unshadowedRgb, int pixelCount);
+
+struct TransmittanceErrors
+{
+  /// Pixels with a transmittance (not NotCounted) and not seen through a
+  /// translucent surface (whose colour the renders blend in).
+  std::int64_t Counted = 0;
+  /// |factor - transmittance| per channel over them, and the nearest-rank
+  /// 95th percentile of each pixel's largest channel error.
+  glm::dvec3 MeanAbsolute{ 0.0 };
+  double Percentile95 = 0.0;
+  /// The counted pixels whose transmittance is partial (some channel strictly
+  /// between 0 and 1: under translucent casters or in a penumbra), and the
+  /// mean absolute error per channel over them (NaN without any).
+  std::int64_t Partial = 0;
+  glm::dvec3 PartialMeanAbsolute{ 0.0 };
+};
+
+/// Compares the technique's factor per channel with the oracle's
+/// transmittance (Oracle::Transmittance), leaving out the pixels
+/// `seenThroughTranslucent` marks (Surface::SeenThroughTranslucent; empty:
+/// none). NaN everywhere when the sizes differ.
+TransmittanceErrors CompareTransmittance(const std::vector<glm::vec3>& transmittance,
+  const std::vector<glm::vec3>& factor, const std::vector<std::uint8_t>& seenThroughTranslucent);
 
 /// Light bleeding: the percentage of the pixels whose truth's shadow ray meets
 /// two or more occluders (Oracle::CountOccluders >= 2) that the technique

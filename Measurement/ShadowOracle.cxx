@@ -33,12 +33,15 @@
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkVolume.h>
 #include <vtkScalarsToColors.h>
 
 #include "ShadowAreaLight.h"
+#include "ShadowOracleVolumes.h"
 #include "ShadowOracleEmbree.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -431,9 +434,9 @@ PartList MapperGeometry(vtkMapper* mapper)
   return {};
 }
 
-bool CastsShadows(vtkActor* actor)
+bool CastsShadows(vtkProp* prop)
 {
-  vtkInformation* keys = actor->GetPropertyKeys();
+  vtkInformation* keys = prop->GetPropertyKeys();
   vtkInformationIntegerKey* key = vtkAbstractShadowMapPass::CASTS_SHADOWS();
   return !keys || !keys->Has(key) || keys->Get(key) != 0;
 }
@@ -504,12 +507,32 @@ bool IsTranslucent(const Mesh& mesh)
     [](const glm::vec4& rgba) { return rgba.a < 1.0f; });
 }
 
-// The renderer's casters split into opaque and translucent meshes.
+// The renderer's casters split into opaque and translucent meshes, and its
+// volumes.
 struct CasterGeometry
 {
   std::vector<Mesh> Opaque;
   std::vector<Mesh> Translucent;
+  std::vector<MarchedVolume> Volumes;
 };
+
+void AddVolume(vtkVolume* volume, CasterGeometry& casters)
+{
+  if (!volume->GetVisibility() || !CastsShadows(volume))
+  {
+    return;
+  }
+  MarchedVolume marched;
+  std::string why;
+  if (MarchedVolume::FromVolume(volume, marched, why))
+  {
+    casters.Volumes.push_back(std::move(marched));
+  }
+  else
+  {
+    Warn(why + " is not marched: skipped");
+  }
+}
 
 CasterGeometry CasterMeshes(vtkRenderer* renderer)
 {
@@ -520,6 +543,11 @@ CasterGeometry CasterMeshes(vtkRenderer* renderer)
   while (vtkProp* prop = props->GetNextProp(iter))
   {
     auto* actor = vtkActor::SafeDownCast(prop);
+    if (auto* volume = vtkVolume::SafeDownCast(prop))
+    {
+      AddVolume(volume, casters);
+      continue;
+    }
     if (!actor)
     {
       if (prop->GetVisibility() && prop->IsA("vtkAssembly"))
@@ -732,6 +760,7 @@ Surface EmptySurface(int width, int height)
   surface.Position.assign(count, glm::dvec3(0.0));
   surface.Normal.assign(count, glm::dvec3(0.0));
   surface.ViewDepth.assign(count, 0.0);
+  surface.SeenThroughTranslucent.assign(count, 0);
   return surface;
 }
 
@@ -782,6 +811,7 @@ struct Oracle::Impl
   DeviceHandle Device;
   TracedScene Opaque;
   TracedScene Translucent; // no Scene without translucent casters
+  std::vector<MarchedVolume> Volumes;
   std::size_t NumberOfTriangles = 0;
   std::size_t NumberOfTranslucentTriangles = 0;
   double SurfaceOffset = 0.0;
@@ -794,6 +824,7 @@ struct Oracle::Impl
   {
     this->Opaque = TracedScene();
     this->Translucent = TracedScene();
+    this->Volumes.clear();
     this->NumberOfTriangles = 0;
     this->NumberOfTranslucentTriangles = 0;
     this->SurfaceOffset = 0.0;
@@ -929,7 +960,9 @@ struct Oracle::Impl
     return next > t ? next : std::nextafter(t, std::numeric_limits<float>::infinity());
   }
 
-  bool Intersect(const Ray& ray, Hit& hit) const
+  // The nearest opaque hit along the ray, and whether a translucent caster
+  // lies before it.
+  bool Intersect(const Ray& ray, Hit& hit, bool& throughTranslucent) const
   {
     const RTCRayHit rayHit = Nearest(this->Opaque, ray);
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
@@ -937,6 +970,17 @@ struct Oracle::Impl
       return false;
     }
     hit = this->MakeHit(ray, rayHit);
+    throughTranslucent = false;
+    if (this->Translucent.Scene)
+    {
+      const RTCRayHit before = Nearest(this->Translucent, ray);
+      throughTranslucent =
+        before.hit.geomID != RTC_INVALID_GEOMETRY_ID && before.ray.tfar < rayHit.ray.tfar;
+    }
+    for (const MarchedVolume& volume : this->Volumes)
+    {
+      throughTranslucent = throughTranslucent || volume.Crosses(ray.Origin, ray.Direction, rayHit.ray.tfar);
+    }
     return true;
   }
 
@@ -989,7 +1033,16 @@ struct Oracle::Impl
   // What of the light reaches the ray's end, per channel.
   glm::dvec3 Transmittance(const Ray& ray) const
   {
-    return this->Occluded(ray) ? glm::dvec3(0.0) : this->TranslucentProduct(ray);
+    if (this->Occluded(ray))
+    {
+      return glm::dvec3(0.0);
+    }
+    glm::dvec3 product = this->TranslucentProduct(ray);
+    for (const MarchedVolume& volume : this->Volumes)
+    {
+      product *= volume.Transmittance(ray.Origin, ray.Direction, ray.Far);
+    }
+    return product;
   }
 
   // Distinct geometries along the ray, up to `most`: each hit restarts the
@@ -1203,6 +1256,11 @@ std::size_t Oracle::GetNumberOfTranslucentTriangles() const
   return this->Pimpl ? this->Pimpl->NumberOfTranslucentTriangles : 0;
 }
 
+std::size_t Oracle::GetNumberOfVolumes() const
+{
+  return this->Pimpl ? this->Pimpl->Volumes.size() : 0;
+}
+
 double Oracle::GetSurfaceOffset() const
 {
   return this->Pimpl ? this->Pimpl->SurfaceOffset : 0.0;
@@ -1237,6 +1295,7 @@ bool Oracle::Build(vtkRenderer* renderer, std::string& error)
   }
   impl.NumberOfTriangles = CountTriangles(casters.Opaque);
   impl.NumberOfTranslucentTriangles = CountTriangles(casters.Translucent);
+  impl.Volumes = casters.Volumes;
   std::vector<const Mesh*> all;
   for (const auto* meshes : { &casters.Opaque, &casters.Translucent })
   {
@@ -1264,8 +1323,10 @@ Surface Oracle::Trace(vtkRenderer* renderer, int width, int height) const
     {
       const std::size_t i = static_cast<std::size_t>(y) * width + x;
       Hit hit;
-      if (impl.Intersect(PrimaryRay(camera, x, y, width, height), hit))
+      bool throughTranslucent = false;
+      if (impl.Intersect(PrimaryRay(camera, x, y, width, height), hit, throughTranslucent))
       {
+        surface.SeenThroughTranslucent[i] = throughTranslucent ? 1 : 0;
         surface.Valid[i] = 1;
         surface.Position[i] = hit.Position;
         surface.Normal[i] = hit.Normal;

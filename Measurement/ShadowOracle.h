@@ -37,6 +37,9 @@ struct Surface
   std::vector<glm::dvec3> Position;  ///< world-space hit point
   std::vector<glm::dvec3> Normal;    ///< unit geometric normal, flipped to face the camera
   std::vector<double> ViewDepth;     ///< distance along the camera's view direction
+  /// 1 where a translucent caster lies between the camera and the hit (a
+  /// render blends its colour in there); empty when nobody traced them.
+  std::vector<unsigned char> SeenThroughTranslucent;
 };
 
 /// Oracle::Visibility of a pixel it does not count.
@@ -106,7 +109,10 @@ public:
    * colours; scalars interpolated before mapping and textures are not read,
    * a translucent texture with a warning). Opaque casters are the only
    * occluders of Classify, Visibility and CountOccluders, and the only
-   * surfaces Trace sees; Transmittance also crosses the translucent ones.
+   * surfaces Trace sees; Transmittance also crosses the translucent ones,
+   * and marches the visible, casting vtkVolumes of image data
+   * (ShadowOracleVolumes.h: the same model in thin slices; others are
+   * skipped with a warning).
    * Mappers: vtkPolyDataMapper (its input after Update), the composite
    * polydata mapper (every polydata leaf whose block is visible) and vtkGlyph3DMapper (the same glyphs built by
    * vtkGlyph3D; configurations vtkGlyph3D cannot reproduce are skipped with a
@@ -122,7 +128,8 @@ public:
    * (perspective or parallel) for a view of width x height pixels, which
    * should be the renderer's size in pixels (its viewport of the window). Rays
    * run from the near to the far clipping plane, so clipped geometry is not
-   * seen, as in the rasteriser.
+   * seen, as in the rasteriser. They hit opaque casters only, and mark
+   * SeenThroughTranslucent where a translucent one lies before the hit.
    */
   Surface Trace(vtkRenderer* renderer, int width, int height) const;
 
@@ -179,11 +186,12 @@ public:
    * Per pixel and channel, the fraction of the light's colour that reaches
    * the surface point through the opaque and translucent casters: each ray
    * carries 0 if an opaque caster blocks it, or else the product of
-   * SurfaceTransmittance over the translucent surfaces it crosses. A sized
+   * SurfaceTransmittance over the translucent surfaces it crosses and of
+   * what the volumes it crosses let through (MarchedVolume). A sized
    * light's rays are Visibility's (refined where they disagree) and averaged;
    * a light without a size gets its centre ray. NotCounted in every channel
-   * where Classify ignores the pixel. Without translucent casters, each
-   * channel equals Visibility.
+   * where Classify ignores the pixel. Without translucent casters and
+   * volumes, each channel equals Visibility.
    */
   std::vector<glm::vec3> Transmittance(const Surface& surface, vtkLight* light,
     double minimumCosine = 0.1, VisibilityRays* rays = nullptr) const;
@@ -207,6 +215,9 @@ public:
 
   /// Triangles of translucent casters.
   std::size_t GetNumberOfTranslucentTriangles() const;
+
+  /// Volumes Transmittance marches.
+  std::size_t GetNumberOfVolumes() const;
 
   /// How far shadow rays start off the surface: 1e-5 of the scene's size
   /// (the larger of its bounding-box diagonal and its largest coordinate).

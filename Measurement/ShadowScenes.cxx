@@ -2,6 +2,7 @@
 
 #include "vtkAbstractShadowMapPass.h" // LIGHT_SIZE
 
+#include <vtkActorCollection.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleKey.h>
 #include <vtkMatrix4x4.h>
@@ -30,6 +31,8 @@
 #include <vtkPLYReader.h>
 #include <vtkPlane.h>
 #include <vtkPlaneSource.h>
+#include <vtkElevationFilter.h>
+#include <vtkLookupTable.h>
 #include <vtkPoints.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -1245,6 +1248,87 @@ std::vector<std::array<double, 6>> RoomFurniture(const RoomLayout& room)
 }
 } // namespace
 
+// A translucent square of `side` at (x, y, height), of colour and opacity.
+void AddPane(vtkRenderer* renderer, double x, double y, double height, double side,
+  const Color& color, double opacity)
+{
+  vtkNew<vtkPlaneSource> pane;
+  pane->SetOrigin(x - 0.5 * side, y - 0.5 * side, height);
+  pane->SetPoint1(x + 0.5 * side, y - 0.5 * side, height);
+  pane->SetPoint2(x - 0.5 * side, y + 0.5 * side, height);
+  pane->SetResolution(8, 8);
+  AddActor(renderer, pane->GetOutputPort(), color, 0.3)->GetProperty()->SetOpacity(opacity);
+}
+
+// A pane whose colour and opacity vary across it: point scalars through a
+// lookup table with alpha, as a coloured, partly transparent slice shows.
+void AddScalarPane(vtkRenderer* renderer, double x, double y, double height, double side)
+{
+  vtkNew<vtkPlaneSource> pane;
+  pane->SetOrigin(x - 0.5 * side, y - 0.5 * side, height);
+  pane->SetPoint1(x + 0.5 * side, y - 0.5 * side, height);
+  pane->SetPoint2(x - 0.5 * side, y + 0.5 * side, height);
+  pane->SetResolution(16, 16);
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(pane->GetOutputPort());
+  elevation->SetLowPoint(x - 0.5 * side, y, height);
+  elevation->SetHighPoint(x + 0.5 * side, y, height);
+  vtkNew<vtkLookupTable> table;
+  table->SetHueRange(0.66, 0.0);
+  table->SetAlphaRange(0.2, 0.8);
+  table->Build();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(elevation->GetOutputPort());
+  mapper->SetLookupTable(table);
+  mapper->SetScalarRange(0.0, 1.0);
+  vtkSmartPointer<vtkActor> actor = AddActorWithMapper(renderer, mapper, GroundColor, 0.3);
+  mapper->ScalarVisibilityOn();
+}
+
+// Opts every translucent actor of the renderer out of casting shadows.
+void KeepTranslucentActorsFromCasting(vtkRenderer* renderer)
+{
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    if (actor->HasTranslucentPolygonalGeometry())
+    {
+      vtkNew<vtkInformation> keys;
+      keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+      actor->SetPropertyKeys(keys);
+    }
+  }
+}
+
+void BuildGlassScene(vtkRenderer* renderer)
+{
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  AddGround(renderer, -40.0, 40.0, -40.0, 40.0, 0.0);
+  // Overlapping panes of three colours and opacities at three heights.
+  AddPane(renderer, -6.0, 2.0, 4.0, 8.0, { 0.9, 0.2, 0.15 }, 0.3);
+  AddPane(renderer, -2.0, -1.0, 6.0, 8.0, { 0.2, 0.8, 0.3 }, 0.5);
+  AddPane(renderer, -4.0, -4.0, 8.0, 6.0, { 0.2, 0.35, 0.95 }, 0.7);
+  AddScalarPane(renderer, 10.0, 8.0, 5.0, 8.0);
+  // A closed translucent shell (two crossings) and an opaque sphere inside a
+  // translucent one; opaque poles for contacts.
+  vtkNew<vtkSphereSource> shell;
+  shell->SetCenter(9.0, -6.0, 4.0);
+  shell->SetRadius(3.0);
+  shell->SetThetaResolution(48);
+  shell->SetPhiResolution(24);
+  AddActor(renderer, shell->GetOutputPort(), { 0.95, 0.8, 0.2 }, 0.4)->GetProperty()->SetOpacity(0.35);
+  vtkNew<vtkSphereSource> core;
+  core->SetCenter(9.0, -6.0, 4.0);
+  core->SetRadius(1.0);
+  AddActor(renderer, core->GetOutputPort(), SphereColor, 0.5);
+  AddPoles(renderer);
+  const double position[3] = { 30.0, -32.0, 26.0 };
+  const double focalPoint[3] = { 0.0, 0.0, 2.0 };
+  SetCamera(renderer, position, focalPoint, 40.0);
+}
+
 void BuildDefaultScene(vtkRenderer* renderer)
 {
   renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
@@ -1583,6 +1667,15 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
   if (name == "room")
   {
     BuildRoomScene(renderer);
+    return true;
+  }
+  if (name == "glass" || name == "glass-opaque")
+  {
+    BuildGlassScene(renderer);
+    if (name == "glass-opaque")
+    {
+      KeepTranslucentActorsFromCasting(renderer);
+    }
     return true;
   }
   if (name == "street")

@@ -165,7 +165,16 @@ void BuildBlocksScene(vtkRenderer* renderer);
 std::vector<std::string> SweepSceneNames();
 
 /**
- * Builds a benchmark scene, a sweep scene, "street", "blocks" or "default" (BuildDefaultScene) into an empty
+ * Translucent casters over a ground: overlapping panes of three colours,
+ * opacities and heights, a pane coloured by scalars through a lookup table
+ * with alpha, a translucent shell round an opaque sphere, opaque poles.
+ */
+void BuildGlassScene(vtkRenderer* renderer);
+
+/**
+ * Builds a benchmark scene, a sweep scene, "street", "blocks", "glass",
+ * "glass-opaque" (the glass scene whose translucent actors cast nothing: its
+ * frame without transmittance maps) or "default" (BuildDefaultScene) into an empty
  * renderer. Returns false with a one-line `error` for an unknown name or a
  * scene that cannot be built.
  */

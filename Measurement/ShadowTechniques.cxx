@@ -468,6 +468,10 @@ void UseMeasurementMaterials(vtkRenderer* renderer)
   actors->InitTraversal(it);
   while (vtkActor* actor = actors->GetNextActor(it))
   {
+    if (actor->HasTranslucentPolygonalGeometry())
+    {
+      continue; // a caster whose colour and opacity tint the light; never a measured receiver
+    }
     vtkProperty* property = actor->GetProperty();
     property->SetColor(1.0, 1.0, 1.0);
     property->SetAmbient(0.0);

@@ -108,7 +108,8 @@ void PrintUsage(std::ostream& out)
          "\n"
          "options of bench and analyze (lists are comma-separated; analyze's defaults in\n"
          "braces):\n"
-         "  --scenes LIST            bench only: outdoor,paraview,model [all]\n"
+         "  --scenes LIST            bench only: outdoor,paraview,model [these three],\n"
+         "                           glass (translucent casters: transmittance errors)\n"
          "  --up x|y|z|-x|-y|-z      analyze only: the model's up axis, as for render\n"
          "  --setups LIST|all|soft   overhead,perpendicular,behind,facing,spot,point,\n"
          "                           wide-spot,street-point [these eight]; sized lights\n"
@@ -147,7 +148,9 @@ void PrintUsage(std::ostream& out)
          "\n"
          "options of speed: those of bench but the flicker options, with\n"
          "  --scenes LIST            outdoor,paraview,model,street (225 actors),\n"
-         "                           blocks (2,026 actors) [outdoor,paraview,model,street]\n"
+         "                           blocks (2,026 actors), glass (translucent casters),\n"
+         "                           glass-opaque (the same casting opaque shadows only)\n"
+         "                           [outdoor,paraview,model,street]\n"
          "  --setups LIST            [perpendicular,spot]\n"
          "  --techniques LIST        [uniform,lispsm,csm] (none and vtk always measured)\n"
          "  --size WxH               [960x540]\n"
@@ -369,12 +372,13 @@ std::vector<std::string> SplitList(const std::string& value)
 
 std::string ParseScenes(const std::string& value, Options& options)
 {
-  const auto names = shadowscenes::BenchmarkSceneNames();
+  auto names = shadowscenes::BenchmarkSceneNames();
+  names.push_back("glass");
   for (const std::string& scene : SplitList(value))
   {
     if (std::find(names.begin(), names.end(), scene) == names.end())
     {
-      return "unknown scene '" + scene + "' (expected outdoor, paraview or model)";
+      return "unknown scene '" + scene + "' (expected outdoor, paraview, model or glass)";
     }
   }
   options.bench.Scenes = SplitList(value);
@@ -386,11 +390,14 @@ std::string ParseSpeedScenes(const std::string& value, Options& options)
   auto names = shadowscenes::BenchmarkSceneNames();
   names.push_back("street");
   names.push_back("blocks");
+  names.push_back("glass");
+  names.push_back("glass-opaque");
   for (const std::string& scene : SplitList(value))
   {
     if (std::find(names.begin(), names.end(), scene) == names.end())
     {
-      return "unknown scene '" + scene + "' (expected outdoor, paraview, model, street or blocks)";
+      return "unknown scene '" + scene +
+        "' (expected outdoor, paraview, model, street, blocks, glass or glass-opaque)";
     }
   }
   options.bench.Scenes = SplitList(value);

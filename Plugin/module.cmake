@@ -25,6 +25,7 @@ set(shadowmaps_shaders
   vtkShadowMapsSoftFS
   vtkShadowMapsSoftKernelFS
   vtkShadowMapsSoftMomentsFS
+  vtkShadowMapsTransmittanceFS
   vtkShadowMapsVarianceLookupFS
   vtkShadowMapsViewFS)
 set(shadowmaps_shader_sources)
@@ -81,6 +82,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapStoreFromLightDepths.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapRotationNoise.cxx
+    Plugin/OpenGL/ShadowMapTransmittance.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
@@ -126,6 +128,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapQuad.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
     Plugin/OpenGL/ShadowMapRotationNoise.h
+    Plugin/OpenGL/ShadowMapTransmittance.h
     Plugin/Passes/ShadowMapCombination.h
     Plugin/Passes/ShadowMapLayerContent.h
     Plugin/Passes/ShadowMapPassShaders.h

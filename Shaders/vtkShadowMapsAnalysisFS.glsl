@@ -1,7 +1,8 @@
 // Analysis views (vtkAbstractShadowMapPass::AnalysisView), appended to the
 // receivers' shadow code when one is on (shadowmaps::AddAnalysisReceiverCode).
 // They replace the colour of the receivers, by VTK_SHADOW_ANALYSIS: 1 the
-// analysed light's visibility as grey; 2 the texel density as a heat map; 4
+// analysed light's visibility as grey (per channel where translucent casters
+// tint it); 2 the texel density as a heat map; 4
 // the map (partition) each pixel was shaded from.
 
 // Screen pixels covered by one map texel, along one side: 1 / sqrt(|det J|)
@@ -45,7 +46,7 @@ vec4 vtkShadowAnalysisColor(
   int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, viewLayout, count, features);
   vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, view, features);
   float footprint = vtkShadowTexelFootprint(clip);
-  float visibility =
+  VTK_SHADOW_VALUE visibility =
     vtkShadowVisibility(positionVC, normalVC, light, firstView, viewLayout, count, features);
 #if VTK_SHADOW_ANALYSIS == 1
   return vec4(vec3(visibility), 1.0);

@@ -54,3 +54,30 @@ float vtkShadowLightDepthAt(float windowDepth)
   return depth >= 0.0 ? min(depth, 1.0) : (depth < 0.0 ? 0.0 : 1.0);
 }
 #endif
+
+#ifdef VTK_SHADOW_TRANSMITTANCE
+// What a translucent caster of colour c and opacity a lets through, per
+// channel: (1 - a)(1 - a + a c) (vtkAbstractShadowMapPass::GetTransmittance).
+// (Parameter names unlike the mapper's variables, which the pass looks for.)
+vec3 vtkShadowTransmitted(vec3 c, float alpha)
+{
+  float a = clamp(alpha, 0.0, 1.0);
+  return (1.0 - a) * ((1.0 - a) + a * clamp(c, 0.0, 1.0));
+}
+
+// The light depth a translucent caster keeps: its own, moved away from the
+// light by the depth it spans over two texels, so that a surface seen at a
+// grazing angle from the light, whose texel holds nearer parts of it, does
+// not shadow itself. Derivatives: the casting branch is selected by a uniform.
+float vtkShadowTransmittedDepth(float lightDepth)
+{
+  return lightDepth + 2.0 * max(abs(dFdx(lightDepth)), abs(dFdy(lightDepth)));
+}
+
+// The caster's own colour from VTK's diffuse colour, which is it times the
+// property's Diffuse coefficient.
+vec3 vtkShadowCasterColor(vec3 diffuse, float coefficient)
+{
+  return coefficient > 0.0 ? diffuse / coefficient : vec3(1.0);
+}
+#endif

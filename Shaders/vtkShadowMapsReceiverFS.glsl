@@ -14,6 +14,15 @@
 #define VTK_SHADOW_POSITION_DERIVATIVES
 #endif
 
+// A light's visibility: one value, or one per colour channel where translucent
+// casters tint it (VTK_SHADOW_TRANSMITTANCE).
+#ifdef VTK_SHADOW_TRANSMITTANCE
+#define VTK_SHADOW_VALUE vec3
+vec3 vtkShadowTransmittance(vec2 mapCoord, float lightDepth, int layer);
+#else
+#define VTK_SHADOW_VALUE float
+#endif
+
 // Receivers are evaluated in the camera's view coordinates (VC).
 uniform mat4 vtkShadowViewToWorld;
 
@@ -320,7 +329,7 @@ vec3 vtkShadowPositionDx = vec3(0.0);
 vec3 vtkShadowPositionDy = vec3(0.0);
 #endif
 
-#ifdef VTK_SHADOW_LIGHT_DEPTH
+#if defined(VTK_SHADOW_LIGHT_DEPTH) || defined(VTK_SHADOW_TRANSMITTANCE)
 // The light depth of a receiver (MapStorage::LightDepth), unclamped.
 float vtkShadowLightDepth(vec3 positionVC, int light)
 {
@@ -435,16 +444,11 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
   int viewLayout, int count, int features);
 #endif
 
-float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int firstView, int view,
-  int viewLayout, int count, int features)
+// What the opaque casters let through to the receiver, moved to `biased`, at
+// mapCoord of map `view`.
+float vtkShadowOpaqueVisibility(vec3 biased, vec3 normalVC, vec3 mapCoord, int light,
+  int firstView, int view, int viewLayout, int count, int features)
 {
-  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
-  vec4 clip = vtkShadowMapTransform(firstView, view, biased, features);
-  if (!vtkShadowInsideMap(clip, view, features))
-  {
-    return 1.0;
-  }
-  vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
 #ifdef VTK_SHADOW_RECEIVER_PLANE
   vtkShadowMeasureReceiver(
     biased, vtkShadowPlaneNormalVC, mapCoord, light, firstView, view, features);
@@ -463,6 +467,25 @@ float vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
   mapCoord.z = vtkShadowLightDepth(biased, light);
 #endif
   return vtkShadowLookup(mapCoord, view);
+}
+
+VTK_SHADOW_VALUE vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light,
+  int firstView, int view, int viewLayout, int count, int features)
+{
+  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
+  vec4 clip = vtkShadowMapTransform(firstView, view, biased, features);
+  if (!vtkShadowInsideMap(clip, view, features))
+  {
+    return VTK_SHADOW_VALUE(1.0);
+  }
+  vec3 mapCoord = vtkShadowMapCoord(clip, view, features);
+  float visibility = vtkShadowOpaqueVisibility(
+    biased, normalVC, mapCoord, light, firstView, view, viewLayout, count, features);
+#ifdef VTK_SHADOW_TRANSMITTANCE
+  return visibility * vtkShadowTransmittance(mapCoord.xy, vtkShadowLightDepth(biased, light), view);
+#else
+  return visibility;
+#endif
 }
 
 // Weight of the next cascade in the blend band of cascade `view`: by depth over
@@ -487,14 +510,15 @@ float vtkShadowBlendIntoNext(
   return clamp((max(ndc.x, ndc.y) - (1.0 - band)) / band, 0.0, 1.0);
 }
 
-// Fraction of light `light` reaching the receiver, in [0, 1]; 1 outside the maps.
+// Fraction of light `light` reaching the receiver, in [0, 1] (per channel where
+// translucent casters tint it); 1 outside the maps.
 // Cascades blend into the next one over the band before their split; cascades
 // and tiles fade out toward the light's maximum shadow distance.
-float vtkShadowVisibility(
+VTK_SHADOW_VALUE vtkShadowVisibility(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int viewLayout, int count, int features)
 {
   int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, viewLayout, count, features);
-  float visibility = vtkShadowViewVisibility(
+  VTK_SHADOW_VALUE visibility = vtkShadowViewVisibility(
     positionVC, normalVC, light, firstView, view, viewLayout, count, features);
   float depth = -positionVC.z;
   if (viewLayout == VTK_SHADOW_LAYOUT_CASCADES &&
@@ -504,7 +528,7 @@ float vtkShadowVisibility(
       vtkShadowBlendIntoNext(positionVC, normalVC, light, firstView, view, depth, features);
     if (view < firstView + count - 1 && weight > 0.0)
     {
-      float next =
+      VTK_SHADOW_VALUE next =
         vtkShadowViewVisibility(
           positionVC, normalVC, light, firstView, view + 1, viewLayout, count, features);
       visibility = mix(visibility, next, weight);
@@ -515,17 +539,17 @@ float vtkShadowVisibility(
     vec2 fade = vtkShadowLights[light].Fade;
     if (fade.y > fade.x)
     {
-      visibility = mix(visibility, 1.0, smoothstep(fade.x, fade.y, depth));
+      visibility = mix(visibility, VTK_SHADOW_VALUE(1.0), smoothstep(fade.x, fade.y, depth));
     }
   }
   return visibility;
 }
 
 // Factor that scales the light's diffuse and specular terms.
-float vtkShadowFactor(
+VTK_SHADOW_VALUE vtkShadowFactor(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int viewLayout, int count, int features)
 {
-  float visibility =
+  VTK_SHADOW_VALUE visibility =
     vtkShadowVisibility(positionVC, normalVC, light, firstView, viewLayout, count, features);
   return 1.0 - vtkShadowLights[light].Attenuation * (1.0 - visibility);
 }

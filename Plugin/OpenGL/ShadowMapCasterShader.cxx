@@ -54,9 +54,13 @@ std::string Declarations(const CasterCode& code, Impostors sized)
   {
     dec += "#define VTK_SHADOW_PEEL\n";
   }
-  if (code.LightDepth)
+  if (code.LightDepth || code.Transmittance)
   {
     dec += "#define VTK_SHADOW_LIGHT_DEPTH\n";
+  }
+  if (code.Transmittance)
+  {
+    dec += "#define VTK_SHADOW_TRANSMITTANCE\n";
   }
   dec += vtkShadowMapsCasterFS;
   if (code.LinearDepth)
@@ -115,7 +119,7 @@ std::string Branch(const CasterCode& code, const std::string& rawDepth,
   const std::string& rawBackDepth, bool writeDepth, bool selectFaces)
 {
   std::ostringstream branch;
-  branch << "  if (vtkShadowCasting != 0)\n  {\n";
+  branch << "  if (vtkShadowCasting " << (code.Transmittance ? "== 1" : "!= 0") << ")\n  {\n";
   if (selectFaces)
   {
     branch << "    if (!vtkShadowCastsThisFace())\n    {\n      discard;\n    }\n";
@@ -142,6 +146,26 @@ std::string Branch(const CasterCode& code, const std::string& rawDepth,
            << ";\n";
   }
   branch << StoreCode(code, backDepth) << "\n    return;\n  }\n";
+  return branch.str();
+}
+
+// The branch that draws a translucent caster into the transmittance maps,
+// where the mapper has its colour and opacity (after its colour code): what
+// the surface lets through and its light depth. A shader without them (none
+// of VTK's polydata shaders) draws nothing there.
+std::string TransmittanceBranch(const std::string& mapperCode)
+{
+  const std::string transmitted = CasterShader::TransmittedLight(mapperCode);
+  std::ostringstream branch;
+  branch << "  if (vtkShadowCasting == 2)\n  {\n";
+  if (transmitted.empty())
+  {
+    branch << "    discard;\n  }\n";
+    return branch.str();
+  }
+  branch << "    gl_FragData[0] = vec4(" << transmitted
+         << ", vtkShadowTransmittedDepth(vtkShadowLightDepthAt(gl_FragCoord.z)));\n"
+            "    return;\n  }\n";
   return branch.str();
 }
 
@@ -178,7 +202,7 @@ std::string CasterCode::Key() const
 {
   std::ostringstream key;
   key << this->Faces << ':' << this->LinearDepth << ':' << this->LightDepth << ':'
-      << this->KeepsLightDepth << ':'
+      << this->KeepsLightDepth << ':' << this->Transmittance << ':'
       << static_cast<int>(this->SecondDepth) << ':'
       << std::hash<std::string>{}(this->StoreCode + '\n' + this->StoreFunctions);
   return key.str();
@@ -202,6 +226,12 @@ CasterBranch CasterShader::Inject(
   // An impostor's depth as the mapper writes it follows the scene camera's
   // sizes: the branch computes its own.
   const std::string impostorDepth = ownFragments ? ImpostorShader::CasterDepth(sized) : "";
+  if (code.Transmittance)
+  {
+    // Before the depth branch, whichever marker that takes; the marker stays.
+    PutAtMarker(fragmentShader, LateMarker,
+      TransmittanceBranch(mapperCode) + std::string(LateMarker) + "\n");
+  }
 
   if (ownFragments)
   {
@@ -235,6 +265,22 @@ CasterBranch CasterShader::Inject(
       main, Declarations(code, impostorDepth.empty() ? Impostors::None : sized));
   }
   return ownFragments ? CasterBranch::AfterOwnFragments : CasterBranch::DepthOnly;
+}
+
+//------------------------------------------------------------------------------
+std::string CasterShader::TransmittedLight(const std::string& mapperCode)
+{
+  if (mapperCode.find("vec3 diffuseColor") == std::string::npos ||
+    mapperCode.find("float opacity") == std::string::npos)
+  {
+    return {};
+  }
+  // VTK's diffuse colour is the drawn colour times the property's Diffuse
+  // coefficient, taken out again.
+  const std::string color = mapperCode.find("diffuseIntensity") != std::string::npos
+    ? "vtkShadowCasterColor(diffuseColor, diffuseIntensity)"
+    : "diffuseColor";
+  return "vtkShadowTransmitted(" + color + ", opacity)";
 }
 
 //------------------------------------------------------------------------------
@@ -291,7 +337,7 @@ void CasterUniforms::ApplyPeelUnit(vtkShaderProgram* program) const
 //------------------------------------------------------------------------------
 void CasterUniforms::ApplyCasting(vtkShaderProgram* program) const
 {
-  program->SetUniformi("vtkShadowCasting", 1);
+  program->SetUniformi("vtkShadowCasting", this->Transmitting ? 2 : 1);
   this->ApplyPeelUnit(program);
   if (program->IsUniformUsed("vtkShadowPeelSecondPass"))
   {

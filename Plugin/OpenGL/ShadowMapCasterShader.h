@@ -53,6 +53,10 @@ struct CasterCode
   /// CasterUniforms::SetPeeling it discards what is not behind that output's
   /// first pass (the nearest surface), for the second pass to keep y.
   SecondDepthMethod SecondDepth = SecondDepthMethod::None;
+  /// Some caster is translucent: every shader also gets the branch that
+  /// draws it into the transmittance maps (vtkShadowCasting 2), after the
+  /// mapper's colour code, and the depth branch takes vtkShadowCasting 1 only.
+  bool Transmittance = false;
 
   std::string Key() const;
 };
@@ -75,6 +79,12 @@ public:
   /// the impostors ImpostorShader::Size sized, whose depth the branch computes.
   static CasterBranch Inject(
     std::string& fragmentShader, const CasterCode& code, Impostors sized = Impostors::None);
+
+  /// The GLSL expression (a vec3) of what the drawn surface lets through
+  /// (vtkAbstractShadowMapPass::GetTransmittance's model), valid after the
+  /// mapper's colour code of `mapperCode`; empty where that code has no
+  /// colour and opacity. Needs the declarations of CasterCode::Transmittance.
+  static std::string TransmittedLight(const std::string& mapperCode);
 
   /// Whether the camera is parallel is part of the state VTK's mappers rebuild
   /// their shaders on, so the light camera keeps the scene camera's flag; a
@@ -108,6 +118,10 @@ public:
   /// Impostors' sizes (ImpostorShader::Size) in the view being rendered.
   ImpostorUniforms& Impostors() { return this->ImpostorSizes; }
 
+  /// Whether the next draws go into the transmittance maps (translucent
+  /// casters) instead of the maps.
+  void SetTransmitting(bool transmitting) { this->Transmitting = transmitting; }
+
   /// Selects the branch and sets the view's uniforms.
   void ApplyCasting(vtkShaderProgram* program) const;
 
@@ -118,6 +132,7 @@ private:
   void ApplyPeelUnit(vtkShaderProgram* program) const;
 
   bool SecondPass = false;
+  bool Transmitting = false;
   int PeelUnit = 0;
   std::array<float, 3> WindowToInverseW{ { 0.0f, 0.0f, 1.0f } };
   std::array<float, 3> LinearDepthBias{ { 0.0f, 0.0f, 0.0f } };

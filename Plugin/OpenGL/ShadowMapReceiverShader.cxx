@@ -1,5 +1,6 @@
 #include "ShadowMapReceiverShader.h"
 
+#include "ShadowMapCasterShader.h"
 #include "ShadowMapCrop.h"
 #include "ShadowMapImpostors.h"
 #include "ShadowMapLight.h"
@@ -42,6 +43,16 @@ int InjectShadowFactor(std::string& fragmentShader, int shaderIndex, int lightIn
     }
   }
   return replaced;
+}
+
+// A translucent receiver's own transmittance, for the maps' product to hold
+// it once (vtkShadowOwnTransmittance); nothing for an opaque receiver's.
+std::string OwnTransmittance(const std::string& fragmentShader, const ReceiverCode& code)
+{
+  const std::string transmitted =
+    code.Transmittance ? CasterShader::TransmittedLight(fragmentShader) : std::string();
+  return transmitted.empty() ? std::string()
+                             : "  vtkShadowOwnTransmittance = " + transmitted + ";\n";
 }
 
 // Whether the shader names `name` as a whole word (lightColor1, not lightColor12).
@@ -142,7 +153,8 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
   {
     if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, k) > 0)
     {
-      impl << "  float vtkShadowFactor" << k << " = vtkShadowFactor("
+      impl << (code.Transmittance ? "  vec3" : "  float") << " vtkShadowFactor" << k
+           << " = vtkShadowFactor("
            << ReceiverCallArguments(lights[k], k) << ");\n";
     }
     else if (NamesWord(fragmentShader, "lightColor" + std::to_string(lights[k].ShaderIndex)))
@@ -180,7 +192,7 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
     "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
     "  vtkShadowSetReceiverPlane(vtkShadowNormalVC);\n"
     "#endif\n" +
-      impl.str());
+      OwnTransmittance(fragmentShader, code) + impl.str());
   return unpatched;
 }
 
@@ -360,6 +372,10 @@ void ReceiverUniforms::ApplyTextureUnits(
   if (units.RawDepths >= 0)
   {
     program->SetUniformi("vtkShadowDepths", units.RawDepths);
+  }
+  if (units.Transmittances >= 0)
+  {
+    program->SetUniformi("vtkShadowTransmittances", units.Transmittances);
   }
 }
 

@@ -38,6 +38,9 @@ struct ReceiverCode
   std::string AnalysisFunctions;
   /// At the end of main(): the analysis view's statement (empty: none).
   std::string AnalysisStatement;
+  /// Translucent casters tint the light: the shadow factors are colours
+  /// (VTK_SHADOW_TRANSMITTANCE, which Definitions then holds).
+  bool Transmittance = false;
   /// A hash of the four, for the shader key (Rehash after changing them).
   std::size_t Hash = 0;
   void Rehash();
@@ -85,6 +88,8 @@ struct ReceiverTextureUnits
   /// The maps' depths without comparison (vtkShadowDepths), for the soft
   /// shadows of depth maps; -1 when nobody reads them.
   int RawDepths = -1;
+  /// The transmittance maps (vtkShadowTransmittances); -1 without them.
+  int Transmittances = -1;
 };
 
 /// The uniforms of the receiver functions for one map update: one struct per

@@ -5,6 +5,7 @@
 #include "ShadowMapStorageChoice.h"
 #include "ShadowMapTextureArray.h"
 #include "vtkShadowMapRepresentation.h"
+#include "vtkShadowMapsTransmittanceFS.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -23,9 +24,13 @@ bool PassShaders::Update(const MapStorage& storage, vtkShadowMapRepresentation* 
     [](const ShadowLight& light) { return light.Size > 0.0; });
   this->Receivers.Definitions =
     std::string(storage.LightDepth ? "#define VTK_SHADOW_LIGHT_DEPTH\n" : "") +
-    (sized ? "#define VTK_SHADOW_SIZED_LIGHTS\n" : "") + representation->GetReceiverDefinitions();
-  this->Receivers.Lookup =
-    representation->GetReceiverLookupCode() + (sized ? representation->GetSoftShadowCode() : "");
+    (sized ? "#define VTK_SHADOW_SIZED_LIGHTS\n" : "") +
+    (storage.Transmittance ? "#define VTK_SHADOW_TRANSMITTANCE\n" : "") +
+    representation->GetReceiverDefinitions();
+  this->Receivers.Lookup = representation->GetReceiverLookupCode() +
+    (sized ? representation->GetSoftShadowCode() : "") +
+    (storage.Transmittance ? vtkShadowMapsTransmittanceFS : "");
+  this->Receivers.Transmittance = storage.Transmittance;
   AddAnalysisReceiverCode(choices.AnalysisView, choices.AnalysisLight, lights, this->Receivers);
   this->Receivers.Rehash();
 
@@ -41,6 +46,7 @@ bool PassShaders::Update(const MapStorage& storage, vtkShadowMapRepresentation* 
   casters.StoreFunctions = values ? storage.StoreFunctions : std::string();
   casters.LightDepth = values && storage.LightDepth;
   casters.LinearDepth = AnyLinearDepthView(lights);
+  casters.Transmittance = storage.Transmittance;
 
   std::string key = ReceiverShader::Key(lights, layers, this->Receivers) + '|' + casters.Key();
   if (key == this->Key)

@@ -91,6 +91,13 @@ void ProgramUniforms::SetPeeling(bool secondPass, int peelUnit)
 }
 
 //------------------------------------------------------------------------------
+void ProgramUniforms::SetTransmitting(bool transmitting)
+{
+  this->Casters.SetTransmitting(transmitting);
+  this->CasterPrograms.Invalidate();
+}
+
+//------------------------------------------------------------------------------
 void ProgramUniforms::SetDrawnRadius(float radius)
 {
   this->Casters.Impostors().SetDrawnRadius(radius);

@@ -29,7 +29,8 @@ struct CastingSettings
   /// Window depth in 16 bits (TexelFormat::Depth16): the polygon offset's
   /// unit for impostors, which write their own depth.
   bool Depth16 = false;
-  /// The casters store the light depth (CasterCode::LightDepth).
+  /// The casters store the light depth (CasterCode::LightDepth), or
+  /// translucent ones keep it in the transmittance maps.
   bool LightDepth = false;
   double SlopeScaledOffset = 0.0;
   double ConstantOffset = 0.0;
@@ -48,6 +49,9 @@ public:
 
   /// Depth peeling's pass (CasterUniforms::SetPeeling), for the next caster draws.
   void SetPeeling(bool secondPass, int peelUnit);
+
+  /// Whether the next caster draws go into the transmittance maps.
+  void SetTransmitting(bool transmitting);
 
   /// Impostors' drawn size over the whole image's (SceneCamera::DrawnRadius).
   void SetDrawnRadius(float radius);

@@ -10,6 +10,7 @@ namespace shadowmaps
 void RendererMaps::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Maps.Release();
+  this->Transmittances.Release();
   this->LinearDepths.ReleaseGraphicsResources(window);
   this->LightDepths.ReleaseGraphicsResources(window);
   this->Updates.Invalidate();
@@ -80,7 +81,7 @@ std::size_t MapsByRenderer::MemoryBytes() const
   std::size_t bytes = 0;
   for (const auto& maps : this->Maps)
   {
-    bytes += maps.second->Maps.GetMemoryBytes();
+    bytes += maps.second->Maps.GetMemoryBytes() + maps.second->Transmittances.GetMemoryBytes();
   }
   return bytes;
 }

@@ -10,6 +10,7 @@
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapStoreFromLightDepths.h"
 #include "ShadowMapTextureArray.h"
+#include "ShadowMapTransmittance.h"
 #include "ShadowMapUpdates.h"
 #include "vtkShadowMapRepresentation.h" // For MapStorage
 
@@ -29,6 +30,8 @@ namespace shadowmaps
 struct RendererMaps
 {
   TextureArray Maps;
+  /// Beside the maps while some caster is translucent (MapStorage::Transmittance).
+  TransmittanceMaps Transmittances;
   MapStorage Storage;
   ReceiverUniforms Uniforms;
   LinearDepthResolve LinearDepths;

@@ -40,7 +40,10 @@ void ChooseSecondDepthMethod(MapStorage& storage, const std::vector<Caster>& cas
     versions.reserve(casters.size());
     for (const Caster& caster : casters)
     {
-      versions.emplace_back(caster.Prop, caster.Version);
+      if (caster.Opaque)
+      {
+        versions.emplace_back(caster.Prop, caster.Version);
+      }
     }
     // Processes that combine their maps must make them the same way, and
     // peeling is right whatever each one's casters are.

@@ -39,6 +39,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
+#include "vtkTranslucentPass.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -81,6 +82,19 @@ vtkInformationKeyMacro(vtkAbstractShadowMapPass, LIGHT_SIZE, Double);
 double vtkAbstractShadowMapPass::GetLightSize(vtkLight* light, bool* clamped)
 {
   return shadowmaps::LightSizeOf(light, LIGHT_SIZE(), clamped);
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::GetTransmittance(
+  const double color[3], double opacity, double transmitted[3])
+{
+  // Clamped as the casters' shader clamps; a NaN opacity counts as opaque.
+  const double a = opacity >= 0.0 ? std::min(opacity, 1.0) : (opacity < 0.0 ? 0.0 : 1.0);
+  for (int c = 0; c < 3; ++c)
+  {
+    const double channel = color[c] >= 0.0 ? std::min(color[c], 1.0) : 0.0;
+    transmitted[c] = (1.0 - a) * ((1.0 - a) + a * channel);
+  }
 }
 
 using shadowmaps::Aabb;
@@ -137,6 +151,7 @@ struct vtkAbstractShadowMapPass::Internals
 
   // What renders the maps.
   vtkNew<vtkOpaquePass> OpaquePass;
+  vtkNew<vtkTranslucentPass> TranslucentPass;
   vtkNew<vtkCamera> LightCamera;
   vtkNew<vtkMatrix4x4> LightProjection;
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
@@ -190,6 +205,8 @@ struct vtkAbstractShadowMapPass::Internals
   int PeelUnit = -1;
   /// The maps read without comparison (ReadsRawDepths), -1 when not.
   int RawDepthUnit = -1;
+  /// The transmittance maps (MapStorage::Transmittance), -1 without them.
+  int TransmittanceUnit = -1;
   bool TextureUnitsReserved = false;
   bool ShaderCodeCompiles = true;
   // The props whose render passes this pass joined in this frame.
@@ -714,7 +731,8 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   }
   std::string error;
   if (!maps.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, maps.Storage.Format,
-        maps.Storage.Mipmaps, error))
+        maps.Storage.Mipmaps, error) ||
+    !this->ReserveTransmittanceMaps(error))
   {
     this->CombineAcrossProcesses(window, false);
     this->ReportGLFailure(error);
@@ -740,6 +758,19 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   r.WarnedGLError.clear();
   ++this->NumberOfShadowMapUpdates;
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAbstractShadowMapPass::ReserveTransmittanceMaps(std::string& error)
+{
+  Internals& r = *this->Internal;
+  shadowmaps::RendererMaps& maps = r.Maps();
+  if (!maps.Storage.Transmittance)
+  {
+    maps.Transmittances.Release();
+    return true;
+  }
+  return maps.Transmittances.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, error);
 }
 
 //------------------------------------------------------------------------------
@@ -808,6 +839,7 @@ void vtkAbstractShadowMapPass::ChooseStorage()
   }
   limits.MaximumSamples = std::max(r.MaximumSamples, 1);
   shadowmaps::CompleteStorage(maps.Storage, r.Lights, r.Casters, r.ClosedCasters, limits);
+  maps.Storage.Transmittance = shadowmaps::AnyTranslucent(r.Casters);
   this->NumberOfCasterPassesPerLayer = shadowmaps::CasterPassesPerLayer(maps.Storage);
 }
 
@@ -841,7 +873,8 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
   shadowmaps::CastingSettings settings;
   settings.Resolution = r.Frame.Resolution;
   settings.Depth16 = r.Maps().Storage.Format == shadowmaps::TexelFormat::Depth16;
-  settings.LightDepth = r.Shaders.GetCasterCode().LightDepth;
+  const shadowmaps::CasterCode& code = r.Shaders.GetCasterCode();
+  settings.LightDepth = code.LightDepth || code.Transmittance;
   settings.SlopeScaledOffset = offset.SlopeScaled;
   settings.ConstantOffset = offset.Constant;
   settings.LargestPointSize = this->LargestPointSize();
@@ -907,6 +940,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   // it when some other layer's casters change). Layers that hold every
   // process's casters combined are all rendered and combined again.
   maps.Updates.BeginUpdate({ this->GetMTime(), maps.Maps.GetAllocations(),
+                             maps.Transmittances.GetAllocations(),
                                    static_cast<vtkMTimeType>(r.Frame.Resolution),
                                    static_cast<vtkMTimeType>(maps.Storage.SecondDepth) },
     this->NumberOfShadowMapLayers, combination != shadowmaps::Combination::None, r.Casters);
@@ -979,6 +1013,10 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           if (ok && peeling && !props.empty())
           {
             ok = this->PeelSecondSurface(renderer, layer, props, draws);
+          }
+          if (ok && maps.Storage.Transmittance)
+          {
+            ok = this->RenderTransmittance(renderer, layer, props, draws);
           }
           maps.Updates.Rendered(layer, std::move(plan));
           rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
@@ -1134,14 +1172,37 @@ bool vtkAbstractShadowMapPass::PeelSecondSurface(
 }
 
 //------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::DrawCasters(vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters)
+bool vtkAbstractShadowMapPass::RenderTransmittance(
+  vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws)
+{
+  // The light camera still looks through the layer's view, and the casters
+  // joined when the layer's depths were drawn.
+  Internals& r = *this->Internal;
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  r.Programs.SetTransmitting(true);
+  const bool ok = r.Maps().Transmittances.Render(state, layer,
+    [&]() {
+      if (!casters.empty())
+      {
+        draws += this->DrawCasters(renderer, casters, r.TranslucentPass);
+      }
+    },
+    r.LastGLError);
+  r.Programs.SetTransmitting(false);
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::DrawCasters(
+  vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters, vtkRenderPass* pass)
 {
   Internals& r = *this->Internal;
+  pass = pass ? pass : r.OpaquePass.Get();
   vtkRenderState casterState(renderer);
   casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
   casterState.SetFrameBuffer(nullptr);
-  r.OpaquePass->Render(&casterState);
-  return r.OpaquePass->GetNumberOfRenderedProps();
+  pass->Render(&casterState);
+  return pass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
@@ -1201,6 +1262,11 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
   {
     r.RawDepthUnit = window->GetTextureUnitManager()->Allocate();
   }
+  if (r.Maps().Storage.Transmittance)
+  {
+    r.TransmittanceUnit = window->GetTextureUnitManager()->Allocate();
+    r.Maps().Transmittances.BindToUnit(window->GetState(), r.TransmittanceUnit, false);
+  }
   r.Representation->ActivateReceiverResources(window);
   r.TextureUnitsReserved = true;
 }
@@ -1218,6 +1284,10 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
   {
     maps.Maps.BindRawDepthToUnit(window->GetState(), r.RawDepthUnit);
   }
+  if (r.TransmittanceUnit >= 0)
+  {
+    maps.Transmittances.BindToUnit(window->GetState(), r.TransmittanceUnit, true);
+  }
   maps.Uniforms.NewFrame();
 }
 
@@ -1233,7 +1303,8 @@ bool vtkAbstractShadowMapPass::ReadsRawDepths() const
 //------------------------------------------------------------------------------
 shadowmaps::ReceiverTextureUnits vtkAbstractShadowMapPass::ReceiverUnits() const
 {
-  return { this->Internal->MapUnit, this->Internal->RawDepthUnit };
+  const Internals& r = *this->Internal;
+  return { r.MapUnit, r.RawDepthUnit, r.TransmittanceUnit };
 }
 
 //------------------------------------------------------------------------------
@@ -1259,6 +1330,13 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
     shadowmaps::TextureArray::UnbindRawDepth(window->GetState(), r.RawDepthUnit);
     window->GetTextureUnitManager()->Free(r.RawDepthUnit);
     r.RawDepthUnit = -1;
+  }
+  if (r.TransmittanceUnit >= 0)
+  {
+    window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.TransmittanceUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    window->GetTextureUnitManager()->Free(r.TransmittanceUnit);
+    r.TransmittanceUnit = -1;
   }
   r.Representation->DeactivateReceiverResources();
   r.TextureUnitsReserved = false;
@@ -1371,6 +1449,7 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   r.LargestPointSize = 0.0f;
   r.MaximumSamples = 0;
   r.OpaquePass->ReleaseGraphicsResources(window);
+  r.TranslucentPass->ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   r.DepthPeeling->ReleaseGraphicsResources(window);
   if (this->DelegatePass)

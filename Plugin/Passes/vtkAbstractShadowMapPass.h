@@ -125,6 +125,18 @@ public:
    */
   static double GetLightSize(vtkLight* light, bool* clamped = nullptr);
 
+  /**
+   * What a translucent caster of `color` (RGB in [0, 1]) and `opacity` a
+   * lets through of the light that crosses it, per channel c:
+   * (1 - a) (1 - a + a c). A white caster lets 1 - a through, what VTK's
+   * blending shows of what lies behind it; a coloured one also filters that
+   * light toward its colour in proportion to its opacity; an opaque one lets
+   * nothing through. Several crossings multiply, in any order. Out-of-range
+   * values are clamped. The passes' transmittance maps and the benchmark's
+   * ray-traced truth use this model (docs/TRANSLUCENT.md).
+   */
+  static void GetTransmittance(const double color[3], double opacity, double transmitted[3]);
+
   ///@{
   /**
    * Whether lights with a LIGHT_SIZE get contact-hardening soft shadows
@@ -295,7 +307,8 @@ public:
   /**
    * Analysis view of light AnalysisLight (an index among the shadowed lights,
    * in the renderer's order): receivers show instead of their shading
-   * - SHADOW_FACTOR: the light's visibility, white lit, black shadowed;
+   * - SHADOW_FACTOR: the light's visibility, white lit, black shadowed (per
+   *   colour channel where translucent casters tint it);
    * - TEXEL_DENSITY: a heat map of how many screen pixels one map texel
    *   covers (log scale): blue dense, green 1.5 pixels, orange to red
    *   undersampled (red channel 255 exactly when over 1.5 pixels);
@@ -460,6 +473,8 @@ private:
   void GatherPropBounds();
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   int UsableResolution();
+  // The transmittance maps as the storage asks (none without translucent casters).
+  bool ReserveTransmittanceMaps(std::string& error);
   bool FitViews();
   void DropLightsWithoutUsableViews();
   // The largest point size the context draws, asked once per context.
@@ -486,7 +501,12 @@ private:
     std::vector<vtkProp*>& casters, bool linearDepths);
   bool PeelSecondSurface(
     vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws);
-  int DrawCasters(vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters);
+  // Draws the casters through `pass` (the opaque pass when null).
+  int DrawCasters(
+    vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters, vtkRenderPass* pass = nullptr);
+  // What the layer's translucent casters let through, into its transmittance map.
+  bool RenderTransmittance(
+    vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws);
   void ApplyCasterUniforms(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer, bool linearDepths);
   void JoinRenderPasses(vtkProp* const* props, int count);

@@ -72,6 +72,9 @@ struct MapStorage
   /// MinimumBlending and ClearValues are then the pass's
   /// (vtkAbstractShadowMapPass::ChooseSecondDepthMethod).
   SecondDepthMethod SecondDepth = SecondDepthMethod::None;
+  /// Some caster is translucent: transmittance maps beside these
+  /// (shadowmaps::TransmittanceMaps). Set by the pass, not the representation.
+  bool Transmittance = false;
 };
 
 /// A map layer the casters were just rendered into (PostProcessMaps).

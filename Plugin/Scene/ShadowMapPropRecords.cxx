@@ -51,7 +51,9 @@ const PropRecords::Record& PropRecords::Read(vtkProp* prop)
   // Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
   // depth map; as casters they would only re-render the maps on every transfer
   // function edit.
-  record.DrawsIntoDepthMaps = prop->HasOpaqueGeometry() && !vtkVolume::SafeDownCast(prop);
+  const bool volume = vtkVolume::SafeDownCast(prop) != nullptr;
+  record.DrawsIntoDepthMaps = prop->HasOpaqueGeometry() && !volume;
+  record.DrawsTranslucency = prop->HasTranslucentPolygonalGeometry() && !volume;
   return record;
 }
 

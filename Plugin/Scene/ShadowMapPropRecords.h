@@ -30,6 +30,9 @@ public:
     /// it draws at its points (ImpostorReach), which the scene camera sizes.
     Aabb CastingBounds;
     bool DrawsIntoDepthMaps = false;
+    /// It draws translucent polygons (VTK's translucent pass), which the
+    /// transmittance maps take.
+    bool DrawsTranslucency = false;
     vtkMTimeType Version = 0;
   };
 

@@ -140,6 +140,13 @@ SceneCamera ReadSceneCamera(vtkRenderer* renderer, ShadowFrame& frame)
 }
 
 //------------------------------------------------------------------------------
+bool AnyTranslucent(const std::vector<Caster>& casters)
+{
+  return std::any_of(
+    casters.begin(), casters.end(), [](const Caster& caster) { return caster.Translucent; });
+}
+
+//------------------------------------------------------------------------------
 void CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
   vtkInformationIntegerKey* castsShadows, PropRecords& records, ShadowFrame& frame,
   std::vector<Caster>& casters)
@@ -171,9 +178,11 @@ void CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
     }
     frame.SceneBounds.Add(record.Bounds);
     frame.PropBounds.push_back(record.Bounds);
-    if (record.DrawsIntoDepthMaps && IsEnabled(prop->GetPropertyKeys(), castsShadows))
+    if ((record.DrawsIntoDepthMaps || record.DrawsTranslucency) &&
+      IsEnabled(prop->GetPropertyKeys(), castsShadows))
     {
-      casters.push_back({ prop, record.CastingBounds, record.Version });
+      casters.push_back({ prop, record.CastingBounds, record.Version, record.DrawsIntoDepthMaps,
+        record.DrawsTranslucency });
     }
   }
   records.EndFrame();

@@ -31,7 +31,14 @@ struct Caster
   vtkProp* Prop = nullptr;
   Aabb Bounds;
   vtkMTimeType Version = 0;
+  /// What it draws into the maps: depth (opaque geometry), transmittance
+  /// (translucent polygons), or both (an assembly of both kinds).
+  bool Opaque = true;
+  bool Translucent = false;
 };
+
+/// Whether any of `casters` draws translucent polygons.
+bool AnyTranslucent(const std::vector<Caster>& casters);
 
 /// An opt-out key: absent (or no information at all) means yes.
 bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key);
@@ -78,9 +85,9 @@ struct SceneCamera
 SceneCamera ReadSceneCamera(vtkRenderer* renderer, ShadowFrame& frame);
 
 /// The visible props' bounds into `frame` (SceneBounds, PropBounds) and the
-/// casters among them (props that draw into depth maps and do not opt out by
-/// `castsShadows`), through `records`, which reads a prop again only when it
-/// changed.
+/// casters among them (props that draw opaque or translucent polygons and do
+/// not opt out by `castsShadows`), through `records`, which reads a prop again
+/// only when it changed.
 void CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
   vtkInformationIntegerKey* castsShadows, PropRecords& records, ShadowFrame& frame,
   std::vector<Caster>& casters);

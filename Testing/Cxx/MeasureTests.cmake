@@ -11,7 +11,8 @@ set(shadoworacle_test_vtk_modules
   VTK::CommonDataModel
   VTK::FiltersSources
   VTK::RenderingCore
-  VTK::RenderingOpenGL2)
+  VTK::RenderingOpenGL2
+  VTK::RenderingVolumeOpenGL2)
 
 add_executable(TestShadowOracle Cxx/TestShadowOracle.cxx)
 target_link_libraries(TestShadowOracle PRIVATE

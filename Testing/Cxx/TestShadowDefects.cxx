@@ -20,6 +20,7 @@
 #include "vtkCubeSource.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightKit.h"
 #include "vtkLineSource.h"
@@ -186,7 +187,10 @@ TEST(ShadowDefects, TranslucentGeometryKept)
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
   const glm::ivec3 rgb = ColorAt(scene.Renderer, image, { -4.0, -4.1, 1.0 });
-  EXPECT_GT(rgb[0], rgb[1] + 40) << "the red translucent pane tints what is behind it";
+  // Its far side and the ground behind it lie in its own red-tinted shadow
+  // (docs/TRANSLUCENT.md), which makes them darker: 94, 60, 60 here (111, 60,
+  // 60 with the pane opted out of casting).
+  EXPECT_GT(rgb[0], rgb[1] + 25) << "the red translucent pane tints what is behind it";
   EXPECT_GT(rgb[1], 20) << "and what is behind it still shows through";
 }
 
@@ -206,6 +210,11 @@ TEST(ShadowDefects, DepthPeelingStillPeels)
       auto actor = AddSourceActor(scene.Renderer, ball);
       actor->GetProperty()->SetColor(colors[i].x, colors[i].y, colors[i].z);
       actor->GetProperty()->SetOpacity(0.5);
+      // Peeling, not their shadows on each other (which darken the layers it
+      // composites), is what this compares.
+      vtkNew<vtkInformation> keys;
+      keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+      actor->SetPropertyKeys(keys);
     }
     scene.Renderer->SetUseDepthPeeling(peel);
     vtkNew<vtkWarpedShadowMapPass> pass;

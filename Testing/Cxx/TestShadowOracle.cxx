@@ -5,6 +5,8 @@
 // previous run; the tolerance on areas is 0.1% of the image's pixels.
 #include "ShadowOracle.h"
 #include "ShadowAreaLight.h"
+#include "ShadowOracleVolumes.h"
+#include "ColorByTable.h"
 
 #include "vtkAbstractShadowMapPass.h"
 
@@ -14,9 +16,11 @@
 #include "ShadowMapVTKCompat.h"
 #include "vtkCellData.h"
 #include "vtkColor.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkImageData.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
@@ -24,6 +28,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -33,8 +38,12 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkSmartVolumeMapper.h"
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
+#include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
 
@@ -1308,23 +1317,7 @@ TEST(ShadowOracle, TranslucentColoursComeFromScalarsLookupTablesAndBlocks)
   // Left: point scalars through a one-colour lookup table with alpha, times
   // the actor's opacity. Values in 1/255 steps, as VTK's colours are bytes.
   vtkActor* mapped = AddSlab(view, { -1.5, 0.0 }, 1.0, 1.0, glm::dvec3(1.0), 0.5);
-  auto* mappedMapper = vtkPolyDataMapper::SafeDownCast(mapped->GetMapper());
-  mappedMapper->Update();
-  vtkNew<vtkPolyData> withScalars;
-  withScalars->DeepCopy(mappedMapper->GetInput());
-  vtkNew<vtkFloatArray> values;
-  values->SetNumberOfTuples(withScalars->GetNumberOfPoints());
-  values->FillValue(1.0f);
-  withScalars->GetPointData()->SetScalars(values);
-  vtkNew<vtkLookupTable> table;
-  table->SetNumberOfTableValues(1);
-  table->SetTableValue(0, 51 / 255.0, 204 / 255.0, 102 / 255.0, 153 / 255.0);
-  table->SetRange(0.0, 2.0);
-  table->Build();
-  mappedMapper->SetInputData(withScalars);
-  mappedMapper->SetLookupTable(table);
-  mappedMapper->SetScalarVisibility(1);
-  mappedMapper->UseLookupTableScalarRangeOn();
+  ColorByOneTableEntry(mapped, 51 / 255.0, 204 / 255.0, 102 / 255.0, 153 / 255.0);
 
   // Middle: direct RGBA cell colours, one per half; the actor is opaque.
   vtkActor* direct = AddSlab(view, { 0.0, 0.0 }, 1.0, 1.0, glm::dvec3(1.0), 1.0);
@@ -1437,4 +1430,85 @@ TEST(ShadowOracle, SizedLightsTransmittanceAveragesItsRays)
     Report("translucent edge under a sun: worst |transmittance - expected|", worst, 0.0);
     EXPECT_LT(worst, 0.02);
   }
+}
+
+namespace
+{
+/// A box of constant scalar 1 filling [-1, 1] x [-1, 1] x [bottom, bottom + 2]
+/// (11 samples a side), of constant scalar opacity per `unitDistance` and colour.
+vtkSmartPointer<vtkVolume> AddUniformVolume(View& view, double bottom, double opacity,
+  double unitDistance, const glm::dvec3& color)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(11, 11, 11);
+  image->SetOrigin(-1.0, -1.0, bottom);
+  image->SetSpacing(0.2, 0.2, 0.2);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  auto* scalars = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  scalars->FillValue(1.0f);
+  vtkNew<vtkPiecewiseFunction> opacities;
+  opacities->AddPoint(0.0, opacity);
+  opacities->AddPoint(2.0, opacity);
+  vtkNew<vtkColorTransferFunction> colors;
+  colors->AddRGBPoint(0.0, color.x, color.y, color.z);
+  colors->AddRGBPoint(2.0, color.x, color.y, color.z);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacity(opacities);
+  property->SetColor(colors);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  vtkNew<vtkSmartVolumeMapper> mapper;
+  mapper->SetInputData(image);
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  view.Renderer->AddVolume(volume);
+  return volume;
+}
+} // namespace
+
+TEST(ShadowOracle, VolumeOfUniformOpacityLetsThroughItsOpticalDepth)
+{
+  const double opacity = 0.2;
+  const double unitDistance = 0.5;
+  const glm::dvec3 color(1.0, 0.5, 0.0);
+  View view;
+  AddGround(view, 8.0);
+  AddUniformVolume(view, 2.0, opacity, unitDistance, color);
+  vtkLight* sun = nullptr;
+  Oracle oracle = BuildUnderOverheadSun(view, sun);
+  ASSERT_EQ(oracle.GetNumberOfVolumes(), 1u);
+  const Surface surface = GroundLine(-3.0, 3.0, 61);
+  const std::vector<glm::vec3> transmittance = oracle.Transmittance(surface, sun);
+  // Two units of the box: the continuous model exp(-sigma L (2 - c)), sigma =
+  // -ln(1 - a) / u; white is (1 - a)^(L / u), VTK's compositing.
+  const double sigma = -std::log(1.0 - opacity) / unitDistance;
+  glm::dvec3 expected;
+  for (int c = 0; c < 3; ++c)
+  {
+    expected[c] = std::exp(-sigma * 2.0 * (2.0 - color[c]));
+  }
+  EXPECT_NEAR(std::exp(-sigma * 2.0), std::pow(1.0 - opacity, 2.0 / unitDistance), 1e-12);
+  ExpectTransmittance(transmittance[GroundIndex(0.0)], expected, 0.005, "under the volume");
+  ExpectTransmittance(transmittance[GroundIndex(-0.9)], expected, 0.005, "under its edge");
+  ExpectTransmittance(transmittance[GroundIndex(1.5)], glm::dvec3(1.0), 0.0, "beside it");
+  // Opted out of casting: nothing.
+  vtkNew<vtkInformation> keys;
+  keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  vtkVolume::SafeDownCast(view.Renderer->GetVolumes()->GetLastProp())->SetPropertyKeys(keys);
+  std::string error;
+  ASSERT_TRUE(oracle.Build(view.Renderer, error)) << error;
+  EXPECT_EQ(oracle.GetNumberOfVolumes(), 0u);
+}
+
+TEST(ShadowOracle, SliceTransmittanceIsTheSurfaceModelOfTheCorrectedOpacity)
+{
+  // A slice one unit distance thick is a surface of the scalar opacity.
+  const glm::dvec3 color(0.3, 0.6, 0.9);
+  EXPECT_EQ(shadoworacle::SliceTransmittance(color, 0.4, 2.0, 2.0),
+    shadoworacle::SurfaceTransmittance(color, 0.4));
+  // Two half slices of white make one: (1 - a)^(1/2) twice.
+  const glm::dvec3 half = shadoworacle::SliceTransmittance(glm::dvec3(1.0), 0.4, 1.0, 2.0);
+  EXPECT_NEAR(half.x * half.x, 0.6, 1e-12);
+  EXPECT_EQ(shadoworacle::SliceTransmittance(color, 1.0, 0.01, 2.0), glm::dvec3(0.0));
+  EXPECT_EQ(shadoworacle::SliceTransmittance(color, 0.0, 5.0, 2.0), glm::dvec3(1.0));
 }

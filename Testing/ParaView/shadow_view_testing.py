@@ -77,18 +77,23 @@ def in_frame(view, world):
     return 0 <= x < SIZE[0] and 0 <= y < SIZE[1]
 
 
-def luminance_at(view, png, world):
-    """Luminance (0-255) where `world` is seen; a probe outside the frame fails."""
+def rgb_at(view, png, world):
+    """RGB (0-255) where `world` is seen; a probe outside the frame fails."""
     x, y = pixel_of(view, world)
     if not in_frame(view, world):
         check(False, f"probe {world} falls outside the frame, at pixel ({x}, {y})")
-        return float("nan")
+        return [float("nan")] * 3
     reader = vtkPNGReader()
     reader.SetFileName(png)
     reader.Update()
     image = reader.GetOutput()
     pixel = image.GetScalarComponentAsDouble  # (x, y from the bottom, z, component)
-    rgb = [pixel(x, y, 0, c) for c in range(3)]
+    return [pixel(x, y, 0, c) for c in range(3)]
+
+
+def luminance_at(view, png, world):
+    """Luminance (0-255) where `world` is seen; a probe outside the frame fails."""
+    rgb = rgb_at(view, png, world)
     return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
 
 

@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
 from shadow_view_testing import (LIT, SHADOWED, SUN, check, check_same_image,  # noqa: E402
                                  compare_with_baseline, failures, in_frame, luminance_at,
-                                 make_view, render, shadow_probes, show_scene)
+                                 make_view, render, rgb_at, shadow_probes, show_scene)
 
 PLUGIN = sys.argv[1]
 OUT = testing.OUT = sys.argv[2]
@@ -287,6 +287,29 @@ for key_light, expected in ((1, 1), (0, 0)):
     check(view.GetPropertyValue("NumberOfShadowedLights") == expected,
           f"light kit with KeyLightShadows {key_light}: {expected} shadowed lights")
     Delete(view)
+
+# Translucent representations cast partial shadows tinted by their colour
+# (docs/TRANSLUCENT.md), with ParaView's depth peeling on (its default) or off.
+view = make_view("ShadowRenderView")
+ground, sphere = show_scene(view)
+display = GetDisplayProperties(sphere, view)
+display.AmbientColor = display.DiffuseColor = [1.0, 0.2, 0.2]
+opaque_png = render(view, "ParaViewShadowViewOpaqueRed")
+opaque, lit = rgb_at(view, opaque_png, SHADOWED), rgb_at(view, opaque_png, LIT)
+display.Opacity = 0.5
+for peeling in (1, 0):
+    if view.GetProperty("DepthPeeling") is not None:
+        view.DepthPeeling = peeling
+    tinted = rgb_at(view, render(view, f"ParaViewShadowViewTranslucentRed{peeling}"), SHADOWED)
+    check(opaque[0] + 20 < tinted[0] < lit[0] - 20,
+          f"depth peeling {peeling}: the half-transparent sphere's shadow is partial "
+          f"(red {tinted[0]:.0f} between {opaque[0]:.0f} and {lit[0]:.0f})")
+    check(tinted[0] > tinted[2] + 20,
+          f"depth peeling {peeling}: and red ({tinted[0]:.0f} {tinted[1]:.0f} {tinted[2]:.0f})")
+display.Opacity = 1.0
+check(rgb_at(view, render(view, "ParaViewShadowViewOpaqueRedAgain"), SHADOWED) == opaque,
+      "opacity 1 again: the opaque shadow as it was")
+Delete(view)
 
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)

@@ -179,12 +179,39 @@ def test_bench_sized_lights(program, output):
           "lights without a size have no visibility columns")
 
 
+def test_bench_translucent(program, output):
+    """The glass scene's translucent casters are measured against the ray-traced
+    transmittance per channel: no shadows and VTK's pass (which draws no
+    translucent caster) miss the tinted shadows the uniform map draws."""
+    directory = os.path.join(output, "bench-glass")
+    result = run(program, "bench", "--scenes", "glass", "--setups", "perpendicular",
+                 "--techniques", "uniform", "--flicker-frames", "0", "--out", directory, *SMALL)
+    check(result.returncode == 0, "bench failed: " + result.stderr[-2000:])
+    check("Translucent casters: the shadow factor per channel" in result.stdout,
+          "the translucent table is printed")
+    rows = rows_by_case(os.path.join(directory, "results.csv"))
+    none = rows[("glass", "perpendicular", "none")]
+    vtk = rows[("glass", "perpendicular", "vtk")]
+    uniform = rows[("glass", "perpendicular", "uniform")]
+    check(int(uniform["transmittance_partial_pixels"]) > 100, "the panes tint the ground")
+    for channel in "rgb":
+        column = "transmittance_partial_error_" + channel
+        check(float(uniform[column]) < 0.5 * float(none[column]),
+              channel + ": the uniform map draws the tinted shadows no shadows miss")
+        check(float(uniform[column]) < 0.5 * float(vtk[column]),
+              channel + ": and VTK's pass, which draws no translucent caster")
+    hard = rows_by_case(os.path.join(output, "bench", "results.csv"))
+    check(hard[("model", "perpendicular", "uniform")]["transmittance_mean_error_r"] == "nan",
+          "scenes without translucent casters have no transmittance columns")
+
+
 def main():
     program, output = sys.argv[1], sys.argv[2]
     os.makedirs(output, exist_ok=True)
     test_errors(program)
     test_bench(program, output)
     test_bench_sized_lights(program, output)
+    test_bench_translucent(program, output)
     test_analyze(program, output)
     test_analyze_recommends(program, output)
     print("ok")

@@ -1,0 +1,402 @@
+// Translucent casters (docs/TRANSLUCENT.md): what a translucent slab, two
+// slabs, a coloured slab let through to the ground under every kind of map,
+// against the transmission model; opaque casters as before; no cost (no
+// transmittance maps, no shader change) without translucent casters.
+#include "ColorByTable.h"
+#include "ShadowTestUtilities.h"
+
+#include "vtkAbstractShadowMapPass.h"
+#include "vtkDepthShadowMapPass.h"
+#include "vtkDualDepthShadowMapPass.h"
+#include "vtkVarianceShadowMapPass.h"
+#include "vtkWarpedShadowMapPass.h"
+#include "vtkCascadedShadowMapPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkContourFilter.h"
+#include "vtkMapper.h"
+#include "vtkFloatArray.h"
+#include "vtkPointData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkLookupTable.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace shadowtest;
+
+namespace
+{
+const glm::dvec3 SunDirection = glm::normalize(glm::dvec3(1.0, 0.5, -1.0));
+const glm::dvec3 LampPosition(-6.0, -3.0, 8.0);
+
+enum class LightKind
+{
+  Sun,
+  Spot,
+  Point
+};
+
+/// A 20 x 20 ground and square slabs above it, lit by one light, seen from
+/// above by a parallel camera.
+struct SlabScene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLight> Light;
+  LightKind Kind;
+
+  explicit SlabScene(LightKind kind = LightKind::Sun)
+    : Kind(kind)
+  {
+    this->Window->SetSize(400, 400);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->AutomaticLightCreationOff();
+    this->Ground = this->Add(Square({ 0.0, 0.0, 0.0 }, 20.0));
+    this->Light->SetLightTypeToSceneLight();
+    this->Light->SetPositional(kind != LightKind::Sun);
+    if (kind == LightKind::Sun)
+    {
+      this->Light->SetPosition(-SunDirection.x, -SunDirection.y, -SunDirection.z);
+      this->Light->SetFocalPoint(0.0, 0.0, 0.0);
+    }
+    else
+    {
+      this->Light->SetPosition(LampPosition.x, LampPosition.y, LampPosition.z);
+      this->Light->SetFocalPoint(2.0, 1.0, 0.0);
+      this->Light->SetConeAngle(kind == LightKind::Spot ? 50.0 : 180.0);
+    }
+    this->Renderer->AddLight(this->Light);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetPosition(0.0, 0.0, 30.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetParallelScale(6.0);
+  }
+
+  static vtkSmartPointer<vtkPlaneSource> Square(const glm::dvec3& centre, double side)
+  {
+    auto square = vtkSmartPointer<vtkPlaneSource>::New();
+    square->SetOrigin(centre.x - 0.5 * side, centre.y - 0.5 * side, centre.z);
+    square->SetPoint1(centre.x + 0.5 * side, centre.y - 0.5 * side, centre.z);
+    square->SetPoint2(centre.x - 0.5 * side, centre.y + 0.5 * side, centre.z);
+    return square;
+  }
+
+  vtkActor* Add(vtkAlgorithm* source) { return AddSourceActor(this->Renderer, source); }
+
+  /// A slab of `side` centred on `centre`, of colour and opacity.
+  vtkActor* AddSlab(const glm::dvec3& centre, double side, const glm::dvec3& color, double opacity)
+  {
+    vtkActor* slab = this->Add(Square(centre, side));
+    slab->GetProperty()->SetColor(color.x, color.y, color.z);
+    slab->GetProperty()->SetOpacity(opacity);
+    return slab;
+  }
+
+  /// Where the light carries `point` to the ground.
+  glm::dvec3 GroundUnder(const glm::dvec3& point) const
+  {
+    const glm::dvec3 direction = this->Kind == LightKind::Sun ? SunDirection : point - LampPosition;
+    return point - (point.z / direction.z) * direction;
+  }
+
+  /// The frame with receivers showing the light's visibility per channel
+  /// (SHADOW_FACTOR), or shaded (`analysis` false).
+  vtkSmartPointer<vtkImageData> Render(vtkAbstractShadowMapPass* pass, bool analysis = true)
+  {
+    analysis ? pass->SetAnalysisViewToShadowFactor() : pass->SetAnalysisViewToNone();
+    this->Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(this->Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+    return image;
+  }
+
+  /// What reaches `world` of the light, per channel, in a SHADOW_FACTOR frame.
+  glm::dvec3 Measured(vtkImageData* image, const glm::dvec3& world) const
+  {
+    return glm::dvec3(ColorAt(this->Renderer, image, world)) / 255.0;
+  }
+
+  vtkActor* Ground = nullptr;
+};
+
+glm::dvec3 Model(const glm::dvec3& color, double opacity)
+{
+  double transmitted[3];
+  const double c[3] = { color.x, color.y, color.z };
+  vtkAbstractShadowMapPass::GetTransmittance(c, opacity, transmitted);
+  return { transmitted[0], transmitted[1], transmitted[2] };
+}
+
+std::string Text(const glm::dvec3& v)
+{
+  return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+}
+
+void ExpectNear(const glm::dvec3& measured, const glm::dvec3& expected, double tolerance,
+  const std::string& what)
+{
+  std::cout << "[ measured ] " << what << ": " << Text(measured) << ", expected "
+            << Text(expected) << "\n";
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(measured[c], expected[c], tolerance) << what << ", channel " << c;
+  }
+}
+
+using PassMaker = std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>;
+
+template <typename Pass>
+PassMaker Make()
+{
+  return [] { return vtkSmartPointer<vtkAbstractShadowMapPass>(vtkSmartPointer<Pass>::New()); };
+}
+
+/// Every representation, and the warped and cascaded layouts.
+const std::vector<std::pair<std::string, PassMaker>> Passes = {
+  { "depth", Make<vtkDepthShadowMapPass>() },
+  { "warped", Make<vtkWarpedShadowMapPass>() },
+  { "cascades", Make<vtkCascadedShadowMapPass>() },
+  { "dual depth", Make<vtkDualDepthShadowMapPass>() },
+  { "variance", Make<vtkVarianceShadowMapPass>() },
+};
+
+std::string KindName(LightKind kind)
+{
+  return kind == LightKind::Sun ? "sun" : kind == LightKind::Spot ? "spot" : "point light";
+}
+} // namespace
+
+TEST(ShadowTranslucent, SlabLetsThroughTheModelsShareUnderEveryPassAndLight)
+{
+  const glm::dvec3 color(0.9, 0.6, 0.3);
+  const glm::dvec3 slabCentre(0.0, 0.0, 2.0);
+  // Every opacity under the depth pass's sun; one under each other pass and light.
+  const std::vector<double> everyOpacity = { 0.0, 0.25, 0.5, 0.75, 1.0 };
+  for (const auto& pass : Passes)
+  {
+    for (LightKind kind : { LightKind::Sun, LightKind::Spot, LightKind::Point })
+    {
+      const bool first = pass.first == Passes.front().first && kind == LightKind::Sun;
+      for (double opacity : first ? everyOpacity : std::vector<double>{ 0.5 })
+      {
+        SlabScene scene(kind);
+        scene.AddSlab(slabCentre, 2.0, color, opacity);
+        vtkSmartPointer<vtkAbstractShadowMapPass> shadows = pass.second();
+        auto image = scene.Render(shadows);
+        const std::string what =
+          pass.first + ", " + KindName(kind) + ", opacity " + std::to_string(opacity);
+        // Opacity 1 is today's opaque caster; opacity 0 shadows nothing.
+        ExpectNear(scene.Measured(image, scene.GroundUnder(slabCentre)),
+          opacity >= 1.0 ? glm::dvec3(0.0) : Model(color, opacity), 0.02, what + ", under");
+        ExpectNear(scene.Measured(image, scene.GroundUnder(slabCentre + glm::dvec3(1.5, 0.0, 0.0))),
+          glm::dvec3(1.0), 0.0, what + ", beside");
+        // The slab itself, lit directly, is not in its own shadow.
+        if (opacity > 0.0)
+        {
+          ExpectNear(scene.Measured(image, slabCentre), glm::dvec3(1.0), 1.0 / 255.0,
+            what + ", the slab");
+        }
+      }
+    }
+  }
+}
+
+TEST(ShadowTranslucent, OverlappingSlabsMultiplyInEitherDrawOrder)
+{
+  const glm::dvec3 red(1.0, 0.2, 0.1), blue(0.1, 0.3, 1.0);
+  const glm::dvec3 redCentre(-0.5, 0.0, 2.0), blueCentre(0.0, -0.5, 3.0);
+  // Ground points under both (the sun carries (0.25, 0, 2) to (-0.75,
+  // -0.5, 3)), under the red slab only and under the blue one only.
+  const std::vector<std::pair<glm::dvec3, glm::dvec3>> probes = {
+    { redCentre + glm::dvec3(0.75, 0.0, 0.0), Model(red, 0.5) * Model(blue, 0.4) },
+    { redCentre + glm::dvec3(-0.7, 0.7, 0.0), Model(red, 0.5) },
+    { blueCentre + glm::dvec3(0.7, -0.7, 0.0), Model(blue, 0.4) },
+  };
+  for (const auto& pass : Passes)
+  {
+    std::vector<glm::dvec3> firstOrder;
+    for (bool redFirst : { true, false })
+    {
+      SlabScene scene;
+      auto addRed = [&] { scene.AddSlab(redCentre, 2.0, red, 0.5); };
+      auto addBlue = [&] { scene.AddSlab(blueCentre, 2.0, blue, 0.4); };
+      redFirst ? (addRed(), addBlue()) : (addBlue(), addRed());
+      vtkSmartPointer<vtkAbstractShadowMapPass> shadows = pass.second();
+      auto image = scene.Render(shadows);
+      for (std::size_t i = 0; i < probes.size(); ++i)
+      {
+        const std::string what = pass.first + (redFirst ? ", red first" : ", blue first") +
+          ", probe " + std::to_string(i);
+        const glm::dvec3 measured = scene.Measured(image, scene.GroundUnder(probes[i].first));
+        ExpectNear(measured, probes[i].second, 0.03, what);
+        // The products are kept in 16-bit floats: the order may change the
+        // last bit of one.
+        if (!redFirst)
+        {
+          ExpectNear(measured, firstOrder[i], 1.0 / 255.0, what + " against the other order");
+        }
+        firstOrder.push_back(measured);
+      }
+    }
+  }
+}
+
+TEST(ShadowTranslucent, OpaqueCastersAndReceiversAboveKeepTheirLight)
+{
+  SlabScene scene;
+  const glm::dvec3 slabCentre(0.0, 0.0, 2.0);
+  scene.AddSlab(slabCentre, 4.0, { 1.0, 1.0, 1.0 }, 0.5);
+  // A box above the slab: its top is lit, its shadow on the ground black
+  // whatever the slab below it does.
+  auto box = AddBox(scene.Renderer, { 0.0, 0.0, 3.5 }, { 0.6, 0.6, 0.6 });
+  // A translucent caster opted out casts nothing.
+  vtkActor* optedOut = scene.AddSlab({ -3.0, -3.0, 2.0 }, 1.0, { 1.0, 0.0, 0.0 }, 0.5);
+  vtkNew<vtkInformation> keys;
+  keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  optedOut->SetPropertyKeys(keys);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  auto image = scene.Render(pass);
+  ExpectNear(scene.Measured(image, { 0.0, 0.0, 3.8 }), glm::dvec3(1.0), 1.0 / 255.0, "box top");
+  ExpectNear(scene.Measured(image, scene.GroundUnder({ 0.0, 0.0, 3.5 })), glm::dvec3(0.0), 1.0 / 255.0,
+    "under the box");
+  ExpectNear(scene.Measured(image, scene.GroundUnder({ 1.5, -1.5, 2.0 })), glm::dvec3(0.5), 0.02,
+    "under the slab only");
+  ExpectNear(scene.Measured(image, scene.GroundUnder({ -3.0, -3.0, 2.0 })), glm::dvec3(1.0), 0.0,
+    "under the opted-out slab");
+}
+
+TEST(ShadowTranslucent, NoTranslucentCasterNoTransmittanceMapsNorCode)
+{
+  SlabScene scene;
+  AddBox(scene.Renderer, { 0.0, 0.0, 1.0 }, { 1.0, 1.0, 1.0 });
+  vtkNew<vtkDepthShadowMapPass> pass;
+  const std::vector<unsigned char> opaqueOnly = RgbBytes(scene.Render(pass, false));
+  const std::size_t opaqueMemory = pass->GetShadowMapMemory();
+  const int builds = pass->GetNumberOfShaderBuilds();
+
+  vtkActor* slab = scene.AddSlab({ 3.0, 3.0, 2.0 }, 2.0, { 0.2, 0.4, 1.0 }, 0.5);
+  const std::vector<unsigned char> withSlab = RgbBytes(scene.Render(pass, false));
+  EXPECT_GT(pass->GetShadowMapMemory(), opaqueMemory);
+  EXPECT_GT(pass->GetNumberOfShaderBuilds(), builds);
+  EXPECT_NE(withSlab, opaqueOnly);
+
+  // The slab made opaque, then removed: the maps and code of an opaque scene.
+  slab->GetProperty()->SetOpacity(1.0);
+  scene.Render(pass, false);
+  EXPECT_EQ(pass->GetShadowMapMemory(), opaqueMemory);
+  scene.Renderer->RemoveActor(slab);
+  EXPECT_EQ(RgbBytes(scene.Render(pass, false)), opaqueOnly);
+  EXPECT_EQ(pass->GetShadowMapMemory(), opaqueMemory);
+}
+
+namespace
+{
+/// A closed isosurface (a sphere of radius 1.5 at height 2.5, contoured from
+/// a sampled field) of `color` and `opacity` over the slab scene's ground.
+vtkActor* AddIsosurface(SlabScene& scene, const glm::dvec3& color, double opacity)
+{
+  constexpr int Samples = 40;
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(Samples, Samples, Samples);
+  field->SetOrigin(-2.0, -2.0, 0.5);
+  const double spacing = 4.0 / (Samples - 1);
+  field->SetSpacing(spacing, spacing, spacing);
+  vtkNew<vtkFloatArray> distance;
+  distance->SetNumberOfTuples(field->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < field->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    field->GetPoint(i, p);
+    distance->SetValue(i, static_cast<float>(glm::length(glm::dvec3(p[0], p[1], p[2] - 2.5)) - 1.5));
+  }
+  field->GetPointData()->SetScalars(distance);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputData(field);
+  contour->SetValue(0, 0.0);
+  vtkActor* shell = AddSourceActor(scene.Renderer, contour);
+  shell->GetMapper()->ScalarVisibilityOff();
+  shell->GetProperty()->SetColor(color.x, color.y, color.z);
+  shell->GetProperty()->SetOpacity(opacity);
+  return shell;
+}
+} // namespace
+
+TEST(ShadowTranslucent, IsosurfaceCastsATintedShadowThroughBothItsSides)
+{
+  const glm::dvec3 color(0.2, 0.6, 1.0);
+  const double opacity = 0.3;
+  SlabScene scene;
+  AddIsosurface(scene, color, opacity);
+  AddBox(scene.Renderer, { -3.5, 3.0, 0.75 }, { 1.5, 1.5, 1.5 });
+  vtkNew<vtkDepthShadowMapPass> pass;
+  // The light crosses the shell twice.
+  const glm::dvec3 underCentre = scene.GroundUnder({ 0.0, 0.0, 2.5 });
+  const glm::dvec3 expected = Model(color, opacity) * Model(color, opacity);
+  ExpectNear(scene.Measured(scene.Render(pass), underCentre), expected, 0.03, "under the shell");
+
+  auto shaded = scene.Render(pass, false);
+  const std::string difference = CompareWithBaseline(shaded, "TranslucentIsosurface");
+  EXPECT_TRUE(difference.empty()) << difference;
+  // Shaded: the shell's shadow is lighter than the box's, darker than the open
+  // ground, and blue (the shell's colour): blue above green above red.
+  const glm::ivec3 tinted = ColorAt(scene.Renderer, shaded, underCentre);
+  const glm::ivec3 open = ColorAt(scene.Renderer, shaded, { 4.0, -4.0, 0.0 });
+  const glm::ivec3 opaque = ColorAt(scene.Renderer, shaded, scene.GroundUnder({ -3.5, 3.0, 1.5 }));
+  std::cout << "[ measured ] shaded ground: open " << open.x << " " << open.y << " " << open.z
+            << ", under the shell " << tinted.x << " " << tinted.y << " " << tinted.z
+            << ", under the box " << opaque.x << " " << opaque.y << " " << opaque.z << "\n";
+  EXPECT_GT(tinted.z, tinted.y);
+  EXPECT_GT(tinted.y, tinted.x);
+  EXPECT_LT(tinted.z, open.z);
+  EXPECT_GT(tinted.x, opaque.x);
+
+  // Depth peeling draws the shell itself differently, not its shadow.
+  scene.Renderer->SetUseDepthPeeling(1);
+  auto peeled = scene.Render(pass, false);
+  EXPECT_EQ(ColorAt(scene.Renderer, peeled, underCentre), tinted);
+  scene.Renderer->SetUseDepthPeeling(0);
+}
+
+TEST(ShadowTranslucent, CasterColourFromScalarsAndPBRMaterials)
+{
+  // A slab coloured by point scalars through a one-colour lookup table with
+  // alpha (opacity 1 on the actor), and a PBR slab over a PBR ground.
+  SlabScene scene;
+  vtkActor* mapped = scene.AddSlab({ 0.0, 0.0, 2.0 }, 2.0, { 1.0, 1.0, 1.0 }, 1.0);
+  ColorByOneTableEntry(mapped, 0.2, 0.8, 0.4, 0.6);
+  vtkActor* pbr = scene.AddSlab({ -3.0, -3.0, 2.0 }, 2.0, { 0.9, 0.3, 0.2 }, 0.4);
+  pbr->GetProperty()->SetInterpolationToPBR();
+  scene.Ground->GetProperty()->SetInterpolationToPBR();
+  vtkNew<vtkDepthShadowMapPass> pass;
+  auto image = scene.Render(pass);
+  // Bytes: the table's colour and alpha are quantised to 1/255.
+  ExpectNear(scene.Measured(image, scene.GroundUnder({ 0.0, 0.0, 2.0 })),
+    Model({ 51 / 255.0, 204 / 255.0, 102 / 255.0 }, 153 / 255.0), 0.02, "lookup table");
+  ExpectNear(scene.Measured(image, scene.GroundUnder({ -3.0, -3.0, 2.0 })),
+    Model({ 0.9, 0.3, 0.2 }, 0.4), 0.02, "PBR");
+}
