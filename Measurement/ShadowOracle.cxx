@@ -202,7 +202,8 @@ Mesh WorldMesh(vtkPolyData* polyData, vtkMatrix4x4* matrix)
 struct Part
 {
   vtkSmartPointer<vtkPolyData> Data;
-  double Opacity = 1.0;   // the block's, times the actor's
+  bool HasOpacity = false; // a block opacity, drawn instead of the actor's
+  double Opacity = 1.0;
   bool HasColor = false;  // a block colour, drawn instead of the property's
   glm::dvec3 Color{ 1.0 };
   bool MapsScalars = true; // glyph copies are coloured by the property only
@@ -224,6 +225,7 @@ void CollectVisibleLeaves(vtkDataObject* object, vtkCompositeDataDisplayAttribut
   }
   if (attributes && attributes->HasBlockOpacity(object))
   {
+    block.HasOpacity = true;
     block.Opacity = attributes->GetBlockOpacity(object);
   }
   if (attributes && attributes->HasBlockColor(object))
@@ -475,11 +477,12 @@ glm::vec4 ColorOf(vtkUnsignedCharArray* colors, vtkIdType tuple, double opacity)
 }
 
 // The colour and opacity VTK draws at each triangle corner: the mapped
-// scalars (their alpha times the part's opacity), or the block's or the
-// property's diffuse colour with the part's opacity. Textures are not read.
+// scalars (their alpha times the opacity), or the block's or the property's
+// diffuse colour with the opacity, the block's in place of the actor's where
+// it has one. Textures are not read.
 void ColorCorners(Mesh& mesh, const Part& part, vtkMapper* mapper, vtkProperty* property)
 {
-  const double opacity = part.Opacity * property->GetOpacity();
+  const double opacity = part.HasOpacity ? part.Opacity : property->GetOpacity();
   const glm::vec4 uniform(
     part.HasColor ? part.Color : ToGlm(property->GetDiffuseColor()), opacity);
   int cellFlag = 0;

@@ -84,7 +84,7 @@ bool MarchedVolume::FromVolume(vtkVolume* volume, MarchedVolume& marched, std::s
   image->GetDimensions(dimensions);
   marched.Dimensions = glm::ivec3(dimensions[0], dimensions[1], dimensions[2]);
   marched.Origin = shadowmaps::ToGlm(image->GetOrigin());
-  marched.Spacing = glm::abs(shadowmaps::ToGlm(image->GetSpacing()));
+  marched.Spacing = shadowmaps::ToGlm(image->GetSpacing());
   double bounds[6];
   image->GetBounds(bounds);
   marched.BoxMin = glm::dvec3(bounds[0], bounds[2], bounds[4]);
@@ -110,7 +110,8 @@ bool MarchedVolume::FromVolume(vtkVolume* volume, MarchedVolume& marched, std::s
     marched.Table[k] = glm::dvec4(color, opacity->GetValue(s));
   }
   marched.UnitDistance = std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
-  const double smallest = std::min(marched.Spacing.x, std::min(marched.Spacing.y, marched.Spacing.z));
+  const glm::dvec3 sides = glm::abs(marched.Spacing);
+  const double smallest = std::min(sides.x, std::min(sides.y, sides.z));
   marched.Step = smallest > 0.0 ? smallest / StepsPerVoxel : 1.0;
   return true;
 }
@@ -198,6 +199,10 @@ glm::dvec3 MarchedVolume::Transmittance(
   for (int i = 0; i < steps; ++i)
   {
     const double s = this->ScalarAt(o + (enter + (i + 0.5) * dt) * d);
+    if (std::isnan(s))
+    {
+      continue; // no data: nothing absorbs
+    }
     const double position = std::min(std::max((s - this->Low) * scale, 0.0), TableSize - 1.0);
     const int k = std::min(static_cast<int>(position), TableSize - 2);
     const glm::dvec4 entry = glm::mix(this->Table[k], this->Table[k + 1], position - k);

@@ -27,7 +27,8 @@ glm::dvec3 SliceTransmittance(
   const glm::dvec3& color, double opacity, double length, double unitDistance);
 
 /// One volume, copied out of VTK for the oracle's threads: its point scalars,
-/// placement and transfer functions, tabulated.
+/// placement and transfer functions, tabulated. Samples that are not numbers
+/// (masked data) absorb nothing.
 class MarchedVolume
 {
 public:
@@ -52,7 +53,7 @@ private:
   std::vector<float> Scalars; // x fastest
   glm::ivec3 Dimensions{ 0 };
   glm::dvec3 Origin{ 0.0 };
-  glm::dvec3 Spacing{ 1.0 };
+  glm::dvec3 Spacing{ 1.0 }; // signed, as the image's
   glm::dmat4 WorldToData{ 1.0 };
   glm::dvec3 BoxMin{ 0.0 };
   glm::dvec3 BoxMax{ 0.0 };

@@ -44,14 +44,19 @@ uniform mat4 vtkShadowWindowToLight;
 uniform vec4 vtkShadowLightDepthPlane;
 uniform float vtkShadowLightDepthPerDistance;
 
-float vtkShadowLightDepthAt(float windowDepth)
+float vtkShadowLightDepthAtWindow(vec3 window)
 {
-  vec4 h = vtkShadowWindowToLight * vec4(gl_FragCoord.xy, windowDepth, 1.0);
+  vec4 h = vtkShadowWindowToLight * vec4(window, 1.0);
   vec3 relative = h.xyz / h.w;
   float depth = dot(vtkShadowLightDepthPlane.xyz, relative) + vtkShadowLightDepthPlane.w +
     vtkShadowLightDepthPerDistance * length(relative);
   // A depth that is not a number (a degenerate view) stores the far value.
   return depth >= 0.0 ? min(depth, 1.0) : (depth < 0.0 ? 0.0 : 1.0);
+}
+
+float vtkShadowLightDepthAt(float windowDepth)
+{
+  return vtkShadowLightDepthAtWindow(vec3(gl_FragCoord.xy, windowDepth));
 }
 #endif
 
@@ -65,13 +70,23 @@ vec3 vtkShadowTransmitted(vec3 c, float alpha)
   return (1.0 - a) * ((1.0 - a) + a * clamp(c, 0.0, 1.0));
 }
 
+// The window depth's change to the next texel along x and y, taken at the
+// start of main(), before any discard (derivatives need uniform control flow).
+float vtkShadowCasterDepthDx = 0.0;
+float vtkShadowCasterDepthDy = 0.0;
+
 // The light depth a translucent caster keeps: its own, moved away from the
 // light by the depth it spans over two texels, so that a surface seen at a
 // grazing angle from the light, whose texel holds nearer parts of it, does
-// not shadow itself. Derivatives: the casting branch is selected by a uniform.
-float vtkShadowTransmittedDepth(float lightDepth)
+// not shadow itself.
+float vtkShadowTransmittedDepth(float windowDepth)
 {
-  return lightDepth + 2.0 * max(abs(dFdx(lightDepth)), abs(dFdy(lightDepth)));
+  float depth = vtkShadowLightDepthAt(windowDepth);
+  float alongX = vtkShadowLightDepthAtWindow(
+    vec3(gl_FragCoord.xy + vec2(1.0, 0.0), windowDepth + vtkShadowCasterDepthDx)) - depth;
+  float alongY = vtkShadowLightDepthAtWindow(
+    vec3(gl_FragCoord.xy + vec2(0.0, 1.0), windowDepth + vtkShadowCasterDepthDy)) - depth;
+  return depth + 2.0 * max(abs(alongX), abs(alongY));
 }
 
 // The caster's own colour from VTK's diffuse colour, which is it times the

@@ -15,6 +15,7 @@ namespace
 {
 const char* const EarlyMarker = "//VTK::ShadowMaps::CastEarly";
 const char* const LateMarker = "//VTK::ShadowMaps::CastLate";
+const char* const TransmitMarker = "//VTK::ShadowMaps::Transmit";
 
 size_t CountOccurrences(const std::string& text, const std::string& word)
 {
@@ -150,9 +151,9 @@ std::string Branch(const CasterCode& code, const std::string& rawDepth,
 }
 
 // The branch that draws a translucent caster into the transmittance maps,
-// where the mapper has its colour and opacity (after its colour code): what
-// the surface lets through and its light depth. A shader without them (none
-// of VTK's polydata shaders) draws nothing there.
+// where the mapper has its colour and opacity (right after its colour code,
+// before edges and lighting): what the surface lets through and its light
+// depth. A shader without them draws nothing there.
 std::string TransmittanceBranch(const std::string& mapperCode)
 {
   const std::string transmitted = CasterShader::TransmittedLight(mapperCode);
@@ -164,8 +165,7 @@ std::string TransmittanceBranch(const std::string& mapperCode)
     return branch.str();
   }
   branch << "    gl_FragData[0] = vec4(" << transmitted
-         << ", vtkShadowTransmittedDepth(vtkShadowLightDepthAt(gl_FragCoord.z)));\n"
-            "    return;\n  }\n";
+         << ", vtkShadowTransmittedDepth(gl_FragCoord.z));\n    return;\n  }\n";
   return branch.str();
 }
 
@@ -212,6 +212,8 @@ std::string CasterCode::Key() const
 void CasterShader::MarkInjectionPoints(std::string& fragmentShader)
 {
   PutAtMainStart(fragmentShader, std::string(EarlyMarker) + "\n");
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Color::Impl",
+    std::string("//VTK::Color::Impl\n") + TransmitMarker, false);
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Light::Impl", std::string(LateMarker) + "\n//VTK::Light::Impl", false);
 }
@@ -226,11 +228,17 @@ CasterBranch CasterShader::Inject(
   // An impostor's depth as the mapper writes it follows the scene camera's
   // sizes: the branch computes its own.
   const std::string impostorDepth = ownFragments ? ImpostorShader::CasterDepth(sized) : "";
-  if (code.Transmittance)
+  // Shapes that cut their own fragments (impostors, splats) draw nothing into
+  // the transmittance maps: their cuts come after the colour code.
+  PutAtMarker(fragmentShader, TransmitMarker,
+    code.Transmittance ? TransmittanceBranch(ownFragments ? std::string() : mapperCode)
+                       : std::string());
+  if (code.Transmittance && !ownFragments)
   {
-    // Before the depth branch, whichever marker that takes; the marker stays.
-    PutAtMarker(fragmentShader, LateMarker,
-      TransmittanceBranch(mapperCode) + std::string(LateMarker) + "\n");
+    // Where control flow is uniform, before any of the mapper's discards.
+    PutAtMainStart(fragmentShader,
+      "  vtkShadowCasterDepthDx = dFdx(gl_FragCoord.z);\n"
+      "  vtkShadowCasterDepthDy = dFdy(gl_FragCoord.z);\n");
   }
 
   if (ownFragments)

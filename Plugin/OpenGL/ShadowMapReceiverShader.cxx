@@ -143,7 +143,7 @@ void ReceiverShader::MarkInjectionPoints(std::string& fragmentShader)
 
 //------------------------------------------------------------------------------
 int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
-  int layers, const ReceiverCode& code, bool receives, bool facetDerivatives)
+  int layers, const ReceiverCode& code, bool receives, bool facetDerivatives, bool ownShare)
 {
   // The receiver's position is taken in the fragment shader, not the vertex
   // shader, because impostor mappers compute their true surface per fragment.
@@ -192,7 +192,7 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
     "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
     "  vtkShadowSetReceiverPlane(vtkShadowNormalVC);\n"
     "#endif\n" +
-      OwnTransmittance(fragmentShader, code) + impl.str());
+      (ownShare ? OwnTransmittance(fragmentShader, code) : std::string()) + impl.str());
   return unpatched;
 }
 

@@ -62,8 +62,11 @@ public:
   /// Returns how many receiving lights the shader lights with (it names their
   /// lightColor) in code none of the patterns found: a VTK whose mapper
   /// changed its lighting code; those lights cast no shadow on the prop.
+  /// `ownShare`: the maps hold what this prop lets through where it is
+  /// translucent (HoldsItsOwnTransmittance), which its receivers divide out.
   static int Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
-    int layers, const ReceiverCode& code, bool receives, bool facetDerivatives);
+    int layers, const ReceiverCode& code, bool receives, bool facetDerivatives,
+    bool ownShare = false);
 
   /// A key of everything Inject's result depends on but the shader it patches.
   static std::string Key(const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code);

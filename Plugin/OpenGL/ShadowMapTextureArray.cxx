@@ -123,12 +123,12 @@ unsigned int InternalFormat(TexelFormat format)
   return GL_RG32F;
 }
 
-bool TextureArray::Reserve(
-  int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error)
+bool TextureArray::Reserve(int resolution, int layers, TexelFormat format, bool mipmaps,
+  std::string& error, bool depthTest)
 {
   mipmaps = mipmaps && !IsDepth(format);
   if (this->Texture != 0 && this->Resolution == resolution && this->Layers >= layers &&
-    this->Format == format && this->Mipmaps == mipmaps)
+    this->Format == format && this->Mipmaps == mipmaps && this->DepthTest == depthTest)
   {
     return true;
   }
@@ -138,6 +138,7 @@ bool TextureArray::Reserve(
   ScopedTextureBinding keep(true);
   this->Format = format;
   this->Mipmaps = mipmaps;
+  this->DepthTest = depthTest;
 
   glGenTextures(1, &this->Texture);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
@@ -180,6 +181,10 @@ void TextureArray::AllocateDepthLayers(int resolution, int layers, TexelFormat f
 void TextureArray::AllocateValueLayers(int resolution, int layers, TexelFormat format)
 {
   AllocateValueLevels(resolution, layers, format, this->Mipmaps ? MipmapLevels(resolution) : 1);
+  if (!this->DepthTest)
+  {
+    return;
+  }
   glGenRenderbuffers(1, &this->DepthBuffer);
   glBindRenderbuffer(GL_RENDERBUFFER, this->DepthBuffer);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, resolution, resolution);
@@ -493,7 +498,8 @@ std::size_t TextureArray::GetMemoryBytes() const
   const std::size_t values = layers;
   const std::size_t samples =
     texels * static_cast<std::size_t>(this->AllocatedSamples) * (TexelBytes(this->Format) + 4);
-  return (this->Mipmaps ? values + values / 3 : values) + texels * 4 + secondOutput + samples;
+  const std::size_t depth = this->DepthBuffer != 0 ? texels * 4 : 0;
+  return (this->Mipmaps ? values + values / 3 : values) + depth + secondOutput + samples;
 }
 
 } // namespace shadowmaps

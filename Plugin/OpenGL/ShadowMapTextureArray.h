@@ -127,10 +127,12 @@ public:
   TextureArray& operator=(const TextureArray&) = delete;
 
   /// Makes room for `layers` layers of resolution^2 texels of `format`
-  /// (value layers share one depth buffer for the depth test and may have
-  /// mipmaps). Keeps the current storage when it fits. On GL failure releases
-  /// everything, fills `error` and returns false.
-  bool Reserve(int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error);
+  /// (value layers share one depth buffer for the depth test, unless
+  /// `depthTest` is false, and may have mipmaps). Keeps the current storage
+  /// when it fits. On GL failure releases everything, fills `error` and
+  /// returns false.
+  bool Reserve(int resolution, int layers, TexelFormat format, bool mipmaps, std::string& error,
+    bool depthTest = true);
 
   /// Binds the framebuffer (through the state cache) with `layer` attached.
   /// The caller pushes and pops the framebuffer bindings. `secondOutput`: also
@@ -223,6 +225,7 @@ private:
   int AllocatedSamples = 0;
   TexelFormat Format = TexelFormat::Depth;
   bool Mipmaps = false;
+  bool DepthTest = true;
   int Resolution = 0;
   int Layers = 0;
   int LinearFiltering = -1;

@@ -15,6 +15,7 @@ public:
     : State(state)
     , Blend(state, GL_BLEND)
     , DepthTest(state, GL_DEPTH_TEST)
+    , Offset(state, GL_POLYGON_OFFSET_FILL)
     , BlendFunction(state)
     , ClearColor(state)
   {
@@ -22,6 +23,7 @@ public:
     state->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, &this->Equation[1]);
     // Every translucent fragment counts, whatever its depth.
     state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_POLYGON_OFFSET_FILL);
     state->vtkglEnable(GL_BLEND);
     // rgb: destination times source (a product in any order); alpha: the least.
     state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE);
@@ -39,6 +41,7 @@ private:
   vtkOpenGLState* State;
   vtkOpenGLState::ScopedglEnableDisable Blend;
   vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglEnableDisable Offset;
   vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunction;
   vtkOpenGLState::ScopedglClearColor ClearColor;
   int Equation[2] = { GL_FUNC_ADD, GL_FUNC_ADD };
@@ -48,12 +51,15 @@ private:
 //------------------------------------------------------------------------------
 bool TransmittanceMaps::Reserve(int resolution, int layers, std::string& error)
 {
-  if (!this->Layers.Reserve(resolution, layers, TexelFormat::FourHalfFloats, false, error))
+  // 32-bit floats: the light depth compared with receivers needs their
+  // precision (16-bit floats step by 2^-11 of the light's depth range), and
+  // products of two crossings then come out the same in either order.
+  if (!this->Layers.Reserve(resolution, layers, TexelFormat::FourFloats, false, error, false))
   {
     error = "transmittance maps: " + error;
     return false;
   }
-  this->Layers.SetLinearFiltering(true);
+  this->Layers.SetLinearFiltering(false);
   return true;
 }
 

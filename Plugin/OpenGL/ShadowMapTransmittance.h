@@ -1,5 +1,6 @@
 // Transmittance maps: beside each shadow-map layer, what the translucent
-// casters let through toward the light (docs/TRANSLUCENT.md). Per texel, rgb
+// casters let through toward the light (docs/TRANSLUCENT.md). Per texel (four
+// 32-bit floats, read texel by texel, no depth buffer), rgb
 // is the product over the translucent surfaces drawn there of what each lets
 // through ((1 - a)(1 - a + a c), shadoworacle::SurfaceTransmittance's model),
 // multiplied by blending in any draw order; a is the light depth
@@ -21,8 +22,8 @@ namespace shadowmaps
 class TransmittanceMaps
 {
 public:
-  /// Makes room for `layers` layers of resolution^2 texels (RGBA, 16-bit
-  /// floats, linear filtering), keeping the current ones when they fit.
+  /// Makes room for `layers` layers of resolution^2 texels (RGBA, 32-bit
+  /// floats, nearest filtering), keeping the current ones when they fit.
   /// False with `error` on GL failure.
   bool Reserve(int resolution, int layers, std::string& error);
 

@@ -68,7 +68,7 @@ void PassShaders::MarkInjectionPoints(std::string& fragmentShader)
 //------------------------------------------------------------------------------
 CasterBranch PassShaders::Inject(std::string& vertexShader, std::string& geometryShader,
   std::string& fragmentShader, const std::vector<ShadowLight>& lights, int layers, bool receives,
-  int& unpatched) const
+  int& unpatched, bool ownShare) const
 {
   const Impostors sized = ImpostorShader::Size(vertexShader, geometryShader, fragmentShader);
   const CasterBranch branch = CasterShader::Inject(fragmentShader, this->Casters, sized);
@@ -77,7 +77,7 @@ CasterBranch PassShaders::Inject(std::string& vertexShader, std::string& geometr
     CasterShader::RouteCameraParallel(*stage);
   }
   unpatched += ReceiverShader::Inject(fragmentShader, lights, layers, this->Receivers, receives,
-    branch == CasterBranch::DepthOnly);
+    branch == CasterBranch::DepthOnly, ownShare);
   return branch;
 }
 

@@ -54,10 +54,10 @@ public:
   /// Puts the code into a mapper's shaders, which hold the injection points
   /// (MarkInjectionPoints). Adds to `unpatched` the receiving lights the
   /// mapper lit in code this module cannot patch. `receives` false: the
-  /// casters' branch only.
+  /// casters' branch only. `ownShare`: ReceiverShader::Inject's.
   CasterBranch Inject(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, const std::vector<ShadowLight>& lights, int layers,
-    bool receives, int& unpatched) const;
+    bool receives, int& unpatched, bool ownShare = false) const;
 
   /// Marks where Inject puts its code, before the mapper's own replacements.
   static void MarkInjectionPoints(std::string& fragmentShader);

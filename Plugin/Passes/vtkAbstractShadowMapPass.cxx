@@ -198,8 +198,9 @@ struct vtkAbstractShadowMapPass::Internals
   // maps, and what the pass sets on their programs.
   shadowmaps::PassShaders Shaders;
   shadowmaps::ProgramUniforms Programs;
-  // Whether each prop received shadows when it last drew through the pass.
-  std::unordered_map<vtkProp*, std::pair<vtkWeakPointer<vtkProp>, bool>> Receives;
+  // Whether each prop received shadows (and held its own transmittance) when
+  // it last drew through the pass: what its shaders were built for.
+  std::unordered_map<vtkProp*, std::pair<vtkWeakPointer<vtkProp>, int>> Receives;
   int MapUnit = -1;
   // Depth peeling's first-pass depths, while casting.
   int PeelUnit = -1;
@@ -840,7 +841,8 @@ void vtkAbstractShadowMapPass::ChooseStorage()
   limits.MaximumSamples = std::max(r.MaximumSamples, 1);
   shadowmaps::CompleteStorage(maps.Storage, r.Lights, r.Casters, r.ClosedCasters, limits);
   maps.Storage.Transmittance = shadowmaps::AnyTranslucent(r.Casters);
-  this->NumberOfCasterPassesPerLayer = shadowmaps::CasterPassesPerLayer(maps.Storage);
+  this->NumberOfCasterPassesPerLayer =
+    shadowmaps::CasterPassesPerLayer(maps.Storage) + (maps.Storage.Transmittance ? 1 : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -1206,16 +1208,27 @@ int vtkAbstractShadowMapPass::DrawCasters(
 }
 
 //------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::ReceiverCodeOf(vtkProp* prop) const
+{
+  if (!IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS()))
+  {
+    return 0;
+  }
+  return shadowmaps::HoldsItsOwnTransmittance(prop, CASTS_SHADOWS()) ? 2 : 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::RebuildShadersOfChangedReceivers(const vtkRenderState* s)
 {
   // A prop's shaders hold its receiving code or not: only a prop whose
-  // RECEIVES_SHADOWS changed since it last drew here builds them again. Props
+  // RECEIVES_SHADOWS (or HoldsItsOwnTransmittance) changed since it last drew
+  // here builds them again. Props
   // entering or leaving the view, receivers or not, change no shader.
   Internals& r = *this->Internal;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    const bool receives = IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
+    const int receives = this->ReceiverCodeOf(prop);
     auto known = r.Receives.find(prop);
     if (known == r.Receives.end() || known->second.first != prop)
     {
@@ -1372,11 +1385,10 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
   const Internals& r = *this->Internal;
   ++this->NumberOfShaderBuilds;
   // Shaders first built by a caster draw are the ones the scene then uses.
-  const bool receives =
-    (r.Active || r.Casting) && prop && IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS());
+  const int code = (r.Active || r.Casting) && prop ? this->ReceiverCodeOf(prop) : 0;
   int unpatched = 0;
   const shadowmaps::CasterBranch branch = r.Shaders.Inject(vertexShader, geometryShader,
-    fragmentShader, r.Lights, this->NumberOfShadowMapLayers, receives, unpatched);
+    fragmentShader, r.Lights, this->NumberOfShadowMapLayers, code > 0, unpatched, code > 1);
   ++(branch == shadowmaps::CasterBranch::DepthOnly ? this->NumberOfDepthOnlyCasterShaders
                                                    : this->NumberOfOwnFragmentCasterShaders);
   if (unpatched > 0 && this->NumberOfUnpatchedReceiverLights == 0)

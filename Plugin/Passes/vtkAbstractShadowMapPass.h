@@ -344,7 +344,10 @@ public:
   /** How many times the shadow maps were (re-)rendered since creation. */
   vtkGetMacro(NumberOfShadowMapUpdates, int);
 
-  /** Caster draws (prop renders into maps) in the last frame that rendered map layers. */
+  /**
+   * Caster draws (prop renders into maps, transmittance maps included) in the
+   * last frame that rendered map layers.
+   */
   vtkGetMacro(NumberOfCasterDraws, int);
 
   /**
@@ -384,11 +387,16 @@ public:
   /**
    * Caster passes per map layer in the last map update: 2 when the
    * representation stores two surfaces' depths made by depth peeling (chosen,
-   * or picked by SecondDepthMethod::Auto because a caster is open), else 1.
+   * or picked by SecondDepthMethod::Auto because a caster is open), else 1;
+   * one more while translucent casters are drawn into transmittance maps
+   * (docs/TRANSLUCENT.md).
    */
   vtkGetMacro(NumberOfCasterPassesPerLayer, int);
 
-  /** Memory held by the shadow maps, in bytes (depth maps: 2 or 4 per texel). */
+  /**
+   * Memory held by the shadow maps, in bytes (depth maps: 2 or 4 per texel;
+   * transmittance maps, while a caster is translucent: 16).
+   */
   size_t GetShadowMapMemory() const;
 
   void Render(const vtkRenderState* s) override;
@@ -501,6 +509,9 @@ private:
     std::vector<vtkProp*>& casters, bool linearDepths);
   bool PeelSecondSurface(
     vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws);
+  // The receiver code a prop's shaders get: 0 none, 1 receiving, 2 receiving
+  // and dividing its own share out of the transmittance maps.
+  int ReceiverCodeOf(vtkProp* prop) const;
   // Draws the casters through `pass` (the opaque pass when null).
   int DrawCasters(
     vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters, vtkRenderPass* pass = nullptr);

@@ -1,15 +1,36 @@
 #include "ShadowMapPropRecords.h"
 
 #include "ShadowMapCasterVersion.h"
+#include "ShadowMapPropParts.h"
 
 #include "vtkActor.h"
 #include "vtkCullerCollection.h"
 #include "vtkProp.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 
 namespace shadowmaps
 {
+namespace
+{
+// Whether what `prop` draws translucent takes its colour and opacity from its
+// property or scalars alone, which the transmittance branch reads: actors
+// without textures. Textures (a vtkTexture's or a PBR material's alpha) and
+// other props (image slices, 3D text) apply their alpha after the lighting,
+// where that branch does not see it: they cast no translucent shadow.
+bool TranslucentByColorAlone(vtkProp* prop)
+{
+  bool alone = true;
+  ForEachPart(prop, [&alone](vtkProp* part, vtkMatrix4x4*) {
+    auto* actor = vtkActor::SafeDownCast(part);
+    alone = alone && actor && !actor->GetTexture() &&
+      actor->GetProperty()->GetNumberOfTextures() == 0;
+  });
+  return alone;
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 void PropRecords::BeginFrame(vtkRenderer* renderer, const ImpostorSizing& impostorSizing)
 {
@@ -53,7 +74,8 @@ const PropRecords::Record& PropRecords::Read(vtkProp* prop)
   // function edit.
   const bool volume = vtkVolume::SafeDownCast(prop) != nullptr;
   record.DrawsIntoDepthMaps = prop->HasOpaqueGeometry() && !volume;
-  record.DrawsTranslucency = prop->HasTranslucentPolygonalGeometry() && !volume;
+  record.DrawsTranslucency =
+    prop->HasTranslucentPolygonalGeometry() && !volume && TranslucentByColorAlone(prop);
   return record;
 }
 

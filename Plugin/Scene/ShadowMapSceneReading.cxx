@@ -5,6 +5,8 @@
 
 #include "vtkCamera.h"
 #include "vtkInformation.h"
+#include "vtkProperty.h"
+#include "vtkActor.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkInformationKeyLookup.h"
@@ -144,6 +146,19 @@ bool AnyTranslucent(const std::vector<Caster>& casters)
 {
   return std::any_of(
     casters.begin(), casters.end(), [](const Caster& caster) { return caster.Translucent; });
+}
+
+//------------------------------------------------------------------------------
+bool HoldsItsOwnTransmittance(vtkProp* prop, vtkInformationIntegerKey* castsShadows)
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  if (!actor || !IsEnabled(prop->GetPropertyKeys(), castsShadows))
+  {
+    return false;
+  }
+  vtkProperty* property = actor->GetProperty();
+  return !property->GetBackfaceCulling() && !property->GetFrontfaceCulling() &&
+    !actor->GetBackfaceProperty();
 }
 
 //------------------------------------------------------------------------------

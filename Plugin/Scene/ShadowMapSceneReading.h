@@ -40,6 +40,13 @@ struct Caster
 /// Whether any of `casters` draws translucent polygons.
 bool AnyTranslucent(const std::vector<Caster>& casters);
 
+/// Whether the transmittance maps hold what `prop`, drawn as a receiver,
+/// lets through itself where it is translucent: it casts (`castsShadows`),
+/// with the same faces and colours toward the light as toward the camera (an
+/// actor without face culling or a back-face property). Its receivers then
+/// divide their own share out of the maps' product.
+bool HoldsItsOwnTransmittance(vtkProp* prop, vtkInformationIntegerKey* castsShadows);
+
 /// An opt-out key: absent (or no information at all) means yes.
 bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key);
 

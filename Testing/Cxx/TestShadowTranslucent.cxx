@@ -30,6 +30,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkTexture.h"
 
 #include <gtest/gtest.h>
 
@@ -399,4 +400,58 @@ TEST(ShadowTranslucent, CasterColourFromScalarsAndPBRMaterials)
     Model({ 51 / 255.0, 204 / 255.0, 102 / 255.0 }, 153 / 255.0), 0.02, "lookup table");
   ExpectNear(scene.Measured(image, scene.GroundUnder({ -3.0, -3.0, 2.0 })),
     Model({ 0.9, 0.3, 0.2 }, 0.4), 0.02, "PBR");
+}
+
+TEST(ShadowTranslucent, TexturedAndImpostorCastersCastNoTranslucentShadow)
+{
+  // Their alpha comes after the lighting (a texture's) or they cut their own
+  // shapes (points as spheres): they cast no translucent shadow, as before.
+  SlabScene scene;
+  vtkActor* textured = scene.AddSlab({ 0.0, 0.0, 2.0 }, 2.0, { 1.0, 1.0, 1.0 }, 1.0);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(4, 4, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  auto* texels = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int i = 0; i < 16; ++i)
+  {
+    texels[4 * i] = texels[4 * i + 1] = texels[4 * i + 2] = 255;
+    texels[4 * i + 3] = 128;
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputData(image);
+  textured->SetTexture(texture);
+  vtkActor* points = scene.AddSlab({ -3.0, -3.0, 2.0 }, 2.0, { 1.0, 0.0, 0.0 }, 0.5);
+  points->GetProperty()->SetRepresentationToPoints();
+  points->GetProperty()->RenderPointsAsSpheresOn();
+  points->GetProperty()->SetPointSize(30.0f);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  auto frame = scene.Render(pass);
+  ExpectNear(scene.Measured(frame, scene.GroundUnder({ 0.0, 0.0, 2.0 })), glm::dvec3(1.0), 0.0,
+    "under the textured slab");
+  ExpectNear(scene.Measured(frame, scene.GroundUnder({ -3.0, -3.0, 2.0 })), glm::dvec3(1.0), 0.0,
+    "under the translucent points");
+}
+
+TEST(ShadowTranslucent, AReceiverDividesOutOnlyAShareTheMapsHold)
+{
+  // Pane B (z = 2) lies in pane A's shadow (z = 4, offset along the sun); the
+  // camera sees B where A does not cover it.
+  const glm::dvec3 onB(1.0, 0.5, 2.0);
+  const glm::dvec3 centreA = onB + (2.0 / SunDirection.z) * SunDirection; // toward the sun
+  for (bool bCasts : { true, false })
+  {
+    SlabScene scene;
+    scene.AddSlab(centreA, 2.0, { 1.0, 1.0, 1.0 }, 0.5);
+    vtkActor* b = scene.AddSlab({ 1.0, 0.5, 2.0 }, 1.0, { 1.0, 1.0, 1.0 }, 0.5);
+    if (!bCasts)
+    {
+      vtkNew<vtkInformation> keys;
+      keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+      b->SetPropertyKeys(keys);
+    }
+    vtkNew<vtkDepthShadowMapPass> pass;
+    auto frame = scene.Render(pass);
+    ExpectNear(scene.Measured(frame, onB), glm::dvec3(0.5), 0.02,
+      std::string("pane B in pane A's shadow, B ") + (bCasts ? "casting" : "opted out"));
+  }
 }
