@@ -1,6 +1,7 @@
 #include "ShadowOracle.h"
 
 #include "ShadowMapGlm.h"
+#include "ShadowMapSceneReading.h"
 #include "vtkAbstractShadowMapPass.h"
 
 #include <vtkActor.h>
@@ -436,11 +437,10 @@ PartList MapperGeometry(vtkMapper* mapper)
   return {};
 }
 
+// The passes' own opt-out rule.
 bool CastsShadows(vtkProp* prop)
 {
-  vtkInformation* keys = prop->GetPropertyKeys();
-  vtkInformationIntegerKey* key = vtkAbstractShadowMapPass::CASTS_SHADOWS();
-  return !keys || !keys->Has(key) || keys->Get(key) != 0;
+  return shadowmaps::IsEnabled(prop->GetPropertyKeys(), vtkAbstractShadowMapPass::CASTS_SHADOWS());
 }
 
 bool IsVisibleCaster(vtkActor* actor)

@@ -83,9 +83,8 @@ bool TransmittanceMaps::Render(
 }
 
 //------------------------------------------------------------------------------
-void TransmittanceMaps::BindToUnit(vtkOpenGLState* state, int unit, bool bound)
+void TransmittanceMaps::BindToUnit(vtkOpenGLState* state, int unit) const
 {
-  state->vtkglActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, bound ? this->Layers.GetTextureName() : 0);
+  this->Layers.BindToUnit(state, unit);
 }
 } // namespace shadowmaps

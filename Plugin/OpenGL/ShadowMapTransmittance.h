@@ -34,9 +34,8 @@ public:
   bool Render(vtkOpenGLState* state, int layer, const std::function<void()>& draw,
     std::string& error);
 
-  /// Binds the maps to `unit` (left active), or, with `bound` false, nothing
-  /// (while they are being rendered).
-  void BindToUnit(vtkOpenGLState* state, int unit, bool bound);
+  /// Binds the maps to `unit`, which it leaves active.
+  void BindToUnit(vtkOpenGLState* state, int unit) const;
 
   bool IsAllocated() const { return this->Layers.GetTextureName() != 0; }
   unsigned long GetAllocations() const { return this->Layers.GetAllocations(); }

@@ -200,7 +200,8 @@ struct vtkAbstractShadowMapPass::Internals
   shadowmaps::ProgramUniforms Programs;
   // Whether each prop received shadows (and held its own transmittance) when
   // it last drew through the pass: what its shaders were built for.
-  std::unordered_map<vtkProp*, std::pair<vtkWeakPointer<vtkProp>, int>> Receives;
+  std::unordered_map<vtkProp*, std::pair<vtkWeakPointer<vtkProp>, vtkAbstractShadowMapPass::ReceiverRole>>
+    Receives;
   int MapUnit = -1;
   // Depth peeling's first-pass depths, while casting.
   int PeelUnit = -1;
@@ -1208,13 +1209,15 @@ int vtkAbstractShadowMapPass::DrawCasters(
 }
 
 //------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::ReceiverCodeOf(vtkProp* prop) const
+vtkAbstractShadowMapPass::ReceiverRole vtkAbstractShadowMapPass::ReceiverRoleOf(vtkProp* prop) const
 {
   if (!IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS()))
   {
-    return 0;
+    return ReceiverRole::None;
   }
-  return shadowmaps::HoldsItsOwnTransmittance(prop, CASTS_SHADOWS()) ? 2 : 1;
+  return shadowmaps::HoldsItsOwnTransmittance(prop, CASTS_SHADOWS())
+    ? ReceiverRole::ReceivesWithOwnShare
+    : ReceiverRole::Receives;
 }
 
 //------------------------------------------------------------------------------
@@ -1228,7 +1231,7 @@ void vtkAbstractShadowMapPass::RebuildShadersOfChangedReceivers(const vtkRenderS
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    const int receives = this->ReceiverCodeOf(prop);
+    const ReceiverRole receives = this->ReceiverRoleOf(prop);
     auto known = r.Receives.find(prop);
     if (known == r.Receives.end() || known->second.first != prop)
     {
@@ -1277,8 +1280,10 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
   }
   if (r.Maps().Storage.Transmittance)
   {
+    // Nothing bound while the maps are rendered.
     r.TransmittanceUnit = window->GetTextureUnitManager()->Allocate();
-    r.Maps().Transmittances.BindToUnit(window->GetState(), r.TransmittanceUnit, false);
+    window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.TransmittanceUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   }
   r.Representation->ActivateReceiverResources(window);
   r.TextureUnitsReserved = true;
@@ -1299,7 +1304,7 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
   }
   if (r.TransmittanceUnit >= 0)
   {
-    maps.Transmittances.BindToUnit(window->GetState(), r.TransmittanceUnit, true);
+    maps.Transmittances.BindToUnit(window->GetState(), r.TransmittanceUnit);
   }
   maps.Uniforms.NewFrame();
 }
@@ -1385,10 +1390,12 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
   const Internals& r = *this->Internal;
   ++this->NumberOfShaderBuilds;
   // Shaders first built by a caster draw are the ones the scene then uses.
-  const int code = (r.Active || r.Casting) && prop ? this->ReceiverCodeOf(prop) : 0;
+  const ReceiverRole role =
+    (r.Active || r.Casting) && prop ? this->ReceiverRoleOf(prop) : ReceiverRole::None;
   int unpatched = 0;
   const shadowmaps::CasterBranch branch = r.Shaders.Inject(vertexShader, geometryShader,
-    fragmentShader, r.Lights, this->NumberOfShadowMapLayers, code > 0, unpatched, code > 1);
+    fragmentShader, r.Lights, this->NumberOfShadowMapLayers, role != ReceiverRole::None,
+    unpatched, role == ReceiverRole::ReceivesWithOwnShare);
   ++(branch == shadowmaps::CasterBranch::DepthOnly ? this->NumberOfDepthOnlyCasterShaders
                                                    : this->NumberOfOwnFragmentCasterShaders);
   if (unpatched > 0 && this->NumberOfUnpatchedReceiverLights == 0)

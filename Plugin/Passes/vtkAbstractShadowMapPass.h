@@ -509,9 +509,15 @@ private:
     std::vector<vtkProp*>& casters, bool linearDepths);
   bool PeelSecondSurface(
     vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws);
-  // The receiver code a prop's shaders get: 0 none, 1 receiving, 2 receiving
-  // and dividing its own share out of the transmittance maps.
-  int ReceiverCodeOf(vtkProp* prop) const;
+  // The receiver code a prop's shaders get: none, receiving, or receiving and
+  // dividing its own share out of the transmittance maps.
+  enum class ReceiverRole
+  {
+    None,
+    Receives,
+    ReceivesWithOwnShare
+  };
+  ReceiverRole ReceiverRoleOf(vtkProp* prop) const;
   // Draws the casters through `pass` (the opaque pass when null).
   int DrawCasters(
     vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters, vtkRenderPass* pass = nullptr);
