@@ -1,18 +1,10 @@
 #include "ShadowOracleVolumes.h"
 
 #include "ShadowMapGlm.h"
+#include "ShadowMapVolumeReading.h"
 #include "vtkAbstractShadowMapPass.h"
 
-#include <vtkAbstractVolumeMapper.h>
-#include <vtkColorTransferFunction.h>
 #include <vtkDataArray.h>
-#include <vtkImageData.h>
-#include <vtkMatrix3x3.h>
-#include <vtkMatrix4x4.h>
-#include <vtkPiecewiseFunction.h>
-#include <vtkPointData.h>
-#include <vtkVolume.h>
-#include <vtkVolumeProperty.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -24,18 +16,7 @@ namespace shadoworacle
 {
 namespace
 {
-// Transfer-function entries over the scalars' range: finer than an 8-bit
-// colour step over any range a function bends in.
-constexpr int TableSize = 4096;
-
-// Marching steps per smallest voxel side.
-constexpr double StepsPerVoxel = 2.0;
-
-bool HasIdentityDirection(vtkImageData* image)
-{
-  vtkMatrix3x3* direction = image->GetDirectionMatrix();
-  return !direction || direction->IsIdentity();
-}
+constexpr int TableSize = shadowmaps::VolumeTableSize;
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -53,66 +34,21 @@ glm::dvec3 SliceTransmittance(
 //------------------------------------------------------------------------------
 bool MarchedVolume::FromVolume(vtkVolume* volume, MarchedVolume& marched, std::string& why)
 {
-  vtkAbstractVolumeMapper* mapper = volume->GetMapper();
-  if (!mapper)
+  shadowmaps::VolumeReading reading;
+  if (!shadowmaps::ReadVolume(volume, reading, why))
   {
-    why = "a volume without a mapper";
     return false;
   }
-  mapper->Update();
-  auto* image = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
-  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
-  if (!scalars)
-  {
-    why = "a volume of other data than image data with point scalars";
-    return false;
-  }
-  if (!HasIdentityDirection(image))
-  {
-    why = "a volume of image data with a direction matrix";
-    return false;
-  }
-  vtkVolumeProperty* property = volume->GetProperty();
-  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
-  const vtkIdType count = scalars->GetNumberOfTuples();
+  const vtkIdType count = reading.Scalars->GetNumberOfTuples();
   marched.Scalars.resize(count);
   for (vtkIdType i = 0; i < count; ++i)
   {
-    marched.Scalars[i] = static_cast<float>(scalars->GetComponent(i, 0));
+    marched.Scalars[i] = static_cast<float>(reading.Scalars->GetComponent(i, 0));
   }
-  int dimensions[3];
-  image->GetDimensions(dimensions);
-  marched.Dimensions = glm::ivec3(dimensions[0], dimensions[1], dimensions[2]);
-  marched.Origin = shadowmaps::ToGlm(image->GetOrigin());
-  marched.Spacing = shadowmaps::ToGlm(image->GetSpacing());
-  double bounds[6];
-  image->GetBounds(bounds);
-  marched.BoxMin = glm::dvec3(bounds[0], bounds[2], bounds[4]);
-  marched.BoxMax = glm::dvec3(bounds[1], bounds[3], bounds[5]);
-  marched.WorldToData = glm::inverse(shadowmaps::ToGlm(volume->GetMatrix()));
-  const double* range = scalars->GetRange(0);
-  marched.Low = range[0];
-  marched.High = range[1] > range[0] ? range[1] : range[0] + 1.0;
-  marched.Table.resize(TableSize);
-  const bool rgb = property->GetColorChannels(0) == 3;
-  for (int k = 0; k < TableSize; ++k)
-  {
-    const double s = marched.Low + (marched.High - marched.Low) * k / (TableSize - 1.0);
-    glm::dvec3 color(1.0);
-    if (rgb)
-    {
-      property->GetRGBTransferFunction(0)->GetColor(s, glm::value_ptr(color));
-    }
-    else
-    {
-      color = glm::dvec3(property->GetGrayTransferFunction(0)->GetValue(s));
-    }
-    marched.Table[k] = glm::dvec4(color, opacity->GetValue(s));
-  }
-  marched.UnitDistance = std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
-  const glm::dvec3 sides = glm::abs(marched.Spacing);
-  const double smallest = std::min(sides.x, std::min(sides.y, sides.z));
-  marched.Step = smallest > 0.0 ? smallest / StepsPerVoxel : 1.0;
+  marched.WorldToData = glm::inverse(reading.DataToWorld);
+  marched.Volume = std::move(reading);
+  marched.Volume.Image = nullptr;
+  marched.Volume.Scalars = nullptr;
   return true;
 }
 
@@ -128,14 +64,14 @@ bool MarchedVolume::Clip(const glm::dvec3& origin, const glm::dvec3& direction, 
   {
     if (d[axis] == 0.0)
     {
-      if (o[axis] < this->BoxMin[axis] || o[axis] > this->BoxMax[axis])
+      if (o[axis] < this->Volume.BoxMin[axis] || o[axis] > this->Volume.BoxMax[axis])
       {
         return false;
       }
       continue;
     }
-    double t0 = (this->BoxMin[axis] - o[axis]) / d[axis];
-    double t1 = (this->BoxMax[axis] - o[axis]) / d[axis];
+    double t0 = (this->Volume.BoxMin[axis] - o[axis]) / d[axis];
+    double t1 = (this->Volume.BoxMax[axis] - o[axis]) / d[axis];
     if (t0 > t1)
     {
       std::swap(t0, t1);
@@ -157,14 +93,14 @@ bool MarchedVolume::Crosses(const glm::dvec3& origin, const glm::dvec3& directio
 //------------------------------------------------------------------------------
 double MarchedVolume::ScalarAt(const glm::dvec3& dataPoint) const
 {
-  const glm::dvec3 last = glm::dvec3(glm::max(this->Dimensions - 1, glm::ivec3(0)));
-  const glm::dvec3 index = glm::clamp((dataPoint - this->Origin) / this->Spacing, glm::dvec3(0.0), last);
+  const glm::dvec3 last = glm::dvec3(glm::max(this->Volume.Dimensions - 1, glm::ivec3(0)));
+  const glm::dvec3 index = glm::clamp((dataPoint - this->Volume.Origin) / this->Volume.Spacing, glm::dvec3(0.0), last);
   const glm::ivec3 low = glm::min(glm::ivec3(glm::floor(index)), glm::ivec3(last));
   const glm::ivec3 high = glm::min(low + 1, glm::ivec3(last));
   const glm::dvec3 f = index - glm::dvec3(low);
   auto at = [this](int x, int y, int z) {
     return static_cast<double>(this->Scalars[static_cast<std::size_t>(
-      (static_cast<long long>(z) * this->Dimensions.y + y) * this->Dimensions.x + x)]);
+      (static_cast<long long>(z) * this->Volume.Dimensions.y + y) * this->Volume.Dimensions.x + x)]);
   };
   const double x00 = glm::mix(at(low.x, low.y, low.z), at(high.x, low.y, low.z), f.x);
   const double x10 = glm::mix(at(low.x, high.y, low.z), at(high.x, high.y, low.z), f.x);
@@ -190,12 +126,12 @@ glm::dvec3 MarchedVolume::Transmittance(
   const double dataPerParameter =
     glm::length(glm::dvec3(this->WorldToData * glm::dvec4(direction, 0.0)));
   const double dataLength = (leave - enter) * dataPerParameter;
-  const int steps = std::max(1, static_cast<int>(std::ceil(dataLength / this->Step)));
+  const int steps = std::max(1, static_cast<int>(std::ceil(dataLength / this->Volume.Step)));
   const double dt = (leave - enter) / steps;
   const double worldStep = dt * worldPerParameter;
   const glm::dvec3 o = glm::dvec3(this->WorldToData * glm::dvec4(origin, 1.0));
   const glm::dvec3 d = glm::dvec3(this->WorldToData * glm::dvec4(direction, 0.0));
-  const double scale = (TableSize - 1.0) / (this->High - this->Low);
+  const double scale = (TableSize - 1.0) / (this->Volume.High - this->Volume.Low);
   for (int i = 0; i < steps; ++i)
   {
     const double s = this->ScalarAt(o + (enter + (i + 0.5) * dt) * d);
@@ -203,10 +139,10 @@ glm::dvec3 MarchedVolume::Transmittance(
     {
       continue; // no data: nothing absorbs
     }
-    const double position = std::min(std::max((s - this->Low) * scale, 0.0), TableSize - 1.0);
+    const double position = std::min(std::max((s - this->Volume.Low) * scale, 0.0), TableSize - 1.0);
     const int k = std::min(static_cast<int>(position), TableSize - 2);
-    const glm::dvec4 entry = glm::mix(this->Table[k], this->Table[k + 1], position - k);
-    product *= SliceTransmittance(glm::dvec3(entry), entry.w, worldStep, this->UnitDistance);
+    const glm::dvec4 entry = glm::mix(this->Volume.Table[k], this->Volume.Table[k + 1], position - k);
+    product *= SliceTransmittance(glm::dvec3(entry), entry.w, worldStep, this->Volume.UnitDistance);
     if (product == glm::dvec3(0.0))
     {
       break;

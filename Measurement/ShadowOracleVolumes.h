@@ -11,6 +11,8 @@
 #ifndef ShadowOracleVolumes_h
 #define ShadowOracleVolumes_h
 
+#include "ShadowMapVolumeReading.h"
+
 #include <glm/glm.hpp>
 
 #include <string>
@@ -51,18 +53,10 @@ private:
   double ScalarAt(const glm::dvec3& dataPoint) const;
 
   std::vector<float> Scalars; // x fastest
-  glm::ivec3 Dimensions{ 0 };
-  glm::dvec3 Origin{ 0.0 };
-  glm::dvec3 Spacing{ 1.0 }; // signed, as the image's
+  /// The rest of the volume as the passes read it (its data pointers unset:
+  /// the oracle's threads read the copies here).
+  shadowmaps::VolumeReading Volume;
   glm::dmat4 WorldToData{ 1.0 };
-  glm::dvec3 BoxMin{ 0.0 };
-  glm::dvec3 BoxMax{ 0.0 };
-  // The transfer functions over [Low, High], tabulated.
-  std::vector<glm::dvec4> Table; // colour, opacity
-  double Low = 0.0;
-  double High = 1.0;
-  double UnitDistance = 1.0;
-  double Step = 1.0; // world length of a marching step
 };
 
 } // namespace shadoworacle

@@ -3,6 +3,8 @@
 #include "vtkAbstractShadowMapPass.h" // LIGHT_SIZE
 
 #include <vtkActorCollection.h>
+
+#include <glm/glm.hpp>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleKey.h>
 #include <vtkMatrix4x4.h>
@@ -51,6 +53,12 @@
 #include <vtkTubeFilter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkVolumeProperty.h>
+#include <vtkVolumeCollection.h>
+#include <vtkVolume.h>
+#include <vtkSmartVolumeMapper.h>
+#include <vtkPiecewiseFunction.h>
+#include <vtkImageData.h>
 
 #include <algorithm>
 #include <array>
@@ -1286,6 +1294,13 @@ void AddScalarPane(vtkRenderer* renderer, double x, double y, double height, dou
 }
 
 // Opts every translucent actor of the renderer out of casting shadows.
+void KeepFromCasting(vtkProp* prop)
+{
+  vtkNew<vtkInformation> keys;
+  keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  prop->SetPropertyKeys(keys);
+}
+
 void KeepTranslucentActorsFromCasting(vtkRenderer* renderer)
 {
   vtkActorCollection* actors = renderer->GetActors();
@@ -1295,9 +1310,7 @@ void KeepTranslucentActorsFromCasting(vtkRenderer* renderer)
   {
     if (actor->HasTranslucentPolygonalGeometry())
     {
-      vtkNew<vtkInformation> keys;
-      keys->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
-      actor->SetPropertyKeys(keys);
+      KeepFromCasting(actor);
     }
   }
 }
@@ -1326,6 +1339,81 @@ void BuildGlassScene(vtkRenderer* renderer)
   AddPoles(renderer);
   const double position[3] = { 30.0, -32.0, 26.0 };
   const double focalPoint[3] = { 0.0, 0.0, 2.0 };
+  SetCamera(renderer, position, focalPoint, 40.0);
+}
+
+// A plume of smoke: three overlapping puffs of density rising along a
+// diagonal, as a vtkVolume of image data whose opacity rises with the density
+// and whose colour warms from blue-grey to orange in the dense cores.
+void AddSmoke(vtkRenderer* renderer)
+{
+  struct Puff
+  {
+    glm::dvec3 Centre;
+    double Radius;
+  };
+  const Puff puffs[] = { { { -2.0, -4.0, 6.0 }, 3.5 }, { { 1.0, -2.0, 9.0 }, 3.0 },
+    { { 4.0, 0.0, 12.0 }, 2.5 } };
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(48, 48, 36);
+  field->SetOrigin(-8.0, -10.0, 2.0);
+  field->SetSpacing(16.0 / 47.0, 16.0 / 47.0, 14.0 / 35.0);
+  vtkNew<vtkFloatArray> density;
+  density->SetName("density");
+  density->SetNumberOfTuples(field->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < field->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    field->GetPoint(i, p);
+    double value = 0.0;
+    for (const Puff& puff : puffs)
+    {
+      const double r = glm::length(glm::dvec3(p[0], p[1], p[2]) - puff.Centre) / puff.Radius;
+      value = std::max(value, std::exp(-2.0 * r * r));
+    }
+    density->SetValue(i, static_cast<float>(value));
+  }
+  field->GetPointData()->SetScalars(density);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(0.05, 0.0);
+  opacity->AddPoint(1.0, 0.35);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.75, 0.8, 0.9);
+  color->AddRGBPoint(1.0, 0.95, 0.6, 0.3);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  property->SetScalarOpacityUnitDistance(1.0);
+  property->SetInterpolationTypeToLinear();
+  vtkNew<vtkSmartVolumeMapper> mapper;
+  mapper->SetInputData(field);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+}
+
+void KeepVolumesFromCasting(vtkRenderer* renderer)
+{
+  vtkVolumeCollection* volumes = renderer->GetVolumes();
+  vtkCollectionSimpleIterator it;
+  volumes->InitTraversal(it);
+  while (vtkVolume* volume = volumes->GetNextVolume(it))
+  {
+    KeepFromCasting(volume);
+  }
+}
+
+void BuildSmokeScene(vtkRenderer* renderer)
+{
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  AddGround(renderer, -40.0, 40.0, -40.0, 40.0, 0.0);
+  AddSmoke(renderer);
+  AddPoles(renderer);
+  AddSphere(renderer);
+  const double position[3] = { 30.0, -32.0, 26.0 };
+  const double focalPoint[3] = { 0.0, 0.0, 4.0 };
   SetCamera(renderer, position, focalPoint, 40.0);
 }
 
@@ -1675,6 +1763,15 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
     if (name == "glass-opaque")
     {
       KeepTranslucentActorsFromCasting(renderer);
+    }
+    return true;
+  }
+  if (name == "smoke" || name == "smoke-opaque")
+  {
+    BuildSmokeScene(renderer);
+    if (name == "smoke-opaque")
+    {
+      KeepVolumesFromCasting(renderer);
     }
     return true;
   }

@@ -172,9 +172,18 @@ std::vector<std::string> SweepSceneNames();
 void BuildGlassScene(vtkRenderer* renderer);
 
 /**
+ * A volume over a ground: a plume of three overlapping puffs of smoke (a
+ * vtkVolume of 48 x 48 x 36 samples, opacity rising with the density, its
+ * colour warming from blue-grey to orange in the cores), the poles and a
+ * floating sphere.
+ */
+void BuildSmokeScene(vtkRenderer* renderer);
+
+/**
  * Builds a benchmark scene, a sweep scene, "street", "blocks", "glass",
  * "glass-opaque" (the glass scene whose translucent actors cast nothing: its
- * frame without transmittance maps) or "default" (BuildDefaultScene) into an empty
+ * frame without transmittance maps), "smoke" (BuildSmokeScene), "smoke-opaque"
+ * (its volume casting nothing) or "default" (BuildDefaultScene) into an empty
  * renderer. Returns false with a one-line `error` for an unknown name or a
  * scene that cannot be built.
  */

@@ -109,7 +109,8 @@ void PrintUsage(std::ostream& out)
          "options of bench and analyze (lists are comma-separated; analyze's defaults in\n"
          "braces):\n"
          "  --scenes LIST            bench only: outdoor,paraview,model [these three],\n"
-         "                           glass (translucent casters: transmittance errors)\n"
+         "                           glass (translucent casters: transmittance errors),\n"
+         "                           smoke (a volume: transmittance errors)\n"
          "  --up x|y|z|-x|-y|-z      analyze only: the model's up axis, as for render\n"
          "  --setups LIST|all|soft   overhead,perpendicular,behind,facing,spot,point,\n"
          "                           wide-spot,street-point [these eight]; sized lights\n"
@@ -149,7 +150,8 @@ void PrintUsage(std::ostream& out)
          "options of speed: those of bench but the flicker options, with\n"
          "  --scenes LIST            outdoor,paraview,model,street (225 actors),\n"
          "                           blocks (2,026 actors), glass (translucent casters),\n"
-         "                           glass-opaque (the same casting opaque shadows only)\n"
+         "                           glass-opaque (the same casting opaque shadows only),\n"
+         "                           smoke (a volume), smoke-opaque (its volume not casting)\n"
          "                           [outdoor,paraview,model,street]\n"
          "  --setups LIST            [perpendicular,spot]\n"
          "  --techniques LIST        [uniform,lispsm,csm] (none and vtk always measured)\n"
@@ -374,11 +376,12 @@ std::string ParseScenes(const std::string& value, Options& options)
 {
   auto names = shadowscenes::BenchmarkSceneNames();
   names.push_back("glass");
+  names.push_back("smoke");
   for (const std::string& scene : SplitList(value))
   {
     if (std::find(names.begin(), names.end(), scene) == names.end())
     {
-      return "unknown scene '" + scene + "' (expected outdoor, paraview, model or glass)";
+      return "unknown scene '" + scene + "' (expected outdoor, paraview, model, glass or smoke)";
     }
   }
   options.bench.Scenes = SplitList(value);
@@ -392,12 +395,15 @@ std::string ParseSpeedScenes(const std::string& value, Options& options)
   names.push_back("blocks");
   names.push_back("glass");
   names.push_back("glass-opaque");
+  names.push_back("smoke");
+  names.push_back("smoke-opaque");
   for (const std::string& scene : SplitList(value))
   {
     if (std::find(names.begin(), names.end(), scene) == names.end())
     {
       return "unknown scene '" + scene +
-        "' (expected outdoor, paraview, model, street, blocks, glass or glass-opaque)";
+        "' (expected outdoor, paraview, model, street, blocks, glass, glass-opaque, smoke or "
+        "smoke-opaque)";
     }
   }
   options.bench.Scenes = SplitList(value);

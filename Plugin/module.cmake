@@ -20,14 +20,18 @@ set(shadowmaps_shaders
   vtkShadowMapsFilterFS
   vtkShadowMapsLinearDepthFS
   vtkShadowMapsLinearDepthResolveFS
+  vtkShadowMapsLightDepthFS
   vtkShadowMapsMomentsFS
   vtkShadowMapsReceiverFS
   vtkShadowMapsSoftFS
   vtkShadowMapsSoftKernelFS
   vtkShadowMapsSoftMomentsFS
   vtkShadowMapsTransmittanceFS
+  vtkShadowMapsTransmittedFS
   vtkShadowMapsVarianceLookupFS
-  vtkShadowMapsViewFS)
+  vtkShadowMapsViewFS
+  vtkShadowMapsVolumeCastingFS
+  vtkShadowMapsVolumeCastingVS)
 set(shadowmaps_shader_sources)
 set(shadowmaps_shader_headers)
 foreach (shader IN LISTS shadowmaps_shaders)
@@ -83,6 +87,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapRotationNoise.cxx
     Plugin/OpenGL/ShadowMapTransmittance.cxx
+    Plugin/OpenGL/ShadowMapVolumeCasting.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
@@ -97,6 +102,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Scene/ShadowMapPropParts.cxx
     Plugin/Scene/ShadowMapPropRecords.cxx
     Plugin/Scene/ShadowMapSceneReading.cxx
+    Plugin/Scene/ShadowMapVolumeReading.cxx
     ${shadowmaps_shader_sources}
   NOWRAP_HEADERS
     # What a downstream views or representation class needs: plain C++ and

@@ -41,17 +41,11 @@ bool vtkShadowPeeledAway(float depth)
 // depth's origin, is recovered from its window position, which works for every
 // projective view.
 uniform mat4 vtkShadowWindowToLight;
-uniform vec4 vtkShadowLightDepthPlane;
-uniform float vtkShadowLightDepthPerDistance;
 
 float vtkShadowLightDepthAtWindow(vec3 window)
 {
   vec4 h = vtkShadowWindowToLight * vec4(window, 1.0);
-  vec3 relative = h.xyz / h.w;
-  float depth = dot(vtkShadowLightDepthPlane.xyz, relative) + vtkShadowLightDepthPlane.w +
-    vtkShadowLightDepthPerDistance * length(relative);
-  // A depth that is not a number (a degenerate view) stores the far value.
-  return depth >= 0.0 ? min(depth, 1.0) : (depth < 0.0 ? 0.0 : 1.0);
+  return vtkShadowLightDepthOf(h.xyz / h.w);
 }
 
 float vtkShadowLightDepthAt(float windowDepth)
@@ -61,15 +55,6 @@ float vtkShadowLightDepthAt(float windowDepth)
 #endif
 
 #ifdef VTK_SHADOW_TRANSMITTANCE
-// What a translucent caster of colour c and opacity a lets through, per
-// channel: (1 - a)(1 - a + a c) (vtkAbstractShadowMapPass::GetTransmittance).
-// (Parameter names unlike the mapper's variables, which the pass looks for.)
-vec3 vtkShadowTransmitted(vec3 c, float alpha)
-{
-  float a = clamp(alpha, 0.0, 1.0);
-  return (1.0 - a) * ((1.0 - a) + a * clamp(c, 0.0, 1.0));
-}
-
 // The window depth's change to the next texel along x and y, taken at the
 // start of main(), before any discard (derivatives need uniform control flow).
 float vtkShadowCasterDepthDx = 0.0;

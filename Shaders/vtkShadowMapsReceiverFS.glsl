@@ -19,6 +19,9 @@
 #ifdef VTK_SHADOW_TRANSMITTANCE
 #define VTK_SHADOW_VALUE vec3
 vec3 vtkShadowTransmittance(vec2 mapCoord, float lightDepth, int layer);
+// False for receivers that take the opaque casters' shadows only (volumes,
+// whose own absorption the maps hold at one depth per texel).
+bool vtkShadowTransmittanceReceived = true;
 #else
 #define VTK_SHADOW_VALUE float
 #endif
@@ -482,6 +485,10 @@ VTK_SHADOW_VALUE vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int lig
   float visibility = vtkShadowOpaqueVisibility(
     biased, normalVC, mapCoord, light, firstView, view, viewLayout, count, features);
 #ifdef VTK_SHADOW_TRANSMITTANCE
+  if (!vtkShadowTransmittanceReceived)
+  {
+    return VTK_SHADOW_VALUE(visibility);
+  }
   return visibility * vtkShadowTransmittance(mapCoord.xy, vtkShadowLightDepth(biased, light), view);
 #else
   return visibility;

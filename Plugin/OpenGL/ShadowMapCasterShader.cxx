@@ -2,6 +2,8 @@
 
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsCasterFS.h"
+#include "vtkShadowMapsLightDepthFS.h"
+#include "vtkShadowMapsTransmittedFS.h"
 #include "vtkShadowMapsLinearDepthFS.h"
 
 #include <functional>
@@ -58,10 +60,12 @@ std::string Declarations(const CasterCode& code, Impostors sized)
   if (code.LightDepth || code.Transmittance)
   {
     dec += "#define VTK_SHADOW_LIGHT_DEPTH\n";
+    dec += vtkShadowMapsLightDepthFS;
   }
   if (code.Transmittance)
   {
     dec += "#define VTK_SHADOW_TRANSMITTANCE\n";
+    dec += vtkShadowMapsTransmittedFS;
   }
   dec += vtkShadowMapsCasterFS;
   if (code.LinearDepth)

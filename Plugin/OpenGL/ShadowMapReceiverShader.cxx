@@ -71,6 +71,52 @@ bool NamesWord(const std::string& shader, const std::string& name)
 
 const char* const UniformFlowMarker = "//VTK::ShadowMaps::UniformFlow";
 
+// The volume ray caster's template (raycasterfs.glsl, VTK 9.1 to 9.6): where
+// its declarations end, where each ray starts, and the lines that composite a
+// sample (premultiplying its colour by its opacity; the independent
+// components' path composites its own sum).
+const char* const VolumeDecMarker = "//VTK::ShadowMaps::VolumeDec";
+const char* const VolumeRayMarker = "//VTK::ShadowMaps::VolumeRay";
+const std::pair<const char*, const char*> VolumeSamplePatterns[] = {
+  { "g_srcColor.rgb *= g_srcColor.a;",
+    "g_srcColor.rgb *= vtkShadowVolumeFactor(g_dataPos) * g_srcColor.a;" },
+  { "g_fragColor = (1.0f - g_fragColor.a) * tmp + g_fragColor;",
+    "tmp.rgb *= vtkShadowVolumeFactor(g_dataPos);\n"
+    "      g_fragColor = (1.0f - g_fragColor.a) * tmp + g_fragColor;" },
+};
+
+// The volumes' receiver function: what reaches a sample of the lights, as a
+// factor of its colour. The maps' transmittance holds the volume's own
+// absorption at one depth per texel: a sample takes the opaque casters' shadows only.
+std::string VolumeFactorFunction(const std::vector<ShadowLight>& lights)
+{
+  std::ostringstream function;
+  function << "mat4 vtkShadowVolumeTextureToVC = mat4(1.0);\n"
+              "uniform float vtkShadowVolumeLightShares[VTK_SHADOW_MAX_LIGHTS];\n"
+              "vec3 vtkShadowVolumeFactor(vec3 texturePosition)\n{\n"
+              "  vec4 position = vtkShadowVolumeTextureToVC * vec4(texturePosition, 1.0);\n"
+              "  vec3 vtkShadowPositionVC = position.xyz / position.w;\n"
+              "  vec3 vtkShadowNormalVC = vec3(0.0, 0.0, 1.0);\n"
+              "#ifdef VTK_SHADOW_TRANSMITTANCE\n"
+              "  vtkShadowTransmittanceReceived = false;\n"
+              "#endif\n"
+              "  vec3 factor = vec3(1.0);\n";
+  for (int k = 0; k < static_cast<int>(lights.size()); ++k)
+  {
+    function << "  factor -= vtkShadowVolumeLightShares[" << k
+             << "] * (1.0 - vec3(vtkShadowFactor(" << ReceiverCallArguments(lights[k], k)
+             << ")));\n";
+  }
+  function << "  return factor;\n}\n";
+  return function.str();
+}
+
+void ClearVolumeMarkers(std::string& fragmentShader)
+{
+  vtkShaderProgram::Substitute(fragmentShader, VolumeDecMarker, "");
+  vtkShaderProgram::Substitute(fragmentShader, VolumeRayMarker, "");
+}
+
 void ClearMarkers(std::string& fragmentShader)
 {
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", "");
@@ -194,6 +240,52 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
     "#endif\n" +
       (ownShare ? OwnTransmittance(fragmentShader, code) : std::string()) + impl.str());
   return unpatched;
+}
+
+//------------------------------------------------------------------------------
+void ReceiverShader::MarkVolumeInjectionPoints(std::string& fragmentShader)
+{
+  if (fragmentShader.find("//VTK::CustomUniforms::Dec") == std::string::npos ||
+    fragmentShader.find("//VTK::Shading::Init") == std::string::npos)
+  {
+    return;
+  }
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::CustomUniforms::Dec",
+    std::string(VolumeDecMarker) + "\n//VTK::CustomUniforms::Dec", false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Shading::Init",
+    std::string("//VTK::Shading::Init\n") + VolumeRayMarker, false);
+}
+
+//------------------------------------------------------------------------------
+bool ReceiverShader::InjectVolume(std::string& fragmentShader,
+  const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code, bool receives)
+{
+  const bool marked = fragmentShader.find(VolumeDecMarker) != std::string::npos &&
+    fragmentShader.find(VolumeRayMarker) != std::string::npos;
+  int composited = 0;
+  for (const auto& pattern : VolumeSamplePatterns)
+  {
+    if (receives && marked && !lights.empty() &&
+      fragmentShader.find(pattern.first) != std::string::npos)
+    {
+      vtkShaderProgram::Substitute(fragmentShader, pattern.first, pattern.second, true);
+      ++composited;
+    }
+  }
+  if (composited == 0)
+  {
+    ClearVolumeMarkers(fragmentShader);
+    return false;
+  }
+  ReceiverCode volumeCode = code;
+  volumeCode.AnalysisFunctions.clear();
+  vtkShaderProgram::Substitute(fragmentShader, VolumeDecMarker,
+    Declarations(lights, layers, volumeCode) + VolumeFactorFunction(lights));
+  // The sample's texture coordinates to the camera's view coordinates, once a ray.
+  vtkShaderProgram::Substitute(fragmentShader, VolumeRayMarker,
+    "  vtkShadowVolumeTextureToVC = inverse(vtkShadowViewToWorld) * in_volumeMatrix[0] *\n"
+    "    inverse(ip_inverseTextureDataAdjusted);\n");
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -68,6 +68,20 @@ public:
     int layers, const ReceiverCode& code, bool receives, bool facetDerivatives,
     bool ownShare = false);
 
+  /// Before the volume mapper's own replacements (its GPU ray caster's
+  /// template): markers where InjectVolume puts its code.
+  static void MarkVolumeInjectionPoints(std::string& fragmentShader);
+
+  /// Darkens each sample the ray caster composites by the shadows of the
+  /// opaque casters at the sample, light by light in proportion to each
+  /// shadowed light's share of the lights' intensity
+  /// (vtkShadowVolumeLightShares, set per draw): the sample's colour, lit or
+  /// not, is what the volume shows of the light. Without `receives`, or where
+  /// the shader composites no sample (maximum intensity and other blend
+  /// modes), only loses the markers; returns whether it injected.
+  static bool InjectVolume(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
+    int layers, const ReceiverCode& code, bool receives);
+
   /// A key of everything Inject's result depends on but the shader it patches.
   static std::string Key(const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code);
 };

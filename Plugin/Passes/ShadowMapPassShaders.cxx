@@ -63,6 +63,7 @@ void PassShaders::MarkInjectionPoints(std::string& fragmentShader)
 {
   CasterShader::MarkInjectionPoints(fragmentShader);
   ReceiverShader::MarkInjectionPoints(fragmentShader);
+  ReceiverShader::MarkVolumeInjectionPoints(fragmentShader);
 }
 
 //------------------------------------------------------------------------------

@@ -59,7 +59,16 @@ public:
     std::string& fragmentShader, const std::vector<ShadowLight>& lights, int layers,
     bool receives, int& unpatched, bool ownShare = false) const;
 
-  /// Marks where Inject puts its code, before the mapper's own replacements.
+  /// Puts the receivers' code into a volume mapper's ray caster
+  /// (ReceiverShader::InjectVolume); volumes cast by being marched, not drawn.
+  bool InjectVolume(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
+    int layers, bool receives) const
+  {
+    return ReceiverShader::InjectVolume(fragmentShader, lights, layers, this->Receivers, receives);
+  }
+
+  /// Marks where Inject and InjectVolume put their code, before the mapper's
+  /// own replacements.
   static void MarkInjectionPoints(std::string& fragmentShader);
 
   /// Whether the current code compiles in `window`, tried on a probe program:

@@ -11,6 +11,7 @@ void RendererMaps::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Maps.Release();
   this->Transmittances.Release();
+  this->Volumes.Release(window);
   this->LinearDepths.ReleaseGraphicsResources(window);
   this->LightDepths.ReleaseGraphicsResources(window);
   this->Updates.Invalidate();
@@ -81,7 +82,8 @@ std::size_t MapsByRenderer::MemoryBytes() const
   std::size_t bytes = 0;
   for (const auto& maps : this->Maps)
   {
-    bytes += maps.second->Maps.GetMemoryBytes() + maps.second->Transmittances.GetMemoryBytes();
+    bytes += maps.second->Maps.GetMemoryBytes() + maps.second->Transmittances.GetMemoryBytes() +
+      maps.second->Volumes.GetMemoryBytes();
   }
   return bytes;
 }

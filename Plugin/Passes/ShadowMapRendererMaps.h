@@ -12,6 +12,7 @@
 #include "ShadowMapTextureArray.h"
 #include "ShadowMapTransmittance.h"
 #include "ShadowMapUpdates.h"
+#include "ShadowMapVolumeCasting.h"
 #include "vtkShadowMapRepresentation.h" // For MapStorage
 
 #include <cstddef>
@@ -32,6 +33,8 @@ struct RendererMaps
   TextureArray Maps;
   /// Beside the maps while some caster is translucent (MapStorage::Transmittance).
   TransmittanceMaps Transmittances;
+  /// The casting volumes' data, marched into the transmittance maps.
+  VolumeCasters Volumes;
   MapStorage Storage;
   ReceiverUniforms Uniforms;
   LinearDepthResolve LinearDepths;

@@ -40,6 +40,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
 #include "vtkTranslucentPass.h"
+#include "vtkVolume.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -109,6 +110,19 @@ using shadowmaps::IsEnabled;
 
 namespace
 {
+std::vector<vtkVolume*> CastingVolumes(const std::vector<Caster>& casters)
+{
+  std::vector<vtkVolume*> volumes;
+  for (const Caster& caster : casters)
+  {
+    if (auto* volume = vtkVolume::SafeDownCast(caster.Prop))
+    {
+      volumes.push_back(volume);
+    }
+  }
+  return volumes;
+}
+
 bool HasRenderPass(vtkInformation* info, vtkObjectBase* pass)
 {
   vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
@@ -240,6 +254,12 @@ struct vtkAbstractShadowMapPass::Internals
   bool WarnedResolution = false;
   std::string LastGLError;
   std::string WarnedGLError;
+  /// What kept a volume from casting, once warned: its data, or the GL.
+  std::string WarnedVolume;
+  std::string WarnedVolumeDraw;
+  /// Each shadowed light's share of the lights' intensity, for the volumes
+  /// that receive (ReceiverShader::InjectVolume).
+  std::vector<float> LightShares;
 };
 
 //------------------------------------------------------------------------------
@@ -572,6 +592,7 @@ void vtkAbstractShadowMapPass::CollectLights(vtkOpenGLRenderer* renderer)
   }
   r.WarnedTooManyLights = skipped > 0;
   this->WarnAboutLightSizes(clamped);
+  r.LightShares = shadowmaps::IntensityShares(renderer, r.Lights);
 }
 
 //------------------------------------------------------------------------------
@@ -637,6 +658,8 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   r.Programs.SetDrawnRadius(camera.DrawnRadius);
   shadowmaps::CollectProps(
     renderer, camera.Sizing, CASTS_SHADOWS(), r.Maps().Props, frame, r.Casters);
+  r.Maps().Volumes.KeepOnly(CastingVolumes(r.Casters));
+  this->WarnAboutVolume(shadowmaps::WhyAVolumeCannotCast(renderer, CASTS_SHADOWS()));
 
   const Aabb given = Aabb::FromBounds(this->SceneBounds);
   if (this->UseSceneBounds && given.IsUsable())
@@ -1019,7 +1042,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
           }
           if (ok && maps.Storage.Transmittance)
           {
-            ok = this->RenderTransmittance(renderer, layer, props, draws);
+            ok = this->RenderTransmittance(renderer, layer, light, light.Views[v], props, draws);
           }
           maps.Updates.Rendered(layer, std::move(plan));
           rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
@@ -1175,24 +1198,68 @@ bool vtkAbstractShadowMapPass::PeelSecondSurface(
 }
 
 //------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::RenderTransmittance(
-  vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws)
+bool vtkAbstractShadowMapPass::RenderTransmittance(vtkOpenGLRenderer* renderer, int layer,
+  const ShadowLight& light, const LightView& view, std::vector<vtkProp*>& casters, int& draws)
 {
   // The light camera still looks through the layer's view, and the casters
   // joined when the layer's depths were drawn.
   Internals& r = *this->Internal;
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   r.Programs.SetTransmitting(true);
-  const bool ok = r.Maps().Transmittances.Render(state, layer,
+  const bool ok = r.Maps().Transmittances.Render(window->GetState(), layer,
     [&]() {
       if (!casters.empty())
       {
         draws += this->DrawCasters(renderer, casters, r.TranslucentPass);
       }
+      draws += this->MarchVolumes(window, light, view, casters);
     },
     r.LastGLError);
   r.Programs.SetTransmitting(false);
   return ok;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::MarchVolumes(vtkOpenGLRenderWindow* window,
+  const ShadowLight& light, const LightView& view, const std::vector<vtkProp*>& casters)
+{
+  Internals& r = *this->Internal;
+  int marched = 0;
+  for (vtkProp* prop : casters)
+  {
+    auto* volume = vtkVolume::SafeDownCast(prop);
+    const auto caster = std::find_if(r.Casters.begin(), r.Casters.end(),
+      [prop](const Caster& c) { return c.Prop == prop; });
+    if (!volume || caster == r.Casters.end() || !caster->Translucent)
+    {
+      continue;
+    }
+    std::string why;
+    if (r.Maps().Volumes.Draw(window, volume, caster->Version, light, view, why))
+    {
+      ++marched;
+    }
+    else if (why != r.WarnedVolumeDraw)
+    {
+      // Its data did not fit the GL: it casts nothing, the others still do.
+      vtkWarningMacro(<< "A volume casts no shadow: " << why << ".");
+      r.WarnedVolumeDraw = why;
+    }
+  }
+  return marched;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::WarnAboutVolume(const std::string& why)
+{
+  // A volume that cannot be marched casts nothing; the others still do.
+  // Warned again once the scene has had none such.
+  Internals& r = *this->Internal;
+  if (!why.empty() && why != r.WarnedVolume)
+  {
+    vtkWarningMacro(<< "A volume casts no shadow: " << why << ".");
+  }
+  r.WarnedVolume = why;
 }
 
 //------------------------------------------------------------------------------
@@ -1392,6 +1459,12 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
   // Shaders first built by a caster draw are the ones the scene then uses.
   const ReceiverRole role =
     (r.Active || r.Casting) && prop ? this->ReceiverRoleOf(prop) : ReceiverRole::None;
+  if (vtkVolume::SafeDownCast(prop))
+  {
+    r.Shaders.InjectVolume(
+      fragmentShader, r.Lights, this->NumberOfShadowMapLayers, role != ReceiverRole::None);
+    return true;
+  }
   int unpatched = 0;
   const shadowmaps::CasterBranch branch = r.Shaders.Inject(vertexShader, geometryShader,
     fragmentShader, r.Lights, this->NumberOfShadowMapLayers, role != ReceiverRole::None,
@@ -1410,7 +1483,7 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
 
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   Internals& r = *this->Internal;
   if (r.Casting)
@@ -1423,6 +1496,11 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
     r.Programs.Receiving(
       program, r.Maps(), this->ReceiverUnits(), r.Frame.Resolution, this->NormalOffset,
       r.Representation);
+    if (vtkVolume::SafeDownCast(prop) && !r.LightShares.empty())
+    {
+      program->SetUniform1fv("vtkShadowVolumeLightShares", static_cast<int>(r.LightShares.size()),
+        r.LightShares.data());
+    }
   }
   return true;
 }

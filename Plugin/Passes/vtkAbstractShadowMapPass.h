@@ -522,8 +522,14 @@ private:
   int DrawCasters(
     vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters, vtkRenderPass* pass = nullptr);
   // What the layer's translucent casters let through, into its transmittance map.
-  bool RenderTransmittance(
-    vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws);
+  bool RenderTransmittance(vtkOpenGLRenderer* renderer, int layer,
+    const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view,
+    std::vector<vtkProp*>& casters, int& draws);
+  // The layer's casting volumes, marched into its bound transmittance map.
+  int MarchVolumes(vtkOpenGLRenderWindow* window, const shadowmaps::ShadowLight& light,
+    const shadowmaps::LightView& view, const std::vector<vtkProp*>& casters);
+  // Warns once why a volume's data cannot cast (`why` empty: every one can).
+  void WarnAboutVolume(const std::string& why);
   void ApplyCasterUniforms(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
   void ClearLayer(vtkOpenGLRenderer* renderer, bool linearDepths);
   void JoinRenderPasses(vtkProp* const* props, int count);

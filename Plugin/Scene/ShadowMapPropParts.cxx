@@ -8,6 +8,7 @@
 #include "vtkProp.h"
 #include "vtkProperty.h"
 #include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 namespace shadowmaps
 {
@@ -51,6 +52,14 @@ void RebuildShaders(vtkProp* prop)
     if (auto* actor = vtkActor::SafeDownCast(part))
     {
       actor->GetProperty()->Modified();
+    }
+    else if (auto* volume = vtkVolume::SafeDownCast(part))
+    {
+      // The ray caster rebuilds its shader when its volume property changes.
+      if (vtkVolumeProperty* property = volume->GetProperty())
+      {
+        property->Modified();
+      }
     }
   });
 }

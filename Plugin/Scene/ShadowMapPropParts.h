@@ -18,8 +18,8 @@ void ForEachPart(vtkProp* prop, const std::function<void(vtkProp*, vtkMatrix4x4*
 /// The mapper of an actor or a volume; null for other props.
 vtkAbstractMapper* MapperOf(vtkProp* prop);
 
-/// Makes every actor `prop` draws build its shaders again at its next draw
-/// (through its property, which leaves its buffers as they are).
+/// Makes every actor and volume `prop` draws build its shaders again at its
+/// next draw (through its property, which leaves its buffers as they are).
 void RebuildShaders(vtkProp* prop);
 } // namespace shadowmaps
 

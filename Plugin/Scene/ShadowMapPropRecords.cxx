@@ -2,6 +2,7 @@
 
 #include "ShadowMapCasterVersion.h"
 #include "ShadowMapPropParts.h"
+#include "ShadowMapVolumeReading.h"
 
 #include "vtkActor.h"
 #include "vtkCullerCollection.h"
@@ -70,12 +71,12 @@ const PropRecords::Record& PropRecords::Read(vtkProp* prop)
     record.CastingBounds.Max += glm::dvec3(reach);
   }
   // Volumes keep vtkProp's default HasOpaqueGeometry() but draw nothing into a
-  // depth map; as casters they would only re-render the maps on every transfer
-  // function edit.
-  const bool volume = vtkVolume::SafeDownCast(prop) != nullptr;
+  // depth map; those whose data can be marched cast into the transmittance maps.
+  auto* volume = vtkVolume::SafeDownCast(prop);
   record.DrawsIntoDepthMaps = prop->HasOpaqueGeometry() && !volume;
-  record.DrawsTranslucency =
-    prop->HasTranslucentPolygonalGeometry() && !volume && TranslucentByColorAlone(prop);
+  record.DrawsTranslucency = volume
+    ? CanMarchVolume(volume)
+    : prop->HasTranslucentPolygonalGeometry() && TranslucentByColorAlone(prop);
   return record;
 }
 

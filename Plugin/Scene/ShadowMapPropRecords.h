@@ -30,8 +30,9 @@ public:
     /// it draws at its points (ImpostorReach), which the scene camera sizes.
     Aabb CastingBounds;
     bool DrawsIntoDepthMaps = false;
-    /// It draws translucent polygons (VTK's translucent pass), which the
-    /// transmittance maps take.
+    /// It draws translucent polygons (VTK's translucent pass), or it is a
+    /// volume whose data can be marched (ShadowMapVolumeReading.h): the
+    /// transmittance maps take it.
     bool DrawsTranslucency = false;
     vtkMTimeType Version = 0;
   };

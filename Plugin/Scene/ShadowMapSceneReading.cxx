@@ -2,6 +2,7 @@
 
 #include "ShadowMapGlm.h"
 #include "ShadowMapPropRecords.h"
+#include "ShadowMapVolumeReading.h"
 
 #include "vtkCamera.h"
 #include "vtkInformation.h"
@@ -17,11 +18,13 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkVolume.h"
 
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace shadowmaps
 {
@@ -120,6 +123,30 @@ std::vector<ShadowLight> CollectShadowedLights(vtkRenderer* renderer,
 }
 
 //------------------------------------------------------------------------------
+std::vector<float> IntensityShares(vtkRenderer* renderer, const std::vector<ShadowLight>& lights)
+{
+  auto strength = [](vtkLight* light) {
+    const double* color = light->GetDiffuseColor();
+    return light->GetIntensity() * (0.2126 * color[0] + 0.7152 * color[1] + 0.0722 * color[2]);
+  };
+  double total = 0.0;
+  vtkCollectionSimpleIterator it;
+  vtkLightCollection* collection = renderer->GetLights();
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    total += light->GetSwitch() ? std::max(strength(light), 0.0) : 0.0;
+  }
+  std::vector<float> shares;
+  for (const ShadowLight& light : lights)
+  {
+    const double share = total > 0.0 ? std::max(strength(light.Light), 0.0) / total : 0.0;
+    shares.push_back(std::isfinite(share) ? static_cast<float>(share) : 0.0f);
+  }
+  return shares;
+}
+
+//------------------------------------------------------------------------------
 SceneCamera ReadSceneCamera(vtkRenderer* renderer, ShadowFrame& frame)
 {
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -146,6 +173,25 @@ bool AnyTranslucent(const std::vector<Caster>& casters)
 {
   return std::any_of(
     casters.begin(), casters.end(), [](const Caster& caster) { return caster.Translucent; });
+}
+
+//------------------------------------------------------------------------------
+std::string WhyAVolumeCannotCast(vtkRenderer* renderer, vtkInformationIntegerKey* castsShadows)
+{
+  std::string why;
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    auto* volume = vtkVolume::SafeDownCast(prop);
+    if (volume && volume->GetVisibility() && IsEnabled(prop->GetPropertyKeys(), castsShadows) &&
+      !CanMarchVolume(volume, &why))
+    {
+      return why;
+    }
+  }
+  return std::string();
 }
 
 //------------------------------------------------------------------------------

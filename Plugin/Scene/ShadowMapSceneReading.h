@@ -10,6 +10,7 @@
 
 #include "vtkType.h" // For vtkMTimeType
 
+#include <string>
 #include <vector>
 
 class vtkInformation;
@@ -32,13 +33,19 @@ struct Caster
   Aabb Bounds;
   vtkMTimeType Version = 0;
   /// What it draws into the maps: depth (opaque geometry), transmittance
-  /// (translucent polygons), or both (an assembly of both kinds).
+  /// (translucent polygons, or a volume marched), or both (an assembly of
+  /// both kinds).
   bool Opaque = true;
   bool Translucent = false;
 };
 
-/// Whether any of `casters` draws translucent polygons.
+/// Whether any of `casters` draws into the transmittance maps.
 bool AnyTranslucent(const std::vector<Caster>& casters);
+
+/// Why a visible volume of `renderer` that casts (`castsShadows`) cannot be
+/// marched (ShadowMapVolumeReading.h), for the first such volume; empty when
+/// every one can.
+std::string WhyAVolumeCannotCast(vtkRenderer* renderer, vtkInformationIntegerKey* castsShadows);
 
 /// Whether the transmittance maps hold what `prop`, drawn as a receiver,
 /// lets through itself where it is translucent: it casts (`castsShadows`),
@@ -76,6 +83,11 @@ double LightSizeOf(vtkLight* light, vtkInformationDoubleKey* key, bool* clamped 
 std::vector<ShadowLight> CollectShadowedLights(vtkRenderer* renderer,
   vtkInformationIntegerKey* castsShadows, vtkInformationDoubleKey* lightSize, int maximum,
   int& skipped, std::vector<vtkLight*>& clampedSizes);
+
+/// Each of `lights`' share of the intensity of `renderer`'s switched-on lights
+/// (intensity times the luminance of their colour), in their order; zeros
+/// when they have none.
+std::vector<float> IntensityShares(vtkRenderer* renderer, const std::vector<ShadowLight>& lights);
 
 /// The scene camera as the frame needs it.
 struct SceneCamera

@@ -5,7 +5,7 @@ equal their baselines; ParaView's plain render view (no plugin pass) leaves the
 shadow point lit, so the probes can fail; the light kit's key light is the only
 kit light that casts, and only while KeyLightShadows is on; a representation's
 Casts Shadows and Receives Shadows turn its part off; SunDiameter softens the
-sun's shadow.
+sun's shadow; translucent and volume representations cast partial shadows.
 
   xvfb-run -a pvpython Testing/ParaView/test_shadow_view.py PLUGIN OUTDIR
   (SHADOWMAPS_UPDATE_BASELINES=1 writes the baselines; look at them.)
@@ -309,6 +309,30 @@ for peeling in (1, 0):
 display.Opacity = 1.0
 check(rgb_at(view, render(view, "ParaViewShadowViewOpaqueRedAgain"), SHADOWED) == opaque,
       "opacity 1 again: the opaque shadow as it was")
+Delete(view)
+
+# A volume representation casts (docs/TRANSLUCENT.md): a wavelet shown as a
+# volume where the sphere was shades the ground under it, partly; opted out
+# of casting (its Casts Shadows), it shades nothing.
+view = make_view("ShadowRenderView")
+ground, sphere = show_scene(view)
+Hide(sphere, view)
+lit_png = render(view, "ParaViewShadowViewNoVolume")
+open_ground = luminance_at(view, lit_png, SHADOWED)
+wavelet = Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10])
+volume = Show(wavelet, view)
+volume.Representation = "Volume"
+ColorBy(volume, ("POINTS", "RTData"))
+volume.Scale = [0.1, 0.1, 0.1]
+volume.Position = [0.0, 0.0, 1.5]
+volume.ScalarOpacityUnitDistance = 0.5
+under_volume = luminance_at(view, render(view, "ParaViewShadowViewVolume"), SHADOWED)
+check(0.1 * open_ground < under_volume < 0.9 * open_ground,
+      f"the volume's shadow is partial (luminance {under_volume:.0f}, open ground {open_ground:.0f})")
+volume.CastsShadows = 0
+opted_out = luminance_at(view, render(view, "ParaViewShadowViewVolumeOptedOut"), SHADOWED)
+check(abs(opted_out - open_ground) < 2,
+      f"opted out, the volume shades nothing (luminance {opted_out:.0f}, open ground {open_ground:.0f})")
 Delete(view)
 
 print(f"{len(failures)} failures")

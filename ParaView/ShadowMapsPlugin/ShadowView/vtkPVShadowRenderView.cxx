@@ -6,6 +6,8 @@
 #include "vtkDepthShadowMapPass.h"
 #include "vtkDualDepthShadowMapPass.h"
 #include "vtkGeometryRepresentation.h"
+#include "vtkPVLODVolume.h"
+#include "vtkVolumeRepresentation.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkLight.h"
@@ -280,9 +282,12 @@ void vtkPVShadowRenderView::ApplyShadowRoles()
   {
     vtkDataRepresentation* representation = this->GetRepresentation(i);
     auto* composite = vtkCompositeRepresentation::SafeDownCast(representation);
-    auto* surface = vtkGeometryRepresentation::SafeDownCast(
-      composite ? composite->GetActiveRepresentation() : representation);
-    vtkProp* prop = surface ? surface->GetActor() : nullptr;
+    vtkDataRepresentation* active = composite ? composite->GetActiveRepresentation() : representation;
+    auto* surface = vtkGeometryRepresentation::SafeDownCast(active);
+    auto* volume = vtkVolumeRepresentation::SafeDownCast(active);
+    vtkProp* prop = surface ? static_cast<vtkProp*>(surface->GetActor())
+      : volume              ? static_cast<vtkProp*>(volume->GetActor())
+                            : nullptr;
     if (!prop)
     {
       continue;
