@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkOpenGLState;
 
@@ -33,6 +34,19 @@ public:
   /// when the layer cannot be bound.
   bool Render(vtkOpenGLState* state, int layer, const std::function<void()>& draw,
     std::string& error);
+
+  /// The first `layers` layers' texels (four floats each), and back
+  /// (TextureArray's): for the processes' combination.
+  bool ReadTexels(vtkOpenGLState* state, int layers, std::vector<float>& texels,
+    std::string& error) const
+  {
+    return this->Layers.ReadTexels(state, layers, texels, error);
+  }
+  bool WriteTexels(
+    vtkOpenGLState* state, int layers, const std::vector<float>& texels, std::string& error)
+  {
+    return this->Layers.WriteTexels(state, layers, texels, error);
+  }
 
   /// Binds the maps to `unit`, which it leaves active.
   void BindToUnit(vtkOpenGLState* state, int unit) const;

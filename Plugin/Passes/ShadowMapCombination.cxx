@@ -3,10 +3,12 @@
 #include "ShadowMapLight.h"
 #include "ShadowMapStoreFromLightDepths.h"
 #include "ShadowMapTextureArray.h"
+#include "ShadowMapTransmittance.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShadowMapExchange.h"
 #include "vtkShadowMapRepresentation.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace shadowmaps
@@ -98,5 +100,57 @@ bool CombineTexels(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+FrameAgreement AgreeOnFrame(vtkShadowMapExchange* exchange, bool interactive, bool translucent)
+{
+  // The least over the processes: 1 where every one is interactive; 0 where
+  // any has a translucent caster.
+  std::vector<float> answers = { interactive ? 1.0f : 0.0f, translucent ? 0.0f : 1.0f };
+  if (!exchange->MinimumOf(answers) || answers.size() != 2)
+  {
+    return { interactive, translucent };
+  }
+  return { answers[0] == 1.0f, answers[1] == 0.0f };
+}
+
+//------------------------------------------------------------------------------
+bool CombineTransmittances(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window,
+  TransmittanceMaps& maps, int layers, int resolution, bool& multiplied, std::string& error)
+{
+  // Every process makes both calls, of the agreed sizes, whatever it could
+  // read: the colours, then the depths with whether each read its maps.
+  const std::size_t count = static_cast<std::size_t>(resolution) * resolution * layers;
+  std::vector<float> texels;
+  const bool readable = maps.ReadTexels(window->GetState(), layers, texels, error) &&
+    texels.size() == 4 * count;
+  std::vector<float> colours(3 * count, 1.0f);
+  std::vector<float> depths(count + 1, 1.0f);
+  for (std::size_t i = 0; readable && i < count; ++i)
+  {
+    std::copy(texels.begin() + 4 * i, texels.begin() + 4 * i + 3, colours.begin() + 3 * i);
+    depths[i] = texels[4 * i + 3];
+  }
+  depths[count] = readable ? 0.0f : -1.0f;
+  multiplied = exchange->ProductOf(colours);
+  if (!exchange->MinimumOf(depths) || depths[count] < 0.0f)
+  {
+    if (readable)
+    {
+      error = "the transmittance maps could not be combined across processes";
+    }
+    return false;
+  }
+  if (!multiplied)
+  {
+    return true;
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    std::copy(colours.begin() + 3 * i, colours.begin() + 3 * i + 3, texels.begin() + 4 * i);
+    texels[4 * i + 3] = depths[i];
+  }
+  return maps.WriteTexels(window->GetState(), layers, texels, error);
 }
 } // namespace shadowmaps

@@ -17,6 +17,7 @@ struct MapStorage;
 struct ShadowFrame;
 class StoreFromLightDepths;
 class TextureArray;
+class TransmittanceMaps;
 
 /// How the processes' maps combine into the nearest surfaces over all of them.
 enum class Combination : int
@@ -48,6 +49,27 @@ bool GatherPropBounds(vtkShadowMapExchange* exchange, ShadowFrame& frame, bool s
 bool CombineTexels(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window, Combination how,
   TextureArray& maps, const MapStorage& storage, StoreFromLightDepths& lightDepths, int layers,
   int resolution, std::string& error);
+/// What every process agrees on at the start of every frame, in one
+/// collective: whether every one renders interactively, and whether any has a
+/// translucent caster (all then make transmittance maps, and combine them).
+struct FrameAgreement
+{
+  bool AllInteractive = false;
+  bool AnyTranslucent = false;
+};
+
+/// Called on every process every frame that has shadowed lights. Where the
+/// exchange fails, each process's own answers.
+FrameAgreement AgreeOnFrame(vtkShadowMapExchange* exchange, bool interactive, bool translucent);
+
+/// Called on every process once all rendered their `layers` transmittance
+/// layers of resolution^2 texels: the colours become their product over the
+/// processes (vtkShadowMapExchange::ProductOf), the depths the nearest, and
+/// are written back. `multiplied` false: the exchange multiplies nothing, and
+/// each process keeps its own maps. False, with `error`, when a process could
+/// not read its maps or the exchange fails.
+bool CombineTransmittances(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window,
+  TransmittanceMaps& maps, int layers, int resolution, bool& multiplied, std::string& error);
 } // namespace shadowmaps
 
 #endif

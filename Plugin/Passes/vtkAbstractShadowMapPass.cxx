@@ -257,6 +257,10 @@ struct vtkAbstractShadowMapPass::Internals
   /// What kept a volume from casting, once warned: its data, or the GL.
   std::string WarnedVolume;
   std::string WarnedVolumeDraw;
+  bool WarnedUnmultiplied = false;
+  /// Whether this process's casters (or, with an exchange, any process's)
+  /// draw into the transmittance maps.
+  bool TranslucentOnAnyProcess = false;
   /// Each shadowed light's share of the lights' intensity, for the volumes
   /// that receive (ReceiverShader::InjectVolume).
   std::vector<float> LightShares;
@@ -714,11 +718,16 @@ bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
   Internals& r = *this->Internal;
   shadowmaps::RendererMaps& maps = r.Maps();
   this->GatherPropBounds();
+  r.TranslucentOnAnyProcess = shadowmaps::AnyTranslucent(r.Casters);
   if (this->Exchange)
   {
     // The processes must fit the same views: interactive only if every one's
-    // window is (a plain MPI program raises one rank's update rate).
-    r.Frame.Interactive = !this->Exchange->AnyOf(!r.Frame.Interactive);
+    // window is (a plain MPI program raises one rank's update rate); and all
+    // make transmittance maps if any has a translucent caster.
+    const shadowmaps::FrameAgreement agreed = shadowmaps::AgreeOnFrame(
+      this->Exchange, r.Frame.Interactive, r.TranslucentOnAnyProcess);
+    r.Frame.Interactive = agreed.AllInteractive;
+    r.TranslucentOnAnyProcess = agreed.AnyTranslucent;
   }
   std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
   const bool stale = !maps.Updates.Current(signature);
@@ -864,7 +873,7 @@ void vtkAbstractShadowMapPass::ChooseStorage()
   }
   limits.MaximumSamples = std::max(r.MaximumSamples, 1);
   shadowmaps::CompleteStorage(maps.Storage, r.Lights, r.Casters, r.ClosedCasters, limits);
-  maps.Storage.Transmittance = shadowmaps::AnyTranslucent(r.Casters);
+  maps.Storage.Transmittance = r.TranslucentOnAnyProcess;
   this->NumberOfCasterPassesPerLayer =
     shadowmaps::CasterPassesPerLayer(maps.Storage) + (maps.Storage.Transmittance ? 1 : 0);
 }
@@ -1096,18 +1105,30 @@ bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* win
     return false;
   }
   const shadowmaps::Combination how = this->MapCombination();
-  if (how == shadowmaps::Combination::None)
+  if (how == shadowmaps::Combination::None && !r.WarnedUncombined)
   {
-    if (!r.WarnedUncombined)
-    {
-      vtkWarningMacro(<< "Maps of values other than light depths are not combined across "
-                         "processes; these maps hold each process's own casters.");
-      r.WarnedUncombined = true;
-    }
-    return true;
+    vtkWarningMacro(<< "Maps of values other than light depths are not combined across "
+                       "processes; these maps hold each process's own casters.");
+    r.WarnedUncombined = true;
   }
-  return shadowmaps::CombineTexels(this->Exchange, window, how, maps.Maps, maps.Storage,
-    maps.LightDepths, this->NumberOfShadowMapLayers, r.Frame.Resolution, r.LastGLError);
+  bool combined = how == shadowmaps::Combination::None ||
+    shadowmaps::CombineTexels(this->Exchange, window, how, maps.Maps, maps.Storage,
+      maps.LightDepths, this->NumberOfShadowMapLayers, r.Frame.Resolution, r.LastGLError);
+  if (maps.Storage.Transmittance)
+  {
+    // Agreed by every process (AgreeOnFrame): all make these calls.
+    bool multiplied = false;
+    combined = shadowmaps::CombineTransmittances(this->Exchange, window, maps.Transmittances,
+                 this->NumberOfShadowMapLayers, r.Frame.Resolution, multiplied, r.LastGLError) &&
+      combined;
+    if (!multiplied && !r.WarnedUnmultiplied)
+    {
+      vtkWarningMacro(<< "The exchange multiplies no transmittance maps (ProductOf): each "
+                         "process's translucent casters and volumes shade its own receivers only.");
+    }
+    r.WarnedUnmultiplied = !multiplied;
+  }
+  return combined;
 }
 
 //------------------------------------------------------------------------------

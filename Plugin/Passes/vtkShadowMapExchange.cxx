@@ -7,6 +7,12 @@ bool vtkShadowMapExchange::AllBoxes(std::vector<double>&)
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowMapExchange::ProductOf(std::vector<float>&)
+{
+  return false;
+}
+
+//------------------------------------------------------------------------------
 bool vtkShadowMapExchange::NearestTwoOf(std::vector<float>& pairs)
 {
   const std::size_t count = pairs.size() / 2;

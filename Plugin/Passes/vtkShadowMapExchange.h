@@ -46,6 +46,15 @@ public:
   virtual bool MinimumOf(std::vector<float>& values) = 0;
 
   /**
+   * Called on every process with arrays of the same size: each element becomes
+   * the product of that element over the processes (the transmittance maps'
+   * colours: what each process's translucent casters let through). The
+   * default multiplies nothing and returns false: the pass then keeps each
+   * process's transmittance maps as they are, with a warning. False on
+   * failure.
+   */
+  virtual bool ProductOf(std::vector<float>& values);
+  /**
    * Called on every process with arrays of the same size: pairs (x, y) of the
    * nearest depth x and the next one behind it y (or 1, far), such as a peeled
    * two-surface map's texels. Each pair becomes the nearest two over the

@@ -38,6 +38,7 @@ struct Wire
   {
     ANY_OF,
     MINIMUM_OF,
+    PRODUCT_OF,
     ALL_BOXES
   };
   struct Call
@@ -92,6 +93,32 @@ public:
     }
     std::transform(values.begin(), values.end(), call->Values.begin(), values.begin(),
       [](float mine, float theirs) { return std::min(mine, theirs); });
+    return true;
+  }
+
+  // An exchange that does not override ProductOf multiplies nothing (vtkShadowMapExchange's default).
+  bool Multiplies = true;
+
+  bool ProductOf(std::vector<float>& values) override
+  {
+    if (!this->Multiplies)
+    {
+      return this->Superclass::ProductOf(values);
+    }
+    ++this->Calls;
+    if (this->Sends)
+    {
+      this->Shared->Sent.push_back({ false, values, Wire::PRODUCT_OF });
+      return true;
+    }
+    const Wire::Call* call = this->Next(Wire::PRODUCT_OF);
+    if (!call || call->Values.size() != values.size())
+    {
+      this->Shared->Mismatch = true;
+      return false;
+    }
+    std::transform(values.begin(), values.end(), call->Values.begin(), values.begin(),
+      [](float mine, float theirs) { return mine * theirs; });
     return true;
   }
 
@@ -422,6 +449,48 @@ TEST(ShadowExchange, AChangeOnAnyProcessReRendersAll)
   EXPECT_LT(LuminanceAt(processes.B.Renderer, image, moved), 0.45 * LuminanceAt(processes.B.Renderer, image, left))
     << "the shadow moved with the sphere, and left its old place";
   processes.Release();
+}
+
+// Translucent casters on one process tint another's receivers: the
+// transmittance maps multiply their colours over the processes and keep the
+// nearest depth, every process making them once any has a translucent caster.
+TEST(ShadowExchange, TranslucentCastersOnAnotherProcessTintThisOnesGround)
+{
+  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(SunDirection);
+  const glm::dvec3 color(1.0, 0.3, 0.2);
+  double transmitted[3];
+  const double c[3] = { color.x, color.y, color.z };
+  vtkAbstractShadowMapPass::GetTransmittance(c, 0.5, transmitted);
+  for (const bool multiplies : { true, false })
+  {
+    TwoProcesses processes;
+    processes.A.Sphere->GetProperty()->SetColor(color.x, color.y, color.z);
+    processes.A.Sphere->GetProperty()->SetOpacity(0.5);
+    processes.ExchangeA->Multiplies = multiplies;
+    processes.ExchangeB->Multiplies = multiplies;
+    vtkNew<vtkDepthShadowMapPass> a;
+    vtkNew<vtkDepthShadowMapPass> b;
+    b->SetAnalysisViewToShadowFactor();
+    processes.Use(a, b, true);
+    ErrorCounter errors;
+    vtkSmartPointer<vtkImageData> image = processes.RenderBoth();
+    const glm::ivec3 factor = ColorAt(processes.B.Renderer, image, shadowed);
+    if (multiplies)
+    {
+      // The light crosses the sphere twice.
+      for (int k = 0; k < 3; ++k)
+      {
+        EXPECT_NEAR(factor[k] / 255.0, transmitted[k] * transmitted[k], 0.03) << "channel " << k;
+      }
+      EXPECT_EQ(errors.Warnings(), 0) << errors.Text();
+    }
+    else
+    {
+      EXPECT_EQ(factor, glm::ivec3(255)) << "each process keeps its own transmittance maps";
+      EXPECT_EQ(errors.Warnings(), 2) << "once on each process: " << errors.Text();
+    }
+    processes.Release();
+  }
 }
 
 // A receiver that casts no shadow moves on one process: the fits that follow

@@ -5,7 +5,9 @@ depth maps are combined, and rank 2 must still take part. The composited frame
 is compared with the same scene on one rank (both pieces, as two sources),
 written first by the `serial` run, for the uniform map, cascades and LiSPSM of depths,
 and the uniform map of dual depths and of moments. The representation's Casts Shadows
-and Receives Shadows reach every rank. The same holds with the pieces on three
+and Receives Shadows reach every rank. A translucent sphere on rank 1 and a
+volume split over the ranks shade rank 0's ground as on one rank (their
+transmittance maps multiplied over the ranks). The same holds with the pieces on three
 pvserver ranks behind a pvpython client (mode pvserver, port in argv[4]).
 
   xvfb-run -a pvbatch Testing/ParaView/test_parallel.py PLUGIN OUTDIR serial
@@ -155,6 +157,56 @@ for views_choice, storage in CASES:
               f"{what}: each frame whose sun moved all-reduces the maps once ({mebibytes:.0f} MiB)")
     Delete(view)
 
+
+# Translucent casters and volumes on other ranks shade rank 0's ground: the
+# transmittance maps multiply over the ranks (docs/TRANSLUCENT.md). A
+# half-transparent red sphere on rank 1 (rank 0 in the serial run), as a
+# source of its own; then a wavelet volume that every rank holds a piece of.
+def show_ground_and(view, sphere=True):
+    """The ground (rank 0) and, if `sphere`, the sphere as a source of its own
+    (rank 1 in parallel); returns the sphere's display."""
+    sphere_rank = 1 if SPLIT else 0
+    pieces = [(0, -1)] + ([(-1, sphere_rank)] if sphere else [])
+    displays = [Show(ProgrammableSource(OutputDataSetType="vtkPolyData",
+                                        Script=PIECES.replace("GROUND", str(g)).replace("SPHERE", str(s))),
+                     view) for g, s in pieces]
+    return displays[-1]
+
+
+view = make_view("ShadowRenderView")
+sphere_display = show_ground_and(view)
+sphere_display.AmbientColor = sphere_display.DiffuseColor = [1.0, 0.2, 0.2]
+sphere_display.Opacity = 0.5
+add_sun(view)
+png = render(view, "ParaViewParallelTranslucent_" + MODE)
+tinted, lit = testing.rgb_at(view, png, SHADOWED), testing.rgb_at(view, png, LIT)
+check(0.2 * lit[0] < tinted[0] < 0.9 * lit[0] and tinted[0] > tinted[2] + 20,
+      f"translucent red sphere on {RANKS}: a partial red shadow on the ground "
+      f"({tinted[0]:.0f} {tinted[1]:.0f} {tinted[2]:.0f}, lit {lit[0]:.0f})")
+if SPLIT:
+    check_same_image(os.path.join(OUT, "ParaViewParallelTranslucent_serial.png"), png,
+                     f"translucent sphere: the frame of {RANKS} equals the 1-rank frame")
+Delete(view)
+
+from paraview.simple import ColorBy, Wavelet  # noqa: E402
+view = make_view("ShadowRenderView")
+show_ground_and(view, sphere=False)
+volume = Show(Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10]), view)
+volume.Representation = "Volume"
+ColorBy(volume, ("POINTS", "RTData"))
+volume.Scale = [0.1, 0.1, 0.1]
+volume.Position = [0.0, 0.0, 1.5]
+volume.ScalarOpacityUnitDistance = 0.5
+add_sun(view)
+png = render(view, "ParaViewParallelVolume_" + MODE)
+under, open_ground = luminance_at(view, png, SHADOWED), luminance_at(view, png, LIT)
+check(0.1 * open_ground < under < 0.9 * open_ground,
+      f"volume on {RANKS}: its shadow is partial ({under:.0f}, open ground {open_ground:.0f})")
+if SPLIT:
+    serial = luminance_at(view, os.path.join(OUT, "ParaViewParallelVolume_serial.png"), SHADOWED)
+    check(abs(under - serial) < 4,
+          f"volume in pieces on {RANKS}: the shadow of the whole ({under:.0f} against {serial:.0f} on 1 rank)")
+Delete(view)
 
 print(f"{len(failures)} failures")
 if failures:

@@ -28,19 +28,31 @@ bool vtkPVShadowMapExchange::AnyOf(bool local)
 //------------------------------------------------------------------------------
 bool vtkPVShadowMapExchange::MinimumOf(std::vector<float>& values)
 {
+  return this->Reduce(values, vtkCommunicator::MIN_OP);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVShadowMapExchange::ProductOf(std::vector<float>& values)
+{
+  return this->Reduce(values, vtkCommunicator::PRODUCT_OP);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVShadowMapExchange::Reduce(std::vector<float>& values, int operation)
+{
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   // Not skipped for an empty array: the other processes would wait for this one.
   if (!controller || controller->GetNumberOfProcesses() < 2)
   {
     return true;
   }
-  std::vector<float> smallest(values.size());
+  std::vector<float> reduced(values.size());
   const double started = vtkTimerLog::GetUniversalTime();
   const int ok = controller->AllReduce(
-    values.data(), smallest.data(), static_cast<vtkIdType>(values.size()), vtkCommunicator::MIN_OP);
+    values.data(), reduced.data(), static_cast<vtkIdType>(values.size()), operation);
   this->SecondsReducing += vtkTimerLog::GetUniversalTime() - started;
   this->BytesReduced += static_cast<double>(values.size() * sizeof(float));
-  values.swap(smallest);
+  values.swap(reduced);
   return ok != 0;
 }
 

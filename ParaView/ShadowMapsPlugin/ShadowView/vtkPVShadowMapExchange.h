@@ -20,12 +20,13 @@ public:
 
   bool AnyOf(bool local) override;
   bool MinimumOf(std::vector<float>& values) override;
+  bool ProductOf(std::vector<float>& values) override;
   bool AllBoxes(std::vector<double>& boxes) override;
 
-  /** Bytes each process sent to MinimumOf over its life (the maps' reduction). */
+  /** Bytes each process sent to MinimumOf and ProductOf over its life (the maps' reductions). */
   vtkGetMacro(BytesReduced, double);
 
-  /** Seconds this process spent in MinimumOf over its life (waiting for the others included). */
+  /** Seconds this process spent in MinimumOf and ProductOf over its life (waiting for the others included). */
   vtkGetMacro(SecondsReducing, double);
 
 protected:
@@ -35,6 +36,9 @@ protected:
 private:
   vtkPVShadowMapExchange(const vtkPVShadowMapExchange&) = delete;
   void operator=(const vtkPVShadowMapExchange&) = delete;
+
+  // An all-reduction of `values` by vtkCommunicator's `operation`, timed.
+  bool Reduce(std::vector<float>& values, int operation);
 
   double BytesReduced = 0.0;
   double SecondsReducing = 0.0;
