@@ -91,6 +91,15 @@ bool MarchedVolume::Crosses(const glm::dvec3& origin, const glm::dvec3& directio
 }
 
 //------------------------------------------------------------------------------
+bool MarchedVolume::ClippedAway(const glm::dvec3& worldPoint) const
+{
+  return std::any_of(this->Volume.ClippingPlanes.begin(), this->Volume.ClippingPlanes.end(),
+    [&worldPoint](const glm::dvec4& plane) {
+      return glm::dot(glm::dvec3(plane), worldPoint) + plane.w < 0.0;
+    });
+}
+
+//------------------------------------------------------------------------------
 double MarchedVolume::ScalarAt(const glm::dvec3& dataPoint) const
 {
   const glm::dvec3 last = glm::dvec3(glm::max(this->Volume.Dimensions - 1, glm::ivec3(0)));
@@ -120,21 +129,26 @@ glm::dvec3 MarchedVolume::Transmittance(
   {
     return product;
   }
-  // World and data lengths along a line keep one ratio under the volume's
-  // affine matrix: steps of Step in data space.
-  const double worldPerParameter = glm::length(direction);
+  // Steps of Step in data space, whose lengths VTK's ray casters correct the
+  // opacity by (data and world lengths along a line keep one ratio under the
+  // volume's affine matrix).
   const double dataPerParameter =
     glm::length(glm::dvec3(this->WorldToData * glm::dvec4(direction, 0.0)));
   const double dataLength = (leave - enter) * dataPerParameter;
   const int steps = std::max(1, static_cast<int>(std::ceil(dataLength / this->Volume.Step)));
   const double dt = (leave - enter) / steps;
-  const double worldStep = dt * worldPerParameter;
+  const double dataStep = dt * dataPerParameter;
   const glm::dvec3 o = glm::dvec3(this->WorldToData * glm::dvec4(origin, 1.0));
   const glm::dvec3 d = glm::dvec3(this->WorldToData * glm::dvec4(direction, 0.0));
   const double scale = (TableSize - 1.0) / (this->Volume.High - this->Volume.Low);
   for (int i = 0; i < steps; ++i)
   {
-    const double s = this->ScalarAt(o + (enter + (i + 0.5) * dt) * d);
+    const double t = enter + (i + 0.5) * dt;
+    if (this->ClippedAway(origin + t * direction))
+    {
+      continue;
+    }
+    const double s = this->ScalarAt(o + t * d);
     if (std::isnan(s))
     {
       continue; // no data: nothing absorbs
@@ -142,7 +156,7 @@ glm::dvec3 MarchedVolume::Transmittance(
     const double position = std::min(std::max((s - this->Volume.Low) * scale, 0.0), TableSize - 1.0);
     const int k = std::min(static_cast<int>(position), TableSize - 2);
     const glm::dvec4 entry = glm::mix(this->Volume.Table[k], this->Volume.Table[k + 1], position - k);
-    product *= SliceTransmittance(glm::dvec3(entry), entry.w, worldStep, this->Volume.UnitDistance);
+    product *= SliceTransmittance(glm::dvec3(entry), entry.w, dataStep, this->Volume.UnitDistance);
     if (product == glm::dvec3(0.0))
     {
       break;

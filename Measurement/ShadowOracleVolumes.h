@@ -4,7 +4,8 @@
 // (vtkAbstractShadowMapPass::GetTransmittance) applied to thin slices: a
 // slice of thickness ds has the opacity VTK's ray casters give a sample,
 // 1 - (1 - a)^(ds / u) for the scalar opacity a and the property's
-// ScalarOpacityUnitDistance u, and the colour c of the colour transfer
+// ScalarOpacityUnitDistance u (both data lengths, as VTK's ray casters
+// measure them), and the colour c of the colour transfer
 // function, and lets (1 - alpha)(1 - alpha + alpha c) through. As the slices
 // thin this is exp(-integral of sigma (2 - c) ds) with sigma = -ln(1 - a) / u:
 // for white, exactly the transmittance VTK's compositing gives the eye.
@@ -51,6 +52,8 @@ private:
   bool Clip(const glm::dvec3& origin, const glm::dvec3& direction, double far, double& enter,
     double& leave) const;
   double ScalarAt(const glm::dvec3& dataPoint) const;
+  // Whether the mapper's clipping planes cut the sample at `worldPoint` away.
+  bool ClippedAway(const glm::dvec3& worldPoint) const;
 
   std::vector<float> Scalars; // x fastest
   /// The rest of the volume as the passes read it (its data pointers unset:

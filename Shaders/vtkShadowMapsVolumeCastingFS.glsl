@@ -16,11 +16,14 @@ uniform vec3 vtkVolumeTextureShift;
 uniform int vtkVolumePositional;
 uniform vec3 vtkVolumeLight;          // the light's position, or the direction it shines, in the box
 uniform vec3 vtkVolumeBoxSides;       // the box's sides in data lengths
-uniform mat3 vtkVolumeBoxToWorld;     // the box's linear part to world lengths
 uniform mat4 vtkVolumeBoxToLight;     // to positions relative to the light depth's origin
 uniform float vtkVolumeDataStep;      // the data length of a step
 uniform int vtkVolumeMostSteps;
-uniform float vtkVolumeUnitDistance;
+uniform float vtkVolumeUnitDistance;  // a data length, as the step's
+// The mapper's clipping planes in box coordinates: a sample p is kept where
+// dot(plane, vec4(p, 1)) >= 0.
+uniform int vtkVolumeClippingPlaneCount;
+uniform vec4 vtkVolumeClippingPlanes[6];
 //VTK::Output::Dec
 
 // Where the line p + t d, d of unit length, is inside the unit cube: [enter, leave].
@@ -37,6 +40,18 @@ vec2 vtkVolumeCrossing(vec3 p, vec3 d)
     }
   }
   return inside;
+}
+
+bool vtkVolumeClippedAway(vec3 p)
+{
+  for (int i = 0; i < vtkVolumeClippingPlaneCount; ++i)
+  {
+    if (dot(vtkVolumeClippingPlanes[i], vec4(p, 1.0)) < 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 void main()
@@ -65,14 +80,19 @@ void main()
   int steps = int(clamp(ceil(length(vtkVolumeBoxSides * span) / vtkVolumeDataStep), 1.0,
     float(vtkVolumeMostSteps)));
   vec3 step = span / float(steps);
-  float exponent = length(vtkVolumeBoxToWorld * step) / vtkVolumeUnitDistance;
+  float exponent = length(vtkVolumeBoxSides * step) / vtkVolumeUnitDistance;
   float tableScale = float(vtkVolumeTableSize - 1) / float(vtkVolumeTableSize);
   float tableShift = 0.5 / float(vtkVolumeTableSize);
   vec3 transmitted = vec3(1.0);
-  vec3 firstAbsorbing = vec3(-1.0);
+  bool absorbed = false;
+  vec3 firstAbsorbing = start;
   for (int i = 0; i < steps; ++i)
   {
     vec3 at = start + (float(i) + 0.5) * step;
+    if (vtkVolumeClippedAway(at))
+    {
+      continue;
+    }
     vec2 sampled = texture(vtkVolumeScalars, at * vtkVolumeTextureScale + vtkVolumeTextureShift).rg;
     if (sampled.g < 0.9999)
     {
@@ -81,8 +101,9 @@ void main()
     vec4 entry = texture(vtkVolumeTable, vec2(sampled.r * tableScale + tableShift, 0.5));
     float a = clamp(entry.a, 0.0, 1.0);
     float alpha = a >= 1.0 ? 1.0 : 1.0 - pow(1.0 - a, exponent);
-    if (alpha > 0.0 && firstAbsorbing.x < 0.0)
+    if (alpha > 0.0 && !absorbed)
     {
+      absorbed = true;
       firstAbsorbing = at - 0.5 * step;
     }
     transmitted *= vtkShadowTransmitted(entry.rgb, alpha);
@@ -91,7 +112,7 @@ void main()
       break;
     }
   }
-  if (firstAbsorbing.x < 0.0)
+  if (!absorbed)
   {
     discard;
   }

@@ -87,27 +87,46 @@ const std::pair<const char*, const char*> VolumeSamplePatterns[] = {
 
 // The volumes' receiver function: what reaches a sample of the lights, as a
 // factor of its colour. The maps' transmittance holds the volume's own
-// absorption at one depth per texel: a sample takes the opaque casters' shadows only.
+// absorption at one depth per texel: a sample takes the opaque casters'
+// shadows only. A sample has no surface: it faces each light (its normal
+// offset moves it toward the light, and a dual-depth map compares it with a
+// plane across the light's rays). Shadows change over the maps' texels while
+// samples step by half voxels: a ray takes the shadow at every
+// VTK_SHADOW_VOLUME_REUSE-th sample it composites and keeps it for the others.
 std::string VolumeFactorFunction(const std::vector<ShadowLight>& lights)
 {
   std::ostringstream function;
   function << "mat4 vtkShadowVolumeTextureToVC = mat4(1.0);\n"
+              "const int VTK_SHADOW_VOLUME_REUSE = 4;\n"
+              "int vtkShadowVolumeSamples = 0;\n"
+              "vec3 vtkShadowVolumeKept = vec3(1.0);\n"
               "uniform float vtkShadowVolumeLightShares[VTK_SHADOW_MAX_LIGHTS];\n"
+              "vec3 vtkShadowTowardLight(vec3 positionVC, int light)\n{\n"
+              "  vec3 relative = positionVC - vtkShadowLights[light].DepthOrigin;\n"
+              "  vec3 deeper = vtkShadowLights[light].DepthPlane.xyz +\n"
+              "    vtkShadowLights[light].DepthPerDistance * relative / max(length(relative), 1e-30);\n"
+              "  return length(deeper) > 0.0 ? -normalize(deeper) : vec3(0.0, 0.0, 1.0);\n}\n"
               "vec3 vtkShadowVolumeFactor(vec3 texturePosition)\n{\n"
+              "  if (vtkShadowVolumeSamples++ % VTK_SHADOW_VOLUME_REUSE != 0)\n  {\n"
+              "    return vtkShadowVolumeKept;\n  }\n"
               "  vec4 position = vtkShadowVolumeTextureToVC * vec4(texturePosition, 1.0);\n"
               "  vec3 vtkShadowPositionVC = position.xyz / position.w;\n"
-              "  vec3 vtkShadowNormalVC = vec3(0.0, 0.0, 1.0);\n"
+              "  vec3 vtkShadowNormalVC;\n"
               "#ifdef VTK_SHADOW_TRANSMITTANCE\n"
               "  vtkShadowTransmittanceReceived = false;\n"
               "#endif\n"
               "  vec3 factor = vec3(1.0);\n";
   for (int k = 0; k < static_cast<int>(lights.size()); ++k)
   {
-    function << "  factor -= vtkShadowVolumeLightShares[" << k
+    function << "  vtkShadowNormalVC = vtkShadowTowardLight(vtkShadowPositionVC, " << k << ");\n"
+             << "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
+                "  vtkShadowPlaneNormalVC = vtkShadowNormalVC;\n"
+                "#endif\n"
+             << "  factor -= vtkShadowVolumeLightShares[" << k
              << "] * (1.0 - vec3(vtkShadowFactor(" << ReceiverCallArguments(lights[k], k)
              << ")));\n";
   }
-  function << "  return factor;\n}\n";
+  function << "  vtkShadowVolumeKept = factor;\n  return factor;\n}\n";
   return function.str();
 }
 
@@ -284,7 +303,8 @@ bool ReceiverShader::InjectVolume(std::string& fragmentShader,
   // The sample's texture coordinates to the camera's view coordinates, once a ray.
   vtkShaderProgram::Substitute(fragmentShader, VolumeRayMarker,
     "  vtkShadowVolumeTextureToVC = inverse(vtkShadowViewToWorld) * in_volumeMatrix[0] *\n"
-    "    inverse(ip_inverseTextureDataAdjusted);\n");
+    "    inverse(ip_inverseTextureDataAdjusted);\n"
+    "  vtkShadowVolumeSamples = 0;\n");
   return true;
 }
 

@@ -73,10 +73,10 @@ public:
   static void MarkVolumeInjectionPoints(std::string& fragmentShader);
 
   /// Darkens each sample the ray caster composites by the shadows of the
-  /// opaque casters at the sample, light by light in proportion to each
-  /// shadowed light's share of the lights' intensity
-  /// (vtkShadowVolumeLightShares, set per draw): the sample's colour, lit or
-  /// not, is what the volume shows of the light. Without `receives`, or where
+  /// opaque casters at the sample (taken at every fourth sample of a ray),
+  /// light by light in proportion to each shadowed light's share of the
+  /// lights' intensity (vtkShadowVolumeLightShares, set per draw): the
+  /// sample's colour, lit or not, is what the volume shows of the light. Without `receives`, or where
   /// the shader composites no sample (maximum intensity and other blend
   /// modes), only loses the markers; returns whether it injected.
   static bool InjectVolume(std::string& fragmentShader, const std::vector<ShadowLight>& lights,

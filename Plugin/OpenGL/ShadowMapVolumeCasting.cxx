@@ -1,27 +1,33 @@
 #include "ShadowMapVolumeCasting.h"
 
+#include "ShadowMapTextureArray.h" // For ClearGLErrors, GLErrorText
 #include "ShadowMapVolumeReading.h"
 #include "vtkShadowMapsLightDepthFS.h"
 #include "vtkShadowMapsTransmittedFS.h"
 #include "vtkShadowMapsVolumeCastingFS.h"
 #include "vtkShadowMapsVolumeCastingVS.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkDataArray.h"
+#include "vtkImageData.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
+#include "vtkVolumeProperty.h"
 #include "ShadowMapVTKCompat.h" // For the GL functions
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/gtc/matrix_access.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 namespace shadowmaps
 {
@@ -47,23 +53,25 @@ std::vector<std::uint16_t> Quantized(const VolumeReading& reading, bool& withDef
 {
   vtkDataArray* scalars = reading.Scalars;
   const vtkIdType count = scalars->GetNumberOfTuples();
-  withDefined = false;
-  for (vtkIdType i = 0; i < count && !withDefined; ++i)
-  {
-    withDefined = std::isnan(scalars->GetComponent(i, 0));
-  }
-  const int channels = withDefined ? 2 : 1;
-  std::vector<std::uint16_t> texels(static_cast<std::size_t>(count) * channels);
   const double scale = 65535.0 / (reading.High - reading.Low);
+  std::vector<std::uint16_t> steps(static_cast<std::size_t>(count));
+  withDefined = false;
   for (vtkIdType i = 0; i < count; ++i)
   {
     const double s = scalars->GetComponent(i, 0);
+    withDefined = withDefined || std::isnan(s);
     const double step = std::isnan(s) ? 0.0 : std::round((s - reading.Low) * scale);
-    texels[i * channels] = static_cast<std::uint16_t>(std::min(std::max(step, 0.0), 65535.0));
-    if (withDefined)
-    {
-      texels[i * channels + 1] = std::isnan(s) ? 0 : 65535;
-    }
+    steps[i] = static_cast<std::uint16_t>(std::min(std::max(step, 0.0), 65535.0));
+  }
+  if (!withDefined)
+  {
+    return steps;
+  }
+  std::vector<std::uint16_t> texels(2 * steps.size());
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    texels[2 * i] = steps[i];
+    texels[2 * i + 1] = std::isnan(scalars->GetComponent(i, 0)) ? 0 : 65535;
   }
   return texels;
 }
@@ -71,6 +79,15 @@ std::vector<std::uint16_t> Quantized(const VolumeReading& reading, bool& withDef
 vtkSmartPointer<vtkTextureObject> ScalarTexture(
   vtkOpenGLRenderWindow* window, const VolumeReading& reading, std::string& error)
 {
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
+  if (glm::any(glm::greaterThan(reading.Dimensions, glm::ivec3(largest))))
+  {
+    error = "its " + std::to_string(reading.Dimensions.x) + " x " +
+      std::to_string(reading.Dimensions.y) + " x " + std::to_string(reading.Dimensions.z) +
+      " samples exceed this GL's 3D textures (" + std::to_string(largest) + " a side)";
+    return nullptr;
+  }
   bool withDefined = false;
   std::vector<std::uint16_t> texels = Quantized(reading, withDefined);
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
@@ -84,12 +101,16 @@ vtkSmartPointer<vtkTextureObject> ScalarTexture(
   texture->SetFormat(withDefined ? GL_RG : GL_RED);
   texture->SetDataType(GL_UNSIGNED_SHORT);
   vtkOpenGLState::ScopedglActiveTexture keepUnit(window->GetState());
-  if (!texture->Create3DFromRaw(static_cast<unsigned int>(reading.Dimensions.x),
-        static_cast<unsigned int>(reading.Dimensions.y),
-        static_cast<unsigned int>(reading.Dimensions.z), withDefined ? 2 : 1,
-        VTK_UNSIGNED_SHORT, texels.data()))
+  // VTK's own check of the upload reports nothing in release builds.
+  ClearGLErrors();
+  const bool created = texture->Create3DFromRaw(static_cast<unsigned int>(reading.Dimensions.x),
+    static_cast<unsigned int>(reading.Dimensions.y),
+    static_cast<unsigned int>(reading.Dimensions.z), withDefined ? 2 : 1, VTK_UNSIGNED_SHORT,
+    texels.data());
+  const GLenum code = glGetError();
+  if (!created || code != GL_NO_ERROR)
   {
-    error = "the volume's scalars do not fit a 3D texture";
+    error = "its scalars do not fit a 3D texture (" + GLErrorText(code) + ")";
     return nullptr;
   }
   if (!withDefined)
@@ -148,6 +169,23 @@ void TextureMapping(const VolumeReading& reading, glm::dvec3& scale, glm::dvec3&
   }
 }
 
+// The mapper's clipping planes in box coordinates (a plane p of world
+// points x, p . (x, 1) >= 0 kept, is (boxToWorld^T p) of box points).
+void SetClippingPlanes(
+  vtkShaderProgram* program, const std::vector<glm::dvec4>& planes, const glm::dmat4& boxToWorld)
+{
+  std::array<float, 4 * MostVolumeClippingPlanes> packed{};
+  const int count = static_cast<int>(std::min<std::size_t>(planes.size(), MostVolumeClippingPlanes));
+  for (int i = 0; i < count; ++i)
+  {
+    const glm::vec4 inBox(glm::transpose(boxToWorld) * planes[i]);
+    std::copy(glm::value_ptr(inBox), glm::value_ptr(inBox) + 4, packed.begin() + 4 * i);
+  }
+  program->SetUniformi("vtkVolumeClippingPlaneCount", count);
+  program->SetUniform4fv("vtkVolumeClippingPlanes", MostVolumeClippingPlanes,
+    packed.data());
+}
+
 // The light in the box's coordinates: its position, or the direction it shines.
 glm::dvec3 LightInBox(const ShadowLight& light, const glm::dmat4& worldToBox)
 {
@@ -163,45 +201,55 @@ VolumeCasters::~VolumeCasters() = default;
 
 //------------------------------------------------------------------------------
 VolumeCasters::Uploaded* VolumeCasters::Upload(
-  vtkOpenGLRenderWindow* window, vtkVolume* volume, vtkMTimeType version, std::string& error)
+  vtkOpenGLRenderWindow* window, vtkVolume* volume, VolumeReading& reading, std::string& error)
 {
-  Uploaded& uploaded = this->Volumes[volume];
-  if (uploaded.Volume == volume && uploaded.Version == version && uploaded.Scalars)
-  {
-    return &uploaded;
-  }
-  uploaded = Uploaded();
-  VolumeReading reading;
-  if (!ReadVolume(volume, reading, error))
+  if (!ReadVolumeLayout(volume, reading, error))
   {
     return nullptr;
   }
-  uploaded.Scalars = ScalarTexture(window, reading, error);
-  uploaded.Table = uploaded.Scalars ? TableTexture(window, reading, error) : nullptr;
+  Uploaded& uploaded = this->Volumes[volume];
+  if (uploaded.Volume != volume)
+  {
+    uploaded = Uploaded(); // another volume where a deleted one was
+    uploaded.Volume = volume;
+  }
+  const std::array<vtkMTimeType, 3> scalarsKey = { { volume->GetMapper()->GetMTime(),
+    reading.Image->GetMTime(), reading.Scalars->GetMTime() } };
+  if (uploaded.ScalarsKey != scalarsKey)
+  {
+    uploaded.ScalarsKey = scalarsKey;
+    uploaded.Failure.clear();
+    uploaded.Scalars = ScalarTexture(window, reading, uploaded.Failure);
+    uploaded.TableKey = 0; // the table runs over the scalars' range
+  }
+  if (!uploaded.Failure.empty())
+  {
+    error = uploaded.Failure;
+    return nullptr;
+  }
+  const vtkMTimeType tableKey = volume->GetProperty()->GetMTime();
+  if (uploaded.TableKey != tableKey || !uploaded.Table)
+  {
+    TabulateTransferFunctions(volume, reading);
+    uploaded.Table = TableTexture(window, reading, error);
+    uploaded.TableKey = uploaded.Table ? tableKey : 0;
+  }
   if (!uploaded.Table)
   {
-    uploaded = Uploaded();
     return nullptr;
   }
-  uploaded.Volume = volume;
-  uploaded.Version = version;
-  uploaded.BoxToData = glm::scale(glm::translate(glm::dmat4(1.0), reading.BoxMin),
-    glm::max(reading.BoxMax - reading.BoxMin, glm::dvec3(1e-30)));
-  uploaded.DataToWorld = reading.DataToWorld;
-  TextureMapping(reading, uploaded.TextureScale, uploaded.TextureShift);
-  uploaded.Step = reading.Step;
   uploaded.Bytes = static_cast<std::size_t>(uploaded.Scalars->GetTuples()) *
       static_cast<std::size_t>(uploaded.Scalars->GetComponents()) * sizeof(std::uint16_t) +
-    reading.Table.size() * 4 * sizeof(float);
-  uploaded.UnitDistance = reading.UnitDistance;
+    static_cast<std::size_t>(VolumeTableSize) * 4 * sizeof(float);
   return &uploaded;
 }
 
 //------------------------------------------------------------------------------
-bool VolumeCasters::Draw(vtkOpenGLRenderWindow* window, vtkVolume* volume, vtkMTimeType version,
+bool VolumeCasters::Draw(vtkOpenGLRenderWindow* window, vtkVolume* volume,
   const ShadowLight& light, const LightView& view, std::string& error)
 {
-  Uploaded* uploaded = this->Upload(window, volume, version, error);
+  VolumeReading reading;
+  Uploaded* uploaded = this->Upload(window, volume, reading, error);
   if (!uploaded)
   {
     return false;
@@ -213,28 +261,31 @@ bool VolumeCasters::Draw(vtkOpenGLRenderWindow* window, vtkVolume* volume, vtkMT
     error = "the volumes' marcher does not compile";
     return false;
   }
-  const glm::dmat4 boxToWorld = uploaded->DataToWorld * uploaded->BoxToData;
+  const glm::dmat4 boxToData = glm::scale(glm::translate(glm::dmat4(1.0), reading.BoxMin),
+    glm::max(reading.BoxMax - reading.BoxMin, glm::dvec3(1e-30)));
+  const glm::dmat4 boxToWorld = reading.DataToWorld * boxToData;
   // Positions relative to the light depth's origin, composed in double.
   const glm::dmat4 boxToLight = glm::translate(glm::dmat4(1.0), -light.Depth.Origin) * boxToWorld;
   const glm::dmat4 boxToClip = view.ViewProjection() * boxToWorld;
-  const glm::dvec3 sides = glm::dvec3(uploaded->BoxToData[0][0], uploaded->BoxToData[1][1],
-    uploaded->BoxToData[2][2]);
+  const glm::dvec3 sides(boxToData[0][0], boxToData[1][1], boxToData[2][2]);
+  glm::dvec3 textureScale;
+  glm::dvec3 textureShift;
+  TextureMapping(reading, textureScale, textureShift);
   glm::mat4 toClip(boxToClip);
   glm::mat4 toLight(boxToLight);
-  glm::mat3 toWorld(boxToWorld);
   program->SetUniformMatrix4x4("vtkVolumeBoxToClip", glm::value_ptr(toClip));
   program->SetUniformMatrix4x4("vtkVolumeBoxToLight", glm::value_ptr(toLight));
-  program->SetUniformMatrix3x3("vtkVolumeBoxToWorld", glm::value_ptr(toWorld));
   program->SetUniform3f("vtkVolumeLight",
     glm::value_ptr(glm::vec3(LightInBox(light, glm::inverse(boxToWorld)))));
   program->SetUniformi("vtkVolumePositional", light.Kind == LightKind::Directional ? 0 : 1);
   program->SetUniform3f("vtkVolumeBoxSides", glm::value_ptr(glm::vec3(sides)));
-  program->SetUniform3f("vtkVolumeTextureScale", glm::value_ptr(glm::vec3(uploaded->TextureScale)));
-  program->SetUniform3f("vtkVolumeTextureShift", glm::value_ptr(glm::vec3(uploaded->TextureShift)));
-  program->SetUniformf("vtkVolumeDataStep", static_cast<float>(uploaded->Step));
+  program->SetUniform3f("vtkVolumeTextureScale", glm::value_ptr(glm::vec3(textureScale)));
+  program->SetUniform3f("vtkVolumeTextureShift", glm::value_ptr(glm::vec3(textureShift)));
+  program->SetUniformf("vtkVolumeDataStep", static_cast<float>(reading.Step));
   program->SetUniformi("vtkVolumeMostSteps", MostVolumeSteps);
-  program->SetUniformf("vtkVolumeUnitDistance", static_cast<float>(uploaded->UnitDistance));
+  program->SetUniformf("vtkVolumeUnitDistance", static_cast<float>(reading.UnitDistance));
   program->SetUniformi("vtkVolumeTableSize", VolumeTableSize);
+  SetClippingPlanes(program, reading.ClippingPlanes, boxToWorld);
   program->SetUniform4f("vtkShadowLightDepthPlane", glm::value_ptr(glm::vec4(light.Depth.Plane)));
   program->SetUniformf("vtkShadowLightDepthPerDistance", static_cast<float>(light.Depth.PerDistance));
   uploaded->Scalars->Activate();

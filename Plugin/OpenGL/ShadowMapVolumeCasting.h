@@ -11,6 +11,7 @@
 
 #include "ShadowMapFocusing.h"   // For LightView
 #include "ShadowMapLight.h"      // For ShadowLight
+#include "ShadowMapVolumeReading.h" // For VolumeReading
 
 #include "vtkNew.h"
 #include "vtkTextureObject.h" // For vtkSmartPointer<vtkTextureObject>
@@ -19,6 +20,7 @@
 #include "vtkType.h"
 #include "vtkWeakPointer.h"
 
+#include <array>
 #include <cstddef>
 #include <map>
 #include <string>
@@ -41,12 +43,12 @@ public:
   VolumeCasters(const VolumeCasters&) = delete;
   VolumeCasters& operator=(const VolumeCasters&) = delete;
 
-  /// Draws what `volume` (of caster version `version`) lets through into the
+  /// Draws what `volume` lets through into the
   /// bound transmittance layer, whose blending is set, seen through `view`
   /// of `light`. False, with `error`, when its data cannot be marched or a GL
   /// object cannot be made; nothing is drawn then.
-  bool Draw(vtkOpenGLRenderWindow* window, vtkVolume* volume, vtkMTimeType version,
-    const ShadowLight& light, const LightView& view, std::string& error);
+  bool Draw(vtkOpenGLRenderWindow* window, vtkVolume* volume, const ShadowLight& light,
+    const LightView& view, std::string& error);
 
   /// Frees the textures of every volume but `kept` (the frame's casters).
   void KeepOnly(const std::vector<vtkVolume*>& kept);
@@ -57,24 +59,26 @@ public:
   std::size_t GetMemoryBytes() const;
 
 private:
-  /// A volume's data as its marcher reads it.
+  /// A volume's data as its marcher reads it. The scalars are read again only
+  /// when they change (the mapper, its input or the array), the transfer
+  /// functions when the property changes; the placement and clipping planes
+  /// at every draw.
   struct Uploaded
   {
     vtkWeakPointer<vtkVolume> Volume;
-    vtkMTimeType Version = 0;
+    std::array<vtkMTimeType, 3> ScalarsKey{ { 0, 0, 0 } };
+    vtkMTimeType TableKey = 0;
     vtkSmartPointer<vtkTextureObject> Scalars;
     vtkSmartPointer<vtkTextureObject> Table;
-    /// The unit cube to data coordinates, and the world matrix of those.
-    glm::dmat4 BoxToData{ 1.0 };
-    glm::dmat4 DataToWorld{ 1.0 };
-    glm::dvec3 TextureScale{ 1.0 };
-    glm::dvec3 TextureShift{ 0.0 };
-    double Step = 1.0;
-    double UnitDistance = 1.0;
+    /// Why the scalars could not be made into a texture, kept while they
+    /// stay the same (empty: they could).
+    std::string Failure;
     std::size_t Bytes = 0;
   };
 
-  Uploaded* Upload(vtkOpenGLRenderWindow* window, vtkVolume* volume, vtkMTimeType version,
+  /// The volume's textures, made or kept, and its reading (its table only
+  /// when made anew); null with `error` when it cannot be marched.
+  Uploaded* Upload(vtkOpenGLRenderWindow* window, vtkVolume* volume, VolumeReading& reading,
     std::string& error);
 
   std::map<vtkVolume*, Uploaded> Volumes;

@@ -1248,15 +1248,14 @@ int vtkAbstractShadowMapPass::MarchVolumes(vtkOpenGLRenderWindow* window,
   int marched = 0;
   for (vtkProp* prop : casters)
   {
+    // Only the volumes that can be marched cast (PropRecords).
     auto* volume = vtkVolume::SafeDownCast(prop);
-    const auto caster = std::find_if(r.Casters.begin(), r.Casters.end(),
-      [prop](const Caster& c) { return c.Prop == prop; });
-    if (!volume || caster == r.Casters.end() || !caster->Translucent)
+    if (!volume)
     {
       continue;
     }
     std::string why;
-    if (r.Maps().Volumes.Draw(window, volume, caster->Version, light, view, why))
+    if (r.Maps().Volumes.Draw(window, volume, light, view, why))
     {
       ++marched;
     }

@@ -8,7 +8,10 @@
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -20,6 +23,33 @@ namespace shadowmaps
 {
 namespace
 {
+// Why the way `volume` is drawn is not what the marcher models (empty: it is).
+std::string UnmarchableDrawing(vtkVolume* volume)
+{
+  // A vtkMultiVolume's matrix and property are its first input's, in the
+  // place of all of them (the class lives in a module the passes do not need).
+  if (volume->IsA("vtkMultiVolume"))
+  {
+    return "a vtkMultiVolume";
+  }
+  auto* mapper = vtkVolumeMapper::SafeDownCast(volume->GetMapper());
+  if (mapper && mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    return "a volume drawn by another blend mode than composite";
+  }
+  if (mapper && mapper->GetCropping())
+  {
+    return "a volume with cropping";
+  }
+  vtkPlaneCollection* planes = volume->GetMapper()->GetClippingPlanes();
+  if (planes && planes->GetNumberOfItems() > MostVolumeClippingPlanes)
+  {
+    return "a volume with more than " + std::to_string(MostVolumeClippingPlanes) +
+      " clipping planes";
+  }
+  return std::string();
+}
+
 // The image and scalars `volume`'s mapper shows, when they can be marched;
 // otherwise null, with why.
 vtkImageData* MarchableImage(vtkVolume* volume, vtkDataArray*& scalars, std::string& why)
@@ -30,6 +60,11 @@ vtkImageData* MarchableImage(vtkVolume* volume, vtkDataArray*& scalars, std::str
   if (!image)
   {
     why = "a volume of other data than image data";
+    return nullptr;
+  }
+  why = UnmarchableDrawing(volume);
+  if (!why.empty())
+  {
     return nullptr;
   }
   int cellFlag = 0;
@@ -59,9 +94,12 @@ vtkImageData* MarchableImage(vtkVolume* volume, vtkDataArray*& scalars, std::str
   }
   return image;
 }
+} // namespace
 
-void Tabulate(vtkVolumeProperty* property, VolumeReading& reading)
+//------------------------------------------------------------------------------
+void TabulateTransferFunctions(vtkVolume* volume, VolumeReading& reading)
 {
+  vtkVolumeProperty* property = volume->GetProperty();
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   const bool rgb = property->GetColorChannels(0) == 3;
   reading.Table.resize(VolumeTableSize);
@@ -80,7 +118,6 @@ void Tabulate(vtkVolumeProperty* property, VolumeReading& reading)
     reading.Table[k] = glm::dvec4(color, opacity->GetValue(s));
   }
 }
-} // namespace
 
 //------------------------------------------------------------------------------
 bool CanMarchVolume(vtkVolume* volume, std::string* why)
@@ -96,7 +133,7 @@ bool CanMarchVolume(vtkVolume* volume, std::string* why)
 }
 
 //------------------------------------------------------------------------------
-bool ReadVolume(vtkVolume* volume, VolumeReading& reading, std::string& why)
+bool ReadVolumeLayout(vtkVolume* volume, VolumeReading& reading, std::string& why)
 {
   if (!volume->GetMapper())
   {
@@ -104,11 +141,12 @@ bool ReadVolume(vtkVolume* volume, VolumeReading& reading, std::string& why)
     return false;
   }
   volume->GetMapper()->Update();
-  if (!CanMarchVolume(volume, &why))
+  reading.Image = volume->GetProperty() ? MarchableImage(volume, reading.Scalars, why) : nullptr;
+  if (!reading.Image)
   {
+    why = volume->GetProperty() ? why : "a volume without a property";
     return false;
   }
-  reading.Image = MarchableImage(volume, reading.Scalars, why);
   int dimensions[3];
   reading.Image->GetDimensions(dimensions);
   reading.Dimensions = glm::ivec3(dimensions[0], dimensions[1], dimensions[2]);
@@ -123,11 +161,31 @@ bool ReadVolume(vtkVolume* volume, VolumeReading& reading, std::string& why)
   reading.Low = std::isfinite(range[0]) ? range[0] : 0.0;
   reading.High = std::isfinite(range[1]) && range[1] > reading.Low ? range[1] : reading.Low + 1.0;
   vtkVolumeProperty* property = volume->GetProperty();
-  Tabulate(property, reading);
   reading.UnitDistance = std::max(property->GetScalarOpacityUnitDistance(0), 1e-30);
+  reading.ClippingPlanes.clear();
+  if (vtkPlaneCollection* planes = volume->GetMapper()->GetClippingPlanes())
+  {
+    planes->InitTraversal();
+    while (vtkPlane* plane = planes->GetNextItem())
+    {
+      const glm::dvec3 normal = ToGlm(plane->GetNormal());
+      reading.ClippingPlanes.emplace_back(normal, -glm::dot(normal, ToGlm(plane->GetOrigin())));
+    }
+  }
   const glm::dvec3 sides = glm::abs(reading.Spacing);
   const double smallest = std::min(sides.x, std::min(sides.y, sides.z));
   reading.Step = smallest > 0.0 ? smallest / VolumeStepsPerVoxel : 1.0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool ReadVolume(vtkVolume* volume, VolumeReading& reading, std::string& why)
+{
+  if (!ReadVolumeLayout(volume, reading, why))
+  {
+    return false;
+  }
+  TabulateTransferFunctions(volume, reading);
   return true;
 }
 } // namespace shadowmaps

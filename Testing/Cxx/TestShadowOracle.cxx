@@ -29,6 +29,7 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -1498,6 +1499,25 @@ TEST(ShadowOracle, VolumeOfUniformOpacityLetsThroughItsOpticalDepth)
   std::string error;
   ASSERT_TRUE(oracle.Build(view.Renderer, error)) << error;
   EXPECT_EQ(oracle.GetNumberOfVolumes(), 0u);
+}
+
+TEST(ShadowOracle, VolumeClippingPlanesCutWhatItAbsorbs)
+{
+  const double opacity = 0.2;
+  const double unitDistance = 0.5;
+  View view;
+  AddGround(view, 8.0);
+  vtkSmartPointer<vtkVolume> volume = AddUniformVolume(view, 2.0, opacity, unitDistance, glm::dvec3(1.0));
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(0.0, 0.0, 0.0);
+  plane->SetNormal(1.0, 0.0, 0.0); // keeps x >= 0
+  volume->GetMapper()->AddClippingPlane(plane);
+  vtkLight* sun = nullptr;
+  Oracle oracle = BuildUnderOverheadSun(view, sun);
+  const std::vector<glm::vec3> transmittance = oracle.Transmittance(GroundLine(-3.0, 3.0, 61), sun);
+  const double expected = std::pow(1.0 - opacity, 2.0 / unitDistance);
+  ExpectTransmittance(transmittance[GroundIndex(0.5)], glm::dvec3(expected), 0.005, "kept half");
+  ExpectTransmittance(transmittance[GroundIndex(-0.5)], glm::dvec3(1.0), 0.0, "half cut away");
 }
 
 TEST(ShadowOracle, SliceTransmittanceIsTheSurfaceModelOfTheCorrectedOpacity)

@@ -11,10 +11,12 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkSmartVolumeMapper.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include "ShadowMapVTKCompat.h" // For the GL functions
 
 #include <gtest/gtest.h>
 
@@ -253,5 +255,80 @@ TEST(ShadowVolumes, VolumesReceiveTheOpaqueCastersShadowsUnderEveryPass)
     EXPECT_NEAR(LuminanceAt(scene.Renderer, image, shadowedTop),
       LuminanceAt(scene.Renderer, image, litTop), 3.0)
       << pass.first << ", opted out";
+  }
+}
+
+TEST(ShadowVolumes, OpacityIsPerDataLengthAsVTKDrawsIt)
+{
+  // Stretched twice along z by its matrix, the volume is twice as thick in
+  // the world but not in its data: VTK's ray caster corrects the opacity by
+  // data lengths, and so does its shadow.
+  const double opacity = 0.2;
+  const double unitDistance = 0.5;
+  const glm::dvec3 color(1.0, 0.5, 0.0);
+  SlabScene scene;
+  UniformVolume volume(scene.Renderer, opacity, unitDistance, color);
+  volume.Volume->SetScale(1.0, 1.0, 2.0);
+  const glm::dvec3 centre(0.0, 0.0, 5.0);
+  const double worldLength = 2.0 / std::abs(SunDirection.z);
+  const double dataLength =
+    glm::length(glm::dvec3(SunDirection.x, SunDirection.y, 0.5 * SunDirection.z)) * worldLength;
+  vtkNew<vtkDepthShadowMapPass> pass;
+  ExpectNear(scene.Measured(scene.Render(pass), scene.GroundUnder(centre)),
+    OpticalDepthModel(opacity, unitDistance, color, dataLength), 0.03, "stretched volume");
+}
+
+TEST(ShadowVolumes, ClippingPlanesCutTheShadowAndFollowAPlaneMovedInPlace)
+{
+  SlabScene scene;
+  UniformVolume volume(scene.Renderer, 0.5, 0.5, { 1.0, 1.0, 1.0 });
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(0.0, 0.0, 0.0);
+  plane->SetNormal(1.0, 0.0, 0.0); // keeps x >= 0
+  volume.Mapper->AddClippingPlane(plane);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  const glm::dvec3 keptHalf = scene.GroundUnder({ 1.0, 0.0, 2.5 });
+  const glm::dvec3 cutHalf = scene.GroundUnder({ -1.0, 0.0, 2.5 });
+  auto image = scene.Render(pass);
+  EXPECT_LT(scene.Measured(image, keptHalf).x, 0.5) << "the half kept casts";
+  ExpectNear(scene.Measured(image, cutHalf), glm::dvec3(1.0), 0.0, "the half cut away");
+  // The plane moved in place (as a widget does): the shadow follows.
+  plane->SetNormal(-1.0, 0.0, 0.0);
+  image = scene.Render(pass);
+  EXPECT_LT(scene.Measured(image, cutHalf).x, 0.5) << "the other half now casts";
+  ExpectNear(scene.Measured(image, keptHalf), glm::dvec3(1.0), 0.0, "and this one no more");
+}
+
+TEST(ShadowVolumes, OtherBlendModesAndOversizedVolumesCastNothingAndSaySo)
+{
+  SlabScene scene;
+  UniformVolume volume(scene.Renderer, 0.5, 0.5, { 1.0, 1.0, 1.0 });
+  vtkNew<vtkDepthShadowMapPass> pass;
+  pass->SetAnalysisViewToShadowFactor();
+  scene.Renderer->SetPass(pass);
+  const glm::dvec3 under = scene.GroundUnder(volume.Centre);
+  volume.Mapper->SetBlendModeToMaximumIntensity();
+  {
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Warnings(), 1) << errors.Text();
+    EXPECT_NE(errors.Text().find("blend mode"), std::string::npos) << errors.Text();
+    ExpectNear(scene.Measured(image, under), glm::dvec3(1.0), 0.0, "maximum intensity");
+  }
+  volume.Mapper->SetBlendModeToComposite();
+  EXPECT_LT(scene.Measured(RenderAndCapture(scene.Window), under).x, 0.9) << "composite again";
+  // More samples a side than this GL's 3D textures hold.
+  int largest = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
+  volume.Image->SetDimensions(largest + 1, 2, 2);
+  volume.Image->SetSpacing(4.0 / largest, 4.0, 1.0);
+  volume.Image->AllocateScalars(VTK_FLOAT, 1);
+  vtkFloatArray::SafeDownCast(volume.Image->GetPointData()->GetScalars())->FillValue(1.0f);
+  {
+    ErrorCounter errors;
+    auto image = RenderAndCapture(scene.Window);
+    EXPECT_NE(errors.Text().find("exceed this GL's 3D textures"), std::string::npos)
+      << errors.Text();
+    ExpectNear(scene.Measured(image, under), glm::dvec3(1.0), 0.0, "oversized");
   }
 }

@@ -196,7 +196,7 @@ volume.Representation = "Volume"
 ColorBy(volume, ("POINTS", "RTData"))
 volume.Scale = [0.1, 0.1, 0.1]
 volume.Position = [0.0, 0.0, 1.5]
-volume.ScalarOpacityUnitDistance = 0.5
+volume.ScalarOpacityUnitDistance = 20.0  # data lengths: the wavelet is 20 across
 add_sun(view)
 png = render(view, "ParaViewParallelVolume_" + MODE)
 under, open_ground = luminance_at(view, png, SHADOWED), luminance_at(view, png, LIT)

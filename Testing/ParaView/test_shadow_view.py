@@ -325,7 +325,7 @@ volume.Representation = "Volume"
 ColorBy(volume, ("POINTS", "RTData"))
 volume.Scale = [0.1, 0.1, 0.1]
 volume.Position = [0.0, 0.0, 1.5]
-volume.ScalarOpacityUnitDistance = 0.5
+volume.ScalarOpacityUnitDistance = 20.0  # data lengths: the wavelet is 20 across
 under_volume = luminance_at(view, render(view, "ParaViewShadowViewVolume"), SHADOWED)
 check(0.1 * open_ground < under_volume < 0.9 * open_ground,
       f"the volume's shadow is partial (luminance {under_volume:.0f}, open ground {open_ground:.0f})")
