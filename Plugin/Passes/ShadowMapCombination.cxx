@@ -105,14 +105,12 @@ bool CombineTexels(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window
 //------------------------------------------------------------------------------
 FrameAgreement AgreeOnFrame(vtkShadowMapExchange* exchange, bool interactive, bool translucent)
 {
-  // The least over the processes: 1 where every one is interactive; 0 where
-  // any has a translucent caster.
-  std::vector<float> answers = { interactive ? 1.0f : 0.0f, translucent ? 0.0f : 1.0f };
-  if (!exchange->MinimumOf(answers) || answers.size() != 2)
-  {
-    return { interactive, translucent };
-  }
-  return { answers[0] == 1.0f, answers[1] == 0.0f };
+  // Two flags, not one reduction of both: MinimumOf is the maps' texels' (a
+  // parallel renderer may count what it carries as the maps' traffic).
+  FrameAgreement agreed;
+  agreed.AllInteractive = !exchange->AnyOf(!interactive);
+  agreed.AnyTranslucent = exchange->AnyOf(translucent);
+  return agreed;
 }
 
 //------------------------------------------------------------------------------

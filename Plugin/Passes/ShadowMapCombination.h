@@ -49,17 +49,16 @@ bool GatherPropBounds(vtkShadowMapExchange* exchange, ShadowFrame& frame, bool s
 bool CombineTexels(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window, Combination how,
   TextureArray& maps, const MapStorage& storage, StoreFromLightDepths& lightDepths, int layers,
   int resolution, std::string& error);
-/// What every process agrees on at the start of every frame, in one
-/// collective: whether every one renders interactively, and whether any has a
-/// translucent caster (all then make transmittance maps, and combine them).
+/// What every process agrees on at the start of every frame: whether every
+/// one renders interactively, and whether any has a translucent caster (all
+/// then make transmittance maps, and combine them).
 struct FrameAgreement
 {
   bool AllInteractive = false;
   bool AnyTranslucent = false;
 };
 
-/// Called on every process every frame that has shadowed lights. Where the
-/// exchange fails, each process's own answers.
+/// Called on every process every frame that has shadowed lights (two AnyOf).
 FrameAgreement AgreeOnFrame(vtkShadowMapExchange* exchange, bool interactive, bool translucent);
 
 /// Called on every process once all rendered their `layers` transmittance

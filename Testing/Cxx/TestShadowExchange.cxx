@@ -258,8 +258,9 @@ TEST(ShadowExchange, ACasterOnAnotherProcessShadowsThisOnesGround)
     if (exchange)
     {
       EXPECT_LT(dark, 0.45 * bright) << "the sphere lives on the other process";
-      EXPECT_EQ(processes.ExchangeB->Calls, 6) << "the props' boxes, all interactive, any "
-                                                  "changed, any failed, the maps' shape, the depths";
+      EXPECT_EQ(processes.ExchangeB->Calls, 7)
+        << "the props' boxes, all interactive, any translucent, any changed, any failed, the "
+           "maps' shape, the depths";
     }
     else
     {

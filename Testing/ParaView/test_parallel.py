@@ -195,7 +195,9 @@ volume = Show(Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10]), view)
 volume.Representation = "Volume"
 ColorBy(volume, ("POINTS", "RTData"))
 volume.Scale = [0.1, 0.1, 0.1]
-volume.Position = [0.0, 0.0, 1.5]
+# ParaView 5.13 renamed Position Translation.
+setattr(volume, "Translation" if volume.GetProperty("Translation") is not None else "Position",
+        [0.0, 0.0, 1.5])
 volume.ScalarOpacityUnitDistance = 20.0  # data lengths: the wavelet is 20 across
 add_sun(view)
 png = render(view, "ParaViewParallelVolume_" + MODE)

@@ -324,7 +324,9 @@ volume = Show(wavelet, view)
 volume.Representation = "Volume"
 ColorBy(volume, ("POINTS", "RTData"))
 volume.Scale = [0.1, 0.1, 0.1]
-volume.Position = [0.0, 0.0, 1.5]
+# ParaView 5.13 renamed Position Translation.
+setattr(volume, "Translation" if volume.GetProperty("Translation") is not None else "Position",
+        [0.0, 0.0, 1.5])
 volume.ScalarOpacityUnitDistance = 20.0  # data lengths: the wavelet is 20 across
 under_volume = luminance_at(view, render(view, "ParaViewShadowViewVolume"), SHADOWED)
 check(0.1 * open_ground < under_volume < 0.9 * open_ground,
