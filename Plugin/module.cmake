@@ -90,6 +90,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapVolumeCasting.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
+    Plugin/Passes/ShadowMapFramePolicy.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
     Plugin/Passes/ShadowMapPassShaders.cxx
     Plugin/Passes/ShadowMapProgramUniforms.cxx

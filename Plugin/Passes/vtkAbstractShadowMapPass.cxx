@@ -7,6 +7,7 @@
 #include "ShadowMapPropRecords.h"
 #include "ShadowMapCasting.h"
 #include "ShadowMapCombination.h"
+#include "ShadowMapFramePolicy.h"
 #include "ShadowMapClosedSurfaces.h"
 #include "ShadowMapGlm.h"
 #include "ShadowMapLayerContent.h"
@@ -197,8 +198,8 @@ struct vtkAbstractShadowMapPass::Internals
   }
   shadowmaps::MapView MapView;
   shadowmaps::ClosedCasters ClosedCasters;
-  bool WarnedUncombined = false;
-  bool WarnedUngatheredBounds = false;
+  // What each frame renders, and across processes.
+  shadowmaps::FramePolicy Policy;
 
   // The maps of each renderer (and eye) that draws through the pass; Maps()
   // are the ones of the frame being rendered.
@@ -257,7 +258,6 @@ struct vtkAbstractShadowMapPass::Internals
   /// What kept a volume from casting, once warned: its data, or the GL.
   std::string WarnedVolume;
   std::string WarnedVolumeDraw;
-  bool WarnedUnmultiplied = false;
   /// Whether this process's casters (or, with an exchange, any process's)
   /// draw into the transmittance maps.
   bool TranslucentOnAnyProcess = false;
@@ -683,56 +683,17 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
 }
 
 //------------------------------------------------------------------------------
-std::vector<vtkMTimeType> vtkAbstractShadowMapPass::MapSignature(vtkOpenGLRenderer* renderer)
-{
-  const Internals& r = *this->Internal;
-  shadowmaps::MapInputs inputs;
-  int origin[2];
-  renderer->GetTiledSizeAndOrigin(&inputs.ViewportWidth, &inputs.ViewportHeight, origin, origin + 1);
-  inputs.PassTime = this->GetMTime();
-  inputs.LightsTime = renderer->GetLights()->GetMTime();
-  inputs.PropsTime = renderer->GetViewProps()->GetMTime();
-  return shadowmaps::MapUpdates::Signature(inputs, r.Frame, r.Lights, r.Casters);
-}
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::GatherPropBounds()
-{
-  Internals& r = *this->Internal;
-  if (!this->Exchange)
-  {
-    return;
-  }
-  const bool given = this->UseSceneBounds && Aabb::FromBounds(this->SceneBounds).IsUsable();
-  if (!shadowmaps::GatherPropBounds(this->Exchange, r.Frame, given) && !given &&
-    !r.WarnedUngatheredBounds)
-  {
-    vtkWarningMacro(<< "The exchange gathers no prop bounds and no scene bounds are given "
-                       "(SetSceneBounds): the processes' views may differ.");
-    r.WarnedUngatheredBounds = true;
-  }
-}
-
-//------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   shadowmaps::RendererMaps& maps = r.Maps();
-  this->GatherPropBounds();
-  r.TranslucentOnAnyProcess = shadowmaps::AnyTranslucent(r.Casters);
-  if (this->Exchange)
-  {
-    // The processes must fit the same views: interactive only if every one's
-    // window is (a plain MPI program raises one rank's update rate); and all
-    // make transmittance maps if any has a translucent caster.
-    const shadowmaps::FrameAgreement agreed = shadowmaps::AgreeOnFrame(
-      this->Exchange, r.Frame.Interactive, r.TranslucentOnAnyProcess);
-    r.Frame.Interactive = agreed.AllInteractive;
-    r.TranslucentOnAnyProcess = agreed.AnyTranslucent;
-  }
-  std::vector<vtkMTimeType> signature = this->MapSignature(renderer);
-  const bool stale = !maps.Updates.Current(signature);
-  // Every process asks every frame: another one's casters may have moved.
-  if (!(this->Exchange ? this->Exchange->AnyOf(stale) : stale))
+  r.Policy.SetExchange(this->Exchange);
+  const bool boundsGiven = this->UseSceneBounds && Aabb::FromBounds(this->SceneBounds).IsUsable();
+  r.TranslucentOnAnyProcess = r.Policy.BeginFrame(r.Frame, r.Casters, boundsGiven);
+  this->WarnAboutPolicy();
+  std::vector<vtkMTimeType> signature = shadowmaps::FramePolicy::Signature(
+    renderer, this->GetMTime(), r.Frame, r.Lights, r.Casters);
+  if (!r.Policy.MustRender(maps.Updates, signature))
   {
     // CollectLights rebuilt the lights without views; the maps hold these.
     r.Lights = maps.Updates.GetRenderedLights();
@@ -995,34 +956,19 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     this->ReserveTextureUnits(renderer);
     r.Casting = true;
     r.CastingState = &casterState;
-    const std::vector<glm::dvec3> visible = this->ShadowReachCulling
-      ? shadowmaps::IntersectFrustumWithBox(
-          r.Frame.CameraProjection * r.Frame.CameraView, r.Frame.SceneBounds)
-      : std::vector<glm::dvec3>();
-    // While the user drags, views stay put as the camera turns (kept by
-    // vtkShadowMapViews::InteractiveView, or snapped to a grid): a layer
-    // re-rendered then takes every caster in its view, so that casters the
-    // camera brings into reach later in the drag are already drawn. Not where
-    // InteractiveTexelRatio 1 asks drags to render as still frames do, where
-    // every layer is combined anew each frame, or where coarse mip levels would
-    // average the extra casters into what receivers see.
-    const bool drawsAllInView = this->GetViews()->MayKeepViews(r.Frame) &&
-      combination == shadowmaps::Combination::None && !maps.Storage.Mipmaps;
+    shadowmaps::LayerRules rules;
+    rules.ReachCulling = this->ShadowReachCulling;
+    rules.ViewsMayBeKept = this->GetViews()->MayKeepViews(r.Frame);
+    rules.NormalOffsetTexels = this->NormalOffset;
+    rules.PostProcessingFollowsFilterScale = r.Representation->GetPostProcessingFollowsFilterScale();
+    r.Policy.BeginLayers(r.Frame, maps.Storage, rules);
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
       {
         const int layer = light.FirstLayer + static_cast<int>(v);
-        shadowmaps::LayerRequest request;
-        request.Layer = layer;
-        request.Light = &light;
-        request.View = v;
-        request.Visible = &visible;
-        request.NormalOffsetTexels = this->NormalOffset;
-        request.PostProcessingFollowsFilterScale =
-          r.Representation->GetPostProcessingFollowsFilterScale();
-        request.DrawsAllInView = drawsAllInView;
-        shadowmaps::LayerPlan plan = maps.Updates.Plan(r.Frame, r.Casters, request);
+        shadowmaps::LayerPlan plan =
+          maps.Updates.Plan(r.Frame, r.Casters, r.Policy.RequestFor(light, v));
         if (!plan.Render)
         {
           continue;
@@ -1079,56 +1025,26 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 shadowmaps::Combination vtkAbstractShadowMapPass::MapCombination() const
 {
-  const Internals& r = *this->Internal;
-  return this->Exchange ? shadowmaps::CombinationOf(r.Maps().Storage)
-                        : shadowmaps::Combination::None;
+  return this->Internal->Policy.CombinationFor(this->Internal->Maps().Storage);
 }
 
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* window, bool ok)
 {
   Internals& r = *this->Internal;
-  shadowmaps::RendererMaps& maps = r.Maps();
-  if (!this->Exchange)
-  {
-    return ok;
-  }
-  // Every process that is updating its maps calls the same collectives in the
-  // same order, whatever failed where: first whether any failed, then (all
-  // having chosen the same storage) the maps' shape, then their texels.
-  if (this->Exchange->AnyOf(!ok))
-  {
-    if (ok)
-    {
-      r.LastGLError = "another process could not render its shadow maps";
-    }
-    return false;
-  }
-  const shadowmaps::Combination how = this->MapCombination();
-  if (how == shadowmaps::Combination::None && !r.WarnedUncombined)
-  {
-    vtkWarningMacro(<< "Maps of values other than light depths are not combined across "
-                       "processes; these maps hold each process's own casters.");
-    r.WarnedUncombined = true;
-  }
-  bool combined = how == shadowmaps::Combination::None ||
-    shadowmaps::CombineTexels(this->Exchange, window, how, maps.Maps, maps.Storage,
-      maps.LightDepths, this->NumberOfShadowMapLayers, r.Frame.Resolution, r.LastGLError);
-  if (maps.Storage.Transmittance)
-  {
-    // Agreed by every process (AgreeOnFrame): all make these calls.
-    bool multiplied = false;
-    combined = shadowmaps::CombineTransmittances(this->Exchange, window, maps.Transmittances,
-                 this->NumberOfShadowMapLayers, r.Frame.Resolution, multiplied, r.LastGLError) &&
-      combined;
-    if (!multiplied && !r.WarnedUnmultiplied)
-    {
-      vtkWarningMacro(<< "The exchange multiplies no transmittance maps (ProductOf): each "
-                         "process's translucent casters and volumes shade its own receivers only.");
-    }
-    r.WarnedUnmultiplied = !multiplied;
-  }
+  const bool combined = r.Policy.Combine(
+    window, r.Maps(), this->NumberOfShadowMapLayers, r.Frame.Resolution, ok, r.LastGLError);
+  this->WarnAboutPolicy();
   return combined;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::WarnAboutPolicy()
+{
+  for (const std::string& warning : this->Internal->Policy.TakeWarnings())
+  {
+    vtkWarningMacro(<< warning);
+  }
 }
 
 //------------------------------------------------------------------------------

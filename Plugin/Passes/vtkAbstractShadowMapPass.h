@@ -63,7 +63,7 @@
 
 #include <memory> // For std::unique_ptr
 #include <string> // For ReportGLFailure
-#include <vector> // For MapSignature
+#include <vector> // For the casters and light views
 
 class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
@@ -472,13 +472,6 @@ private:
    * still be made current, and forgets that window.
    */
   void ForgetContext();
-  std::vector<vtkMTimeType> MapSignature(vtkOpenGLRenderer* renderer);
-  /**
-   * With an exchange: the fits' prop bounds become every process's
-   * (vtkShadowMapExchange::AllBoxes), and without given scene bounds, the scene
-   * bounds their union.
-   */
-  void GatherPropBounds();
   bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
   int UsableResolution();
   // The transmittance maps as the storage asks (none without translucent casters).
@@ -495,14 +488,15 @@ private:
    */
   void UpdateShaders(vtkOpenGLRenderer* renderer);
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
-  /** How the current storage combines across processes; None without an exchange. */
+  /** How the current storage combines across processes (shadowmaps::FramePolicy). */
   shadowmaps::Combination MapCombination() const;
   /**
-   * With an exchange, on every process that updates its maps: agrees with the
-   * others on whether all rendered them (`ok` here), then combines the maps
-   * (MapCombination, shadowmaps::CombineTexels). Without one, returns `ok`.
+   * On every process that updates its maps: shadowmaps::FramePolicy::Combine
+   * (without an exchange, returns `ok`).
    */
   bool CombineAcrossProcesses(vtkOpenGLRenderWindow* window, bool ok);
+  // Warns what the frame policy found to warn about (each once).
+  void WarnAboutPolicy();
   bool PostProcessShadowMaps(
     vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered);
   int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,
