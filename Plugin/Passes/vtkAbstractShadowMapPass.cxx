@@ -660,10 +660,10 @@ void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* render
   const shadowmaps::SceneCamera camera = shadowmaps::ReadSceneCamera(renderer, frame);
   r.SceneCameraParallel = camera.Parallel;
   r.Programs.SetDrawnRadius(camera.DrawnRadius);
-  shadowmaps::CollectProps(
+  const std::string unmarchedVolume = shadowmaps::CollectProps(
     renderer, camera.Sizing, CASTS_SHADOWS(), r.Maps().Props, frame, r.Casters);
   r.Maps().Volumes.KeepOnly(CastingVolumes(r.Casters));
-  this->WarnAboutVolume(shadowmaps::WhyAVolumeCannotCast(renderer, CASTS_SHADOWS()));
+  this->WarnAboutVolume(unmarchedVolume);
 
   const Aabb given = Aabb::FromBounds(this->SceneBounds);
   if (this->UseSceneBounds && given.IsUsable())

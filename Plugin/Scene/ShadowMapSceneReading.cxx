@@ -176,25 +176,6 @@ bool AnyTranslucent(const std::vector<Caster>& casters)
 }
 
 //------------------------------------------------------------------------------
-std::string WhyAVolumeCannotCast(vtkRenderer* renderer, vtkInformationIntegerKey* castsShadows)
-{
-  std::string why;
-  vtkCollectionSimpleIterator it;
-  vtkPropCollection* props = renderer->GetViewProps();
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    auto* volume = vtkVolume::SafeDownCast(prop);
-    if (volume && volume->GetVisibility() && IsEnabled(prop->GetPropertyKeys(), castsShadows) &&
-      !CanMarchVolume(volume, &why))
-    {
-      return why;
-    }
-  }
-  return std::string();
-}
-
-//------------------------------------------------------------------------------
 bool HoldsItsOwnTransmittance(vtkProp* prop, vtkInformationIntegerKey* castsShadows)
 {
   auto* actor = vtkActor::SafeDownCast(prop);
@@ -208,10 +189,11 @@ bool HoldsItsOwnTransmittance(vtkProp* prop, vtkInformationIntegerKey* castsShad
 }
 
 //------------------------------------------------------------------------------
-void CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
+std::string CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
   vtkInformationIntegerKey* castsShadows, PropRecords& records, ShadowFrame& frame,
   std::vector<Caster>& casters)
 {
+  std::string unmarchedVolume;
   casters.clear();
   frame.PropBounds.clear();
   frame.SceneBounds = Aabb();
@@ -239,13 +221,25 @@ void CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
     }
     frame.SceneBounds.Add(record.Bounds);
     frame.PropBounds.push_back(record.Bounds);
-    if ((record.DrawsIntoDepthMaps || record.DrawsTranslucency) &&
-      IsEnabled(prop->GetPropertyKeys(), castsShadows))
+    if (!IsEnabled(prop->GetPropertyKeys(), castsShadows))
+    {
+      continue;
+    }
+    if (record.DrawsIntoDepthMaps || record.DrawsTranslucency)
     {
       casters.push_back({ prop, record.CastingBounds, record.Version, record.DrawsIntoDepthMaps,
         record.DrawsTranslucency });
     }
+    else if (auto* volume = vtkVolume::SafeDownCast(prop))
+    {
+      std::string why;
+      if (unmarchedVolume.empty() && !CanMarchVolume(volume, &why))
+      {
+        unmarchedVolume = why;
+      }
+    }
   }
   records.EndFrame();
+  return unmarchedVolume;
 }
 } // namespace shadowmaps

@@ -42,11 +42,6 @@ struct Caster
 /// Whether any of `casters` draws into the transmittance maps.
 bool AnyTranslucent(const std::vector<Caster>& casters);
 
-/// Why a visible volume of `renderer` that casts (`castsShadows`) cannot be
-/// marched (ShadowMapVolumeReading.h), for the first such volume; empty when
-/// every one can.
-std::string WhyAVolumeCannotCast(vtkRenderer* renderer, vtkInformationIntegerKey* castsShadows);
-
 /// Whether the transmittance maps hold what `prop`, drawn as a receiver,
 /// lets through itself where it is translucent: it casts (`castsShadows`),
 /// with the same faces and colours toward the light as toward the camera (an
@@ -104,10 +99,11 @@ struct SceneCamera
 SceneCamera ReadSceneCamera(vtkRenderer* renderer, ShadowFrame& frame);
 
 /// The visible props' bounds into `frame` (SceneBounds, PropBounds) and the
-/// casters among them (props that draw opaque or translucent polygons and do
-/// not opt out by `castsShadows`), through `records`, which reads a prop again
-/// only when it changed.
-void CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
+/// casters among them (props that draw opaque or translucent polygons, or
+/// volumes that can be marched, and do not opt out by `castsShadows`), through
+/// `records`, which reads a prop again only when it changed. Returns why the
+/// first volume that would cast cannot be marched (empty: none such).
+std::string CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
   vtkInformationIntegerKey* castsShadows, PropRecords& records, ShadowFrame& frame,
   std::vector<Caster>& casters);
 } // namespace shadowmaps
