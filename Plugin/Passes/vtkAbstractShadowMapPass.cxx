@@ -277,6 +277,10 @@ vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
   this->Internal->Representation = defaultRepresentation;
   this->Internal->Use = std::make_unique<shadowmaps::RendererUse>(
     [this](vtkRenderer* renderer) { this->ReleaseMapsOf(renderer); });
+  // The scene draws into one colour buffer; the volume ray caster, drawing at a
+  // coarser image sample distance, draws into as many as the last pass on the
+  // volume says.
+  this->SetActiveDrawBuffers(1);
 }
 
 //------------------------------------------------------------------------------
@@ -557,7 +561,14 @@ void vtkAbstractShadowMapPass::LeaveRenderPasses()
   Internals& r = *this->Internal;
   for (vtkProp* prop : r.Joined)
   {
-    prop->GetPropertyKeys()->Remove(vtkOpenGLRenderPass::RenderPasses(), this);
+    vtkInformation* keys = prop->GetPropertyKeys();
+    keys->Remove(vtkOpenGLRenderPass::RenderPasses(), this);
+    // An empty list left behind tells VTK 9.1's volume ray caster that a pass
+    // is still on the volume, whose last entry it then reads past the list.
+    if (keys->Length(vtkOpenGLRenderPass::RenderPasses()) == 0)
+    {
+      keys->Remove(vtkOpenGLRenderPass::RenderPasses());
+    }
   }
   r.Joined.clear();
 }

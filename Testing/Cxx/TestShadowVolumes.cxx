@@ -8,6 +8,7 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkFloatArray.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkPiecewiseFunction.h"
@@ -330,5 +331,34 @@ TEST(ShadowVolumes, OtherBlendModesAndOversizedVolumesCastNothingAndSaySo)
     EXPECT_NE(errors.Text().find("exceed this GL's 3D textures"), std::string::npos)
       << errors.Text();
     ExpectNear(scene.Measured(image, under), glm::dvec3(1.0), 0.0, "oversized");
+  }
+}
+
+TEST(ShadowVolumes, ImageSampledVolumesDrawWithTheShadowsAndAfterThem)
+{
+  // VTK's ray caster, drawing at a coarser image sample distance (as its
+  // automatic adjustment does while the user drags), asks the last render pass
+  // on the volume how many draw buffers it draws into; once the pass is gone,
+  // a key left empty made VTK 9.1 read past its end.
+  SlabScene scene;
+  UniformVolume volume(scene.Renderer, 0.5, 0.5, { 1.0, 0.5, 0.0 });
+  vtkNew<vtkGPUVolumeRayCastMapper> gpu;
+  gpu->SetInputData(volume.Image);
+  gpu->SetAutoAdjustSampleDistances(0);
+  volume.Volume->SetMapper(gpu);
+  vtkNew<vtkDepthShadowMapPass> pass;
+  const glm::dvec3 top = volume.Centre + glm::dvec3(0.0, 0.0, 0.5);
+  const glm::ivec3 plain = ColorAt(scene.Renderer, RenderAndCapture(scene.Window), top);
+  for (const double sampleDistance : { 1.0, 2.0 })
+  {
+    gpu->SetImageSampleDistance(static_cast<float>(sampleDistance));
+    const glm::ivec3 shadowed = ColorAt(scene.Renderer, scene.Render(pass, false), top);
+    scene.Renderer->SetPass(nullptr);
+    const glm::ivec3 after = ColorAt(scene.Renderer, RenderAndCapture(scene.Window), top);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(shadowed[c], plain[c], 6) << "with the pass, sample distance " << sampleDistance;
+      EXPECT_NEAR(after[c], plain[c], 6) << "after it, sample distance " << sampleDistance;
+    }
   }
 }
