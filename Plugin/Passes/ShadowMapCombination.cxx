@@ -114,6 +114,19 @@ FrameAgreement AgreeOnFrame(vtkShadowMapExchange* exchange, bool interactive, bo
 }
 
 //------------------------------------------------------------------------------
+bool AgreeOnShape(vtkShadowMapExchange* exchange, int resolution, int layers, Combination how,
+  bool transmittance)
+{
+  // Each value and its negation: the least of both is their range's ends.
+  const float kind = static_cast<float>(how);
+  const float transmits = transmittance ? 1.0f : 0.0f;
+  std::vector<float> shape = { float(resolution), -float(resolution), float(layers),
+    -float(layers), kind, -kind, transmits, -transmits };
+  return exchange->MinimumOf(shape) && shape.size() == 8 && shape[0] == -shape[1] &&
+    shape[2] == -shape[3] && shape[4] == -shape[5] && shape[6] == -shape[7];
+}
+
+//------------------------------------------------------------------------------
 bool CombineTransmittances(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window,
   TransmittanceMaps& maps, int layers, int resolution, bool& multiplied, std::string& error)
 {
@@ -130,9 +143,11 @@ bool CombineTransmittances(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow
     std::copy(texels.begin() + 4 * i, texels.begin() + 4 * i + 3, colours.begin() + 3 * i);
     depths[i] = texels[4 * i + 3];
   }
-  depths[count] = readable ? 0.0f : -1.0f;
-  multiplied = exchange->ProductOf(colours);
-  if (!exchange->MinimumOf(depths) || depths[count] < 0.0f)
+  const bool multipliedHere = exchange->ProductOf(colours);
+  // Whether each process read its maps (-2 where not) and multiplied (-1):
+  // every process then takes the same branch.
+  depths[count] = !readable ? -2.0f : !multipliedHere ? -1.0f : 0.0f;
+  if (!exchange->MinimumOf(depths) || depths[count] < -1.0f)
   {
     if (readable)
     {
@@ -140,6 +155,7 @@ bool CombineTransmittances(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow
     }
     return false;
   }
+  multiplied = depths[count] == 0.0f;
   if (!multiplied)
   {
     return true;

@@ -61,12 +61,18 @@ struct FrameAgreement
 /// Called on every process every frame that has shadowed lights (two AnyOf).
 FrameAgreement AgreeOnFrame(vtkShadowMapExchange* exchange, bool interactive, bool translucent);
 
+/// Called on every process once all rendered their maps: whether every one's
+/// are of the same resolution, layers, combination and transmittance (the
+/// texels' reductions that follow need arrays of one size).
+bool AgreeOnShape(vtkShadowMapExchange* exchange, int resolution, int layers, Combination how,
+  bool transmittance);
+
 /// Called on every process once all rendered their `layers` transmittance
 /// layers of resolution^2 texels: the colours become their product over the
 /// processes (vtkShadowMapExchange::ProductOf), the depths the nearest, and
-/// are written back. `multiplied` false: the exchange multiplies nothing, and
-/// each process keeps its own maps. False, with `error`, when a process could
-/// not read its maps or the exchange fails.
+/// are written back. `multiplied` false: the exchange multiplied nothing on
+/// some process, and every process keeps its own maps. False, with `error`,
+/// when a process could not read its maps or the exchange fails.
 bool CombineTransmittances(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window,
   TransmittanceMaps& maps, int layers, int resolution, bool& multiplied, std::string& error);
 } // namespace shadowmaps

@@ -19,10 +19,14 @@ bool FramePolicy::BeginFrame(
   {
     return translucent;
   }
-  this->WarnOnce(!GatherPropBounds(this->Exchange, frame, sceneBoundsGiven) && !sceneBoundsGiven,
-    this->WarnedUngatheredBounds,
-    "The exchange gathers no prop bounds and no scene bounds are given (SetSceneBounds): the "
-    "processes' views may differ.");
+  // Said once for good: ParaView turns the given bounds on and off.
+  if (!GatherPropBounds(this->Exchange, frame, sceneBoundsGiven) && !sceneBoundsGiven &&
+    !this->WarnedUngatheredBounds)
+  {
+    this->Warnings.emplace_back("The exchange gathers no prop bounds and no scene bounds are "
+                                "given (SetSceneBounds): the processes' views may differ.");
+    this->WarnedUngatheredBounds = true;
+  }
   // The processes must fit the same views: interactive only if every one's
   // window is (a plain MPI program raises one rank's update rate); and all
   // make transmittance maps if any has a translucent caster.
@@ -60,6 +64,12 @@ Combination FramePolicy::CombinationFor(const MapStorage& storage) const
 }
 
 //------------------------------------------------------------------------------
+bool FramePolicy::CombinesLayers(const MapStorage& storage) const
+{
+  return this->Exchange && (CombinationOf(storage) != Combination::None || storage.Transmittance);
+}
+
+//------------------------------------------------------------------------------
 void FramePolicy::BeginLayers(
   const ShadowFrame& frame, const MapStorage& storage, const LayerRules& rules)
 {
@@ -74,8 +84,7 @@ void FramePolicy::BeginLayers(
   // InteractiveTexelRatio 1 asks drags to render as still frames do, where
   // every layer is combined anew each frame, or where coarse mip levels would
   // average the extra casters into what receivers see.
-  this->DrawsAllInView = rules.ViewsMayBeKept &&
-    this->CombinationFor(storage) == Combination::None && !storage.Mipmaps;
+  this->DrawsAllInView = rules.ViewsMayBeKept && !this->CombinesLayers(storage) && !storage.Mipmaps;
 }
 
 //------------------------------------------------------------------------------
@@ -112,6 +121,11 @@ bool FramePolicy::Combine(vtkOpenGLRenderWindow* window, RendererMaps& maps, int
     return false;
   }
   const Combination how = this->CombinationFor(maps.Storage);
+  if (!AgreeOnShape(this->Exchange, resolution, layers, how, maps.Storage.Transmittance))
+  {
+    error = "the processes' shadow maps differ in size or kind";
+    return false;
+  }
   this->WarnOnce(how == Combination::None, this->WarnedUncombined,
     "Maps of values other than light depths are not combined across processes; these maps "
     "hold each process's own casters.");

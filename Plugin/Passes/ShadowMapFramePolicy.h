@@ -13,7 +13,9 @@
 #include "ShadowMapCombination.h" // For Combination
 #include "ShadowMapUpdates.h"     // For LayerRequest, MapUpdates
 
-#include "vtkType.h" // For vtkMTimeType
+#include "vtkShadowMapExchange.h" // For vtkWeakPointer<vtkShadowMapExchange>
+#include "vtkType.h"                // For vtkMTimeType
+#include "vtkWeakPointer.h"
 
 #include <glm/glm.hpp>
 
@@ -22,7 +24,6 @@
 
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
-class vtkShadowMapExchange;
 
 namespace shadowmaps
 {
@@ -70,6 +71,12 @@ public:
   /// How the processes' maps of `storage` combine (None on one process).
   Combination CombinationFor(const MapStorage& storage) const;
 
+  /// Whether the processes' layers of `storage` are combined (their maps, or
+  /// their transmittance maps): a layer then holds every process's casters,
+  /// and every layer is rendered and combined anew at each update (a kept
+  /// one would be combined twice).
+  bool CombinesLayers(const MapStorage& storage) const;
+
   /// Starts an update of the maps: the rules its layers follow.
   void BeginLayers(const ShadowFrame& frame, const MapStorage& storage, const LayerRules& rules);
 
@@ -77,9 +84,10 @@ public:
   LayerRequest RequestFor(const ShadowLight& light, std::size_t view) const;
 
   /// After an update, on every process, whether or not it rendered (`ok`):
-  /// false on all if any failed; else the processes' maps of `layers` layers
-  /// combined, and their transmittance maps. False with `error` when they
-  /// cannot be combined.
+  /// false on all if any failed or their maps' shapes differ (resolution,
+  /// layers, storage); else the processes' maps of `layers` layers combined,
+  /// and their transmittance maps. False with `error` when they cannot be
+  /// combined.
   bool Combine(vtkOpenGLRenderWindow* window, RendererMaps& maps, int layers, int resolution,
     bool ok, std::string& error);
 
@@ -90,7 +98,7 @@ public:
 private:
   void WarnOnce(bool cause, bool& warned, const std::string& warning);
 
-  vtkShadowMapExchange* Exchange = nullptr;
+  vtkWeakPointer<vtkShadowMapExchange> Exchange;
   // This update's rules, and the receivers' body in view (reach culling).
   LayerRules Rules;
   std::vector<glm::dvec3> Visible;

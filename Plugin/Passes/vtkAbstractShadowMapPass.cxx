@@ -948,9 +948,9 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   // process's casters combined are all rendered and combined again.
   maps.Updates.BeginUpdate({ this->GetMTime(), maps.Maps.GetAllocations(),
                              maps.Transmittances.GetAllocations(),
-                                   static_cast<vtkMTimeType>(r.Frame.Resolution),
-                                   static_cast<vtkMTimeType>(maps.Storage.SecondDepth) },
-    this->NumberOfShadowMapLayers, combination != shadowmaps::Combination::None, r.Casters);
+                             static_cast<vtkMTimeType>(r.Frame.Resolution),
+                             static_cast<vtkMTimeType>(maps.Storage.SecondDepth) },
+    this->NumberOfShadowMapLayers, r.Policy.CombinesLayers(maps.Storage), r.Casters);
   const bool keepsLightDepths = combination == shadowmaps::Combination::NearestLightDepths;
   if (keepsLightDepths)
   {

@@ -258,9 +258,9 @@ TEST(ShadowExchange, ACasterOnAnotherProcessShadowsThisOnesGround)
     if (exchange)
     {
       EXPECT_LT(dark, 0.45 * bright) << "the sphere lives on the other process";
-      EXPECT_EQ(processes.ExchangeB->Calls, 7)
+      EXPECT_EQ(processes.ExchangeB->Calls, 8)
         << "the props' boxes, all interactive, any translucent, any changed, any failed, the "
-           "maps' shape, the depths";
+           "maps' shape, the maps' shape and readability, the depths";
     }
     else
     {
@@ -563,6 +563,38 @@ TEST(ShadowExchange, OtherValuesAreNotCombinedAndSaySo)
   const double lit = LuminanceAt(processes.B.Renderer, image, glm::dvec3(-5.0, -4.0, 0.0));
   EXPECT_GT(LuminanceAt(processes.B.Renderer, image, shadowed), 0.9 * lit)
     << "B's maps hold its own casters only";
+  processes.Release();
+}
+
+// Values the pass cannot combine keep their layers while nothing changes on
+// this process; their transmittance maps, which are combined, cannot: a layer
+// kept would multiply the other process's share in once more at each update.
+TEST(ShadowExchange, TransmittanceIsCombinedOnceWhateverTheMapsKeep)
+{
+  TwoProcesses processes;
+  processes.A.Sphere->GetProperty()->SetOpacity(0.5);
+  vtkNew<vtkDepthShadowMapPass> a;
+  vtkNew<vtkDepthShadowMapPass> b;
+  vtkNew<vtkTestWindowMomentsRepresentation> representationA;
+  vtkNew<vtkTestWindowMomentsRepresentation> representationB;
+  a->SetRepresentation(representationA);
+  b->SetRepresentation(representationB);
+  b->SetAnalysisViewToShadowFactor();
+  processes.Use(a, b, true);
+  const glm::dvec3 shadowed = GroundShadowOfSphereCenter(SunDirection);
+  const glm::ivec3 first = ColorAt(processes.B.Renderer, processes.RenderBoth(), shadowed);
+  EXPECT_LT(first.x, 200) << "A's translucent sphere tints B's ground";
+  // A receiver on B that casts nothing moves: both processes update.
+  vtkNew<vtkInformation> receiverOnly;
+  receiverOnly->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  processes.B.Box->SetPropertyKeys(receiverOnly);
+  processes.B.Box->SetVisibility(true);
+  for (int update = 0; update < 3; ++update)
+  {
+    processes.B.Box->AddPosition(0.0, 0.0, 0.1);
+    const glm::ivec3 again = ColorAt(processes.B.Renderer, processes.RenderBoth(), shadowed);
+    EXPECT_EQ(again, first) << "update " << update;
+  }
   processes.Release();
 }
 } // namespace
