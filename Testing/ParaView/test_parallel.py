@@ -25,7 +25,7 @@ from paraview.simple import (Connect, Delete, GetSettingsProxy, LoadPlugin, Prog
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
 from shadow_view_testing import (LIT, SHADOWED, SUN, add_sun, check, check_same_image,  # noqa: E402
-                                 failures, luminance_at, make_view, render, shadow_probes)
+                                 failures, luminance_at, make_view, render, rgb_at, shadow_probes)
 
 PLUGIN, MODE = sys.argv[1], sys.argv[3]
 # Pieces on several ranks: pvbatch's, or a pvserver's behind this client.
@@ -179,7 +179,7 @@ sphere_display.AmbientColor = sphere_display.DiffuseColor = [1.0, 0.2, 0.2]
 sphere_display.Opacity = 0.5
 add_sun(view)
 png = render(view, "ParaViewParallelTranslucent_" + MODE)
-tinted, lit = testing.rgb_at(view, png, SHADOWED), testing.rgb_at(view, png, LIT)
+tinted, lit = rgb_at(view, png, SHADOWED), rgb_at(view, png, LIT)
 check(0.2 * lit[0] < tinted[0] < 0.9 * lit[0] and tinted[0] > tinted[2] + 20,
       f"translucent red sphere on {RANKS}: a partial red shadow on the ground "
       f"({tinted[0]:.0f} {tinted[1]:.0f} {tinted[2]:.0f}, lit {lit[0]:.0f})")
