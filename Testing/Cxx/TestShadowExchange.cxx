@@ -79,21 +79,8 @@ public:
 
   bool MinimumOf(std::vector<float>& values) override
   {
-    ++this->Calls;
-    if (this->Sends)
-    {
-      this->Shared->Sent.push_back({ false, values, Wire::MINIMUM_OF });
-      return true;
-    }
-    const Wire::Call* call = this->Next(Wire::MINIMUM_OF);
-    if (!call || call->Values.size() != values.size())
-    {
-      this->Shared->Mismatch = true;
-      return false;
-    }
-    std::transform(values.begin(), values.end(), call->Values.begin(), values.begin(),
-      [](float mine, float theirs) { return std::min(mine, theirs); });
-    return true;
+    return this->Reduce(
+      values, Wire::MINIMUM_OF, [](float mine, float theirs) { return std::min(mine, theirs); });
   }
 
   // An exchange that does not override ProductOf multiplies nothing (vtkShadowMapExchange's default).
@@ -105,21 +92,8 @@ public:
     {
       return this->Superclass::ProductOf(values);
     }
-    ++this->Calls;
-    if (this->Sends)
-    {
-      this->Shared->Sent.push_back({ false, values, Wire::PRODUCT_OF });
-      return true;
-    }
-    const Wire::Call* call = this->Next(Wire::PRODUCT_OF);
-    if (!call || call->Values.size() != values.size())
-    {
-      this->Shared->Mismatch = true;
-      return false;
-    }
-    std::transform(values.begin(), values.end(), call->Values.begin(), values.begin(),
-      [](float mine, float theirs) { return mine * theirs; });
-    return true;
+    return this->Reduce(
+      values, Wire::PRODUCT_OF, [](float mine, float theirs) { return mine * theirs; });
   }
 
   // A's boxes come first, then B's.
@@ -141,6 +115,25 @@ public:
   }
 
 private:
+  // A sends its values; B combines its own with A's by `combine`, element by element.
+  bool Reduce(std::vector<float>& values, Wire::Kind kind, float (*combine)(float, float))
+  {
+    ++this->Calls;
+    if (this->Sends)
+    {
+      this->Shared->Sent.push_back({ false, values, kind });
+      return true;
+    }
+    const Wire::Call* call = this->Next(kind);
+    if (!call || call->Values.size() != values.size())
+    {
+      this->Shared->Mismatch = true;
+      return false;
+    }
+    std::transform(values.begin(), values.end(), call->Values.begin(), values.begin(), combine);
+    return true;
+  }
+
   const Wire::Call* Next(Wire::Kind kind)
   {
     Wire& wire = *this->Shared;
