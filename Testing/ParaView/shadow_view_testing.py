@@ -4,7 +4,8 @@ strict baseline comparison (idiff) and a failure list."""
 import os
 import subprocess
 
-from paraview.simple import AddLight, CreateView, Plane, Render, SaveScreenshot, Show, Sphere
+from paraview.simple import (AddLight, ColorBy, CreateView, Plane, Render, SaveScreenshot, Show,
+                             Sphere, Wavelet)
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -61,6 +62,20 @@ def show_scene(view, sun=True):
     if sun:
         add_sun(view)
     return ground, sphere
+
+
+def show_volume(view):
+    """A wavelet shown as a volume (ParaView's default transfer functions) in the
+    place of the sphere: a box of 2 units centred 1.5 above the ground."""
+    volume = Show(Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10]), view)
+    volume.Representation = "Volume"
+    ColorBy(volume, ("POINTS", "RTData"))
+    volume.Scale = [0.1, 0.1, 0.1]
+    # ParaView 5.13 renamed Position Translation.
+    setattr(volume, "Translation" if volume.GetProperty("Translation") is not None else "Position",
+            SPHERE_CENTER)
+    volume.ScalarOpacityUnitDistance = 20.0  # data lengths: the wavelet is 20 across
+    return volume
 
 
 def pixel_of(view, world):

@@ -25,7 +25,8 @@ from paraview.simple import (Connect, Delete, GetSettingsProxy, LoadPlugin, Prog
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
 from shadow_view_testing import (LIT, SHADOWED, SUN, add_sun, check, check_same_image,  # noqa: E402
-                                 failures, luminance_at, make_view, render, rgb_at, shadow_probes)
+                                 failures, luminance_at, make_view, render, rgb_at, shadow_probes,
+                                 show_volume)
 
 PLUGIN, MODE = sys.argv[1], sys.argv[3]
 # Pieces on several ranks: pvbatch's, or a pvserver's behind this client.
@@ -195,17 +196,9 @@ if SPLIT:
                      f"translucent sphere: the frame of {RANKS} equals the 1-rank frame")
 Delete(view)
 
-from paraview.simple import ColorBy, Wavelet  # noqa: E402
 view = make_view("ShadowRenderView")
 show_ground_and(view, sphere=False)
-volume = Show(Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10]), view)
-volume.Representation = "Volume"
-ColorBy(volume, ("POINTS", "RTData"))
-volume.Scale = [0.1, 0.1, 0.1]
-# ParaView 5.13 renamed Position Translation.
-setattr(volume, "Translation" if volume.GetProperty("Translation") is not None else "Position",
-        [0.0, 0.0, 1.5])
-volume.ScalarOpacityUnitDistance = 20.0  # data lengths: the wavelet is 20 across
+show_volume(view)
 add_sun(view)
 png = render(view, "ParaViewParallelVolume_" + MODE)
 under, open_ground = luminance_at(view, png, SHADOWED), luminance_at(view, png, LIT)

@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
 from shadow_view_testing import (LIT, SHADOWED, SUN, check, check_same_image,  # noqa: E402
                                  compare_with_baseline, failures, in_frame, luminance_at,
-                                 make_view, render, rgb_at, shadow_probes, show_scene)
+                                 make_view, render, rgb_at, shadow_probes, show_scene, show_volume)
 
 PLUGIN = sys.argv[1]
 OUT = testing.OUT = sys.argv[2]
@@ -319,15 +319,7 @@ ground, sphere = show_scene(view)
 Hide(sphere, view)
 lit_png = render(view, "ParaViewShadowViewNoVolume")
 open_ground = luminance_at(view, lit_png, SHADOWED)
-wavelet = Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10])
-volume = Show(wavelet, view)
-volume.Representation = "Volume"
-ColorBy(volume, ("POINTS", "RTData"))
-volume.Scale = [0.1, 0.1, 0.1]
-# ParaView 5.13 renamed Position Translation.
-setattr(volume, "Translation" if volume.GetProperty("Translation") is not None else "Position",
-        [0.0, 0.0, 1.5])
-volume.ScalarOpacityUnitDistance = 20.0  # data lengths: the wavelet is 20 across
+volume = show_volume(view)
 under_volume = luminance_at(view, render(view, "ParaViewShadowViewVolume"), SHADOWED)
 check(0.1 * open_ground < under_volume < 0.9 * open_ground,
       f"the volume's shadow is partial (luminance {under_volume:.0f}, open ground {open_ground:.0f})")
