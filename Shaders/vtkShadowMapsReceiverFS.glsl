@@ -472,28 +472,11 @@ float vtkShadowOpaqueVisibility(vec3 biased, vec3 normalVC, vec3 mapCoord, int l
   return vtkShadowLookup(mapCoord, view);
 }
 
-#ifdef VTK_SHADOW_VERTEX_CASCADES
-in vec4 vtkShadowCascadeClipVS[VTK_SHADOW_VERTEX_CASCADES];
-in vec4 vtkShadowCascadeOffsetVS[VTK_SHADOW_VERTEX_CASCADES];
-in vec3 vtkShadowRawNormalVS;
-#endif
-
 VTK_SHADOW_VALUE vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light,
   int firstView, int view, int viewLayout, int count, int features)
 {
   vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
-  vec4 clip;
-#ifdef VTK_SHADOW_VERTEX_CASCADES
-  if (light == VTK_SHADOW_VERTEX_CASCADE_LIGHT)
-  {
-    int c = view - firstView;
-    float scale = dot(normalVC, vtkShadowRawNormalVS) /
-      max(dot(vtkShadowRawNormalVS, vtkShadowRawNormalVS), 1e-30);
-    clip = vtkShadowCascadeClipVS[c] + vtkShadowCascadeOffsetVS[c] * scale;
-  }
-  else
-#endif
-  clip = vtkShadowMapTransform(firstView, view, biased, features);
+  vec4 clip = vtkShadowMapTransform(firstView, view, biased, features);
   if (!vtkShadowInsideMap(clip, view, features))
   {
     return VTK_SHADOW_VALUE(1.0);

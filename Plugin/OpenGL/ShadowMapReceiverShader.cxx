@@ -9,8 +9,6 @@
 #include "vtkShadowMapsReceiverFS.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cctype>
 #include <functional>
 #include <sstream>
@@ -194,68 +192,6 @@ std::string ReceiverCallArguments(const ShadowLight& light, int index)
             << static_cast<int>(light.Layout) << ", " << light.Views.size() << ", "
             << ReceiverFeatures(light);
   return arguments.str();
-}
-
-//------------------------------------------------------------------------------
-bool ReceiverShader::InjectVertexCascades(std::string& vertexShader, std::string& fragmentShader,
-  const std::vector<ShadowLight>& lights, int layers)
-{
-  const int unsupported = GradientTexels | DistantTexels | LinearDepths;
-  int k = 0;
-  while (k < static_cast<int>(lights.size()) &&
-    !(lights[k].Layout == ViewLayout::Cascades && (ReceiverFeatures(lights[k]) & unsupported) == 0))
-  {
-    ++k;
-  }
-  if (k == static_cast<int>(lights.size()) || vertexShader.find("out vec3 normalVCVSOutput;") == std::string::npos ||
-    vertexShader.find("out vec4 vertexVCVSOutput;") == std::string::npos ||
-    vertexShader.find("//VTK::System::Dec") == std::string::npos)
-  {
-    return false;
-  }
-  const int count = static_cast<int>(lights[k].Views.size());
-  const int first = lights[k].FirstLayer;
-  std::ostringstream dec;
-  dec << "//VTK::System::Dec\n"
-      << "struct vtkShadowView { mat4 ViewToMap; vec2 TexelSize; vec3 DepthInverseW; vec3 Selection;"
-         " float FilterScale; vec3 CropScale; vec3 CropOffset; };\n"
-      << "uniform vtkShadowView vtkShadowViews[" << std::max(layers, 1) << "];\n"
-      << "uniform float vtkShadowNormalOffset;\n"
-      << "out vec4 vtkShadowCascadeClipVS[" << count << "];\n"
-      << "out vec4 vtkShadowCascadeOffsetVS[" << count << "];\n"
-      << "out vec3 vtkShadowRawNormalVS;\n";
-  vtkShaderProgram::Substitute(vertexShader, "//VTK::System::Dec", dec.str(), false);
-  std::ostringstream impl;
-  impl << "  vtkShadowRawNormalVS = normalVCVSOutput;\n"
-       << "  vec4 vtkShadowFirstClip = vtkShadowViews[" << first << "].ViewToMap * vertexVCVSOutput;\n"
-       << "  vec4 vtkShadowFirstNormal = vtkShadowViews[" << first
-       << "].ViewToMap * vec4(normalVCVSOutput, 0.0);\n";
-  const bool cropped = (ReceiverFeatures(lights[k]) & CroppedViews) != 0;
-  for (int i = 0; i < count; ++i)
-  {
-    const std::string v = "vtkShadowViews[" + std::to_string(first + i) + "]";
-    if (cropped)
-    {
-      impl << "  vtkShadowCascadeClipVS[" << i << "] = vec4(vtkShadowFirstClip.xyz * " << v
-           << ".CropScale + vtkShadowFirstClip.w * " << v << ".CropOffset, vtkShadowFirstClip.w);\n"
-           << "  vtkShadowCascadeOffsetVS[" << i << "] = (vtkShadowNormalOffset * " << v
-           << ".TexelSize.x) * vec4(vtkShadowFirstNormal.xyz * " << v
-           << ".CropScale + vtkShadowFirstNormal.w * " << v << ".CropOffset, vtkShadowFirstNormal.w);\n";
-    }
-    else
-    {
-      impl << "  vtkShadowCascadeClipVS[" << i << "] = " << v << ".ViewToMap * vertexVCVSOutput;\n"
-           << "  vtkShadowCascadeOffsetVS[" << i << "] = (vtkShadowNormalOffset * " << v
-           << ".TexelSize.x) * (" << v << ".ViewToMap * vec4(normalVCVSOutput, 0.0));\n";
-    }
-  }
-  vertexShader.insert(vertexShader.rfind('}'), impl.str());
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec",
-    "#define VTK_SHADOW_VERTEX_CASCADES " + std::to_string(count) +
-      "\n#define VTK_SHADOW_VERTEX_CASCADE_LIGHT " + std::to_string(k) +
-      "\n//VTK::ShadowMaps::Dec",
-    false);
-  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -51,8 +51,6 @@ class ReceiverShader
 public:
   /// Before the mapper's own replacements: markers where the shadow code goes.
   static void MarkInjectionPoints(std::string& fragmentShader);
-  static bool InjectVertexCascades(std::string& vertexShader, std::string& fragmentShader,
-    const std::vector<ShadowLight>& lights, int layers);
 
   /// Scales each light's diffuse and specular (Phong) or radiance (PBR) terms
   /// by its shadow factor where the mapper generated them, and puts the shadow

@@ -11,7 +11,6 @@
 #include "vtkOpenGLShaderCache.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 #include <utility>
 
@@ -77,14 +76,6 @@ CasterBranch PassShaders::Inject(std::string& vertexShader, std::string& geometr
   for (std::string* stage : { &vertexShader, &geometryShader, &fragmentShader })
   {
     CasterShader::RouteCameraParallel(*stage);
-  }
-  if (receives && std::getenv("VTK_SHADOW_VERTEX_CASCADES"))
-  {
-    const bool injected = ReceiverShader::InjectVertexCascades(vertexShader, fragmentShader, lights, layers);
-    if (std::getenv("VTK_SHADOW_VERTEX_CASCADES_LOG"))
-    {
-      fprintf(stderr, "vertex cascades injected: %d\n", injected ? 1 : 0);
-    }
   }
   unpatched += ReceiverShader::Inject(fragmentShader, lights, layers, this->Receivers, receives,
     branch == CasterBranch::DepthOnly, ownShare);
