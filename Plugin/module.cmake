@@ -92,6 +92,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapFramePolicy.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
+    Plugin/Passes/ShadowMapLayerDrawing.cxx
     Plugin/Passes/ShadowMapPassShaders.cxx
     Plugin/Passes/ShadowMapProgramUniforms.cxx
     Plugin/Passes/ShadowMapRendererMaps.cxx

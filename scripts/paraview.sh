@@ -7,7 +7,17 @@
 # there this script swaps them in and, whatever happens, back out, leaving the
 # packages the README's main command needs. In sid (ParaView 6.1 on the
 # system's VTK 9.6) the two coexist and nothing is swapped.
+#
+#   bash scripts/paraview.sh --run COMMAND...
+# installs and builds as for the tests, then runs COMMAND instead of them (under a
+# display; @PLUGIN@ in its words becomes the plugin's path), for measurements.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+RUN=()
+if [ "${1:-}" = --run ]; then
+  shift
+  RUN=("$@")
+  [ "${#RUN[@]}" -gt 0 ] || { echo "usage: $0 --run COMMAND..." >&2; exit 2; }
+fi
 
 if [ "$STACK" = host ]; then
   PARAVIEW_BUILD_DIR="${PARAVIEW_BUILD_DIR:-$ROOT/build-paraview}"
@@ -81,6 +91,10 @@ cmake --build "$PARAVIEW_BUILD_DIR"
 # lib/paraview-<major.minor>/plugins/ShadowMaps/ShadowMaps.so
 PLUGIN="$(find "$PARAVIEW_BUILD_DIR/lib" -path '*/plugins/ShadowMaps/ShadowMaps.so' | head -1)"
 [ -n "$PLUGIN" ] || { echo "The build made no ShadowMaps.so under $PARAVIEW_BUILD_DIR/lib"; exit 1; }
+if [ "${#RUN[@]}" -gt 0 ]; then
+  with_display "${RUN[@]//@PLUGIN@/$PLUGIN}"
+  exit $?
+fi
 OUTPUT="$PARAVIEW_BUILD_DIR/Testing/Output"
 with_display pvpython "$ROOT/Testing/ParaView/test_shadow_view.py" "$PLUGIN" "$OUTPUT"
 # In parallel: the same scene on one rank, then split over three (oversubscribed).

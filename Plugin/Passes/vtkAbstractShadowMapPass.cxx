@@ -11,6 +11,7 @@
 #include "ShadowMapClosedSurfaces.h"
 #include "ShadowMapGlm.h"
 #include "ShadowMapLayerContent.h"
+#include "ShadowMapLayerDrawing.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapLinearDepthResolve.h"
 #include "ShadowMapPropParts.h"
@@ -39,8 +40,6 @@
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpaquePass.h"
-#include "vtkTranslucentPass.h"
 #include "vtkVolume.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderer.h"
@@ -164,11 +163,8 @@ struct vtkAbstractShadowMapPass::Internals
   std::vector<shadowmaps::ShadowLight> Lights;
   std::vector<Caster> Casters;
 
-  // What renders the maps.
-  vtkNew<vtkOpaquePass> OpaquePass;
-  vtkNew<vtkTranslucentPass> TranslucentPass;
-  vtkNew<vtkCamera> LightCamera;
-  vtkNew<vtkMatrix4x4> LightProjection;
+  // What draws the casters into the maps' layers.
+  shadowmaps::LayerDrawing Layers;
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
   vtkNew<vtkDualDepthPeelingPass> DepthPeeling;
   vtkSmartPointer<vtkRenderPass> BlendedTranslucency;
@@ -242,9 +238,6 @@ struct vtkAbstractShadowMapPass::Internals
   // The GL state of the casters' draws, while they draw.
   shadowmaps::CasterGLState* CastingState = nullptr;
   bool SceneCameraParallel = false;
-  // The largest point size the context draws (GL_POINT_SIZE_RANGE), asked
-  // once: a query may wait for the GL's thread.
-  float LargestPointSize = 0.0f;
   // The most samples per texel the context offers (GL_MAX_SAMPLES), asked
   // once, and only by maps that may be multisampled.
   int MaximumSamples = 0;
@@ -257,7 +250,6 @@ struct vtkAbstractShadowMapPass::Internals
   std::string WarnedGLError;
   /// What kept a volume from casting, once warned: its data, or the GL.
   std::string WarnedVolume;
-  std::string WarnedVolumeDraw;
   /// Whether this process's casters (or, with an exchange, any process's)
   /// draw into the transmittance maps.
   bool TranslucentOnAnyProcess = false;
@@ -873,7 +865,7 @@ void vtkAbstractShadowMapPass::UpdateShaders(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, const LightView& view)
+shadowmaps::CastingSettings vtkAbstractShadowMapPass::CastingSettingsOfUpdate()
 {
   Internals& r = *this->Internal;
   const shadowmaps::DepthOffset offset = r.Representation->GetCasterDepthOffset();
@@ -884,22 +876,9 @@ void vtkAbstractShadowMapPass::ApplyCasterUniforms(const ShadowLight& light, con
   settings.LightDepth = code.LightDepth || code.Transmittance;
   settings.SlopeScaledOffset = offset.SlopeScaled;
   settings.ConstantOffset = offset.Constant;
-  settings.LargestPointSize = this->LargestPointSize();
+  settings.LargestPointSize = r.Layers.LargestPointSize();
   settings.SceneCameraParallel = r.SceneCameraParallel;
-  r.Programs.SetCastingView(light, view, r.Frame, settings);
-}
-
-//------------------------------------------------------------------------------
-float vtkAbstractShadowMapPass::LargestPointSize()
-{
-  Internals& r = *this->Internal;
-  if (r.LargestPointSize <= 0.0f)
-  {
-    float sizes[2] = { 1.0f, 1.0f };
-    glGetFloatv(GL_POINT_SIZE_RANGE, sizes);
-    r.LargestPointSize = std::max(sizes[1], 1.0f);
-  }
-  return r.LargestPointSize;
+  return settings;
 }
 
 //------------------------------------------------------------------------------
@@ -939,8 +918,8 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
   Internals& r = *this->Internal;
   shadowmaps::RendererMaps& maps = r.Maps();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* state = window->GetState();
-  const shadowmaps::Combination combination = this->MapCombination();
+  const bool keepsLightDepths =
+    this->MapCombination() == shadowmaps::Combination::NearestLightDepths;
   // What every layer depends on besides its view and casters: the parameters
   // of the pass and its strategies (the bias, the caster faces and store code
   // among them), the storage, and how a second depth is made (AUTO may change
@@ -951,28 +930,31 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
                              static_cast<vtkMTimeType>(r.Frame.Resolution),
                              static_cast<vtkMTimeType>(maps.Storage.SecondDepth) },
     this->NumberOfShadowMapLayers, r.Policy.CombinesLayers(maps.Storage), r.Casters);
-  const bool keepsLightDepths = combination == shadowmaps::Combination::NearestLightDepths;
   if (keepsLightDepths)
   {
     maps.LightDepths.Reset(maps.Maps, this->NumberOfShadowMapLayers);
   }
-  int draws = 0;
   std::vector<shadowmaps::RenderedLayer> rendered;
   bool ok = true;
   {
-    shadowmaps::CasterGLState casterState(state,
+    shadowmaps::CasterGLState casterState(window->GetState(),
       !shadowmaps::IsDepth(maps.Storage.Format) && maps.Storage.MinimumBlending);
-    vtkSmartPointer<vtkCamera> userCamera = renderer->GetActiveCamera();
-    renderer->SetActiveCamera(r.LightCamera);
     this->ReserveTextureUnits(renderer);
     r.Casting = true;
     r.CastingState = &casterState;
-    shadowmaps::LayerRules rules;
-    rules.ReachCulling = this->ShadowReachCulling;
-    rules.ViewsMayBeKept = this->GetViews()->MayKeepViews(r.Frame);
-    rules.NormalOffsetTexels = this->NormalOffset;
-    rules.PostProcessingFollowsFilterScale = r.Representation->GetPostProcessingFollowsFilterScale();
-    r.Policy.BeginLayers(r.Frame, maps.Storage, rules);
+    shadowmaps::LayerDrawing::Update update;
+    update.Renderer = renderer;
+    update.Maps = &maps;
+    update.Frame = &r.Frame;
+    update.Programs = &r.Programs;
+    update.Casting = this->CastingSettingsOfUpdate();
+    update.KeepsLightDepths = keepsLightDepths;
+    update.PeelUnit = r.PeelUnit;
+    update.JoinCasters = [this](vtkProp* const* props, int count) {
+      this->JoinRenderPasses(props, count);
+    };
+    r.Layers.BeginUpdate(update);
+    r.Policy.BeginLayers(r.Frame, maps.Storage, this->LayerRulesOfUpdate());
     for (const ShadowLight& light : r.Lights)
     {
       for (size_t v = 0; v < light.Views.size() && ok; ++v)
@@ -980,49 +962,27 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         const int layer = light.FirstLayer + static_cast<int>(v);
         shadowmaps::LayerPlan plan =
           maps.Updates.Plan(r.Frame, r.Casters, r.Policy.RequestFor(light, v));
-        if (!plan.Render)
+        bool bound = false;
+        ok = !plan.Render || r.Layers.Draw(light, v, layer, plan.Casters, bound, r.LastGLError);
+        if (bound)
         {
-          continue;
-        }
-        const bool linearDepths =
-          light.Views[v].LinearDepth && shadowmaps::IsDepth(maps.Storage.Format);
-        const bool peeling = maps.Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling;
-        const bool multisampled = maps.Storage.Samples > 1;
-        ok = multisampled
-          ? maps.Maps.BindSamples(state, maps.Storage.Samples, r.LastGLError)
-          : maps.Maps.BindLayer(
-              state, layer, r.LastGLError, linearDepths || peeling || keepsLightDepths);
-        if (ok)
-        {
-          this->ApplyCasterUniforms(light, light.Views[v]);
-          std::vector<vtkProp*>& props = plan.Casters;
-          draws += this->RenderCastersIntoView(renderer, light.Views[v], props, linearDepths);
-          ok = !multisampled || maps.Maps.ResolveSamples(state, layer, r.LastGLError);
-          ok = ok &&
-            (!linearDepths || maps.LinearDepths.Render(window, maps.Maps, layer, r.LastGLError));
-          ok = ok &&
-            (!keepsLightDepths || maps.LightDepths.Keep(state, maps.Maps, layer, r.LastGLError));
-          if (ok && peeling && !props.empty())
-          {
-            ok = this->PeelSecondSurface(renderer, layer, props, draws);
-          }
-          if (ok && maps.Storage.Transmittance)
-          {
-            ok = this->RenderTransmittance(renderer, layer, light, light.Views[v], props, draws);
-          }
           maps.Updates.Rendered(layer, std::move(plan));
           rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
         }
       }
     }
+    r.Layers.EndUpdate();
     r.Casting = false;
     r.CastingState = nullptr;
-    renderer->SetActiveCamera(userCamera);
+  }
+  for (const std::string& warning : r.Layers.TakeWarnings())
+  {
+    vtkWarningMacro(<< warning);
   }
   this->NumberOfRenderedLayers = static_cast<int>(rendered.size());
   if (!rendered.empty())
   {
-    this->NumberOfCasterDraws = draws;
+    this->NumberOfCasterDraws = r.Layers.GetDraws();
   }
   ok = this->CombineAcrossProcesses(window, ok);
   if (!ok)
@@ -1031,6 +991,18 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     return false;
   }
   return rendered.empty() || this->PostProcessShadowMaps(renderer, rendered);
+}
+
+//------------------------------------------------------------------------------
+shadowmaps::LayerRules vtkAbstractShadowMapPass::LayerRulesOfUpdate()
+{
+  Internals& r = *this->Internal;
+  shadowmaps::LayerRules rules;
+  rules.ReachCulling = this->ShadowReachCulling;
+  rules.ViewsMayBeKept = this->GetViews()->MayKeepViews(r.Frame);
+  rules.NormalOffsetTexels = this->NormalOffset;
+  rules.PostProcessingFollowsFilterScale = r.Representation->GetPostProcessingFollowsFilterScale();
+  return rules;
 }
 
 //------------------------------------------------------------------------------
@@ -1073,130 +1045,6 @@ bool vtkAbstractShadowMapPass::PostProcessShadowMaps(
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ClearLayer(vtkOpenGLRenderer* renderer, bool linearDepths)
-{
-  Internals& r = *this->Internal;
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
-  state->vtkglViewport(0, 0, r.Frame.Resolution, r.Frame.Resolution);
-  state->vtkglClearDepth(1.0);
-  GLbitfield buffers = GL_DEPTH_BUFFER_BIT;
-  if (!shadowmaps::IsDepth(r.Maps().Storage.Format))
-  {
-    const float* clear = r.Maps().Storage.ClearValues;
-    state->vtkglClearColor(clear[0], clear[1], clear[2], clear[3]);
-    buffers |= GL_COLOR_BUFFER_BIT;
-  }
-  else if (linearDepths)
-  {
-    state->vtkglClearColor(1.0, 1.0, 1.0, 1.0);
-    buffers |= GL_COLOR_BUFFER_BIT;
-  }
-  state->vtkglClear(buffers);
-  if (this->MapCombination() == shadowmaps::Combination::NearestLightDepths)
-  {
-    // The casters' light depths: far where none draws.
-    const float far[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
-    glClearBufferfv(GL_COLOR, 1, far);
-  }
-}
-
-//------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::RenderCastersIntoView(vtkOpenGLRenderer* renderer,
-  const LightView& view, std::vector<vtkProp*>& casters, bool linearDepths)
-{
-  Internals& r = *this->Internal;
-  this->ClearLayer(renderer, linearDepths);
-  if (casters.empty())
-  {
-    return 0;
-  }
-  shadowmaps::SetCameraToView(r.LightCamera, r.LightProjection, view, r.SceneCameraParallel);
-  this->JoinRenderPasses(casters.data(), static_cast<int>(casters.size()));
-  return this->DrawCasters(renderer, casters);
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::PeelSecondSurface(
-  vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws)
-{
-  // The first pass left the nearest surface in both values and in the second
-  // output; this one keeps, in y only, the nearest surface behind it.
-  Internals& r = *this->Internal;
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
-  if (!r.Maps().Maps.BindLayer(state, layer, r.LastGLError, false))
-  {
-    return false;
-  }
-  vtkOpenGLState::ScopedglColorMask keepMask(state);
-  vtkOpenGLState::ScopedglClearColor keepClearColor(state);
-  vtkOpenGLState::ScopedglActiveTexture keepUnit(state);
-  state->vtkglColorMask(GL_FALSE, GL_TRUE, GL_FALSE, GL_FALSE);
-  state->vtkglClearColor(1.0, 1.0, 1.0, 1.0);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  // Through the state cache: the casters' own textures find their units by it.
-  state->vtkglActiveTexture(GL_TEXTURE0 + r.PeelUnit);
-  glBindTexture(GL_TEXTURE_2D, r.Maps().Maps.GetSecondOutput());
-  r.Programs.SetPeeling(true, r.PeelUnit);
-  draws += this->DrawCasters(renderer, casters);
-  r.Programs.SetPeeling(false, r.PeelUnit);
-  state->vtkglActiveTexture(GL_TEXTURE0 + r.PeelUnit);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::RenderTransmittance(vtkOpenGLRenderer* renderer, int layer,
-  const ShadowLight& light, const LightView& view, std::vector<vtkProp*>& casters, int& draws)
-{
-  // The light camera still looks through the layer's view, and the casters
-  // joined when the layer's depths were drawn.
-  Internals& r = *this->Internal;
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  r.Programs.SetTransmitting(true);
-  const bool ok = r.Maps().Transmittances.Render(window->GetState(), layer,
-    [&]() {
-      if (!casters.empty())
-      {
-        draws += this->DrawCasters(renderer, casters, r.TranslucentPass);
-      }
-      draws += this->MarchVolumes(window, light, view, casters);
-    },
-    r.LastGLError);
-  r.Programs.SetTransmitting(false);
-  return ok;
-}
-
-//------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::MarchVolumes(vtkOpenGLRenderWindow* window,
-  const ShadowLight& light, const LightView& view, const std::vector<vtkProp*>& casters)
-{
-  Internals& r = *this->Internal;
-  int marched = 0;
-  for (vtkProp* prop : casters)
-  {
-    // Only the volumes that can be marched cast (PropRecords).
-    auto* volume = vtkVolume::SafeDownCast(prop);
-    if (!volume)
-    {
-      continue;
-    }
-    std::string why;
-    if (r.Maps().Volumes.Draw(window, volume, light, view, why))
-    {
-      ++marched;
-    }
-    else if (why != r.WarnedVolumeDraw)
-    {
-      // Its data did not fit the GL: it casts nothing, the others still do.
-      vtkWarningMacro(<< "A volume casts no shadow: " << why << ".");
-      r.WarnedVolumeDraw = why;
-    }
-  }
-  return marched;
-}
-
-//------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::WarnAboutVolume(const std::string& why)
 {
   // A volume that cannot be marched casts nothing; the others still do.
@@ -1207,19 +1055,6 @@ void vtkAbstractShadowMapPass::WarnAboutVolume(const std::string& why)
     vtkWarningMacro(<< "A volume casts no shadow: " << why << ".");
   }
   r.WarnedVolume = why;
-}
-
-//------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::DrawCasters(
-  vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters, vtkRenderPass* pass)
-{
-  Internals& r = *this->Internal;
-  pass = pass ? pass : r.OpaquePass.Get();
-  vtkRenderState casterState(renderer);
-  casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
-  casterState.SetFrameBuffer(nullptr);
-  pass->Render(&casterState);
-  return pass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
@@ -1490,10 +1325,8 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
     r.DefaultRepresentation->ReleaseGraphicsResources(window);
   }
   r.Programs.Clear();
-  r.LargestPointSize = 0.0f;
   r.MaximumSamples = 0;
-  r.OpaquePass->ReleaseGraphicsResources(window);
-  r.TranslucentPass->ReleaseGraphicsResources(window);
+  r.Layers.ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   r.DepthPeeling->ReleaseGraphicsResources(window);
   if (this->DelegatePass)

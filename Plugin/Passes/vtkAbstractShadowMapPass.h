@@ -80,6 +80,8 @@ class vtkShadowMapViews;
 namespace shadowmaps
 {
 enum class Combination : int;
+struct CastingSettings;
+struct LayerRules;
 struct LightView;
 struct ReceiverTextureUnits;
 struct RenderedLayer;
@@ -478,8 +480,6 @@ private:
   bool ReserveTransmittanceMaps(std::string& error);
   bool FitViews();
   void DropLightsWithoutUsableViews();
-  // The largest point size the context draws, asked once per context.
-  float LargestPointSize();
   void AssignLayers();
   void ChooseStorage();
   /**
@@ -487,7 +487,10 @@ private:
    * key rebuilds the mappers' shaders, once the code is known to compile.
    */
   void UpdateShaders(vtkOpenGLRenderer* renderer);
+  /** Draws the layers MapUpdates plans (shadowmaps::LayerDrawing), then combines and post-processes them. */
   bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
+  shadowmaps::CastingSettings CastingSettingsOfUpdate();
+  shadowmaps::LayerRules LayerRulesOfUpdate();
   /** How the current storage combines across processes (shadowmaps::FramePolicy). */
   shadowmaps::Combination MapCombination() const;
   /**
@@ -499,10 +502,6 @@ private:
   void WarnAboutPolicy();
   bool PostProcessShadowMaps(
     vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered);
-  int RenderCastersIntoView(vtkOpenGLRenderer* renderer, const shadowmaps::LightView& view,
-    std::vector<vtkProp*>& casters, bool linearDepths);
-  bool PeelSecondSurface(
-    vtkOpenGLRenderer* renderer, int layer, std::vector<vtkProp*>& casters, int& draws);
   // The receiver code a prop's shaders get: none, receiving, or receiving and
   // dividing its own share out of the transmittance maps.
   enum class ReceiverRole
@@ -512,20 +511,8 @@ private:
     ReceivesWithOwnShare
   };
   ReceiverRole ReceiverRoleOf(vtkProp* prop) const;
-  // Draws the casters through `pass` (the opaque pass when null).
-  int DrawCasters(
-    vtkOpenGLRenderer* renderer, std::vector<vtkProp*>& casters, vtkRenderPass* pass = nullptr);
-  // What the layer's translucent casters let through, into its transmittance map.
-  bool RenderTransmittance(vtkOpenGLRenderer* renderer, int layer,
-    const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view,
-    std::vector<vtkProp*>& casters, int& draws);
-  // The layer's casting volumes, marched into its bound transmittance map.
-  int MarchVolumes(vtkOpenGLRenderWindow* window, const shadowmaps::ShadowLight& light,
-    const shadowmaps::LightView& view, const std::vector<vtkProp*>& casters);
   // Warns once why a volume's data cannot cast (`why` empty: every one can).
   void WarnAboutVolume(const std::string& why);
-  void ApplyCasterUniforms(const shadowmaps::ShadowLight& light, const shadowmaps::LightView& view);
-  void ClearLayer(vtkOpenGLRenderer* renderer, bool linearDepths);
   void JoinRenderPasses(vtkProp* const* props, int count);
   void LeaveRenderPasses();
   void ReserveTextureUnits(vtkOpenGLRenderer* renderer);
