@@ -139,6 +139,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapTransmittance.h
     Plugin/Passes/ShadowMapCombination.h
     Plugin/Passes/ShadowMapLayerContent.h
+    Plugin/Passes/ShadowMapLayerDrawing.h
     Plugin/Passes/ShadowMapPassShaders.h
     Plugin/Passes/ShadowMapProgramUniforms.h
     Plugin/Passes/ShadowMapRendererMaps.h

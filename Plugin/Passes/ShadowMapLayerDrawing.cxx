@@ -32,11 +32,12 @@ void LayerDrawing::EndUpdate()
 {
   this->Current.Renderer->SetActiveCamera(this->SceneCamera);
   this->SceneCamera = nullptr;
-  this->Current.JoinCasters = nullptr;
+  // The maps, frame and programs belong to the pass; none is held past the update.
+  this->Current = Update();
 }
 
 //------------------------------------------------------------------------------
-bool LayerDrawing::Draw(const ShadowLight& light, size_t v, int layer,
+bool LayerDrawing::Draw(const ShadowLight& light, std::size_t v, int layer,
   std::vector<vtkProp*>& casters, bool& bound, std::string& error)
 {
   RendererMaps& maps = *this->Current.Maps;

@@ -11,6 +11,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTranslucentPass.h"
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -60,7 +61,7 @@ public:
   /// Draws `casters` into layer `layer`, view `v` of `light`. False, with
   /// `error`, when the GL fails; `bound` says whether the layer was bound
   /// (and so its content replaced) before that.
-  bool Draw(const ShadowLight& light, size_t v, int layer, std::vector<vtkProp*>& casters,
+  bool Draw(const ShadowLight& light, std::size_t v, int layer, std::vector<vtkProp*>& casters,
     bool& bound, std::string& error);
 
   /// The casters drawn since BeginUpdate, every pass over a layer counted.

@@ -971,9 +971,9 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
         }
       }
     }
-    r.Layers.EndUpdate();
     r.Casting = false;
     r.CastingState = nullptr;
+    r.Layers.EndUpdate();
   }
   for (const std::string& warning : r.Layers.TakeWarnings())
   {
