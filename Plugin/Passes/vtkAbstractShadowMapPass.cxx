@@ -16,6 +16,7 @@
 #include "ShadowMapLinearDepthResolve.h"
 #include "ShadowMapPropParts.h"
 #include "ShadowMapReceiverShader.h"
+#include "ShadowMapReceiverTextures.h"
 #include "ShadowMapPassShaders.h"
 #include "ShadowMapProgramUniforms.h"
 #include "ShadowMapRendererMaps.h"
@@ -213,14 +214,9 @@ struct vtkAbstractShadowMapPass::Internals
   // it last drew through the pass: what its shaders were built for.
   std::unordered_map<vtkProp*, std::pair<vtkWeakPointer<vtkProp>, vtkAbstractShadowMapPass::ReceiverRole>>
     Receives;
-  int MapUnit = -1;
-  // Depth peeling's first-pass depths, while casting.
-  int PeelUnit = -1;
-  /// The maps read without comparison (ReadsRawDepths), -1 when not.
-  int RawDepthUnit = -1;
-  /// The transmittance maps (MapStorage::Transmittance), -1 without them.
-  int TransmittanceUnit = -1;
-  bool TextureUnitsReserved = false;
+  // The units the receivers' samplers read, from the casters' draws to the
+  // end of the frame.
+  shadowmaps::ReceiverTextures Textures;
   bool ShaderCodeCompiles = true;
   // The props whose render passes this pass joined in this frame.
   std::vector<vtkProp*> Joined;
@@ -949,7 +945,7 @@ bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
     update.Programs = &r.Programs;
     update.Casting = this->CastingSettingsOfUpdate();
     update.KeepsLightDepths = keepsLightDepths;
-    update.PeelUnit = r.PeelUnit;
+    update.PeelUnit = r.Textures.GetPeelUnit();
     update.JoinCasters = [this](vtkProp* const* props, int count) {
       this->JoinRenderPasses(props, count);
     };
@@ -1103,61 +1099,24 @@ void vtkAbstractShadowMapPass::RebuildShadersOfChangedReceivers(const vtkRenderS
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
 {
-  // Casters and receivers share programs, so the receivers' samplers must point
-  // at units of their own while the casters draw too (a sampler sharing a unit
-  // with one of another type fails the draw), with no map bound: the maps are
-  // being rendered.
+  // Before the casters draw: they share the receivers' programs.
   Internals& r = *this->Internal;
-  if (r.TextureUnitsReserved)
-  {
-    return;
-  }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  // Work on our own unit: creating a texture binds it to the active unit, which
-  // may hold another pass's texture (e.g. the tone-mapping pass's colour).
-  r.MapUnit = window->GetTextureUnitManager()->Allocate();
-  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.MapUnit);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  if (r.Maps().Storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
+  if (r.Textures.Reserve(window, r.Maps().Storage, this->ReadsRawDepths(), r.Representation) &&
+    r.Textures.GetPeelUnit() >= 0)
   {
-    r.PeelUnit = window->GetTextureUnitManager()->Allocate();
-    r.Programs.SetPeeling(false, r.PeelUnit);
+    r.Programs.SetPeeling(false, r.Textures.GetPeelUnit());
   }
-  if (this->ReadsRawDepths())
-  {
-    r.RawDepthUnit = window->GetTextureUnitManager()->Allocate();
-  }
-  if (r.Maps().Storage.Transmittance)
-  {
-    // Nothing bound while the maps are rendered.
-    r.TransmittanceUnit = window->GetTextureUnitManager()->Allocate();
-    window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.TransmittanceUnit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  }
-  r.Representation->ActivateReceiverResources(window);
-  r.TextureUnitsReserved = true;
 }
-
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  shadowmaps::RendererMaps& maps = r.Maps();
   this->ReserveTextureUnits(renderer);
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  maps.Maps.SetLinearFiltering(r.Representation->GetLinearFiltering());
-  maps.Maps.BindToUnit(window->GetState(), r.MapUnit);
-  if (r.RawDepthUnit >= 0)
-  {
-    maps.Maps.BindRawDepthToUnit(window->GetState(), r.RawDepthUnit);
-  }
-  if (r.TransmittanceUnit >= 0)
-  {
-    maps.Transmittances.BindToUnit(window->GetState(), r.TransmittanceUnit);
-  }
-  maps.Uniforms.NewFrame();
+  r.Textures.Bind(window, r.Maps(), r.Representation);
+  r.Maps().Uniforms.NewFrame();
 }
-
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::ReadsRawDepths() const
 {
@@ -1170,45 +1129,15 @@ bool vtkAbstractShadowMapPass::ReadsRawDepths() const
 //------------------------------------------------------------------------------
 shadowmaps::ReceiverTextureUnits vtkAbstractShadowMapPass::ReceiverUnits() const
 {
-  const Internals& r = *this->Internal;
-  return { r.MapUnit, r.RawDepthUnit, r.TransmittanceUnit };
+  return this->Internal->Textures.Units();
 }
-
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  if (!r.TextureUnitsReserved)
-  {
-    return;
-  }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.MapUnit);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  window->GetTextureUnitManager()->Free(r.MapUnit);
-  r.MapUnit = -1;
-  if (r.PeelUnit >= 0)
-  {
-    window->GetTextureUnitManager()->Free(r.PeelUnit);
-    r.PeelUnit = -1;
-  }
-  if (r.RawDepthUnit >= 0)
-  {
-    shadowmaps::TextureArray::UnbindRawDepth(window->GetState(), r.RawDepthUnit);
-    window->GetTextureUnitManager()->Free(r.RawDepthUnit);
-    r.RawDepthUnit = -1;
-  }
-  if (r.TransmittanceUnit >= 0)
-  {
-    window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + r.TransmittanceUnit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    window->GetTextureUnitManager()->Free(r.TransmittanceUnit);
-    r.TransmittanceUnit = -1;
-  }
-  r.Representation->DeactivateReceiverResources();
-  r.TextureUnitsReserved = false;
+  r.Textures.Release(window, r.Representation);
 }
-
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
 {
@@ -1304,7 +1233,7 @@ void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   const bool twoSurfaces = maps.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
-  if (!r.MapView.Render(window, maps.Maps, r.MapUnit, r.Lights[this->AnalysisLight], twoSurfaces,
+  if (!r.MapView.Render(window, maps.Maps, r.Textures.Units().Maps, r.Lights[this->AnalysisLight], twoSurfaces,
         maps.Storage.WarpExponent))
   {
     this->ReportGLFailure("the shadow-map view shader did not compile");
