@@ -1,7 +1,7 @@
 #ifndef ShadowMapReceiverTextures_h
 #define ShadowMapReceiverTextures_h
 
-#include "ShadowMapReceiverShader.h"
+#include "ShadowMapReceiverShader.h" // For ReceiverTextureUnits
 
 class vtkOpenGLRenderWindow;
 class vtkShadowMapRepresentation;
@@ -16,9 +16,10 @@ struct RendererMaps;
 /// depth peeling's first-pass depths, and the representation's own resources.
 /// Casters and receivers share programs, so the receivers' samplers must point
 /// at units of their own while the casters draw too (a sampler sharing a unit
-/// with one of another type fails the draw): the units are reserved, with
-/// nothing bound, before the casters draw, the maps bound to them for the
-/// scene's draw, and all freed at the end of the frame.
+/// with one of another type fails the draw): the units are reserved, with no
+/// map bound, and the representation's resources activated before the casters
+/// draw; the maps are bound to them for the scene's draw, and all is freed at
+/// the end of the frame.
 class ReceiverTextures
 {
 public:

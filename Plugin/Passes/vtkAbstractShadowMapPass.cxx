@@ -1102,12 +1102,14 @@ void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
   // Before the casters draw: they share the receivers' programs.
   Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (r.Textures.Reserve(window, r.Maps().Storage, this->ReadsRawDepths(), r.Representation) &&
-    r.Textures.GetPeelUnit() >= 0)
+  const shadowmaps::MapStorage& storage = r.Maps().Storage;
+  if (r.Textures.Reserve(window, storage, this->ReadsRawDepths(), r.Representation) &&
+    storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
   {
     r.Programs.SetPeeling(false, r.Textures.GetPeelUnit());
   }
 }
+
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
 {
@@ -1117,6 +1119,7 @@ void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
   r.Textures.Bind(window, r.Maps(), r.Representation);
   r.Maps().Uniforms.NewFrame();
 }
+
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::ReadsRawDepths() const
 {
@@ -1131,6 +1134,7 @@ shadowmaps::ReceiverTextureUnits vtkAbstractShadowMapPass::ReceiverUnits() const
 {
   return this->Internal->Textures.Units();
 }
+
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
 {
@@ -1138,6 +1142,7 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   r.Textures.Release(window, r.Representation);
 }
+
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
 {
