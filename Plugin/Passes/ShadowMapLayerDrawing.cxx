@@ -22,6 +22,7 @@ LayerDrawing::~LayerDrawing() = default;
 void LayerDrawing::BeginUpdate(const Update& update)
 {
   this->Current = update;
+  this->Current.Casting.LargestPointSize = this->LargestPointSize();
   this->Draws = 0;
   this->SceneCamera = update.Renderer->GetActiveCamera();
   update.Renderer->SetActiveCamera(this->LightCamera);

@@ -44,6 +44,7 @@ public:
     RendererMaps* Maps = nullptr;
     const ShadowFrame* Frame = nullptr;
     ProgramUniforms* Programs = nullptr;
+    /// The casters' settings (their LargestPointSize is filled in by BeginUpdate).
     CastingSettings Casting;
     /// The casters keep their light depths beside the maps (Combination::NearestLightDepths).
     bool KeepsLightDepths = false;
@@ -70,13 +71,12 @@ public:
   /// What kept some volume from casting, each warned once while it lasts.
   std::vector<std::string> TakeWarnings();
 
-  /// The largest point size the context draws (impostors' sprites), asked once
-  /// per context: a query may wait for the GL's thread.
-  float LargestPointSize();
-
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
+  /// The largest point size the context draws (impostors' sprites), asked once
+  /// per context: a query may wait for the GL's thread.
+  float LargestPointSize();
   void ClearLayer(bool linearDepths);
   int DrawCasters(std::vector<vtkProp*>& casters, vtkRenderPass* pass);
   bool DrawCastersIntoView(const LightView& view, std::vector<vtkProp*>& casters,

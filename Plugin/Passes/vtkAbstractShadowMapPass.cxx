@@ -872,7 +872,6 @@ shadowmaps::CastingSettings vtkAbstractShadowMapPass::CastingSettingsOfUpdate()
   settings.LightDepth = code.LightDepth || code.Transmittance;
   settings.SlopeScaledOffset = offset.SlopeScaled;
   settings.ConstantOffset = offset.Constant;
-  settings.LargestPointSize = r.Layers.LargestPointSize();
   settings.SceneCameraParallel = r.SceneCameraParallel;
   return settings;
 }
