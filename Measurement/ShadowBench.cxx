@@ -491,8 +491,9 @@ void PrintSizedTable(const std::vector<Row>& rows, std::ostream& out)
   out << "\nSized lights: the shadow factor against the ray-traced fraction of the light that "
          "reaches each pixel\n\n"
       << "| scene | light | technique | visibility error: mean | 95th percentile | "
-         "misclassified at 0.5 % | umbra pure % | behind several % | lit pure % |\n"
-      << "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
+         "misclassified at 0.5 % | umbra pure % | inner umbra pure % | behind several % | "
+         "lit pure % |\n"
+      << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Row& row : rows)
   {
     if (!row.Sized)
@@ -503,7 +504,7 @@ void PrintSizedTable(const std::vector<Row>& rows, std::ostream& out)
     out << "| " << row.Scene << " | " << row.Setup << " | " << row.Technique << " | "
         << FormatNumber(v.MeanAbsolute, 4) << " | " << FormatNumber(v.Percentile95, 3) << " | "
         << FormatNumber(v.AtHalf.Misclassified) << " | " << FormatNumber(v.UmbraPure, 1) << " | "
-        << FormatNumber(v.UmbraBehindSeveralPure, 1) << " | " << FormatNumber(v.LitPure, 1)
+        << FormatNumber(v.UmbraInnerPure, 1) << " | " << FormatNumber(v.UmbraBehindSeveralPure, 1) << " | " << FormatNumber(v.LitPure, 1)
         << " |\n";
   }
 }
@@ -554,7 +555,7 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
   std::ofstream csv(path);
   csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,bleeding,inner,"
          "mean_abs_diff,undersampled,density_spread,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels,"
-         "visibility_mean_error,visibility_p95_error,umbra_pure,umbra_behind_several_pure,lit_pure,"
+         "visibility_mean_error,visibility_p95_error,umbra_pure,umbra_inner_pure,umbra_behind_several_pure,lit_pure,"
          "transmittance_mean_error_r,transmittance_mean_error_g,transmittance_mean_error_b,"
          "transmittance_p95_error,transmittance_partial_pixels,transmittance_partial_error_r,"
          "transmittance_partial_error_g,transmittance_partial_error_b\n";
@@ -572,11 +573,11 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
     if (row.Sized)
     {
       csv << v.MeanAbsolute << ',' << v.Percentile95 << ',' << v.UmbraPure << ','
-          << v.UmbraBehindSeveralPure << ',' << v.LitPure << ',';
+          << v.UmbraInnerPure << ',' << v.UmbraBehindSeveralPure << ',' << v.LitPure << ',';
     }
     else
     {
-      csv << "nan,nan,nan,nan,nan,";
+      csv << "nan,nan,nan,nan,nan,nan,";
     }
     const shadowmetrics::TransmittanceErrors& t = row.Transmittance;
     if (row.Translucent)

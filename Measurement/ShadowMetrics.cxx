@@ -25,6 +25,20 @@ double Percent(std::int64_t part, std::int64_t whole)
 {
   return whole > 0 ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0;
 }
+
+// The umbra (visibility 0) as Shadowed, every other counted pixel as Lit.
+std::vector<Truth> UmbraAgainstRest(const std::vector<float>& visibility)
+{
+  std::vector<Truth> truth(visibility.size(), Truth::Ignored);
+  for (std::size_t i = 0; i < visibility.size(); ++i)
+  {
+    if (visibility[i] != shadoworacle::NotCounted)
+    {
+      truth[i] = visibility[i] == 0.0f ? Truth::Shadowed : Truth::Lit;
+    }
+  }
+  return truth;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -130,6 +144,20 @@ std::vector<Truth> TruthAtHalf(const std::vector<float>& visibility)
 }
 
 //------------------------------------------------------------------------------
+void IgnoreUnlitInRender(
+  const std::vector<std::uint8_t>& unshadowedRgb, std::vector<std::uint8_t>& valid)
+{
+  const std::size_t pixels = std::min(valid.size(), unshadowedRgb.size() / 3);
+  for (std::size_t i = 0; i < pixels; ++i)
+  {
+    if (unshadowedRgb[3 * i] + unshadowedRgb[3 * i + 1] + unshadowedRgb[3 * i + 2] == 0)
+    {
+      valid[i] = 0;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
   const std::vector<float>& factor, const std::vector<unsigned char>& occluders, int width,
   int height)
@@ -137,13 +165,15 @@ VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
   VisibilityErrors result;
   if (factor.size() != visibility.size())
   {
-    result.MeanAbsolute = result.Percentile95 = result.UmbraPure = result.LitPure =
-      result.UmbraBehindSeveralPure = std::numeric_limits<double>::quiet_NaN();
+    result.MeanAbsolute = result.Percentile95 = result.UmbraPure = result.UmbraInnerPure =
+      result.LitPure = result.UmbraBehindSeveralPure = std::numeric_limits<double>::quiet_NaN();
     return result;
   }
   result.AtHalf = Classify(TruthAtHalf(visibility), factor, width, height);
+  const std::vector<std::uint8_t> umbraEdges = TruthEdges(UmbraAgainstRest(visibility), width, height);
   std::vector<double> errors;
   std::int64_t umbraPure = 0;
+  std::int64_t innerPure = 0;
   std::int64_t litPure = 0;
   std::int64_t severalPure = 0;
   for (std::size_t i = 0; i < visibility.size(); ++i)
@@ -158,6 +188,11 @@ VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
       const bool pure = factor[i] <= PureWithin;
       ++result.Umbra;
       umbraPure += pure;
+      if (!umbraEdges[i])
+      {
+        ++result.UmbraInner;
+        innerPure += pure;
+      }
       if (i < occluders.size() && occluders[i] >= 2)
       {
         ++result.UmbraBehindSeveral;
@@ -173,6 +208,7 @@ VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
   const double none = std::numeric_limits<double>::quiet_NaN();
   result.Counted = static_cast<std::int64_t>(errors.size());
   result.UmbraPure = result.Umbra > 0 ? Percent(umbraPure, result.Umbra) : none;
+  result.UmbraInnerPure = result.UmbraInner > 0 ? Percent(innerPure, result.UmbraInner) : none;
   result.LitPure = result.Lit > 0 ? Percent(litPure, result.Lit) : none;
   result.UmbraBehindSeveralPure =
     result.UmbraBehindSeveral > 0 ? Percent(severalPure, result.UmbraBehindSeveral) : none;

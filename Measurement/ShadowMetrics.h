@@ -40,6 +40,15 @@ struct Classification
   double MeanAbsoluteDifference = 0.0;
 };
 
+/// Clears `valid` (a Surface's) where the unshadowed render is black: there
+/// the renderer's own shading does not light the surface (its interpolated
+/// normal faces away from the light while the oracle's geometric normal does
+/// not, as on an isosurface's folds), so no shadow factor can be read from the
+/// renders. Without this such pixels counted as lit for every technique (the
+/// factor reads 1), 2% of the paraview scene's umbra under its sun.
+void IgnoreUnlitInRender(
+  const std::vector<std::uint8_t>& unshadowedRgb, std::vector<std::uint8_t>& valid);
+
 /// Compares the technique's shadow factor (1 lit, 0 shadowed) with the truth.
 Classification Classify(
   const std::vector<Truth>& truth, const std::vector<float>& factor, int width, int height);
@@ -70,6 +79,12 @@ struct VisibilityErrors
   double UmbraPure = 0.0;
   std::int64_t Lit = 0;
   double LitPure = 0.0;
+  /// The umbra pixels whose 4-neighbours are all umbra too (more than a pixel
+  /// from the truth's penumbra or light), and the percentage of them at most
+  /// PureWithin: the purity the pixel grid leaves to the technique, where
+  /// UmbraPure also holds the pixels that straddle the umbra's edge.
+  std::int64_t UmbraInner = 0;
+  double UmbraInnerPure = 0.0;
   /// The umbra pixels behind two or more occluders (Oracle::CountOccluders of
   /// TruthAtHalf), where moments leak, reported apart.
   std::int64_t UmbraBehindSeveral = 0;
@@ -131,7 +146,8 @@ std::vector<std::uint8_t> TruthEdges(const std::vector<Truth>& truth, int width,
 
 /// The shadow factor of every pixel from two renders of the same view with
 /// white, purely diffuse materials: with the technique and without shadows.
-/// Where the unshadowed render is black the factor is 1.
+/// Where the unshadowed render is black the factor is 1 (IgnoreUnlitInRender
+/// leaves those pixels out).
 std::vector<float> FactorFromRenders(const std::vector<std::uint8_t>& shadowedRgb,
   const std::vector<std::uint8_t>& unshadowedRgb, int pixelCount);
 

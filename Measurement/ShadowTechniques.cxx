@@ -1,5 +1,6 @@
 #include "ShadowTechniques.h"
 
+#include "ShadowMetrics.h"
 #include "ShadowScenes.h"
 
 #include "vtkAbstractShadowMapPass.h"
@@ -551,6 +552,7 @@ shadoworacle::Surface VisibleSurface(const shadoworacle::Oracle& oracle, vtkRend
 {
   shadoworacle::Surface surface = oracle.Trace(renderer, width, height);
   shadoworacle::Oracle::MaskRasterMismatch(surface, renderer, CaptureDepth(window, width, height));
+  shadowmetrics::IgnoreUnlitInRender(CaptureRGB(window), surface.Valid);
   return surface;
 }
 

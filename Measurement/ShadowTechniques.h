@@ -98,7 +98,9 @@ std::string FormatNumber(double value, int digits = 2);
 
 /// The oracle's view of the frame `renderer` last rendered into `window`
 /// (width x height pixels): one primary ray per pixel, pixels where the
-/// rasterised depth disagrees (silhouettes, skipped geometry) made invalid.
+/// rasterised depth disagrees (silhouettes, skipped geometry) or that the
+/// render leaves black (no shadow factor to read) made invalid. The frame must
+/// be the one without shadows that the techniques' factors divide by.
 shadoworacle::Surface VisibleSurface(const shadoworacle::Oracle& oracle, vtkRenderer* renderer,
   vtkRenderWindow* window, int width, int height);
 

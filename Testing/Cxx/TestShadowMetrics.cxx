@@ -203,6 +203,10 @@ TEST(ShadowMetrics, CompareVisibilityMeasuresErrorsPurityAndSeveralOccluders)
   EXPECT_NEAR(v.Percentile95, 0.2, 1e-6); // the 9th of 9 by nearest rank
   EXPECT_EQ(v.Umbra, 4);
   EXPECT_NEAR(v.UmbraPure, 75.0, 1e-9);
+  // Pixel 3 borders the penumbra: the inner umbra is pixels 0 to 2, one of
+  // them (0.2) impure.
+  EXPECT_EQ(v.UmbraInner, 3);
+  EXPECT_NEAR(v.UmbraInnerPure, 200.0 / 3.0, 1e-9);
   EXPECT_EQ(v.UmbraBehindSeveral, 2);
   EXPECT_NEAR(v.UmbraBehindSeveralPure, 50.0, 1e-9);
   EXPECT_EQ(v.Lit, 3);
@@ -217,7 +221,24 @@ TEST(ShadowMetrics, CompareVisibilityMeasuresErrorsPurityAndSeveralOccluders)
   EXPECT_EQ(empty.Counted, 0);
   EXPECT_TRUE(std::isnan(empty.MeanAbsolute));
   EXPECT_TRUE(std::isnan(empty.UmbraPure));
+  EXPECT_TRUE(std::isnan(empty.UmbraInnerPure));
   EXPECT_TRUE(std::isnan(empty.LitPure));
+}
+
+TEST(ShadowMetrics, IgnoreUnlitInRenderDropsPixelsTheRenderLeavesBlack)
+{
+  // Three pixels: lit grey, black (its shading faces away), dark but not black.
+  const std::vector<std::uint8_t> unshadowed = { 90, 90, 90, 0, 0, 0, 0, 1, 0 };
+  std::vector<std::uint8_t> valid = { 1, 1, 1 };
+  shadowmetrics::IgnoreUnlitInRender(unshadowed, valid);
+  EXPECT_EQ(valid, (std::vector<std::uint8_t>{ 1, 0, 1 }));
+  // The factor there reads 1 (lit) whatever the technique drew, which is why.
+  const std::vector<std::uint8_t> shadowed = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  EXPECT_EQ(shadowmetrics::FactorFromRenders(shadowed, unshadowed, 3)[1], 1.0f);
+  // A short render (fewer pixels than the surface) leaves the rest alone.
+  std::vector<std::uint8_t> longer = { 1, 1, 1, 1 };
+  shadowmetrics::IgnoreUnlitInRender(unshadowed, longer);
+  EXPECT_EQ(longer, (std::vector<std::uint8_t>{ 1, 0, 1, 1 }));
 }
 
 TEST(ShadowMetrics, VisibilityErrorMapColoursTheSignedError)
