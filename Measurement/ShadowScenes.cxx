@@ -1056,31 +1056,48 @@ vtkSmartPointer<vtkLight> MakeSun(const ViewFrame& view, const SunSetup& sun)
 
 vtkSmartPointer<vtkLight> MakeSetupLight(const ViewFrame& view, const std::string& setup);
 
-// The diameter in degrees of a "soft-sun-D" set-up's sun (D in (0, 30]), or 0.
-double WiderSunDiameter(const std::string& setup)
+// The number N of a sized set-up named `kind` + "-N" ("soft-sun-2"), if N is in
+// (0, largest]; otherwise 0.
+double SizedSetupNumber(const std::string& setup, const std::string& kind, double largest)
 {
-  const std::string prefix = "soft-sun-";
+  const std::string prefix = kind + "-";
   if (setup.compare(0, prefix.size(), prefix) != 0)
   {
     return 0.0;
   }
   const std::string number = setup.substr(prefix.size());
   char* end = nullptr;
-  const double diameter = std::strtod(number.c_str(), &end);
+  const double value = std::strtod(number.c_str(), &end);
   const bool parsed = !number.empty() && end == number.c_str() + number.size();
-  return parsed && diameter > 0.0 && diameter <= 30.0 ? diameter : 0.0;
+  return parsed && value > 0.0 && value <= largest ? value : 0.0;
+}
+
+// "soft-sun-D": the sun D degrees across; "soft-spot-P", "soft-point-P": the
+// lamp's radius P% of the camera's distance to its focal point.
+constexpr double WidestSunDeg = 30.0;
+constexpr double LargestLampPercent = 50.0;
+
+double WiderSunDiameter(const std::string& setup)
+{
+  return SizedSetupNumber(setup, "soft-sun", WidestSunDeg);
+}
+
+double LargerLampPercent(const std::string& setup)
+{
+  return std::max(SizedSetupNumber(setup, "soft-spot", LargestLampPercent),
+    SizedSetupNumber(setup, "soft-point", LargestLampPercent));
 }
 
 // A sized set-up is its hard set-up's light with a size (LIGHT_SIZE).
 vtkSmartPointer<vtkLight> MakeSizedSetupLight(const ViewFrame& view, const std::string& setup)
 {
+  const std::string kind = LightKindOfSetup(setup);
+  vtkSmartPointer<vtkLight> light = MakeSetupLight(view, kind == "sun" ? "perpendicular" : kind);
   const double wider = WiderSunDiameter(setup);
-  const bool sun = setup == "soft-sun" || wider > 0.0;
-  vtkSmartPointer<vtkLight> light =
-    MakeSetupLight(view, sun ? "perpendicular" : setup == "soft-spot" ? "spot" : "point");
-  const double sunDiameter = wider > 0.0 ? wider : SoftSunDiameterDeg;
-  light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(),
-    sun ? sunDiameter : SoftLampRadiusFraction * view.distance);
+  const double larger = LargerLampPercent(setup);
+  light->GetInformation()->Set(vtkAbstractShadowMapPass::LIGHT_SIZE(), kind == "sun"
+      ? (wider > 0.0 ? wider : SoftSunDiameterDeg)
+      : (larger > 0.0 ? 0.01 * larger : SoftLampRadiusFraction) * view.distance);
   return light;
 }
 
@@ -1803,18 +1820,22 @@ std::vector<std::string> SizedLightSetupNames()
 
 std::string LightKindOfSetup(const std::string& setup)
 {
-  if (setup == "spot" || setup == "wide-spot" || setup == "soft-spot")
+  if (setup == "spot" || setup == "wide-spot" || setup == "soft-spot" ||
+    SizedSetupNumber(setup, "soft-spot", LargestLampPercent) > 0.0)
   {
     return "spot";
   }
-  return setup == "point" || setup == "street-point" || setup == "soft-point" ? "point" : "sun";
+  return setup == "point" || setup == "street-point" || setup == "soft-point" ||
+      SizedSetupNumber(setup, "soft-point", LargestLampPercent) > 0.0
+    ? "point"
+    : "sun";
 }
 
 bool IsSizedLightSetup(const std::string& setup)
 {
   const std::vector<std::string> names = SizedLightSetupNames();
   return std::find(names.begin(), names.end(), setup) != names.end() ||
-    WiderSunDiameter(setup) > 0.0;
+    WiderSunDiameter(setup) > 0.0 || LargerLampPercent(setup) > 0.0;
 }
 
 bool IsLightSetup(const std::string& setup)

@@ -202,11 +202,13 @@ std::vector<std::string> LightSetupNames();
  * soft shadows: "soft-sun" (the perpendicular sun, 0.53 degrees across, the
  * real sun's), "soft-spot" and "soft-point" (the spot's and the point's
  * lights as spheres of radius 0.02 d). "soft-sun-D" also names the sun
- * D degrees across (D in (0, 30]), for a size's effect on cost.
+ * D degrees across (D in (0, 30]), "soft-spot-P" and "soft-point-P" those
+ * lamps with a radius of P% of d (P in (0, 50]), for a size's effect.
  */
 std::vector<std::string> SizedLightSetupNames();
 
-/** True for a name in SizedLightSetupNames() or a "soft-sun-D". */
+/** True for a name in SizedLightSetupNames(), a "soft-sun-D", "soft-spot-P"
+ * or "soft-point-P". */
 bool IsSizedLightSetup(const std::string& setup);
 
 /** True for a name in LightSetupNames() or SizedLightSetupNames(). */

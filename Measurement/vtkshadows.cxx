@@ -117,7 +117,9 @@ void PrintUsage(std::ostream& out)
          "                           (soft shadows, measured against ray-traced area\n"
          "                           lights): soft-sun (0.53 degrees), soft-spot,\n"
          "                           soft-point (radius 0.02 of the camera's distance),\n"
-         "                           soft-sun-D (the sun D degrees across, up to 30);\n"
+         "                           soft-sun-D (the sun D degrees across, up to 30),\n"
+         "                           soft-spot-P, soft-point-P (radius P% of it, up\n"
+         "                           to 50);\n"
          "                           soft: these three; all: all eleven\n"
          "                           {perpendicular,spot,point}\n"
          "  --techniques LIST|all    none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
@@ -418,8 +420,9 @@ std::string CheckSetups(const std::vector<std::string>& setups)
     {
       return "unknown light set-up '" + setup +
         "' (expected overhead, perpendicular, behind, facing, spot, point, wide-spot, "
-        "street-point, soft-sun, soft-sun-D (D degrees across, up to 30), soft-spot or "
-        "soft-point)";
+        "street-point, soft-sun, soft-sun-D (D degrees across, up to 30), soft-spot, "
+        "soft-point, soft-spot-P or soft-point-P (radius P% of the camera's distance, up to "
+        "50))";
     }
   }
   return setups.empty() ? "no light set-up given" : std::string();

@@ -1,7 +1,18 @@
 // Which technique `vtkshadows analyze` recommends (Measurement/
-// ShadowRecommendation.h), and its progress line (ShadowProgress.h).
+// ShadowRecommendation.h), the light kinds of the set-ups it groups by
+// (ShadowScenes.h), and its progress line (ShadowProgress.h).
 #include "ShadowProgress.h"
 #include "ShadowRecommendation.h"
+#include "ShadowScenes.h"
+
+#include "vtkAbstractShadowMapPass.h"
+
+#include <vtkCamera.h>
+#include <vtkInformation.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkNew.h>
+#include <vtkRenderer.h>
 
 #include <gtest/gtest.h>
 
@@ -17,6 +28,39 @@ MeasuredCase Case(const std::string& setup, const std::string& technique, double
 {
   return { "file", setup, technique, ours ? "vtkSomePass" : "", 1024, misclassified, steady, moving,
     1000 };
+}
+
+// The size a set-up gives its light (vtkAbstractShadowMapPass::LIGHT_SIZE).
+double SetupLightSize(const std::string& setup)
+{
+  vtkNew<vtkRenderer> renderer;
+  renderer->GetActiveCamera()->SetPosition(0.0, -10.0, 0.0); // 10 from the focal point
+  EXPECT_TRUE(shadowscenes::AddLightSetup(renderer, setup)) << setup;
+  return vtkAbstractShadowMapPass::GetLightSize(
+    vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0)));
+}
+
+TEST(ShadowScenesSetups, SizedSetupsNameTheirLightsKindAndSize)
+{
+  for (const char* setup : { "soft-spot", "soft-spot-5", "soft-spot-50" })
+  {
+    EXPECT_EQ(shadowscenes::LightKindOfSetup(setup), "spot") << setup;
+  }
+  for (const char* setup : { "soft-point", "soft-point-0.5" })
+  {
+    EXPECT_EQ(shadowscenes::LightKindOfSetup(setup), "point") << setup;
+  }
+  EXPECT_EQ(shadowscenes::LightKindOfSetup("soft-sun-8"), "sun");
+  for (const char* setup : { "soft-spot-0", "soft-spot-51", "soft-point-x", "soft-spot-",
+         "soft-sun-31", "soft-lamp-5" })
+  {
+    EXPECT_FALSE(shadowscenes::IsLightSetup(setup)) << setup;
+  }
+  EXPECT_NEAR(SetupLightSize("soft-spot"), 0.2, 1e-9); // 2% of the distance
+  EXPECT_NEAR(SetupLightSize("soft-spot-5"), 0.5, 1e-9);
+  EXPECT_NEAR(SetupLightSize("soft-point-0.5"), 0.05, 1e-9);
+  EXPECT_NEAR(SetupLightSize("soft-sun"), 0.53, 1e-9); // degrees
+  EXPECT_NEAR(SetupLightSize("soft-sun-8"), 8.0, 1e-9);
 }
 
 TEST(ShadowRecommendation, TheMostAccurateWithinTheBudgetAndTheRunnerUp)
