@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 namespace shadowmetrics
 {
@@ -147,8 +148,14 @@ std::vector<Truth> TruthAtHalf(const std::vector<float>& visibility)
 void IgnoreUnlitInRender(
   const std::vector<std::uint8_t>& unshadowedRgb, std::vector<std::uint8_t>& valid)
 {
-  const std::size_t pixels = std::min(valid.size(), unshadowedRgb.size() / 3);
-  for (std::size_t i = 0; i < pixels; ++i)
+  if (unshadowedRgb.size() != 3 * valid.size())
+  {
+    std::cerr << "shadowmetrics: IgnoreUnlitInRender: a render of " << unshadowedRgb.size()
+              << " bytes for " << valid.size() << " pixels: every pixel dropped\n";
+    std::fill(valid.begin(), valid.end(), 0);
+    return;
+  }
+  for (std::size_t i = 0; i < valid.size(); ++i)
   {
     if (unshadowedRgb[3 * i] + unshadowedRgb[3 * i + 1] + unshadowedRgb[3 * i + 2] == 0)
     {

@@ -45,7 +45,9 @@ struct Classification
 /// normal faces away from the light while the oracle's geometric normal does
 /// not, as on an isosurface's folds), so no shadow factor can be read from the
 /// renders. Without this such pixels counted as lit for every technique (the
-/// factor reads 1), 2% of the paraview scene's umbra under its sun.
+/// factor reads 1), 2% of the paraview scene's umbra under its sun. A render
+/// of another size than `valid` clears every pixel, with a message on
+/// std::cerr (as Oracle::MaskRasterMismatch does for its z-buffer).
 void IgnoreUnlitInRender(
   const std::vector<std::uint8_t>& unshadowedRgb, std::vector<std::uint8_t>& valid);
 
@@ -79,8 +81,9 @@ struct VisibilityErrors
   double UmbraPure = 0.0;
   std::int64_t Lit = 0;
   double LitPure = 0.0;
-  /// The umbra pixels whose 4-neighbours are all umbra too (more than a pixel
-  /// from the truth's penumbra or light), and the percentage of them at most
+  /// The umbra pixels none of whose counted 4-neighbours has a visibility above
+  /// 0 (more than a pixel from the truth's penumbra or light; TruthEdges), and
+  /// the percentage of them at most
   /// PureWithin: the purity the pixel grid leaves to the technique, where
   /// UmbraPure also holds the pixels that straddle the umbra's edge.
   std::int64_t UmbraInner = 0;

@@ -1075,7 +1075,7 @@ double SizedSetupNumber(const std::string& setup, const std::string& kind, doubl
 // "soft-sun-D": the sun D degrees across; "soft-spot-P", "soft-point-P": the
 // lamp's radius P% of the camera's distance to its focal point.
 constexpr double WidestSunDeg = 30.0;
-constexpr double LargestLampPercent = 50.0;
+constexpr double LargestLampPercent = 25.0; // the point lamp is 0.5 d above the focus
 
 double WiderSunDiameter(const std::string& setup)
 {

@@ -203,7 +203,7 @@ std::vector<std::string> LightSetupNames();
  * real sun's), "soft-spot" and "soft-point" (the spot's and the point's
  * lights as spheres of radius 0.02 d). "soft-sun-D" also names the sun
  * D degrees across (D in (0, 30]), "soft-spot-P" and "soft-point-P" those
- * lamps with a radius of P% of d (P in (0, 50]), for a size's effect.
+ * lamps with a radius of P% of d (P in (0, 25]), for a size's effect.
  */
 std::vector<std::string> SizedLightSetupNames();
 
@@ -211,7 +211,7 @@ std::vector<std::string> SizedLightSetupNames();
  * or "soft-point-P". */
 bool IsSizedLightSetup(const std::string& setup);
 
-/** True for a name in LightSetupNames() or SizedLightSetupNames(). */
+/** True for a name in LightSetupNames(), or a sized set-up (IsSizedLightSetup). */
 bool IsLightSetup(const std::string& setup);
 
 /** The kind of a set-up's light: "sun", "spot" or "point". */

@@ -118,9 +118,10 @@ void PrintUsage(std::ostream& out)
          "                           lights): soft-sun (0.53 degrees), soft-spot,\n"
          "                           soft-point (radius 0.02 of the camera's distance),\n"
          "                           soft-sun-D (the sun D degrees across, up to 30),\n"
-         "                           soft-spot-P, soft-point-P (radius P% of it, up\n"
-         "                           to 50);\n"
-         "                           soft: these three; all: all eleven\n"
+         "                           soft-spot-P, soft-point-P (radius P% of the\n"
+         "                           camera's distance, up to 25); soft: soft-sun,\n"
+         "                           soft-spot, soft-point; all: the eight and those\n"
+         "                           three\n"
          "                           {perpendicular,spot,point}\n"
          "  --techniques LIST|all    none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
          "                           csm-tight,csm-lispsm,second-depth,midpoint,dual,evsm4\n"
@@ -422,7 +423,7 @@ std::string CheckSetups(const std::vector<std::string>& setups)
         "' (expected overhead, perpendicular, behind, facing, spot, point, wide-spot, "
         "street-point, soft-sun, soft-sun-D (D degrees across, up to 30), soft-spot, "
         "soft-point, soft-spot-P or soft-point-P (radius P% of the camera's distance, up to "
-        "50))";
+        "25))";
     }
   }
   return setups.empty() ? "no light set-up given" : std::string();

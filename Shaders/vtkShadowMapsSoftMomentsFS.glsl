@@ -219,8 +219,8 @@ float vtkShadowSoftVisibility(vec3 positionVC, vec3 normalVC, int light, int fir
       positionVC, kernel, receiver, nearer, light, firstView, view, viewLayout, count, features);
     blockerDistance = again > 0.0 ? again : blockerDistance;
   }
-  // At least half a texel, as the depth maps' filter: a caster a texel or two
-  // wide (a pole far off) keeps its umbra.
+  // At least half a texel: a caster a texel or two wide (a pole far off) keeps
+  // its umbra.
   float radius = max(
     vtkShadowPenumbraHalfWidth(blockerDistance, kernel.LightDistance, light), 0.5 * kernel.Texel);
   float inside;

@@ -42,7 +42,7 @@ double SetupLightSize(const std::string& setup)
 
 TEST(ShadowScenesSetups, SizedSetupsNameTheirLightsKindAndSize)
 {
-  for (const char* setup : { "soft-spot", "soft-spot-5", "soft-spot-50" })
+  for (const char* setup : { "soft-spot", "soft-spot-5", "soft-spot-25" })
   {
     EXPECT_EQ(shadowscenes::LightKindOfSetup(setup), "spot") << setup;
   }
@@ -51,7 +51,7 @@ TEST(ShadowScenesSetups, SizedSetupsNameTheirLightsKindAndSize)
     EXPECT_EQ(shadowscenes::LightKindOfSetup(setup), "point") << setup;
   }
   EXPECT_EQ(shadowscenes::LightKindOfSetup("soft-sun-8"), "sun");
-  for (const char* setup : { "soft-spot-0", "soft-spot-51", "soft-point-x", "soft-spot-",
+  for (const char* setup : { "soft-spot-0", "soft-spot-26", "soft-point-x", "soft-spot-",
          "soft-sun-31", "soft-lamp-5" })
   {
     EXPECT_FALSE(shadowscenes::IsLightSetup(setup)) << setup;
