@@ -83,9 +83,9 @@ struct VisibilityErrors
   double LitPure = 0.0;
   /// The umbra pixels none of whose counted 4-neighbours has a visibility above
   /// 0 (more than a pixel from the truth's penumbra or light; TruthEdges), and
-  /// the percentage of them at most
-  /// PureWithin: the purity the pixel grid leaves to the technique, where
-  /// UmbraPure also holds the pixels that straddle the umbra's edge.
+  /// the percentage of them at most PureWithin: the purity the pixel grid
+  /// leaves to the technique, where UmbraPure also holds the pixels that
+  /// straddle the umbra's edge.
   std::int64_t UmbraInner = 0;
   double UmbraInnerPure = 0.0;
   /// The umbra pixels behind two or more occluders (Oracle::CountOccluders of
