@@ -556,6 +556,7 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
   csv << "scene,light,technique,resolution,memory_mib,misclassified,false_shadow,leak,bleeding,inner,"
          "mean_abs_diff,undersampled,density_spread,flicker,changes,truth_changes,first_s,steady_s,moving_s,counted_pixels,"
          "visibility_mean_error,visibility_p95_error,umbra_pure,umbra_inner_pure,umbra_behind_several_pure,lit_pure,"
+         "umbra_pixels,umbra_inner_pixels,"
          "transmittance_mean_error_r,transmittance_mean_error_g,transmittance_mean_error_b,"
          "transmittance_p95_error,transmittance_partial_pixels,transmittance_partial_error_r,"
          "transmittance_partial_error_g,transmittance_partial_error_b\n";
@@ -573,11 +574,12 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
     if (row.Sized)
     {
       csv << v.MeanAbsolute << ',' << v.Percentile95 << ',' << v.UmbraPure << ','
-          << v.UmbraInnerPure << ',' << v.UmbraBehindSeveralPure << ',' << v.LitPure << ',';
+          << v.UmbraInnerPure << ',' << v.UmbraBehindSeveralPure << ',' << v.LitPure << ','
+          << v.Umbra << ',' << v.UmbraInner << ',';
     }
     else
     {
-      csv << "nan,nan,nan,nan,nan,nan,";
+      csv << "nan,nan,nan,nan,nan,nan,nan,nan,";
     }
     const shadowmetrics::TransmittanceErrors& t = row.Transmittance;
     if (row.Translucent)

@@ -45,7 +45,7 @@ struct Classification
 /// normal faces away from the light while the oracle's geometric normal does
 /// not, as on an isosurface's folds), so no shadow factor can be read from the
 /// renders. Without this such pixels counted as lit for every technique (the
-/// factor reads 1), 2% of the paraview scene's umbra under its sun. A render
+/// factor reads 1): 854 pixels of the paraview scene's view under its sun. A render
 /// of another size than `valid` clears every pixel, with a message on
 /// std::cerr (as Oracle::MaskRasterMismatch does for its z-buffer).
 void IgnoreUnlitInRender(

@@ -176,6 +176,8 @@ def test_bench_sized_lights(program, output):
         check(float(none["umbra_inner_pure"]) == 0.0, setup + ": no shadows has no inner umbra")
         check(float(uniform["umbra_inner_pure"]) > 90.0,
               setup + ": hard shadows darken the umbra away from its edge")
+        check(0 < int(uniform["umbra_inner_pixels"]) < int(uniform["umbra_pixels"]),
+              setup + ": the inner umbra is the umbra less its edge")
     check(rows[("model", "soft-sun", "uniform")]["light"] == "soft-sun", "the set-up is named")
     hard = rows_by_case(os.path.join(output, "bench", "results.csv"))
     check(hard[("model", "perpendicular", "uniform")]["visibility_mean_error"] == "nan",
