@@ -75,14 +75,16 @@ struct View
 };
 
 /// The truth of the current view: primary rays, masked where the rasteriser
-/// disagrees, then one shadow ray per pixel; for a sized light, its
+/// disagrees or `plain` (the frame without shadows) is black, then one shadow
+/// ray per pixel; for a sized light, its
 /// visibility (into `visibilityOut`, left empty for a light without a size)
 /// thresholded at one half.
 std::vector<Truth> TruthOfView(View& view, const shadoworacle::Oracle& oracle,
-  shadoworacle::Surface* surfaceOut = nullptr, std::vector<float>* visibilityOut = nullptr)
+  const std::vector<std::uint8_t>& plain, shadoworacle::Surface* surfaceOut = nullptr,
+  std::vector<float>* visibilityOut = nullptr)
 {
   shadoworacle::Surface surface =
-    VisibleSurface(oracle, view.Renderer, view.Window, view.Width, view.Height);
+    VisibleSurface(oracle, view.Renderer, view.Window, view.Width, view.Height, plain);
   vtkLight* light = FirstLight(view.Renderer);
   std::vector<Truth> truth;
   std::vector<float> visibility;
@@ -273,7 +275,7 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
     view.Renderer->SetPass(nullptr);
     view.Window->Render();
     const auto plain = CaptureRGB(view.Window);
-    const auto truth = TruthOfView(view, oracle);
+    const auto truth = TruthOfView(view, oracle, plain);
     for (size_t t = 0; t < techniques.size(); ++t)
     {
       view.Renderer->SetPass(techniques[t].Pass);
@@ -322,7 +324,7 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   const auto plain = CaptureRGB(view.Window);
   shadoworacle::Surface surface;
   std::vector<float> visibility;
-  const auto truth = TruthOfView(view, oracle, &surface, &visibility);
+  const auto truth = TruthOfView(view, oracle, plain, &surface, &visibility);
   const std::vector<std::uint8_t>& valid = surface.Valid;
   const std::vector<unsigned char> occluders =
     oracle.CountOccluders(surface, FirstLight(view.Renderer), truth);

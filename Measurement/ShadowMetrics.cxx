@@ -27,15 +27,16 @@ double Percent(std::int64_t part, std::int64_t whole)
   return whole > 0 ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0;
 }
 
-// The umbra (visibility 0) as Shadowed, every other counted pixel as Lit.
-std::vector<Truth> UmbraAgainstRest(const std::vector<float>& visibility)
+// Each counted visibility as Shadowed where `shadowed(visibility)`, else Lit.
+template <typename Predicate>
+std::vector<Truth> TruthWhere(const std::vector<float>& visibility, Predicate shadowed)
 {
   std::vector<Truth> truth(visibility.size(), Truth::Ignored);
   for (std::size_t i = 0; i < visibility.size(); ++i)
   {
     if (visibility[i] != shadoworacle::NotCounted)
     {
-      truth[i] = visibility[i] == 0.0f ? Truth::Shadowed : Truth::Lit;
+      truth[i] = shadowed(visibility[i]) ? Truth::Shadowed : Truth::Lit;
     }
   }
   return truth;
@@ -133,15 +134,7 @@ Classification Classify(
 //------------------------------------------------------------------------------
 std::vector<Truth> TruthAtHalf(const std::vector<float>& visibility)
 {
-  std::vector<Truth> truth(visibility.size(), Truth::Ignored);
-  for (std::size_t i = 0; i < visibility.size(); ++i)
-  {
-    if (visibility[i] != shadoworacle::NotCounted)
-    {
-      truth[i] = IsShadowed(visibility[i]) ? Truth::Shadowed : Truth::Lit;
-    }
-  }
-  return truth;
+  return TruthWhere(visibility, IsShadowed);
 }
 
 //------------------------------------------------------------------------------
@@ -177,7 +170,9 @@ VisibilityErrors CompareVisibility(const std::vector<float>& visibility,
     return result;
   }
   result.AtHalf = Classify(TruthAtHalf(visibility), factor, width, height);
-  const std::vector<std::uint8_t> umbraEdges = TruthEdges(UmbraAgainstRest(visibility), width, height);
+  // The umbra against every other counted pixel.
+  const std::vector<std::uint8_t> umbraEdges =
+    TruthEdges(TruthWhere(visibility, [](float v) { return v == 0.0f; }), width, height);
   std::vector<double> errors;
   std::int64_t umbraPure = 0;
   std::int64_t innerPure = 0;

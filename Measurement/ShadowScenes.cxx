@@ -1082,6 +1082,12 @@ double WiderSunDiameter(const std::string& setup)
   return SizedSetupNumber(setup, "soft-sun", WidestSunDeg);
 }
 
+// True for `lamp` ("soft-spot", "soft-point") and its "-P" sizes.
+bool IsSizedLampSetup(const std::string& setup, const std::string& lamp)
+{
+  return setup == lamp || SizedSetupNumber(setup, lamp, LargestLampPercent) > 0.0;
+}
+
 double LargerLampPercent(const std::string& setup)
 {
   return std::max(SizedSetupNumber(setup, "soft-spot", LargestLampPercent),
@@ -1820,13 +1826,11 @@ std::vector<std::string> SizedLightSetupNames()
 
 std::string LightKindOfSetup(const std::string& setup)
 {
-  if (setup == "spot" || setup == "wide-spot" || setup == "soft-spot" ||
-    SizedSetupNumber(setup, "soft-spot", LargestLampPercent) > 0.0)
+  if (setup == "spot" || setup == "wide-spot" || IsSizedLampSetup(setup, "soft-spot"))
   {
     return "spot";
   }
-  return setup == "point" || setup == "street-point" || setup == "soft-point" ||
-      SizedSetupNumber(setup, "soft-point", LargestLampPercent) > 0.0
+  return setup == "point" || setup == "street-point" || IsSizedLampSetup(setup, "soft-point")
     ? "point"
     : "sun";
 }

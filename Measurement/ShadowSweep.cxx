@@ -487,7 +487,7 @@ CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& option
   const auto plain = shadowbench::CaptureRGB(view.Window);
   vtkLight* light = shadowbench::FirstLight(view.Renderer);
   const shadoworacle::Surface surface =
-    shadowbench::VisibleSurface(view.Oracle, view.Renderer, view.Window, drawn.Width, drawn.Height);
+    shadowbench::VisibleSurface(view.Oracle, view.Renderer, view.Window, drawn.Width, drawn.Height, plain);
   std::vector<float> visibility;
   std::vector<Truth> truth;
   if (drawn.Light.Size > 0.0)

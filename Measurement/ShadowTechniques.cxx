@@ -548,11 +548,11 @@ std::string FormatNumber(double value, int digits)
 
 //------------------------------------------------------------------------------
 shadoworacle::Surface VisibleSurface(const shadoworacle::Oracle& oracle, vtkRenderer* renderer,
-  vtkRenderWindow* window, int width, int height)
+  vtkRenderWindow* window, int width, int height, const std::vector<std::uint8_t>& unshadowedRgb)
 {
   shadoworacle::Surface surface = oracle.Trace(renderer, width, height);
   shadoworacle::Oracle::MaskRasterMismatch(surface, renderer, CaptureDepth(window, width, height));
-  shadowmetrics::IgnoreUnlitInRender(CaptureRGB(window), surface.Valid);
+  shadowmetrics::IgnoreUnlitInRender(unshadowedRgb, surface.Valid);
   return surface;
 }
 

@@ -99,10 +99,11 @@ std::string FormatNumber(double value, int digits = 2);
 /// The oracle's view of the frame `renderer` last rendered into `window`
 /// (width x height pixels): one primary ray per pixel, pixels where the
 /// rasterised depth disagrees (silhouettes, skipped geometry) or that the
-/// render leaves black (no shadow factor to read) made invalid. The frame must
-/// be the one without shadows that the techniques' factors divide by.
+/// render without shadows, `unshadowedRgb` (CaptureRGB of that frame, the one
+/// the techniques' factors divide by), leaves black (no factor to read) made
+/// invalid.
 shadoworacle::Surface VisibleSurface(const shadoworacle::Oracle& oracle, vtkRenderer* renderer,
-  vtkRenderWindow* window, int width, int height);
+  vtkRenderWindow* window, int width, int height, const std::vector<std::uint8_t>& unshadowedRgb);
 
 /// The renderer's first light (nullptr if it has none).
 vtkLight* FirstLight(vtkRenderer* renderer);
