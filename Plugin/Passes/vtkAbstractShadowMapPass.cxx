@@ -31,7 +31,6 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataObject.h"
-#include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
@@ -408,10 +407,7 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   }
   if (renderer && renderer->GetSelector())
   {
-    // A hardware selection pass: ids, not light. The maps stay as they are.
-    this->LeaveRenderPasses();
-    delegate->Render(s);
-    this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
+    this->RenderForSelection(renderer);
     return;
   }
   r.Active = renderer && this->PrepareShadows(renderer, s);
@@ -438,6 +434,21 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   }
   this->LeaveRenderPasses();
   vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::RenderForSelection(vtkOpenGLRenderer* renderer)
+{
+  // Picking draws ids, not light, and the maps stay as they are. Without a
+  // pass the renderer hands its props (or the ones picked from) to its
+  // selector, which gives each its id before drawing it; a delegate's opaque
+  // pass would draw them with none, and nothing could be picked.
+  this->LeaveRenderPasses();
+  this->UpdateCamera(renderer);
+  this->UpdateLightGeometry(renderer);
+  this->UpdateLights(renderer);
+  this->UpdateGeometry(renderer);
+  this->NumberOfRenderedProps = renderer->GetNumberOfPropsRendered();
 }
 
 //------------------------------------------------------------------------------

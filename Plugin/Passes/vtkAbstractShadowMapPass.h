@@ -454,6 +454,8 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Internal;
 
+  /** A hardware selector's frame (picking): the props drawn as the renderer draws them without a pass. */
+  void RenderForSelection(vtkOpenGLRenderer* renderer);
   bool PrepareShadows(vtkOpenGLRenderer* renderer, const vtkRenderState* s);
   void CollectLights(vtkOpenGLRenderer* renderer);
   void WarnAboutLightSizes(const std::vector<vtkLight*>& clamped);

@@ -1,6 +1,11 @@
 #include "ShadowTestUtilities.h"
 
 #include "vtkAbstractShadowMapPass.h"
+#include "vtkCascadedShadowMapPass.h"
+#include "vtkDepthShadowMapPass.h"
+#include "vtkDualDepthShadowMapPass.h"
+#include "vtkVarianceShadowMapPass.h"
+#include "vtkWarpedShadowMapPass.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
@@ -61,6 +66,16 @@ vtkLight* ReplaceLights(vtkRenderer* renderer)
   return light;
 }
 } // namespace
+
+//------------------------------------------------------------------------------
+PassKinds EveryPassKind()
+{
+  return { { "uniform", NewPass<vtkDepthShadowMapPass> },
+    { "warped", NewPass<vtkWarpedShadowMapPass> },
+    { "cascaded", NewPass<vtkCascadedShadowMapPass> },
+    { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
+    { "moments", NewPass<vtkVarianceShadowMapPass> } };
+}
 
 TestScene::TestScene(int width, int height)
 {

@@ -56,6 +56,21 @@ vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* so
 /// A box of `size` centred at `center`, added to `renderer`.
 vtkSmartPointer<vtkActor> AddBox(vtkRenderer* renderer, const glm::dvec3& center, const glm::dvec3& size);
 
+/// A new pass of a preset.
+template <typename Pass>
+vtkSmartPointer<vtkAbstractShadowMapPass> NewPass()
+{
+  return vtkSmartPointer<Pass>::New();
+}
+
+/// A pass made anew, by the name a test reports it under.
+using PassKinds =
+  std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>;
+
+/// Every preset: uniform, warped and cascaded views of depth maps; dual depth
+/// and moments in uniform views.
+PassKinds EveryPassKind();
+
 /// Renders and returns the frame as RGB.
 vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window);
 

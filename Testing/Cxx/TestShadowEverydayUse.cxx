@@ -82,26 +82,6 @@ void ExpectChangeShownAsFresh(TestScene& scene, vtkAbstractShadowMapPass* pass,
                                                         "differs from a fresh pass's";
 }
 
-template <typename Pass>
-vtkSmartPointer<vtkAbstractShadowMapPass> NewPass()
-{
-  return vtkSmartPointer<Pass>::New();
-}
-
-using PassKinds =
-  std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>;
-
-// Every pass kind: uniform, warped and cascaded views; dual depth and moments
-// in uniform views.
-PassKinds EveryPassKind()
-{
-  return { { "uniform", NewPass<vtkDepthShadowMapPass> },
-    { "warped", NewPass<vtkWarpedShadowMapPass> },
-    { "cascaded", NewPass<vtkCascadedShadowMapPass> },
-    { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
-    { "moments", NewPass<vtkVarianceShadowMapPass> } };
-}
-
 // Every pass kind, the warps the focused map's default (uniform) leaves out
 // (LiSPSM, TSM with its linear depth, PSM), and casting back faces only.
 PassKinds EveryPassKindAndWarp()
