@@ -440,7 +440,7 @@ PartList MapperGeometry(vtkMapper* mapper)
 // The passes' own opt-out rule.
 bool CastsShadows(vtkProp* prop)
 {
-  return shadowmaps::IsEnabled(prop->GetPropertyKeys(), vtkAbstractShadowMapPass::CASTS_SHADOWS());
+  return shadowmaps::TakesPart(prop, vtkAbstractShadowMapPass::CASTS_SHADOWS());
 }
 
 bool IsVisibleCaster(vtkActor* actor)

@@ -104,6 +104,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Scene/ShadowMapCasterVersion.cxx
     Plugin/Scene/ShadowMapPropParts.cxx
     Plugin/Scene/ShadowMapPropRecords.cxx
+    Plugin/Scene/ShadowMapPropRoles.cxx
     Plugin/Scene/ShadowMapSceneReading.cxx
     Plugin/Scene/ShadowMapVolumeReading.cxx
     ${shadowmaps_shader_sources}
@@ -152,6 +153,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Scene/ShadowMapCasterVersion.h
     Plugin/Scene/ShadowMapPropParts.h
     Plugin/Scene/ShadowMapPropRecords.h
+    Plugin/Scene/ShadowMapPropRoles.h
     Plugin/Scene/ShadowMapSceneReading.h
     ${shadowmaps_shader_headers})
 foreach (folder IN LISTS shadowmaps_folders)

@@ -55,13 +55,19 @@ std::string OwnTransmittance(const std::string& fragmentShader, const ReceiverCo
                              : "  vtkShadowOwnTransmittance = " + transmitted + ";\n";
 }
 
-// Whether the shader names `name` as a whole word (lightColor1, not lightColor12).
-bool NamesWord(const std::string& shader, const std::string& name)
+// Whether the shader uses `name` as a whole word (lightColor1, not
+// lightColor12) outside a uniform's declaration: VTK declares every light's
+// colour for props it then draws unlit (lighting off, lines without normals).
+bool UsesWord(const std::string& shader, const std::string& name)
 {
   for (size_t at = shader.find(name); at != std::string::npos; at = shader.find(name, at + 1))
   {
     const size_t end = at + name.size();
-    if (end == shader.size() || !(std::isalnum(static_cast<unsigned char>(shader[end])) || shader[end] == '_'))
+    const bool whole = end == shader.size() ||
+      !(std::isalnum(static_cast<unsigned char>(shader[end])) || shader[end] == '_');
+    const size_t line = shader.find_last_of('\n', at);
+    const size_t first = shader.find_first_not_of(" \t", line == std::string::npos ? 0 : line + 1);
+    if (whole && shader.compare(first, 8, "uniform ") != 0)
     {
       return true;
     }
@@ -222,7 +228,7 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
            << " = vtkShadowFactor("
            << ReceiverCallArguments(lights[k], k) << ");\n";
     }
-    else if (NamesWord(fragmentShader, "lightColor" + std::to_string(lights[k].ShaderIndex)))
+    else if (UsesWord(fragmentShader, "lightColor" + std::to_string(lights[k].ShaderIndex)))
     {
       ++unpatched; // the mapper lights with it, in code this module does not know
     }

@@ -106,8 +106,6 @@ using shadowmaps::LightKind;
 using shadowmaps::LightView;
 using shadowmaps::ShadowLight;
 
-using shadowmaps::IsEnabled;
-
 namespace
 {
 std::vector<vtkVolume*> CastingVolumes(const std::vector<Caster>& casters)
@@ -536,7 +534,8 @@ void vtkAbstractShadowMapPass::JoinRenderPasses(vtkProp* const* props, int count
 {
   // As vtkOpenGLRenderPass::PreRender, but once per prop: casters join before
   // the scene's props, and a prop's set of passes must be the same in both
-  // draws for its mapper to keep its shaders.
+  // draws for its mapper to keep its shaders. A prop that neither casts nor
+  // receives (an annotation, by default) draws as without the pass.
   Internals& r = *this->Internal;
   for (int i = 0; i < count; ++i)
   {
@@ -545,6 +544,11 @@ void vtkAbstractShadowMapPass::JoinRenderPasses(vtkProp* const* props, int count
     {
       vtkNew<vtkInformation> keys;
       prop->SetPropertyKeys(keys);
+    }
+    if (!shadowmaps::TakesPart(prop, CASTS_SHADOWS()) &&
+      !shadowmaps::TakesPart(prop, RECEIVES_SHADOWS()))
+    {
+      continue;
     }
     if (!HasRenderPass(prop->GetPropertyKeys(), this))
     {
@@ -1066,7 +1070,7 @@ void vtkAbstractShadowMapPass::WarnAboutVolume(const std::string& why)
 //------------------------------------------------------------------------------
 vtkAbstractShadowMapPass::ReceiverRole vtkAbstractShadowMapPass::ReceiverRoleOf(vtkProp* prop) const
 {
-  if (!IsEnabled(prop->GetPropertyKeys(), RECEIVES_SHADOWS()))
+  if (!shadowmaps::TakesPart(prop, RECEIVES_SHADOWS()))
   {
     return ReceiverRole::None;
   }

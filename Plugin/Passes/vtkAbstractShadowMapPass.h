@@ -48,8 +48,9 @@
  * Receivers: the shadow test is injected into the fragment shaders of
  * vtkOpenGLPolyDataMapper and its subclasses, per light, scaling that light's
  * diffuse and specular (Phong) or radiance (PBR) terms. Unlit draws compile
- * unchanged and render without shadows. Actors opt out through their property
- * keys: CASTS_SHADOWS() = 0 (not a caster), RECEIVES_SHADOWS() = 0.
+ * unchanged and render without shadows. Props opt out through their property
+ * keys: CASTS_SHADOWS() = 0 (not a caster), RECEIVES_SHADOWS() = 0;
+ * annotations (axes, labels, widgets) opt in through the same keys.
  *
  * If the GL context cannot provide the maps (allocation or framebuffer
  * failure) the pass warns once and renders the frame without shadows.
@@ -97,14 +98,20 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Set on an actor's property keys (or a light's information) with value 0 to
-   * keep it from casting shadows. Absent means 1.
+   * Set on a prop's property keys (or a light's information) with value 0 to
+   * keep it from casting shadows, or 1 to make it cast. Absent means 1 for
+   * lights and props but annotations: axes (vtkCubeAxesActor,
+   * vtkPolarAxesActor, vtkAxesActor, ParaView's axes grids), labels and 3D
+   * text (vtkTextActor3D, vtkBillboardTextActor3D, vtkAxisFollower), 2D
+   * actors and widgets' representations neither cast nor receive unless
+   * their keys say so.
    */
   static vtkInformationIntegerKey* CASTS_SHADOWS();
 
   /**
-   * Set on an actor's property keys with value 0 to keep it from receiving
-   * shadows. Absent means 1.
+   * Set on a prop's property keys with value 0 to keep it from receiving
+   * shadows, or 1 to make it receive. Absent means 1, but for annotations
+   * (see CASTS_SHADOWS).
    */
   static vtkInformationIntegerKey* RECEIVES_SHADOWS();
 

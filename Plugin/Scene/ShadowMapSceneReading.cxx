@@ -29,12 +29,6 @@
 namespace shadowmaps
 {
 //------------------------------------------------------------------------------
-bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key)
-{
-  return !info || !info->Has(key) || info->Get(key) != 0;
-}
-
-//------------------------------------------------------------------------------
 vtkInformationDoubleKey* OSPRayRadiusKey()
 {
   // Registered by name when VTK's ray tracing module is loaded (which may be
@@ -179,7 +173,7 @@ bool AnyTranslucent(const std::vector<Caster>& casters)
 bool HoldsItsOwnTransmittance(vtkProp* prop, vtkInformationIntegerKey* castsShadows)
 {
   auto* actor = vtkActor::SafeDownCast(prop);
-  if (!actor || !IsEnabled(prop->GetPropertyKeys(), castsShadows))
+  if (!actor || !TakesPart(prop, castsShadows))
   {
     return false;
   }
@@ -221,7 +215,7 @@ std::string CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,
     }
     frame.SceneBounds.Add(record.Bounds);
     frame.PropBounds.push_back(record.Bounds);
-    if (!IsEnabled(prop->GetPropertyKeys(), castsShadows))
+    if (!TakesPart(prop, castsShadows))
     {
       continue;
     }

@@ -7,6 +7,7 @@
 
 #include "ShadowMapCasterVersion.h" // For ImpostorSizing
 #include "ShadowMapLight.h"         // For ShadowLight, ShadowFrame, Aabb
+#include "ShadowMapPropRoles.h"     // For IsEnabled, TakesPart
 
 #include "vtkType.h" // For vtkMTimeType
 
@@ -43,14 +44,12 @@ struct Caster
 bool AnyTranslucent(const std::vector<Caster>& casters);
 
 /// Whether the transmittance maps hold what `prop`, drawn as a receiver,
-/// lets through itself where it is translucent: it casts (`castsShadows`),
+/// lets through itself where it is translucent: it casts (TakesPart in
+/// `castsShadows`),
 /// with the same faces and colours toward the light as toward the camera (an
 /// actor without face culling or a back-face property). Its receivers then
 /// divide their own share out of the maps' product.
 bool HoldsItsOwnTransmittance(vtkProp* prop, vtkInformationIntegerKey* castsShadows);
-
-/// An opt-out key: absent (or no information at all) means yes.
-bool IsEnabled(vtkInformation* info, vtkInformationIntegerKey* key);
 
 /// Suns wider than this (degrees) are clamped to it: wider is a lamp.
 constexpr double WidestSun = 30.0;
@@ -100,7 +99,7 @@ SceneCamera ReadSceneCamera(vtkRenderer* renderer, ShadowFrame& frame);
 
 /// The visible props' bounds into `frame` (SceneBounds, PropBounds) and the
 /// casters among them (props that draw opaque or translucent polygons, or
-/// volumes that can be marched, and do not opt out by `castsShadows`), through
+/// volumes that can be marched, and take part in `castsShadows`), through
 /// `records`, which reads a prop again only when it changed. Returns why the
 /// first volume that would cast cannot be marched (empty: none such).
 std::string CollectProps(vtkRenderer* renderer, const ImpostorSizing& sizing,

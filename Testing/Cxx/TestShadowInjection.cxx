@@ -172,6 +172,11 @@ TEST(ShadowInjection, LightingCodeItCannotPatchIsCounted)
   // lightColor01 is another light's; an unlit shader names none.
   std::string other = "uniform vec3 lightColor01;\nvoid main()\n{\n}\n";
   EXPECT_EQ(shadowmaps::ReceiverShader::Inject(other, lights, 1, code, true, false), 0);
+
+  // VTK declares the light's colour for props it draws unlit, and uses it nowhere.
+  std::string unlit = head + "  gl_FragData[0] = vec4(1.0);\n}\n";
+  shadowmaps::ReceiverShader::MarkInjectionPoints(unlit);
+  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(unlit, lights, 1, code, true, false), 0);
 }
 
 // Numbers #define'd into GLSL are float literals the GL parses, huge and tiny

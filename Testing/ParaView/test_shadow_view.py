@@ -5,7 +5,8 @@ equal their baselines; ParaView's plain render view (no plugin pass) leaves the
 shadow point lit, so the probes can fail; the light kit's key light is the only
 kit light that casts, and only while KeyLightShadows is on; a representation's
 Casts Shadows and Receives Shadows turn its part off; SunDiameter softens the
-sun's shadow; translucent and volume representations cast partial shadows.
+sun's shadow; translucent and volume representations cast partial shadows; the
+axes grid and data axes grid cast none.
 
   xvfb-run -a pvpython Testing/ParaView/test_shadow_view.py PLUGIN OUTDIR
   (SHADOWMAPS_UPDATE_BASELINES=1 writes the baselines; look at them.)
@@ -327,6 +328,23 @@ volume.CastsShadows = 0
 opted_out = luminance_at(view, render(view, "ParaViewShadowViewVolumeOptedOut"), SHADOWED)
 check(abs(opted_out - open_ground) < 2,
       f"opted out, the volume shades nothing (luminance {opted_out:.0f}, open ground {open_ground:.0f})")
+Delete(view)
+
+# Annotations: the view's axes grid and the sphere's data axes grid, their grid
+# lines on, darken no pixel of the scene (they cast nothing), and the sphere
+# still casts its shadow.
+view = make_view("ShadowRenderView")
+ground, sphere = show_scene(view)
+without_grids = render(view, "ParaViewShadowViewWithoutGrids")
+view.AxesGrid.Visibility = 1
+view.AxesGrid.ShowGrid = 1
+sphere_grid = GetDisplayProperties(sphere, view).DataAxesGrid
+sphere_grid.Visibility = 1
+sphere_grid.ShowGrid = 1
+with_grids = render(view, "ParaViewShadowViewWithGrids")
+darker = testing.darker_pixels(with_grids, without_grids)
+check(darker == 0, f"the axes grid and the data axes grid cast no shadow ({darker} pixels darker)")
+shadow_probes(view, with_grids, "the axes grids shown")
 Delete(view)
 
 print(f"{len(failures)} failures")
