@@ -130,6 +130,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapBlur.h
     Plugin/OpenGL/ShadowMapCasterShader.h
     Plugin/OpenGL/ShadowMapCasting.h
+    Plugin/OpenGL/ShadowMapFloatUniforms.h
     Plugin/OpenGL/ShadowMapGlslLiteral.h
     Plugin/OpenGL/ShadowMapImpostors.h
     Plugin/OpenGL/ShadowMapLinearDepthResolve.h

@@ -2,12 +2,15 @@
 // shared by the casters, which store them, and the receivers, which warp their
 // own depth the same way. Before this block:
 //   VTK_SHADOW_MOMENTS 0 VSM, 1 EVSM2, 2 EVSM4, 3 MSM, 4 ESM;
-//   VTK_SHADOW_POSITIVE_EXPONENT, VTK_SHADOW_NEGATIVE_EXPONENT (floats);
 //   VTK_SHADOW_CHEBYSHEV_BASIS 1 where MSM's moments are stored for 16 bits.
 // Depths are light depths in [0, 1] (shadowmaps::LightDepth). A program that
 // both casts and receives gets this block twice.
 #ifndef VTK_SHADOW_MOMENTS_FUNCTIONS
 #define VTK_SHADOW_MOMENTS_FUNCTIONS
+
+// The exponents of EVSM's warps (uniforms: a slider builds no shader).
+uniform float vtkShadowPositiveExponent;
+uniform float vtkShadowNegativeExponent;
 
 // The exponential warps of depth moved to [-1, 1]: exp(c+ d) and -exp(-c- d),
 // both increasing with depth.
@@ -15,7 +18,7 @@ vec2 vtkShadowWarpDepth(float depth)
 {
   float d = 2.0 * depth - 1.0;
   return vec2(
-    exp(VTK_SHADOW_POSITIVE_EXPONENT * d), -exp(-VTK_SHADOW_NEGATIVE_EXPONENT * d));
+    exp(vtkShadowPositiveExponent * d), -exp(-vtkShadowNegativeExponent * d));
 }
 
 #if VTK_SHADOW_CHEBYSHEV_BASIS

@@ -38,12 +38,12 @@ vec4 vtkShadowShiftMoments(vec4 m, float shift)
 #if VTK_SHADOW_MOMENTS == 0
   return vec4(m.x + shift, m.y + 2.0 * shift * m.x + shift * shift, 0.0, 0.0);
 #elif VTK_SHADOW_MOMENTS == 1 || VTK_SHADOW_MOMENTS == 2
-  float positive = min(2.0 * VTK_SHADOW_POSITIVE_EXPONENT * shift, 80.0);
-  vec2 farthest = vec2(exp(VTK_SHADOW_POSITIVE_EXPONENT), exp(2.0 * VTK_SHADOW_POSITIVE_EXPONENT));
+  float positive = min(2.0 * vtkShadowPositiveExponent * shift, 80.0);
+  vec2 farthest = vec2(exp(vtkShadowPositiveExponent), exp(2.0 * vtkShadowPositiveExponent));
   vec2 warped = min(m.xy * exp(vec2(positive, 2.0 * positive)), farthest);
 #if VTK_SHADOW_MOMENTS == 2
-  float negative = min(-2.0 * VTK_SHADOW_NEGATIVE_EXPONENT * shift, 80.0);
-  vec2 nearest = vec2(exp(VTK_SHADOW_NEGATIVE_EXPONENT), exp(2.0 * VTK_SHADOW_NEGATIVE_EXPONENT));
+  float negative = min(-2.0 * vtkShadowNegativeExponent * shift, 80.0);
+  vec2 nearest = vec2(exp(vtkShadowNegativeExponent), exp(2.0 * vtkShadowNegativeExponent));
   vec2 scaled = m.zw * exp(vec2(negative, 2.0 * negative));
   return vec4(warped, max(scaled.x, -nearest.x), min(scaled.y, nearest.y));
 #else
@@ -147,7 +147,7 @@ float vtkShadowTapVariance(
   vtkShadowSoftKernel kernel, vtkShadowReceiverDepth receiver, float side, int view)
 {
   float footprint = max(2.0 * side, kernel.Texel);
-  float blur = VTK_SHADOW_BLUR_SIGMA * vtkShadowViews[view].FilterScale * kernel.Texel;
+  float blur = vtkShadowMomentsBlurSigma * vtkShadowViews[view].FilterScale * kernel.Texel;
   return vtkShadowMinimumVariance +
     receiver.SlopeSquared * (footprint * footprint / 12.0 + blur * blur);
 }
@@ -162,7 +162,7 @@ float vtkShadowMeanBlockerDepth(vec4 moments, float t, float lit)
 #if VTK_SHADOW_MOMENTS == 2
   // The negative warp's gentler exponent keeps the difference's digits.
   float warped = (moments.z - lit * vtkShadowWarpDepth(t).y) / blocked;
-  return 0.5 - 0.5 * log(max(-warped, 1e-30)) / VTK_SHADOW_NEGATIVE_EXPONENT;
+  return 0.5 - 0.5 * log(max(-warped, 1e-30)) / vtkShadowNegativeExponent;
 #elif VTK_SHADOW_MOMENTS == 3 && VTK_SHADOW_CHEBYSHEV_BASIS
   float centred = (vtkShadowCenteredMoments(moments).x - lit * (2.0 * t - 1.0)) / blocked;
   return 0.5 + 0.5 * centred;

@@ -12,6 +12,10 @@ uniform float vtkShadowLightBleeding;
 uniform float vtkShadowMinimumVariance;
 // MSM: the weight of the safe moment vector mixed into the stored one.
 uniform float vtkShadowMomentBias;
+// The Gaussian blur of the maps, in texels of a light's first view.
+uniform float vtkShadowMomentsBlurSigma;
+// Mipmaps: how elongated a footprint may be before its long axis picks the level.
+uniform float vtkShadowAnisotropy;
 // Per-texel rotations (cos, sin) of the soft shadows' kernels.
 uniform sampler2D vtkShadowNoise;
 
@@ -85,7 +89,7 @@ float vtkShadowReceiverVariance(int layer)
                  vtkShadowMapDx.x * vtkShadowLightDepthDxDy.y - vtkShadowMapDy.x * vtkShadowLightDepthDxDy.x) /
     det;
   vec2 perTexel = perUV / vtkShadowMapResolution;
-  float sigma = VTK_SHADOW_BLUR_SIGMA * vtkShadowViews[layer].FilterScale;
+  float sigma = vtkShadowMomentsBlurSigma * vtkShadowViews[layer].FilterScale;
   return dot(perTexel, perTexel) * (1.0 / 12.0 + sigma * sigma);
 }
 
@@ -95,13 +99,13 @@ float vtkShadowReduceBleeding(float visibility)
 }
 
 // The mipmap level of the pixel's footprint in the map: that of its short
-// axis, or of its long axis over VTK_SHADOW_ANISOTROPY if coarser. Without
+// axis, or of its long axis over vtkShadowAnisotropy if coarser. Without
 // mipmaps every level but 0 is clamped away.
 float vtkShadowMomentsLevel()
 {
   float x = length(vtkShadowMapDx) * vtkShadowMapResolution;
   float y = length(vtkShadowMapDy) * vtkShadowMapResolution;
-  float texels = max(max(x, y) / VTK_SHADOW_ANISOTROPY, min(x, y));
+  float texels = max(max(x, y) / vtkShadowAnisotropy, min(x, y));
   return log2(max(texels, 1.0));
 }
 
@@ -118,7 +122,7 @@ float vtkShadowMomentsBound(vec4 moments, float t, float variance)
   // occluders' mean, where a depth spread of theirs would be; at the
   // receiver's, far behind them, the slope would be many times steeper.
   vec2 warped = vtkShadowWarpDepth(t);
-  vec2 slopes = 2.0 * vec2(VTK_SHADOW_POSITIVE_EXPONENT, VTK_SHADOW_NEGATIVE_EXPONENT) *
+  vec2 slopes = 2.0 * vec2(vtkShadowPositiveExponent, vtkShadowNegativeExponent) *
     abs(vec2(moments.x, moments.z));
   float visibility = vtkShadowChebyshev(moments.xy, warped.x, variance * slopes.x * slopes.x);
 #if VTK_SHADOW_MOMENTS == 2

@@ -95,7 +95,8 @@ bool StoreFromLightDepths::UploadLayer(vtkOpenGLState* state, int layer, int res
 
 //------------------------------------------------------------------------------
 bool StoreFromLightDepths::Store(vtkOpenGLRenderWindow* window, TextureArray& maps, int layer,
-  const std::string& storeFunctions, const std::string& storeCode, std::string& error)
+  const std::string& storeFunctions, const std::string& storeCode,
+  const FloatUniforms& storeUniforms, std::string& error)
 {
   const int resolution = maps.GetResolution();
   const std::size_t texels = static_cast<std::size_t>(resolution) * resolution;
@@ -129,6 +130,7 @@ bool StoreFromLightDepths::Store(vtkOpenGLRenderWindow* window, TextureArray& ma
     if (ok)
     {
       this->Quad->Program->SetUniformi("vtkShadowLightDepths", unit);
+      SetFloatUniforms(this->Quad->Program, storeUniforms);
       this->Quad->Render();
     }
     glBindTexture(GL_TEXTURE_2D, 0);

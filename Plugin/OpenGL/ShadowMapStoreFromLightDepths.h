@@ -9,6 +9,8 @@
 #ifndef ShadowMapStoreFromLightDepths_h
 #define ShadowMapStoreFromLightDepths_h
 
+#include "ShadowMapFloatUniforms.h" // For FloatUniforms
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,9 +44,11 @@ public:
 
   /// Writes `layer` of `maps` from its light depths: `storeCode` (which reads
   /// `float vtkShadowCasterDepth` and writes gl_FragData[0]) after
-  /// `storeFunctions`, once per texel. False, with `error`, on a GL failure.
+  /// `storeFunctions`, whose uniforms are `storeUniforms`, once per texel.
+  /// False, with `error`, on a GL failure.
   bool Store(vtkOpenGLRenderWindow* window, TextureArray& maps, int layer,
-    const std::string& storeFunctions, const std::string& storeCode, std::string& error);
+    const std::string& storeFunctions, const std::string& storeCode,
+    const FloatUniforms& storeUniforms, std::string& error);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

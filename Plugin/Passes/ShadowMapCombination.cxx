@@ -94,7 +94,8 @@ bool CombineTexels(vtkShadowMapExchange* exchange, vtkOpenGLRenderWindow* window
   }
   for (int layer = 0; layer < layers; ++layer)
   {
-    if (!lightDepths.Store(window, maps, layer, storage.StoreFunctions, storage.StoreCode, error))
+    if (!lightDepths.Store(window, maps, layer, storage.StoreFunctions, storage.StoreCode,
+          storage.StoreUniforms, error))
     {
       return false;
     }

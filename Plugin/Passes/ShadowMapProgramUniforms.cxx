@@ -80,6 +80,7 @@ void ProgramUniforms::SetCastingView(const ShadowLight& light, const LightView& 
     glm::vec4(static_cast<float>(lightCameraProjection[0][0] / frame.CameraProjection[0][0]),
       settings.SceneCameraParallel ? 1.0f : 0.0f, static_cast<float>(settings.Resolution),
       settings.LargestPointSize));
+  this->StoreUniforms = settings.StoreUniforms;
   this->CasterPrograms.Invalidate();
 }
 
@@ -113,6 +114,7 @@ void ProgramUniforms::Casting(vtkShaderProgram* program, const ReceiverTextureUn
   }
   this->CastSinceSceneDraw.insert(program);
   this->Casters.ApplyCasting(program);
+  SetFloatUniforms(program, this->StoreUniforms);
   if (ReceiverUniforms::IsReceiver(program))
   {
     // Not sampled while casting, but a sampler must not share a unit with

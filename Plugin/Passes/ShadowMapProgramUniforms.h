@@ -8,6 +8,7 @@
 #define ShadowMapProgramUniforms_h
 
 #include "ShadowMapCasterShader.h" // For CasterUniforms
+#include "ShadowMapFloatUniforms.h" // For FloatUniforms
 #include "ShadowMapLight.h"        // For ShadowFrame
 #include "ShadowMapProgramStamps.h"
 #include "ShadowMapReceiverShader.h" // For ReceiverTextureUnits
@@ -37,6 +38,8 @@ struct CastingSettings
   /// The context's largest point size (impostors' sprites).
   float LargestPointSize = 1.0f;
   bool SceneCameraParallel = false;
+  /// What the storage's store code reads (MapStorage::StoreUniforms).
+  FloatUniforms StoreUniforms;
 };
 
 class ProgramUniforms
@@ -73,6 +76,7 @@ public:
 
 private:
   CasterUniforms Casters;
+  FloatUniforms StoreUniforms;
   ProgramStamps CasterPrograms;
   /// Programs the casters drew with since the scene last did.
   std::unordered_set<vtkShaderProgram*> CastSinceSceneDraw;

@@ -888,6 +888,7 @@ shadowmaps::CastingSettings vtkAbstractShadowMapPass::CastingSettingsOfUpdate()
   settings.SlopeScaledOffset = offset.SlopeScaled;
   settings.ConstantOffset = offset.Constant;
   settings.SceneCameraParallel = r.SceneCameraParallel;
+  settings.StoreUniforms = r.Maps().Storage.StoreUniforms;
   return settings;
 }
 

@@ -28,8 +28,9 @@
 #include "vtkRenderingShadowMapsModule.h" // For export macro
 #include "vtkWrappingHints.h"             // For VTK_WRAPEXCLUDE
 
-#include <string> // For the GLSL code
-#include <vector> // For PostProcessMaps
+#include <string>  // For the GLSL code
+#include <utility> // For StoreUniforms
+#include <vector>  // For PostProcessMaps
 
 class vtkOpenGLRenderer;
 class vtkOpenGLRenderWindow;
@@ -48,6 +49,11 @@ struct MapStorage
   std::string StoreCode;
   /// Value formats: GLSL functions StoreCode calls, put before main().
   std::string StoreFunctions;
+  /// Value formats: the float uniforms StoreFunctions reads, by name. Every
+  /// program that stores values (the casters', the values made again from
+  /// the processes' combined light depths) gets them, so that a parameter a
+  /// user drags builds no shader.
+  std::vector<std::pair<std::string, float>> StoreUniforms;
   /// Value formats: vtkShadowCasterDepth, and the depth receivers pass to
   /// vtkShadowLookup, is the light depth (ShadowLight::Depth): linear in light
   /// space, the same for every view of a light, in [0, 1] over the scene.

@@ -1,7 +1,7 @@
 #include "vtkVarianceShadowMapRepresentation.h"
 
 #include "ShadowMapBlur.h"
-#include "ShadowMapGlslLiteral.h"
+#include "ShadowMapFloatUniforms.h"
 #include "ShadowMapRotationNoise.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -180,11 +180,8 @@ void vtkVarianceShadowMapRepresentation::GetMomentsOfDepth(double depth, double 
 std::string vtkVarianceShadowMapRepresentation::MomentDefinitions() const
 {
   std::ostringstream definitions;
+  // The exponents are uniforms (ExponentUniforms): a slider builds no shader.
   definitions << "#define VTK_SHADOW_MOMENTS " << this->Moments << "\n"
-              << "#define VTK_SHADOW_POSITIVE_EXPONENT "
-              << shadowmaps::GlslFloat(this->GetWarpExponent()) << "\n"
-              << "#define VTK_SHADOW_NEGATIVE_EXPONENT " << shadowmaps::GlslFloat(this->NegativeExponent)
-              << "\n"
               << "#define VTK_SHADOW_CHEBYSHEV_BASIS " << this->StoresChebyshevMoments() << "\n";
   return definitions.str();
 }
@@ -202,6 +199,7 @@ void vtkVarianceShadowMapRepresentation::GetMapStorage(shadowmaps::MapStorage& s
   storage.LightDepth = true;
   storage.StoreFunctions = this->MomentDefinitions() + vtkShadowMapsMomentsFS;
   storage.StoreCode = "    gl_FragData[0] = vtkShadowMomentsOf(vtkShadowCasterDepth);";
+  storage.StoreUniforms = this->ExponentUniforms();
   double far[4];
   this->GetMomentsOfDepth(1.0, far);
   std::transform(far, far + 4, storage.ClearValues, [](double v) { return static_cast<float>(v); });
@@ -233,12 +231,7 @@ std::string vtkVarianceShadowMapRepresentation::GetSoftShadowCode() const
 //------------------------------------------------------------------------------
 std::string vtkVarianceShadowMapRepresentation::GetReceiverDefinitions() const
 {
-  std::ostringstream definitions;
-  definitions << this->MomentDefinitions() << "#define VTK_SHADOW_MAP_FOOTPRINT\n"
-              << "#define VTK_SHADOW_BLUR_SIGMA "
-              << shadowmaps::GlslFloat(shadowmaps::BlurSigma(this->BlurRadius)) << "\n"
-              << "#define VTK_SHADOW_ANISOTROPY " << shadowmaps::GlslFloat(this->Anisotropy) << "\n";
-  return definitions.str();
+  return this->MomentDefinitions() + "#define VTK_SHADOW_MAP_FOOTPRINT\n";
 }
 
 //------------------------------------------------------------------------------
@@ -289,6 +282,18 @@ void vtkVarianceShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* p
   program->SetUniformf("vtkShadowLightBleeding", static_cast<float>(this->LightBleedingReduction));
   program->SetUniformf("vtkShadowMinimumVariance", static_cast<float>(this->MinimumVariance));
   program->SetUniformf("vtkShadowMomentBias", static_cast<float>(this->MomentBias));
+  program->SetUniformf(
+    "vtkShadowMomentsBlurSigma", static_cast<float>(shadowmaps::BlurSigma(this->BlurRadius)));
+  program->SetUniformf("vtkShadowAnisotropy", static_cast<float>(this->Anisotropy));
+  shadowmaps::SetFloatUniforms(program, this->ExponentUniforms());
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::pair<std::string, float>> vtkVarianceShadowMapRepresentation::ExponentUniforms()
+  const
+{
+  return { { "vtkShadowPositiveExponent", static_cast<float>(this->GetWarpExponent()) },
+    { "vtkShadowNegativeExponent", static_cast<float>(this->NegativeExponent) } };
 }
 
 //------------------------------------------------------------------------------

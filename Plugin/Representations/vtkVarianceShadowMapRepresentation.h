@@ -239,6 +239,8 @@ protected:
   void ClampExponents();
   /** The shared GLSL definitions of casters and receivers. */
   std::string MomentDefinitions() const;
+  /** The warps' exponents, as the uniforms of Shaders/vtkShadowMapsMomentsFS.glsl. */
+  std::vector<std::pair<std::string, float>> ExponentUniforms() const;
 
   int Moments = EVSM4;
   int Storage = FLOAT;

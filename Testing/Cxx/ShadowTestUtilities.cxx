@@ -28,6 +28,9 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <malloc.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <numeric>
 #include <cstdlib>
@@ -75,6 +78,19 @@ PassKinds EveryPassKind()
     { "cascaded", NewPass<vtkCascadedShadowMapPass> },
     { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
     { "moments", NewPass<vtkVarianceShadowMapPass> } };
+}
+
+//------------------------------------------------------------------------------
+double ResidentMiB()
+{
+  // Free heap pages at the top and inside glibc's arenas go back first: what
+  // remains is what the process holds.
+  malloc_trim(0);
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0;
+  long resident = 0;
+  statm >> pages >> resident;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1048576.0;
 }
 
 TestScene::TestScene(int width, int height)

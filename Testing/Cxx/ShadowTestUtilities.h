@@ -71,6 +71,10 @@ using PassKinds =
 /// and moments in uniform views.
 PassKinds EveryPassKind();
 
+/// Resident memory of this process in MiB (llvmpipe keeps textures there),
+/// after the allocator gave back what it could.
+double ResidentMiB();
+
 /// Renders and returns the frame as RGB.
 vtkSmartPointer<vtkImageData> RenderAndCapture(vtkRenderWindow* window);
 

@@ -44,13 +44,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <malloc.h>
 #include <functional>
 #include <string>
-#include <unistd.h>
 
 using namespace shadowtest;
 
@@ -104,18 +102,6 @@ PassKinds EveryPassKindAndWarp()
   return kinds;
 }
 
-// Resident memory of this process in MiB (llvmpipe keeps textures there).
-double ResidentMiB()
-{
-  // Free heap pages at the top and inside glibc's arenas go back first: what
-  // remains is what the process holds.
-  malloc_trim(0);
-  std::ifstream statm("/proc/self/statm");
-  long pages = 0;
-  long resident = 0;
-  statm >> pages >> resident;
-  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1048576.0;
-}
 } // namespace
 
 // A clipping plane moved in place (as plane widgets do) moves the shadow.

@@ -591,6 +591,63 @@ TEST(Variance, ParametersClamp)
   EXPECT_EQ(pass->GetPositiveExponent(), halfLimit);
 }
 
+// Every setting of the moments a user can drag (ParaView's Moments Blur Radius
+// slider among them), 20 steps: no shader built, memory flat, and each
+// setting's last frame the one a fresh pass with its value draws, the shadow
+// still dark.
+TEST(Variance, DraggingASettingBuildsNoShader)
+{
+  using Setter = std::function<void(vtkVarianceShadowMapPass*, double)>;
+  const std::tuple<std::string, int, double, double, Setter> sliders[] = {
+    { "BlurRadius", vtkVarianceShadowMapPass::EVSM4, 1.0, 6.0,
+      [](vtkVarianceShadowMapPass* pass, double v) { pass->SetBlurRadius(v); } },
+    { "Anisotropy", vtkVarianceShadowMapPass::EVSM4, 8.0, 2.0,
+      [](vtkVarianceShadowMapPass* pass, double v) { pass->SetAnisotropy(v); } },
+    { "PositiveExponent", vtkVarianceShadowMapPass::EVSM4, 40.0, 10.0,
+      [](vtkVarianceShadowMapPass* pass, double v) { pass->SetPositiveExponent(v); } },
+    { "NegativeExponent", vtkVarianceShadowMapPass::EVSM4, 5.0, 15.0,
+      [](vtkVarianceShadowMapPass* pass, double v) { pass->SetNegativeExponent(v); } },
+    { "LightBleedingReduction", vtkVarianceShadowMapPass::VSM, 0.0, 0.6,
+      [](vtkVarianceShadowMapPass* pass, double v) { pass->SetLightBleedingReduction(v); } },
+    { "MinimumVariance", vtkVarianceShadowMapPass::VSM, 1e-6, 1e-3,
+      [](vtkVarianceShadowMapPass* pass, double v) { pass->SetMinimumVariance(v); } },
+    { "MomentBias", vtkVarianceShadowMapPass::MSM, 3e-5, 3e-3,
+      [](vtkVarianceShadowMapPass* pass, double v) { pass->SetMomentBias(v); } },
+  };
+  for (const auto& [name, moments, from, to, set] : sliders)
+  {
+    TestScene scene;
+    scene.SetSun(SunDirection);
+    auto pass = MakePass(moments);
+    pass->SetResolution(512);
+    scene.Renderer->SetPass(pass);
+    scene.Window->Render();
+    scene.Window->Render();
+    const int builds = pass->GetNumberOfShaderBuilds();
+    const int updates = pass->GetNumberOfShadowMapUpdates();
+    const double before = ResidentMiB();
+    for (int step = 1; step <= 20; ++step)
+    {
+      set(pass, from + (to - from) * step / 20.0);
+      scene.Window->Render();
+    }
+    const double grown = ResidentMiB() - before;
+    EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds) << name << ": shaders built while dragged";
+    EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates + 20) << name;
+    // Before: 80 shaders and 59 to 90 MiB for 20 steps of the blur radius.
+    EXPECT_LT(grown, 4.0) << name << ": MiB grown over 20 steps";
+    const auto image = CaptureAsRendered(scene.Window);
+    auto fresh = MakePass(moments);
+    fresh->SetResolution(512);
+    set(fresh, to);
+    EXPECT_TRUE(RgbBytes(image) == FreshPassFrame(scene, fresh))
+      << name << ": the dragged pass draws another frame than a fresh one";
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SunDirection)),
+      ShadowedBelow)
+      << name;
+  }
+}
+
 // Storage: two or four values of 16 or 32 bits, a third more for mipmaps.
 TEST(Variance, MemoryFollowsTheStorage)
 {
