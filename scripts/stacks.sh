@@ -11,7 +11,42 @@
 # a stack's build folder (build-<stack>) works from either side.
 
 STACK_CACHE="${SHADOWMAPS_STACK_CACHE:-/var/cache/vtkshadowmaps/stacks}"
-STACK_MIRROR="${SHADOWMAPS_STACK_MIRROR:-http://deb.debian.org/debian}"
+
+# The Debian archive the machine's own apt uses: the first URI of a "deb"
+# source (one-line .list files and deb822 .sources files) whose path ends in
+# /debian, skipping comments and snapshot archives (frozen in time, they hold
+# neither trixie nor sid as they are now). Prints "URI FILE", or nothing.
+#   machine_mirror [APT_DIR]   (default /etc/apt)
+machine_mirror() {
+  local file sources="${1:-/etc/apt}"
+  for file in "$sources/sources.list" "$sources"/sources.list.d/*.list \
+    "$sources"/sources.list.d/*.sources; do
+    [ -r "$file" ] || continue
+    awk '
+      function flush() {
+        if (types ~ /(^|[ \t])deb([ \t]|$)/ && !disabled) printf "%s", uris
+        types = ""; uris = ""; disabled = 0
+      }
+      /^[ \t]*#/ { next }
+      { sub(/#.*/, "") }
+      /^[ \t]*$/ { flush(); next }                  # a deb822 stanza ends
+      tolower($1) == "types:" { types = $0 }
+      tolower($1) == "uris:" { for (i = 2; i <= NF; ++i) uris = uris $i "\n" }
+      tolower($1) == "enabled:" && tolower($2) == "no" { disabled = 1 }
+      $1 == "deb" {                                   # one-line: deb [options] URI suite ...
+        for (i = 2; i <= NF; ++i) if ($i !~ /^\[/ && $i !~ /=/ && $i !~ /\]$/) { print $i; break }
+      }
+      END { flush() }
+    ' "$file" | grep -v "snapshot\." | grep -E "/debian/?$" | head -1 | sed "s|/$||; s|\$| $file|"
+  done | head -1
+}
+
+if [ -n "${SHADOWMAPS_STACK_MIRROR:-}" ]; then
+  STACK_MIRROR="$SHADOWMAPS_STACK_MIRROR"
+  STACK_MIRROR_SOURCE="SHADOWMAPS_STACK_MIRROR"
+else
+  read -r STACK_MIRROR STACK_MIRROR_SOURCE <<< "$(machine_mirror)" || true
+fi
 # A root older than this is made again (its suite has moved on).
 STACK_MAX_AGE_DAYS="${SHADOWMAPS_STACK_MAX_AGE_DAYS:-30}"
 # The exit status of a step that failed because Debian's archive could not
@@ -64,12 +99,18 @@ ensure_stack() {
     echo "The $name stack needs root (debootstrap, chroot and mount namespaces)" >&2
     return 1
   fi
+  if [ -z "${STACK_MIRROR:-}" ]; then
+    echo "No Debian archive in this machine's apt sources (/etc/apt/sources.list," \
+      "/etc/apt/sources.list.d/): set SHADOWMAPS_STACK_MIRROR to one (its URI, ending in /debian)" >&2
+    return 1
+  fi
   root="$(stack_root "$name")"
   stack_is_fresh "$name" && return 0
   command -v debootstrap >/dev/null || install_missing_packages debootstrap
   building="$root.building"
   SECONDS=0
   echo "Making the $name root in $root (debootstrap, then $(stack_packages "$name" | wc -l) packages)"
+  echo "Debian archive: $STACK_MIRROR (from $STACK_MIRROR_SOURCE)"
   rm -rf "$building"
   mkdir -p "$STACK_CACHE"
   make_stack_root "$name" "$building" > "$building.log" 2>&1 || status=$?
@@ -151,6 +192,7 @@ stack_unavailable() {
 !!! STACK $1 UNAVAILABLE: Debian's archive could not serve its root (see
 !!! $(stack_root "$1").building.log). This is not a failure of the project's;
 !!! its tests did not run on $1.
+!!! Archive: ${STACK_MIRROR:-none} (from ${STACK_MIRROR_SOURCE:-no apt source}).
 !!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!!
 
 MESSAGE
