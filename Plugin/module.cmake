@@ -95,6 +95,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Passes/ShadowMapLayerDrawing.cxx
     Plugin/Passes/ShadowMapPassShaders.cxx
     Plugin/Passes/ShadowMapProgramUniforms.cxx
+    Plugin/Passes/ShadowMapPropJoining.cxx
     Plugin/Passes/ShadowMapReceiverTextures.cxx
     Plugin/Passes/ShadowMapRendererMaps.cxx
     Plugin/Passes/ShadowMapRendererUse.cxx
@@ -145,6 +146,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Passes/ShadowMapLayerDrawing.h
     Plugin/Passes/ShadowMapPassShaders.h
     Plugin/Passes/ShadowMapProgramUniforms.h
+    Plugin/Passes/ShadowMapPropJoining.h
     Plugin/Passes/ShadowMapReceiverTextures.h
     Plugin/Passes/ShadowMapRendererMaps.h
     Plugin/Passes/ShadowMapRendererUse.h

@@ -113,7 +113,8 @@ std::string VolumeFactorFunction(const std::vector<ShadowLight>& lights)
               "    vtkShadowLights[light].DepthPerDistance * relative / max(length(relative), 1e-30);\n"
               "  return length(deeper) > 0.0 ? -normalize(deeper) : vec3(0.0, 0.0, 1.0);\n}\n"
               "vec3 vtkShadowVolumeFactor(vec3 texturePosition)\n{\n"
-              "  if (vtkShadowVolumeSamples++ % VTK_SHADOW_VOLUME_REUSE != 0)\n  {\n"
+              "  if (vtkShadowReceiving == 0 ||\n"
+              "    vtkShadowVolumeSamples++ % VTK_SHADOW_VOLUME_REUSE != 0)\n  {\n"
               "    return vtkShadowVolumeKept;\n  }\n"
               "  vec4 position = vtkShadowVolumeTextureToVC * vec4(texturePosition, 1.0);\n"
               "  vec3 vtkShadowPositionVC = position.xyz / position.w;\n"
@@ -156,6 +157,7 @@ std::string Declarations(const std::vector<ShadowLight>& lights, int layers, con
   dec << ReceiverShaderConstants() << code.Definitions
       << "#define VTK_SHADOW_MAX_VIEWS " << std::max(layers, 1) << "\n"
       << "#define VTK_SHADOW_MAX_LIGHTS " << lights.size() << "\n"
+      << "uniform int vtkShadowReceiving;\n"
       << vtkShadowMapsReceiverFS << code.Lookup << code.AnalysisFunctions;
   return dec.str();
 }
@@ -218,14 +220,16 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
 {
   // The receiver's position is taken in the fragment shader, not the vertex
   // shader, because impostor mappers compute their true surface per fragment.
+  std::ostringstream declared;
   std::ostringstream impl;
   int unpatched = 0;
   for (int k = 0; receives && k < static_cast<int>(lights.size()); ++k)
   {
     if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, k) > 0)
     {
-      impl << (code.Transmittance ? "  vec3" : "  float") << " vtkShadowFactor" << k
-           << " = vtkShadowFactor("
+      declared << (code.Transmittance ? "  vec3" : "  float") << " vtkShadowFactor" << k
+               << (code.Transmittance ? " = vec3(1.0);\n" : " = 1.0;\n");
+      impl << "    vtkShadowFactor" << k << " = vtkShadowFactor("
            << ReceiverCallArguments(lights[k], k) << ");\n";
     }
     else if (UsesWord(fragmentShader, "lightColor" + std::to_string(lights[k].ShaderIndex)))
@@ -244,7 +248,8 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
     const size_t end = fragmentShader.rfind('}');
     if (end != std::string::npos)
     {
-      fragmentShader.insert(end, code.AnalysisStatement);
+      fragmentShader.insert(
+        end, "  if (vtkShadowReceiving != 0)\n  {\n  " + code.AnalysisStatement + "  }\n");
     }
   }
   vtkShaderProgram::Substitute(
@@ -257,13 +262,16 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
                        "#endif\n"
                      : "");
   const std::string position = ImpostorShader::ReceiverPositionVC(fragmentShader);
+  // Another renderer that draws the prop without the pass draws it with this
+  // program too (PropJoining), unshadowed: vtkShadowReceiving 0.
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
     "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n"
-    "  vec3 vtkShadowPositionVC = " + position + ";\n"
-    "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
-    "  vtkShadowSetReceiverPlane(vtkShadowNormalVC);\n"
-    "#endif\n" +
-      (ownShare ? OwnTransmittance(fragmentShader, code) : std::string()) + impl.str());
+    "  vec3 vtkShadowPositionVC = " + position + ";\n" + declared.str() +
+      "  if (vtkShadowReceiving != 0)\n  {\n"
+      "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
+      "    vtkShadowSetReceiverPlane(vtkShadowNormalVC);\n"
+      "#endif\n" +
+      (ownShare ? OwnTransmittance(fragmentShader, code) : std::string()) + impl.str() + "  }\n");
   return unpatched;
 }
 
@@ -532,6 +540,7 @@ void ReceiverUniforms::Apply(vtkShaderProgram* program, const ReceiverTextureUni
     }
   }
   ApplyTextureUnits(program, units);
+  program->SetUniformi("vtkShadowReceiving", 1);
   program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(this->ViewToWorld));
   program->SetUniformf("vtkShadowMapResolution", static_cast<float>(resolution));
   program->SetUniformf("vtkShadowNormalOffset", static_cast<float>(normalOffset));

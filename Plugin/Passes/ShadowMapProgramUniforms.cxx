@@ -153,6 +153,23 @@ void ProgramUniforms::Receiving(vtkShaderProgram* program, RendererMaps& maps,
 }
 
 //------------------------------------------------------------------------------
+void ProgramUniforms::DrawnWithoutThePass(vtkShaderProgram* program,
+  const ReceiverTextureUnits& units, vtkShadowMapRepresentation* representation)
+{
+  this->Casters.ApplyReceiving(program);
+  // The renderer sends its lights only when they changed since the program's
+  // last lighting; the pass's renderer sent its own since.
+  program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
+  this->LastDrawnFor[program] = nullptr;
+  if (ReceiverUniforms::IsReceiver(program))
+  {
+    ReceiverUniforms::ApplyTextureUnits(program, units);
+    representation->SetReceiverUniforms(program);
+    program->SetUniformi("vtkShadowReceiving", 0);
+  }
+}
+
+//------------------------------------------------------------------------------
 void ProgramUniforms::Forget(const RendererMaps* maps)
 {
   for (auto& program : this->LastDrawnFor)

@@ -68,6 +68,12 @@ public:
     int resolution,
     double normalOffset, vtkShadowMapRepresentation* representation);
 
+  /// Before another renderer's draw with `program` of a prop the pass keeps
+  /// joined past its frame (PropJoining): no cast, no shadow, its samplers on
+  /// the units the pass keeps, its renderer's lights sent again.
+  void DrawnWithoutThePass(vtkShaderProgram* program, const ReceiverTextureUnits& units,
+    vtkShadowMapRepresentation* representation);
+
   /// `maps` are going: no program was last drawn for them.
   void Forget(const RendererMaps* maps);
 

@@ -14,6 +14,7 @@
 #include "ShadowMapLayerDrawing.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapLinearDepthResolve.h"
+#include "ShadowMapPropJoining.h"
 #include "ShadowMapPropParts.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapReceiverTextures.h"
@@ -34,7 +35,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
-#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
@@ -121,19 +121,6 @@ std::vector<vtkVolume*> CastingVolumes(const std::vector<Caster>& casters)
   return volumes;
 }
 
-bool HasRenderPass(vtkInformation* info, vtkObjectBase* pass)
-{
-  vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
-  for (int i = 0; info->Has(key) && i < info->Length(key); ++i)
-  {
-    if (info->Get(key, i) == pass)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 // The most samples GL offers per texel of a multisample buffer.
 int MaximumSamples()
 {
@@ -215,8 +202,13 @@ struct vtkAbstractShadowMapPass::Internals
   // end of the frame.
   shadowmaps::ReceiverTextures Textures;
   bool ShaderCodeCompiles = true;
-  // The props whose render passes this pass joined in this frame.
-  std::vector<vtkProp*> Joined;
+  // The props whose render passes the pass joined, in this frame or past it.
+  shadowmaps::PropJoining Joining;
+
+  explicit Internals(vtkAbstractShadowMapPass* pass)
+    : Joining(pass)
+  {
+  }
 
   // The window whose context holds the pass's GL objects, while it holds any,
   // and the renderers that draw through the pass: what a renderer stops
@@ -254,7 +246,7 @@ struct vtkAbstractShadowMapPass::Internals
 //------------------------------------------------------------------------------
 vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
   vtkShadowMapViews* defaultViews, vtkShadowMapRepresentation* defaultRepresentation)
-  : Internal(new Internals)
+  : Internal(new Internals(this))
 {
   this->Internal->DefaultViews = defaultViews;
   this->Internal->DefaultRepresentation = defaultRepresentation;
@@ -398,6 +390,8 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   {
     this->UseContextOf(renderer);
     this->SelectRendererMaps(renderer);
+    // Kept past the last frame for the props another renderer drew meanwhile.
+    this->ReleaseTextureUnits(renderer);
   }
   if (renderer && !this->DelegatePass)
   {
@@ -428,9 +422,9 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   }
   if (renderer)
   {
-    this->ReleaseTextureUnits(renderer);
+    this->EndFrame(renderer);
   }
-  this->LeaveRenderPasses();
+  r.Active = false;
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
@@ -532,48 +526,29 @@ void vtkAbstractShadowMapPass::ForgetContext()
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::JoinRenderPasses(vtkProp* const* props, int count)
 {
-  // As vtkOpenGLRenderPass::PreRender, but once per prop: casters join before
-  // the scene's props, and a prop's set of passes must be the same in both
-  // draws for its mapper to keep its shaders. A prop that neither casts nor
-  // receives (an annotation, by default) draws as without the pass.
-  Internals& r = *this->Internal;
-  for (int i = 0; i < count; ++i)
-  {
-    vtkProp* prop = props[i];
-    if (!prop->GetPropertyKeys())
-    {
-      vtkNew<vtkInformation> keys;
-      prop->SetPropertyKeys(keys);
-    }
-    if (!shadowmaps::TakesPart(prop, CASTS_SHADOWS()) &&
-      !shadowmaps::TakesPart(prop, RECEIVES_SHADOWS()))
-    {
-      continue;
-    }
-    if (!HasRenderPass(prop->GetPropertyKeys(), this))
-    {
-      prop->GetPropertyKeys()->Append(vtkOpenGLRenderPass::RenderPasses(), this);
-      r.Joined.push_back(prop);
-    }
-  }
+  // A prop that neither casts nor receives (an annotation, by default) draws
+  // as without the pass.
+  this->Internal->Joining.Join(props, count, [](vtkProp* prop) {
+    return shadowmaps::TakesPart(prop, CASTS_SHADOWS()) ||
+      shadowmaps::TakesPart(prop, RECEIVES_SHADOWS());
+  });
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::LeaveRenderPasses()
 {
+  this->Internal->Joining.LeaveAll();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::EndFrame(vtkOpenGLRenderer* renderer)
+{
   Internals& r = *this->Internal;
-  for (vtkProp* prop : r.Joined)
+  r.Joining.EndFrame(renderer);
+  if (!r.Joining.KeepsAny())
   {
-    vtkInformation* keys = prop->GetPropertyKeys();
-    keys->Remove(vtkOpenGLRenderPass::RenderPasses(), this);
-    // An empty list left behind tells VTK 9.1's volume ray caster that a pass
-    // is still on the volume, whose last entry it then reads past the list.
-    if (keys->Length(vtkOpenGLRenderPass::RenderPasses()) == 0)
-    {
-      keys->Remove(vtkOpenGLRenderPass::RenderPasses());
-    }
+    this->ReleaseTextureUnits(renderer);
   }
-  r.Joined.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -1187,9 +1162,10 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
 {
   const Internals& r = *this->Internal;
   ++this->NumberOfShaderBuilds;
-  // Shaders first built by a caster draw are the ones the scene then uses.
-  const ReceiverRole role =
-    (r.Active || r.Casting) && prop ? this->ReceiverRoleOf(prop) : ReceiverRole::None;
+  // Shaders first built by a caster draw are the ones the scene then uses; a
+  // renderer drawing a prop the pass keeps joined (PropJoining) builds them
+  // as the pass's renderer would.
+  const ReceiverRole role = prop ? this->ReceiverRoleOf(prop) : ReceiverRole::None;
   if (vtkVolume::SafeDownCast(prop))
   {
     r.Shaders.InjectVolume(
@@ -1233,6 +1209,10 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
         r.LightShares.data());
     }
   }
+  else
+  {
+    r.Programs.DrawnWithoutThePass(program, this->ReceiverUnits(), r.Representation);
+  }
   return true;
 }
 
@@ -1264,6 +1244,8 @@ void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   Internals& r = *this->Internal;
+  r.Joining.LeaveAll();
+  r.Textures.Release(static_cast<vtkOpenGLRenderWindow*>(window), r.Representation);
   r.HoldsGraphicsResources = false;
   r.Renderers.ReleaseAll(window);
   r.CodeFor = nullptr;

@@ -524,6 +524,11 @@ private:
   void WarnAboutVolume(const std::string& why);
   void JoinRenderPasses(vtkProp* const* props, int count);
   void LeaveRenderPasses();
+  /**
+   * Leaves the props' render passes but those another renderer of the window
+   * draws too, and frees the texture units unless such props stay joined.
+   */
+  void EndFrame(vtkOpenGLRenderer* renderer);
   void ReserveTextureUnits(vtkOpenGLRenderer* renderer);
   void BindShadowTextures(vtkOpenGLRenderer* renderer);
   void ReleaseTextureUnits(vtkOpenGLRenderer* renderer);

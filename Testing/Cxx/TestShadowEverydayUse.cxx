@@ -27,6 +27,8 @@
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkLODProp3D.h"
@@ -47,6 +49,7 @@
 #include <iostream>
 #include <limits>
 #include <malloc.h>
+#include <map>
 #include <functional>
 #include <string>
 
@@ -389,6 +392,15 @@ void ShareSceneWithRightHalf(TestScene& scene, vtkRenderer* right)
   right->AddLight(scene.Renderer->GetLights()->GetNextItem());
   scene.Window->AddRenderer(right);
 }
+
+// `renderer`'s camera looks at the scene from another side than the test scene's.
+void LookFromAnotherSide(vtkRenderer* renderer)
+{
+  renderer->GetActiveCamera()->SetPosition(12.0, 6.0, 14.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCameraClippingRange();
+}
 } // namespace
 
 // One pass shared by two renderers side by side: each shows its own view's
@@ -399,10 +411,7 @@ TEST(ShadowEverydayUse, TwoRenderersShareAPass)
   scene.SetSun(SideSun);
   vtkNew<vtkRenderer> right;
   ShareSceneWithRightHalf(scene, right);
-  right->GetActiveCamera()->SetPosition(12.0, 6.0, 14.0);
-  right->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
-  right->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
-  right->ResetCameraClippingRange();
+  LookFromAnotherSide(right);
   vtkNew<vtkCascadedShadowMapPass> pass;
   scene.Renderer->SetPass(pass);
   right->SetPass(pass);
@@ -422,6 +431,149 @@ TEST(ShadowEverydayUse, TwoRenderersShareAPass)
   EXPECT_TRUE(shared == separate) << "a shared pass draws other shadows than a pass per renderer";
   auto image = CaptureAsRendered(scene.Window);
   EXPECT_LT(LuminanceAt(right, image, GroundShadowOfSphereCenter(SideSun)), ShadowedBelow);
+}
+
+namespace
+{
+// Counts the shader sources a mapper builds.
+class CountingMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static CountingMapper* New();
+  vtkTypeMacro(CountingMapper, vtkOpenGLPolyDataMapper);
+  int Builds = 0;
+
+protected:
+  CountingMapper() = default;
+  void BuildShaders(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
+  {
+    ++this->Builds;
+    this->Superclass::BuildShaders(shaders, ren, act);
+  }
+};
+vtkStandardNewMacro(CountingMapper);
+
+// The scene's actors drawn by counting mappers of their inputs; their builds.
+std::function<int()> CountBuilds(TestScene& scene)
+{
+  std::vector<vtkSmartPointer<CountingMapper>> mappers;
+  for (vtkActor* actor : { scene.Ground.Get(), scene.Sphere.Get(), scene.Box.Get() })
+  {
+    auto counting = vtkSmartPointer<CountingMapper>::New();
+    counting->SetInputConnection(actor->GetMapper()->GetInputConnection(0, 0));
+    actor->SetMapper(counting);
+    mappers.push_back(counting);
+  }
+  return [mappers] {
+    int builds = 0;
+    for (const auto& mapper : mappers)
+    {
+      builds += mapper->Builds;
+    }
+    return builds;
+  };
+}
+} // namespace
+
+// Actors shown in two renderers of one window, one drawing through the pass
+// and the other not: still frames build no shader in either (a mapper keeps
+// one program per primitive for both), a moving camera neither; the frames
+// are those of the other renderer showing copies of the actors: shadows in the
+// pass's renderer, none in the other.
+TEST(ShadowEverydayUse, ActorsSharedWithARendererWithoutThePass)
+{
+  for (const auto& kind : EveryPassKind())
+  {
+    TestScene scene(480, 240);
+    scene.SetSun(SideSun);
+    const auto builds = CountBuilds(scene);
+    vtkNew<vtkRenderer> right;
+    ShareSceneWithRightHalf(scene, right);
+    LookFromAnotherSide(right);
+    vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
+    scene.Renderer->SetPass(pass);
+    scene.Window->Render();
+    scene.Window->Render();
+    const int before = builds();
+    for (int frame = 0; frame < 5; ++frame)
+    {
+      scene.Window->Render();
+    }
+    EXPECT_EQ(builds(), before) << kind.first << ": shaders built in 5 still frames";
+    const auto shared = RgbBytes(CaptureAsRendered(scene.Window));
+    scene.Renderer->GetActiveCamera()->Azimuth(10.0);
+    scene.Window->Render();
+    EXPECT_EQ(builds(), before) << kind.first << ": shaders built as the camera moved";
+    scene.Renderer->GetActiveCamera()->Azimuth(-10.0);
+
+    // Copies in the right renderer: its own actors, mappers and programs.
+    right->RemoveAllViewProps();
+    for (vtkActor* actor : { scene.Ground.Get(), scene.Sphere.Get(), scene.Box.Get() })
+    {
+      vtkNew<vtkActor> copy;
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(actor->GetMapper()->GetInputConnection(0, 0));
+      copy->SetMapper(mapper);
+      copy->SetProperty(actor->GetProperty());
+      right->AddActor(copy);
+    }
+    scene.Window->Render();
+    const auto copies = RgbBytes(CaptureAsRendered(scene.Window));
+    EXPECT_TRUE(shared == copies) << kind.first << ": the shared actors draw other frames";
+    auto image = CaptureAsRendered(scene.Window);
+    EXPECT_LT(LuminanceAt(scene.Renderer, image, GroundShadowOfSphereCenter(SideSun)), ShadowedBelow)
+      << kind.first;
+  }
+}
+
+// Three renderers of one window sharing the actors: one through a pass, one
+// through no pass, one through another pass. The first keeps its place on the
+// actors for the second, whose draws stay unshadowed; the third takes the
+// actors over in its frames (one pass's code per program): no shader fails,
+// each pass renderer shows its shadow, and giving the second renderer a pass
+// later shadows it too.
+TEST(ShadowEverydayUse, ActorsSharedWithRenderersWithAndWithoutPasses)
+{
+  ErrorCounter errors;
+  TestScene scene(600, 200);
+  scene.SetSun(SideSun);
+  scene.Renderer->SetViewport(0.0, 0.0, 1.0 / 3.0, 1.0);
+  vtkNew<vtkRenderer> middle;
+  vtkNew<vtkRenderer> right;
+  for (vtkRenderer* other : { middle.Get(), right.Get() })
+  {
+    for (vtkActor* actor : { scene.Ground.Get(), scene.Sphere.Get(), scene.Box.Get() })
+    {
+      other->AddActor(actor);
+    }
+    other->SetActiveCamera(scene.Renderer->GetActiveCamera());
+    other->AutomaticLightCreationOff();
+    scene.Renderer->GetLights()->InitTraversal();
+    other->AddLight(scene.Renderer->GetLights()->GetNextItem());
+    scene.Window->AddRenderer(other);
+  }
+  middle->SetViewport(1.0 / 3.0, 0.0, 2.0 / 3.0, 1.0);
+  right->SetViewport(2.0 / 3.0, 0.0, 1.0, 1.0);
+  vtkNew<vtkCascadedShadowMapPass> first;
+  vtkNew<vtkVarianceShadowMapPass> other;
+  scene.Renderer->SetPass(first);
+  right->SetPass(other);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    scene.Window->Render();
+  }
+  auto image = CaptureAsRendered(scene.Window);
+  const glm::dvec3 shadow = GroundShadowOfSphereCenter(SideSun);
+  EXPECT_LT(LuminanceAt(scene.Renderer, image, shadow), ShadowedBelow);
+  EXPECT_GT(LuminanceAt(middle, image, shadow), LitAbove) << "the renderer without a pass";
+  EXPECT_LT(LuminanceAt(right, image, shadow), ShadowedBelow);
+  vtkNew<vtkDepthShadowMapPass> third;
+  middle->SetPass(third);
+  scene.Window->Render();
+  image = CaptureAsRendered(scene.Window);
+  EXPECT_LT(LuminanceAt(middle, image, shadow), ShadowedBelow) << "given a pass later";
+  EXPECT_EQ(errors.Errors(), 0) << errors.Text();
 }
 
 // Two renderers sharing a pass and its shaders, with other lights each: each

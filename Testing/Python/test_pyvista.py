@@ -1,6 +1,6 @@
 """vtkshadowmaps.pyvista: this module's shadows in a PyVista Plotter, in one
-line, composed with PyVista's own render passes, and off again without GL
-memory kept. Off-screen screenshots, probed where the shadow must and must
+line, composed with PyVista's own render passes, picked through, and off
+again without GL memory kept. Off-screen screenshots, probed where the shadow must and must
 not be.
 
     test_pyvista.py OUTPUT_DIR
@@ -170,6 +170,51 @@ def replaces_vtk_shadows():
     plotter.close()
 
 
+def display_of(plotter, world):
+    renderer = plotter.renderer
+    renderer.SetWorldPoint(*world, 1.0)
+    renderer.WorldToDisplay()
+    x, y, _ = renderer.GetDisplayPoint()
+    return int(round(x)), int(round(y))
+
+
+def picks(shadows):
+    """What PyVista's picking finds with a click on the sphere: the actor under
+    it (enable_mesh_picking with its hardware picker, a vtkHardwareSelector
+    underneath) and the point of the surface there; and whether the frame after
+    the picks equals the one before."""
+    plotter = scene()
+    if shadows:
+        enable_shadows(plotter, "cascaded")
+    before, _, _ = shot(plotter)
+    click = display_of(plotter, (0.0, 0.0, 1.5))
+    actors, points = [], []
+    plotter.enable_mesh_picking(callback=actors.append, use_actor=True, show=False, show_message=False,
+                                left_clicking=True, picker="hardware")
+    plotter.iren._mouse_left_button_click(*click)
+    plotter.disable_picking()
+    plotter.enable_surface_point_picking(callback=points.append, picker="hardware", show_point=False,
+                                         show_message=False, left_clicking=True)
+    plotter.iren._mouse_left_button_click(*click)
+    plotter.disable_picking()
+    after, _, _ = shot(plotter)
+    sphere = [actor.GetBounds()[5] > 2.0 for actor in actors]
+    point = np.array(points[0]) if points else None
+    plotter.close()
+    return sphere, point, np.array_equal(before, after)
+
+
+def picking():
+    """PyVista's picking picks through the shadows as it does without them."""
+    plain_sphere, plain_point, _ = picks(False)
+    sphere, point, unchanged = picks(True)
+    check(plain_sphere == [True], f"without shadows the click picks the sphere ({plain_sphere})")
+    check(sphere == plain_sphere, f"with the shadows the click picks the sphere ({sphere})")
+    check(point is not None and plain_point is not None and np.allclose(point, plain_point, atol=1e-3),
+          f"the picked point is the one picked without shadows ({point} and {plain_point})")
+    check(unchanged, "the frame after the picks equals the one before")
+
+
 def resident_mib():
     with open("/proc/self/statm") as statm:
         return int(statm.read().split()[1]) * resource.getpagesize() / 2**20
@@ -206,6 +251,7 @@ every_technique()
 with_pyvista_passes()
 translucent_layers_are_peeled()
 replaces_vtk_shadows()
+picking()
 toggles()
 print(f"{len(failures)} failed")
 sys.exit(1 if failures else 0)
