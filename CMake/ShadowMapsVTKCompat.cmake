@@ -1,4 +1,4 @@
-# What differs between the VTK versions the module builds against (9.1 to 9.6)
+# What differs between the VTK versions the module builds against (9.1 to 9.7)
 # at the level of CMake, after find_package(VTK); the C++ side is
 # Plugin/Compat/ShadowMapVTKCompat.h.
 #
@@ -11,7 +11,7 @@ elseif (TARGET VTK::glew)
   set(SHADOWMAPS_VTK_GL_TARGETS VTK::glew VTK::opengl)
 else ()
   message(FATAL_ERROR "VTK ${VTK_VERSION} has neither VTK::glad nor VTK::glew: "
-    "this module needs VTK's OpenGL loader (VTK 9.1 to 9.6 have one of them).")
+    "this module needs VTK's OpenGL loader (VTK 9.1 to 9.7 have one of them).")
 endif ()
 
 # SHADOWMAPS_BASELINE_VARIANT: the folder of Testing/Data/Baseline that holds

@@ -1,4 +1,4 @@
-// What differs between the VTK versions the module builds against (9.1 to 9.6)
+// What differs between the VTK versions the module builds against (9.1 to 9.7)
 // at the level of C++ headers, so that no other file names a VTK version; the
 // CMake side is CMake/ShadowMapsVTKCompat.cmake.
 //
@@ -9,6 +9,11 @@
 //   what vtkCompositePolyDataMapper2 (RenderingOpenGL2) did, deprecated the
 //   latter and 9.5 removed it. vtkShadowCompositeMapper names whichever draws
 //   composite data with per-block display attributes.
+// - Uniforms (docs/VTK97.md): VTK 9.7's vtkShaderProgram keeps the value each
+//   SetUniform* last sent to a program and skips the GL call that would send it
+//   again. The module sets every uniform through SetUniform*, so nothing needs
+//   a change; vtkShadowSkipsRepeatedUniforms tells the GL call counts of the
+//   tests and benchmarks that a value set again may cost no call.
 #ifndef ShadowMapVTKCompat_h
 #define ShadowMapVTKCompat_h
 
@@ -26,6 +31,12 @@ using vtkShadowCompositeMapper = vtkCompositePolyDataMapper;
 #else
 #include "vtkCompositePolyDataMapper2.h" // IWYU pragma: export
 using vtkShadowCompositeMapper = vtkCompositePolyDataMapper2;
+#endif
+
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 7, 0)
+constexpr bool vtkShadowSkipsRepeatedUniforms = true;
+#else
+constexpr bool vtkShadowSkipsRepeatedUniforms = false;
 #endif
 
 #endif

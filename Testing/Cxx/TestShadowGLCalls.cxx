@@ -3,6 +3,7 @@
 // once per program and frame, not per draw, so that its cost does not grow
 // with the number of props.
 #include "ShadowGLCalls.h"
+#include "ShadowMapVTKCompat.h"
 
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
@@ -118,10 +119,12 @@ TEST(ShadowGLCalls, SteadyFramesAddNoDrawAndNoUniformPerProp)
       EXPECT_GE(none.Draws, counts[i] / 2) << kind.first;
       const vtkSmartPointer<vtkRenderPass> pass = kind.second();
       const shadowbench::GLCallCounts shadowed = scene.SteadyFrame(pass);
-      // Not passed for want of shadows: the pass has maps and sets its uniforms.
+      // Not passed for want of shadows: the pass has maps and sets its uniforms,
+      // which cost GL calls unless VTK skips the values a program already holds.
       EXPECT_GT(vtkAbstractShadowMapPass::SafeDownCast(pass)->GetNumberOfShadowMapLayers(), 0)
         << kind.first;
-      EXPECT_GT(shadowed.UniformSets, none.UniformSets) << kind.first;
+      EXPECT_GE(shadowed.UniformSets, none.UniformSets + (vtkShadowSkipsRepeatedUniforms ? 0 : 1))
+        << kind.first;
       EXPECT_EQ(shadowed.Draws, none.Draws) << kind.first << ", " << counts[i]
                                             << " boxes: the kept maps draw nothing";
       added[i] = shadowed.UniformSets - none.UniformSets;
