@@ -156,6 +156,10 @@ void ProgramUniforms::Receiving(vtkShaderProgram* program, RendererMaps& maps,
 void ProgramUniforms::DrawnWithoutThePass(vtkShaderProgram* program,
   const ReceiverTextureUnits& units, vtkShadowMapRepresentation* representation)
 {
+  if (!this->ElsewherePrograms.FirstUse(program))
+  {
+    return;
+  }
   this->Casters.ApplyReceiving(program);
   // The renderer sends its lights only when they changed since the program's
   // last lighting; the pass's renderer sent its own since.
@@ -182,6 +186,7 @@ void ProgramUniforms::Forget(const RendererMaps* maps)
 void ProgramUniforms::Clear()
 {
   this->CasterPrograms.Clear();
+  this->ElsewherePrograms.Clear();
   this->CastSinceSceneDraw.clear();
   this->LastDrawnFor.clear();
 }

@@ -70,9 +70,13 @@ public:
 
   /// Before another renderer's draw with `program` of a prop the pass keeps
   /// joined past its frame (PropJoining): no cast, no shadow, its samplers on
-  /// the units the pass keeps, its renderer's lights sent again.
+  /// the units the pass keeps, its renderer's lights sent again; once per
+  /// program until the pass's next frame (EndFrame).
   void DrawnWithoutThePass(vtkShaderProgram* program, const ReceiverTextureUnits& units,
     vtkShadowMapRepresentation* representation);
+
+  /// A frame of the pass's ended: the programs it drew with hold its uniforms.
+  void EndFrame() { this->ElsewherePrograms.Invalidate(); }
 
   /// `maps` are going: no program was last drawn for them.
   void Forget(const RendererMaps* maps);
@@ -84,6 +88,8 @@ private:
   CasterUniforms Casters;
   FloatUniforms StoreUniforms;
   ProgramStamps CasterPrograms;
+  /// Programs set up for other renderers' draws since the pass's last frame.
+  ProgramStamps ElsewherePrograms;
   /// Programs the casters drew with since the scene last did.
   std::unordered_set<vtkShaderProgram*> CastSinceSceneDraw;
   /// The maps each program last shaded with.

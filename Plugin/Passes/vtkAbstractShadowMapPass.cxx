@@ -545,6 +545,7 @@ void vtkAbstractShadowMapPass::EndFrame(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   r.Joining.EndFrame(renderer);
+  r.Programs.EndFrame();
   if (!r.Joining.KeepsAny())
   {
     this->ReleaseTextureUnits(renderer);
