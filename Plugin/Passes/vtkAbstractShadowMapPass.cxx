@@ -1246,7 +1246,11 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   Internals& r = *this->Internal;
   r.Joining.LeaveAll();
-  r.Textures.Release(static_cast<vtkOpenGLRenderWindow*>(window), r.Representation);
+  if (window == r.Context)
+  {
+    // The units kept past the last frame are that window's.
+    r.Textures.Release(static_cast<vtkOpenGLRenderWindow*>(window), r.Representation);
+  }
   r.HoldsGraphicsResources = false;
   r.Renderers.ReleaseAll(window);
   r.CodeFor = nullptr;
