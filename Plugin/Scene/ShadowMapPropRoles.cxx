@@ -21,8 +21,11 @@ const char* const AnnotationClasses[] = {
   "vtkAxisFollower",          // axis labels that face the camera
   "vtkBillboardTextActor3D",  // labels placed in 3D
   "vtkCubeAxesActor",         // PyVista's show_grid() and show_bounds()
-  "vtkGridAxesActor2D",       // ParaView's axes grid and data axes grid
-  "vtkGridAxesActor3D",       //   (vtkPVGridAxes3DActor among them)
+  "vtkGridAxes2DActor",       // ParaView's axes grid and data axes grid
+  "vtkGridAxes3DActor",       //   (vtkPVGridAxes3DActor) up to 5.13,
+  "vtkGridAxesPlane2DActor",  //   the classes VTK took over as
+  "vtkGridAxesActor2D",       //   vtkGridAxesActor2D, vtkGridAxesActor3D and
+  "vtkGridAxesActor3D",       //   vtkGridAxesPlaneActor2D (RenderingGridAxes)
   "vtkGridAxesPlaneActor2D",
   "vtkLegendScaleActor",
   "vtkPolarAxesActor",

@@ -112,18 +112,6 @@ def luminance_at(view, png, world):
     return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
 
 
-def darker_pixels(png, reference):
-    """Pixels of `png` darker than in `reference` by more than 20 of 255 in luminance."""
-    def luminances(path):
-        reader = vtkPNGReader()
-        reader.SetFileName(path)
-        reader.Update()
-        rgb = reader.GetOutput().GetPointData().GetScalars()
-        return [0.2126 * r + 0.7152 * g + 0.0722 * b
-                for r, g, b in (rgb.GetTuple3(i) for i in range(rgb.GetNumberOfTuples()))]
-    return sum(1 for a, b in zip(luminances(png), luminances(reference)) if a < b - 20.0)
-
-
 def render(view, name):
     Render(view)
     png = os.path.join(OUT, name + ".png")

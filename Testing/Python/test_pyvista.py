@@ -198,7 +198,7 @@ def picks(shadows):
     plotter.iren._mouse_left_button_click(*click)
     plotter.disable_picking()
     after, _, _ = shot(plotter)
-    sphere = [actor.GetBounds()[5] > 2.0 for actor in actors]
+    sphere = [actor.GetBounds()[5] > 1.0 for actor in actors]  # the ground lies at z = 0
     point = np.array(points[0]) if points else None
     plotter.close()
     return sphere, point, np.array_equal(before, after)
