@@ -71,6 +71,13 @@ TEST(ShadowSweepDraws, DrawsCoverEveryKindOfCaseWithinRange)
       EXPECT_GT(c.Light.ConeAngle, 0.0);
       EXPECT_LT(c.Light.ConeAngle, 90.0);
     }
+    if (c.Light.Description == "point light behind and above the camera")
+    {
+      const glm::dvec3 lamp = c.Light.Position - c.Camera.Position;
+      EXPECT_GT(lamp.z, 0.0);
+      EXPECT_LE(glm::dot(glm::dvec2(lamp), glm::dvec2(c.Camera.FocalPoint - c.Camera.Position)), 0.0);
+      EXPECT_FALSE(c.Camera.Parallel);
+    }
     EXPECT_GE(c.Width, 100);
     EXPECT_LE(c.Width, 300);
     EXPECT_GE(c.Height, 50);
@@ -82,7 +89,8 @@ TEST(ShadowSweepDraws, DrawsCoverEveryKindOfCaseWithinRange)
   EXPECT_EQ(scenes, std::set<std::string>(sweepScenes.begin(), sweepScenes.end()));
   for (const char* light : { "sun from any direction", "sun along the view", "sun against the view",
          "spot", "point light inside the scene", "point light outside the scene",
-         "camera spot light", "camera directional light" })
+         "point light behind and above the camera", "camera spot light",
+         "camera directional light" })
   {
     EXPECT_EQ(lights.count(light), 1u) << light;
   }
