@@ -950,6 +950,7 @@ void AddColorMappedActor(vtkRenderer* renderer, vtkPolyData* data, const double 
 struct ViewFrame
 {
   double focalPoint[3];
+  double position[3]; // the camera's
   double forward[3]; // the view direction projected onto the ground, unit length
   double left[3];    // forward turned 90 degrees counter-clockwise about +z
   double distance;   // from the camera to its focal point
@@ -959,6 +960,7 @@ ViewFrame ViewFrameOf(vtkCamera* camera)
 {
   ViewFrame view;
   camera->GetFocalPoint(view.focalPoint);
+  camera->GetPosition(view.position);
   view.distance = camera->GetDistance();
   double direction[3];
   camera->GetDirectionOfProjection(direction);
@@ -983,17 +985,22 @@ ViewFrame ViewFrameOf(vtkCamera* camera)
 }
 
 /**
- * The point `ahead`, `left` and `up` view distances from the focal point,
- * along the view frame's forward, left and +z.
+ * The point `ahead`, `left` and `up` view distances from `origin` (the focal
+ * point or the camera), along the view frame's forward, left and +z.
  */
-void PointFromFocus(const ViewFrame& view, double ahead, double left, double up, double point[3])
+void PointFrom(const ViewFrame& view, const double origin[3], double ahead, double left,
+  double up, double point[3])
 {
   for (int axis = 0; axis < 3; ++axis)
   {
-    point[axis] = view.focalPoint[axis] +
-      view.distance * (ahead * view.forward[axis] + left * view.left[axis]);
+    point[axis] = origin[axis] + view.distance * (ahead * view.forward[axis] + left * view.left[axis]);
   }
   point[2] += view.distance * up;
+}
+
+void PointFromFocus(const ViewFrame& view, double ahead, double left, double up, double point[3])
+{
+  PointFrom(view, view.focalPoint, ahead, left, up, point);
 }
 
 /** A sun with its azimuth counter-clockwise from the view's forward direction. */
@@ -1124,15 +1131,19 @@ vtkSmartPointer<vtkLight> MakeSetupLight(const ViewFrame& view, const std::strin
     PointFromFocus(view, -0.6, 0.0, 0.8, position);
     return MakePositionalLight(position, view.focalPoint, WideSpotConeAngleDeg);
   }
-  if (setup == "point" || setup == "street-point")
+  if (setup == "point" || setup == "street-point" || setup == "lamp-behind")
   {
     if (setup == "point")
     {
       PointFromFocus(view, -0.3, 0.0, 0.5, position);
     }
-    else
+    else if (setup == "street-point")
     {
       PointFromFocus(view, -0.75, 0.1, 0.08, position);
+    }
+    else
+    {
+      PointFrom(view, view.position, -0.05, 0.0, 0.8, position);
     }
     const double below[3] = { position[0], position[1], position[2] - 1.0 };
     return MakePositionalLight(position, below, 180.0);
@@ -1816,7 +1827,7 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
 std::vector<std::string> LightSetupNames()
 {
   return { "overhead", "perpendicular", "behind", "facing", "spot", "point", "wide-spot",
-    "street-point" };
+    "street-point", "lamp-behind" };
 }
 
 std::vector<std::string> SizedLightSetupNames()
@@ -1830,7 +1841,8 @@ std::string LightKindOfSetup(const std::string& setup)
   {
     return "spot";
   }
-  return setup == "point" || setup == "street-point" || IsSizedLampSetup(setup, "soft-point")
+  return setup == "point" || setup == "street-point" || setup == "lamp-behind" ||
+      IsSizedLampSetup(setup, "soft-point")
     ? "point"
     : "sun";
 }

@@ -193,7 +193,8 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
 
 /**
  * The light set-ups AddLightSetup understands: "overhead", "perpendicular",
- * "behind", "facing", "spot", "point", "wide-spot", "street-point".
+ * "behind", "facing", "spot", "point", "wide-spot", "street-point",
+ * "lamp-behind".
  */
 std::vector<std::string> LightSetupNames();
 
@@ -244,6 +245,10 @@ std::string LightKindOfSetup(const std::string& setup);
  *  - street-point: 180 degree cone at street level near the viewer, 0.75 d
  *           back from F along the ground, 0.1 d to the left and 0.08 d above
  *           F: its light reaches from the camera's feet to the far end of
+ *           the view,
+ *  - lamp-behind: 180 degree cone a little behind and high above the
+ *           camera, 0.05 d back from it along the ground and 0.8 d above it:
+ *           a lamp over the viewer's shoulder whose shadows run away down
  *           the view.
  * Returns false, changing nothing, for an unknown set-up.
  */

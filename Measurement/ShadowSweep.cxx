@@ -275,6 +275,36 @@ void DrawPositional(Random& random, const Box& box, bool inside, bool spot, Ligh
   }
 }
 
+// The share of the point lights of perspective cameras standing in the scene
+// (the room's aside) moved over the camera's shoulder.
+constexpr double LampBehindShare = 0.5;
+
+/// A share of the point lights moved to a lamp a little behind and above a
+/// perspective camera that stands in the scene, whose shadows run away down
+/// the view over receivers as far as the camera sees (Kozlov's cube once lost
+/// to the uniform faces there). A stream of its own: the rest of the case,
+/// and every other case, is drawn as before.
+void DrawLampBehind(std::uint64_t caseSeed, const std::string& scene, const Box& box,
+  const CameraCase& camera, LightCase& light)
+{
+  const bool standsInScene = glm::all(glm::greaterThanEqual(camera.Position, box.Min)) &&
+    glm::all(glm::lessThanEqual(camera.Position, box.Max));
+  Random random(caseSeed ^ 0x4c414d50ull);
+  if (light.Kind != LightKind::Point || scene == "room" || camera.Parallel || !standsInScene ||
+    !random.Chance(LampBehindShare))
+  {
+    return;
+  }
+  const double size = box.Diagonal();
+  glm::dvec3 back = camera.Position - camera.FocalPoint;
+  back.z = 0.0;
+  back = glm::length(back) > 1e-9 * size ? glm::normalize(back) : glm::dvec3(0.0, -1.0, 0.0);
+  light.Position = camera.Position + random.LogUniform(0.002, 0.1) * size * back +
+    glm::dvec3(0.0, 0.0, random.LogUniform(0.005, 0.3) * size);
+  light.FocalPoint = light.Position - glm::dvec3(0.0, 0.0, 1.0);
+  light.Description = "point light behind and above the camera";
+}
+
 void DrawCameraLight(Random& random, LightCase& light)
 {
   light.CameraLight = true;
@@ -848,6 +878,7 @@ Case DrawCase(std::uint64_t caseSeed, const double bounds[6], int baseWidth, int
   const Box box = BoxOf(bounds);
   drawn.Camera = DrawCamera(random, drawn.Scene, box);
   drawn.Light = DrawLight(random, drawn.Scene, box, drawn.Camera);
+  DrawLampBehind(caseSeed, drawn.Scene, box, drawn.Camera, drawn.Light);
   drawn.Width = std::max(16, static_cast<int>(std::lround(baseWidth * random.Uniform(0.5, 1.5))));
   drawn.Height = std::max(16, static_cast<int>(std::lround(baseHeight * random.Uniform(0.5, 1.5))));
   return drawn;

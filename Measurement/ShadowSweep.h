@@ -77,8 +77,9 @@ std::string SceneOfCase(std::uint64_t caseSeed);
  * (mostly at the scene), perspective with view angles of 10 to 100 degrees or
  * parallel, with near/far ratios from 1e-1 down to 1e-5. Lights: directional
  * from any direction, exactly along or against the view among them; spots of
- * cones in (0, 90) degrees; point lights inside and outside the scene; camera
- * lights. Windows are baseWidth x baseHeight scaled by 0.5 to 1.5 per side.
+ * cones in (0, 90) degrees; point lights inside and outside the scene, and
+ * (half of those of perspective cameras standing in the scene, but in the
+ * room) a little behind and above the camera; camera lights. Windows are baseWidth x baseHeight scaled by 0.5 to 1.5 per side.
  */
 Case DrawCase(std::uint64_t caseSeed, const double bounds[6], int baseWidth, int baseHeight);
 

@@ -113,15 +113,15 @@ void PrintUsage(std::ostream& out)
          "                           smoke (a volume: transmittance errors)\n"
          "  --up x|y|z|-x|-y|-z      analyze only: the model's up axis, as for render\n"
          "  --setups LIST|all|soft   overhead,perpendicular,behind,facing,spot,point,\n"
-         "                           wide-spot,street-point [these eight]; sized lights\n"
-         "                           (soft shadows, measured against ray-traced area\n"
-         "                           lights): soft-sun (0.53 degrees), soft-spot,\n"
-         "                           soft-point (radius 0.02 of the camera's distance),\n"
-         "                           soft-sun-D (the sun D degrees across, up to 30),\n"
-         "                           soft-spot-P, soft-point-P (radius P% of the\n"
-         "                           camera's distance, up to 25); soft: soft-sun,\n"
-         "                           soft-spot, soft-point; all: the eight and those\n"
-         "                           three\n"
+         "                           wide-spot,street-point,lamp-behind [these nine];\n"
+         "                           sized lights (soft shadows, measured against\n"
+         "                           ray-traced area lights): soft-sun (0.53\n"
+         "                           degrees), soft-spot, soft-point (radius 0.02 of\n"
+         "                           the camera's distance), soft-sun-D (the sun D\n"
+         "                           degrees across, up to 30), soft-spot-P,\n"
+         "                           soft-point-P (radius P% of the camera's\n"
+         "                           distance, up to 25); soft: soft-sun, soft-spot,\n"
+         "                           soft-point; all: the nine and those three\n"
          "                           {perpendicular,spot,point}\n"
          "  --techniques LIST|all    none,vtk,vtk-equal,uniform,psm,lispsm,tsm,gmnpr,csm,\n"
          "                           csm-tight,csm-lispsm,second-depth,midpoint,dual,evsm4\n"
@@ -421,9 +421,9 @@ std::string CheckSetups(const std::vector<std::string>& setups)
     {
       return "unknown light set-up '" + setup +
         "' (expected overhead, perpendicular, behind, facing, spot, point, wide-spot, "
-        "street-point, soft-sun, soft-sun-D (D degrees across, up to 30), soft-spot, "
-        "soft-point, soft-spot-P or soft-point-P (radius P% of the camera's distance, up to "
-        "25))";
+        "street-point, lamp-behind, soft-sun, soft-sun-D (D degrees across, up to 30), "
+        "soft-spot, soft-point, soft-spot-P or soft-point-P (radius P% of the camera's "
+        "distance, up to 25))";
     }
   }
   return setups.empty() ? "no light set-up given" : std::string();

@@ -44,7 +44,7 @@ vec4 vtkShadowAnalysisColor(
   vec3 positionVC, vec3 normalVC, int light, int firstView, int viewLayout, int count, int features)
 {
   int view = vtkShadowSelectView(positionVC, normalVC, light, firstView, viewLayout, count, features);
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, view, features);
+  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, view, viewLayout, features);
   float footprint = vtkShadowTexelFootprint(clip);
   VTK_SHADOW_VALUE visibility =
     vtkShadowVisibility(positionVC, normalVC, light, firstView, viewLayout, count, features);

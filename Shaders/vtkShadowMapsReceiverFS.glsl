@@ -153,8 +153,8 @@ vec4 vtkShadowMapTransform(int firstView, int view, vec3 positionVC, int feature
   return vtkShadowCrop(vtkShadowViews[firstView].ViewToMap * vec4(positionVC, 1.0), view);
 }
 
-vec4 vtkShadowMapClip(
-  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features);
+vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int firstView, int view,
+  int viewLayout, int features);
 bool vtkShadowInsideMap(vec4 clip, int view, int features);
 
 // The cascade that shades the receiver: by view depth, or the first (finest)
@@ -166,7 +166,8 @@ int vtkShadowSelectCascade(
   {
     for (int i = 0; i < count - 1; ++i)
     {
-      vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, firstView + i, features);
+      vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, firstView + i,
+        VTK_SHADOW_LAYOUT_CASCADES, features);
       if (vtkShadowInsideMap(clip, firstView + i, features))
       {
         return firstView + i;
@@ -190,7 +191,8 @@ int vtkShadowSelectCascade(
 int vtkShadowSelectTile(vec3 positionVC, vec3 normalVC, int light, int firstView, int features)
 {
   vec4 grid = vtkShadowLights[light].TileGrid;
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, firstView, features);
+  vec4 clip = vtkShadowMapClip(
+    positionVC, normalVC, light, firstView, firstView, VTK_SHADOW_LAYOUT_TILES, features);
   if (clip.w <= 0.0)
   {
     return firstView; // behind the light: outside every tile, lit
@@ -262,15 +264,16 @@ void vtkShadowMapGradients(
   gradV = (vec3(m[0][1], m[1][1], m[2][1]) - (q.y / q.w) * rowW) / q.w;
 }
 
-// World (= VC) length of one texel along the map's coarser axis at positionVC:
-// 1 / (resolution * |grad t|).
-float vtkShadowGradientTexel(vec3 positionVC, int firstView, int view, int features)
+// World (= VC) length of one texel at positionVC: along the map's coarser axis,
+// 1 / (resolution * |grad t|), or (mean) the side of a square of the texel's
+// area, 1 / (resolution * sqrt(|grad u| |grad v|)).
+float vtkShadowGradientTexel(vec3 positionVC, int firstView, int view, int features, bool mean)
 {
   vec3 gradU;
   vec3 gradV;
   vtkShadowMapGradients(positionVC, firstView, view, features, gradU, gradV);
-  float slowest = min(length(gradU), length(gradV));
-  return 1.0 / (vtkShadowMapResolution * max(slowest, 1e-20));
+  float rate = mean ? sqrt(length(gradU) * length(gradV)) : min(length(gradU), length(gradV));
+  return 1.0 / (vtkShadowMapResolution * max(rate, 1e-20));
 }
 
 // World size of one texel of map `view` at the receiver.
@@ -284,24 +287,32 @@ float vtkShadowTexelWorldSize(vec3 positionVC, int light, int firstView, int vie
   }
   if (vtkShadowHas(features, VTK_SHADOW_FEATURE_GRADIENT_TEXELS) && texelSize.x < 0.0)
   {
-    texel = vtkShadowGradientTexel(positionVC, firstView, view, features);
+    texel = vtkShadowGradientTexel(positionVC, firstView, view, features, false);
   }
   return texel;
 }
 
 // The receiver moved along its normal by the world-space size of a texel there
 // (normal offset, Kozlov, GPU Gems 14), and its clip coordinates in map `view`.
-vec3 vtkShadowOffsetAlongNormal(
-  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
+// The offset also moves the receiver across the light. A post-perspective cube
+// face's texels can be several times longer one way than the other (5.3 times
+// under the bench's lamp-behind), and an offset of the coarser axis moved the
+// lookup that many of the finer axis's texels, over shadow edges: those faces
+// take the texel's mean size (docs/WARPS.md).
+vec3 vtkShadowOffsetAlongNormal(vec3 positionVC, vec3 normalVC, int light, int firstView,
+  int view, int viewLayout, int features)
 {
-  float texel = vtkShadowTexelWorldSize(positionVC, light, firstView, view, features);
+  float texel = viewLayout == VTK_SHADOW_LAYOUT_PERSPECTIVE_CUBE
+    ? vtkShadowGradientTexel(positionVC, firstView, view, features, true)
+    : vtkShadowTexelWorldSize(positionVC, light, firstView, view, features);
   return positionVC + normalVC * (vtkShadowNormalOffset * texel);
 }
 
-vec4 vtkShadowMapClip(
-  vec3 positionVC, vec3 normalVC, int light, int firstView, int view, int features)
+vec4 vtkShadowMapClip(vec3 positionVC, vec3 normalVC, int light, int firstView, int view,
+  int viewLayout, int features)
 {
-  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
+  vec3 biased =
+    vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, viewLayout, features);
   return vtkShadowMapTransform(firstView, view, biased, features);
 }
 
@@ -475,7 +486,8 @@ float vtkShadowOpaqueVisibility(vec3 biased, vec3 normalVC, vec3 mapCoord, int l
 VTK_SHADOW_VALUE vtkShadowViewVisibility(vec3 positionVC, vec3 normalVC, int light,
   int firstView, int view, int viewLayout, int count, int features)
 {
-  vec3 biased = vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, features);
+  vec3 biased =
+    vtkShadowOffsetAlongNormal(positionVC, normalVC, light, firstView, view, viewLayout, features);
   vec4 clip = vtkShadowMapTransform(firstView, view, biased, features);
   if (!vtkShadowInsideMap(clip, view, features))
   {
@@ -512,7 +524,8 @@ float vtkShadowBlendIntoNext(
   {
     return 0.0;
   }
-  vec4 clip = vtkShadowMapClip(positionVC, normalVC, light, firstView, view, features);
+  vec4 clip = vtkShadowMapClip(
+    positionVC, normalVC, light, firstView, view, VTK_SHADOW_LAYOUT_CASCADES, features);
   vec2 ndc = abs(2.0 * clip.xy / clip.w - 1.0);
   return clamp((max(ndc.x, ndc.y) - (1.0 - band)) / band, 0.0, 1.0);
 }

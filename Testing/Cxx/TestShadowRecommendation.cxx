@@ -63,6 +63,27 @@ TEST(ShadowScenesSetups, SizedSetupsNameTheirLightsKindAndSize)
   EXPECT_NEAR(SetupLightSize("soft-sun-8"), 8.0, 1e-9);
 }
 
+// The lamp behind the viewer stands over the camera itself, not over the focal
+// point: its shadows run away down the view from the camera's feet.
+TEST(ShadowScenesSetups, LampBehindStandsBehindAndAboveTheCamera)
+{
+  vtkNew<vtkRenderer> renderer;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(3.0, -10.0, 2.0); // looking along +y and down, 10 from its focal point
+  camera->SetFocalPoint(3.0, -2.0, -4.0);
+  ASSERT_TRUE(shadowscenes::AddLightSetup(renderer, "lamp-behind"));
+  EXPECT_EQ(shadowscenes::LightKindOfSetup("lamp-behind"), "point");
+  vtkLight* lamp = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+  ASSERT_NE(lamp, nullptr);
+  EXPECT_TRUE(lamp->GetPositional());
+  EXPECT_EQ(lamp->GetConeAngle(), 180.0);
+  double position[3];
+  lamp->GetPosition(position);
+  EXPECT_NEAR(position[0], 3.0, 1e-9);
+  EXPECT_NEAR(position[1], -10.5, 1e-9); // 0.05 d behind the camera along the ground
+  EXPECT_NEAR(position[2], 10.0, 1e-9);  // 0.8 d above it
+}
+
 TEST(ShadowRecommendation, TheMostAccurateWithinTheBudgetAndTheRunnerUp)
 {
   const std::vector<MeasuredCase> cases = {
