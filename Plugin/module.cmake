@@ -91,6 +91,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapFramePolicy.cxx
+    Plugin/Passes/ShadowMapFrameUpdate.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
     Plugin/Passes/ShadowMapLayerDrawing.cxx
     Plugin/Passes/ShadowMapPassShaders.cxx
@@ -142,6 +143,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapRotationNoise.h
     Plugin/OpenGL/ShadowMapTransmittance.h
     Plugin/Passes/ShadowMapCombination.h
+    Plugin/Passes/ShadowMapFrameUpdate.h
     Plugin/Passes/ShadowMapLayerContent.h
     Plugin/Passes/ShadowMapLayerDrawing.h
     Plugin/Passes/ShadowMapPassShaders.h

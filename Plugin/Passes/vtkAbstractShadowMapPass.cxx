@@ -1,79 +1,36 @@
 #include "vtkAbstractShadowMapPass.h"
 
 #include "ShadowMapAnalysis.h"
-#include "ShadowMapCasterShader.h"
-#include "ShadowMapCascades.h"
-#include "ShadowMapCasterReach.h"
-#include "ShadowMapPropRecords.h"
 #include "ShadowMapCasting.h"
-#include "ShadowMapCombination.h"
-#include "ShadowMapFramePolicy.h"
-#include "ShadowMapClosedSurfaces.h"
-#include "ShadowMapGlm.h"
-#include "ShadowMapLayerContent.h"
-#include "ShadowMapLayerDrawing.h"
-#include "ShadowMapLight.h"
-#include "ShadowMapLinearDepthResolve.h"
+#include "ShadowMapFrameUpdate.h"
+#include "ShadowMapImpostors.h"
 #include "ShadowMapPropJoining.h"
-#include "ShadowMapPropParts.h"
-#include "ShadowMapReceiverShader.h"
-#include "ShadowMapReceiverTextures.h"
-#include "ShadowMapPassShaders.h"
-#include "ShadowMapProgramUniforms.h"
-#include "ShadowMapRendererMaps.h"
+#include "ShadowMapPropRoles.h"
 #include "ShadowMapRendererUse.h"
 #include "ShadowMapSceneReading.h"
-#include "ShadowMapStorageChoice.h"
-#include "ShadowMapStoreFromLightDepths.h"
-#include "ShadowMapTextureArray.h"
-#include "ShadowMapUpdates.h"
 
-#include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkDataObject.h"
-#include "vtkInformation.h"
+#include "vtkDualDepthPeelingPass.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
-#include "vtkMapper.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkVolume.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
-#include "vtkOpenGLState.h"
-#include "vtkPropCollection.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
-#include "vtkDualDepthPeelingPass.h"
+#include "vtkShaderProgram.h"
 #include "vtkShadowMapExchange.h"
 #include "vtkShadowMapRepresentation.h"
 #include "vtkShadowMapViews.h"
 #include "vtkSmartPointer.h"
-#include "vtkTextureUnitManager.h"
-#include "vtkShaderProgram.h"
+#include "vtkVolume.h"
 #include "vtkWeakPointer.h"
 
-#include <glm/gtc/matrix_access.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include "ShadowMapVTKCompat.h"
 
 #include <algorithm>
-#include <sstream>
-#include <array>
-#include <cmath>
-#include <cstring>
-#include <iterator>
-#include <limits>
-#include <map>
 #include <memory>
-#include <unordered_map>
-#include <unordered_set>
 
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, CASTS_SHADOWS, Integer);
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, RECEIVES_SHADOWS, Integer);
@@ -98,43 +55,6 @@ void vtkAbstractShadowMapPass::GetTransmittance(
   }
 }
 
-using shadowmaps::Aabb;
-using shadowmaps::Caster;
-using shadowmaps::ToGlm;
-using shadowmaps::ToVtk;
-using shadowmaps::LightKind;
-using shadowmaps::LightView;
-using shadowmaps::ShadowLight;
-
-namespace
-{
-std::vector<vtkVolume*> CastingVolumes(const std::vector<Caster>& casters)
-{
-  std::vector<vtkVolume*> volumes;
-  for (const Caster& caster : casters)
-  {
-    if (auto* volume = vtkVolume::SafeDownCast(caster.Prop))
-    {
-      volumes.push_back(volume);
-    }
-  }
-  return volumes;
-}
-
-// The most samples GL offers per texel of a multisample buffer.
-int MaximumSamples()
-{
-  GLint samples = 1;
-  glGetIntegerv(GL_MAX_SAMPLES, &samples);
-  return std::max(1, static_cast<int>(samples));
-}
-
-bool IsNonFinite(const LightView& view)
-{
-  return !shadowmaps::IsFinite(view.View) || !shadowmaps::IsFinite(view.Projection);
-}
-} // namespace
-
 struct vtkAbstractShadowMapPass::Internals
 {
   // The strategies: the preset's own, or the user's.
@@ -143,13 +63,11 @@ struct vtkAbstractShadowMapPass::Internals
   vtkSmartPointer<vtkShadowMapViews> Views;
   vtkSmartPointer<vtkShadowMapRepresentation> Representation;
 
-  // The frame being rendered.
-  shadowmaps::ShadowFrame Frame;
-  std::vector<shadowmaps::ShadowLight> Lights;
-  std::vector<Caster> Casters;
+  // What renders each renderer's maps, and the settings of its frame.
+  shadowmaps::FrameUpdate Update;
+  shadowmaps::FrameSettings Settings;
 
-  // What draws the casters into the maps' layers.
-  shadowmaps::LayerDrawing Layers;
+  // What draws the scene.
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
   vtkNew<vtkDualDepthPeelingPass> DepthPeeling;
   vtkSmartPointer<vtkRenderPass> BlendedTranslucency;
@@ -178,30 +96,7 @@ struct vtkAbstractShadowMapPass::Internals
     }
   }
   shadowmaps::MapView MapView;
-  shadowmaps::ClosedCasters ClosedCasters;
-  // What each frame renders, and across processes.
-  shadowmaps::FramePolicy Policy;
 
-  // The maps of each renderer (and eye) that draws through the pass; Maps()
-  // are the ones of the frame being rendered.
-  shadowmaps::MapsByRenderer Renderers;
-  shadowmaps::RendererMaps& Maps() { return *this->Renderers.Current(); }
-  const shadowmaps::RendererMaps& Maps() const { return *this->Renderers.Current(); }
-  // The maps whose lights, layers and storage the shader code was made for.
-  const shadowmaps::RendererMaps* CodeFor = nullptr;
-
-  // The shadow code in the mappers' shaders, the same for every renderer's
-  // maps, and what the pass sets on their programs.
-  shadowmaps::PassShaders Shaders;
-  shadowmaps::ProgramUniforms Programs;
-  // Whether each prop received shadows (and held its own transmittance) when
-  // it last drew through the pass: what its shaders were built for.
-  std::unordered_map<vtkProp*, std::pair<vtkWeakPointer<vtkProp>, vtkAbstractShadowMapPass::ReceiverRole>>
-    Receives;
-  // The units the receivers' samplers read, from the casters' draws to the
-  // end of the frame.
-  shadowmaps::ReceiverTextures Textures;
-  bool ShaderCodeCompiles = true;
   // The props whose render passes the pass joined, in this frame or past it.
   shadowmaps::PropJoining Joining;
 
@@ -218,29 +113,8 @@ struct vtkAbstractShadowMapPass::Internals
   bool HoldsGraphicsResources = false;
   std::unique_ptr<shadowmaps::RendererUse> Use;
 
+  // Whether the frame being drawn has shadows.
   bool Active = false;
-  bool Casting = false;
-  // The GL state of the casters' draws, while they draw.
-  shadowmaps::CasterGLState* CastingState = nullptr;
-  bool SceneCameraParallel = false;
-  // The most samples per texel the context offers (GL_MAX_SAMPLES), asked
-  // once, and only by maps that may be multisampled.
-  int MaximumSamples = 0;
-  bool WarnedTooManyLights = false;
-  /// The last warning about light sizes, so that a frame repeats none.
-  std::string WarnedLightSizes;
-  bool WarnedNonFiniteViews = false;
-  bool WarnedResolution = false;
-  std::string LastGLError;
-  std::string WarnedGLError;
-  /// What kept a volume from casting, once warned: its data, or the GL.
-  std::string WarnedVolume;
-  /// Whether this process's casters (or, with an exchange, any process's)
-  /// draw into the transmittance maps.
-  bool TranslucentOnAnyProcess = false;
-  /// Each shadowed light's share of the lights' intensity, for the volumes
-  /// that receive (ReceiverShader::InjectVolume).
-  std::vector<float> LightShares;
 };
 
 //------------------------------------------------------------------------------
@@ -254,6 +128,14 @@ vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
   this->Internal->Representation = defaultRepresentation;
   this->Internal->Use = std::make_unique<shadowmaps::RendererUse>(
     [this](vtkRenderer* renderer) { this->ReleaseMapsOf(renderer); });
+  shadowmaps::FrameSettings& settings = this->Internal->Settings;
+  settings.MaximumShadowedLights = VTK_MAX_SHADOWED_LIGHTS;
+  settings.Casts = CASTS_SHADOWS();
+  settings.Receives = RECEIVES_SHADOWS();
+  settings.LightSize = LIGHT_SIZE();
+  settings.JoinProps = [this](vtkProp* const* props, int count) {
+    this->JoinRenderPasses(props, count);
+  };
   // The scene draws into one colour buffer; the volume ray caster, drawing at a
   // coarser image sample distance, draws into as many as the last pass on the
   // volume says.
@@ -372,7 +254,49 @@ vtkMTimeType vtkAbstractShadowMapPass::GetMTime()
 //------------------------------------------------------------------------------
 size_t vtkAbstractShadowMapPass::GetShadowMapMemory() const
 {
-  return this->Internal->Renderers.MemoryBytes();
+  return this->Internal->Update.MemoryBytes();
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfShadowedLights() const
+{
+  return this->Internal->Update.Statistics().ShadowedLights;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfShadowMapLayers() const
+{
+  return this->Internal->Update.Statistics().Layers;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfNonFiniteViews() const
+{
+  return this->Internal->Update.Statistics().NonFiniteViews;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfShadowMapUpdates() const
+{
+  return this->Internal->Update.Statistics().Updates;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfCasterDraws() const
+{
+  return this->Internal->Update.Statistics().CasterDraws;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfRenderedLayers() const
+{
+  return this->Internal->Update.Statistics().RenderedLayers;
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfCasterPassesPerLayer() const
+{
+  return this->Internal->Update.Statistics().CasterPassesPerLayer;
 }
 
 //------------------------------------------------------------------------------
@@ -384,7 +308,7 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
     this->DelegatePass ? this->DelegatePass : this->Internal->DefaultDelegate.Get();
 
   Internals& r = *this->Internal;
-  this->NumberOfRenderedLayers = 0;
+  r.Update.ClearFrameStatistics();
   r.Active = false;
   if (renderer)
   {
@@ -406,7 +330,7 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   if (r.Active)
   {
     this->JoinRenderPasses(s->GetPropArray(), s->GetPropArrayCount());
-    this->BindShadowTextures(renderer);
+    r.Update.BindForReceivers(renderer);
   }
   else
   {
@@ -466,14 +390,14 @@ void vtkAbstractShadowMapPass::UseContextOf(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::SelectRendererMaps(vtkOpenGLRenderer* renderer)
 {
-  this->Internal->Renderers.Select(renderer);
+  this->Internal->Update.SelectRenderer(renderer);
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  if (!r.Context || !r.Renderers.Holds(renderer))
+  if (!r.Context || !r.Update.HoldsMapsOf(renderer))
   {
     return; // released with the context it was moved from, or never drawn
   }
@@ -485,11 +409,8 @@ void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
   {
     window->PushContext();
   }
-  r.Renderers.Release(renderer, window, [&r](const shadowmaps::RendererMaps* maps) {
-    r.CodeFor = r.CodeFor == maps ? nullptr : r.CodeFor;
-    r.Programs.Forget(maps);
-  });
-  if (r.Renderers.Empty())
+  r.Update.ReleaseMapsOf(renderer, window);
+  if (r.Update.HoldsNoMaps())
   {
     // No renderer draws through the pass any more: it holds nothing.
     this->ReleaseGraphicsResources(window);
@@ -545,7 +466,7 @@ void vtkAbstractShadowMapPass::EndFrame(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   r.Joining.EndFrame(renderer);
-  r.Programs.EndFrame();
+  r.Update.Programs().EndFrame();
   if (!r.Joining.KeepsAny())
   {
     this->ReleaseTextureUnits(renderer);
@@ -555,575 +476,36 @@ void vtkAbstractShadowMapPass::EndFrame(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const vtkRenderState* s)
 {
-  renderer->UpdateLightsGeometryToFollowCamera();
-  this->CollectLights(renderer);
-  this->NumberOfShadowedLights = static_cast<int>(this->Internal->Lights.size());
-  if (this->Internal->Lights.empty())
-  {
-    this->NumberOfShadowMapLayers = 0;
-    return false;
-  }
-  this->CollectCastersAndCamera(renderer);
-  this->RebuildShadersOfChangedReceivers(s);
-  const bool ready = this->UpdateShadowMaps(renderer);
-  // Lights whose views were not finite are gone by now.
-  this->NumberOfShadowedLights = static_cast<int>(this->Internal->Lights.size());
+  Internals& r = *this->Internal;
+  shadowmaps::FrameSettings& settings = r.Settings;
+  settings.Views = r.Views;
+  settings.Representation = r.Representation;
+  settings.Exchange = this->Exchange;
+  settings.ParametersTime = this->GetMTime();
+  settings.UseSceneBounds = this->UseSceneBounds;
+  settings.SceneBounds = this->SceneBounds;
+  settings.SoftShadows = this->SoftShadows;
+  settings.Resolution = this->Resolution;
+  settings.CasterFaces = this->CasterFaces;
+  settings.NormalOffset = this->NormalOffset;
+  settings.ShadowReachCulling = this->ShadowReachCulling;
+  settings.InteractiveUpdateRate = this->InteractiveUpdateRate;
+  // Analysis settings are pass parameters: a change re-renders the maps.
+  const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
+  settings.RecolouringAnalysisView = recolours ? this->AnalysisView : 0;
+  settings.AnalysisLight = this->AnalysisLight;
+  const bool ready = r.Update.Prepare(renderer, s, settings);
+  this->WarnAboutUpdate();
   return ready;
 }
 
 //------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::CollectLights(vtkOpenGLRenderer* renderer)
+void vtkAbstractShadowMapPass::WarnAboutUpdate()
 {
-  Internals& r = *this->Internal;
-  int skipped = 0;
-  std::vector<vtkLight*> clamped;
-  r.Lights = shadowmaps::CollectShadowedLights(
-    renderer, CASTS_SHADOWS(), LIGHT_SIZE(), VTK_MAX_SHADOWED_LIGHTS, skipped, clamped);
-  if (skipped > 0 && !r.WarnedTooManyLights)
-  {
-    vtkWarningMacro(<< skipped << " light(s) beyond the first " << VTK_MAX_SHADOWED_LIGHTS
-                    << " shadowed lights cast no shadows; they still light the scene.");
-  }
-  r.WarnedTooManyLights = skipped > 0;
-  this->WarnAboutLightSizes(clamped);
-  r.LightShares = shadowmaps::IntensityShares(renderer, r.Lights);
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::WarnAboutLightSizes(const std::vector<vtkLight*>& clamped)
-{
-  Internals& r = *this->Internal;
-  std::ostringstream warning;
-  if (!clamped.empty())
-  {
-    const double stored = shadowmaps::StoredLightSize(clamped.front(), LIGHT_SIZE());
-    warning << clamped.size()
-            << " light(s) have a LIGHT_SIZE (or OSPRay radius) that is not finite, negative, or a "
-               "sun wider than "
-            << shadowmaps::WidestSun << " degrees: the first's " << stored << " is taken as "
-            << shadowmaps::LightSizeOf(clamped.front(), LIGHT_SIZE()) << ". ";
-  }
-  // Asked of the representation only with a sized light: its storage and soft
-  // code are strings built on each call.
-  bool soft = this->SoftShadows &&
-    std::any_of(r.Lights.begin(), r.Lights.end(),
-      [](const shadowmaps::ShadowLight& light) { return light.Size > 0.0; });
-  if (soft)
-  {
-    // Depth textures' soft shadows read their depths through a sampler object.
-    shadowmaps::MapStorage storage;
-    r.Representation->GetMapStorage(storage);
-    if (shadowmaps::IsDepth(storage.Format) && !shadowmaps::SamplerObjectsAvailable())
-    {
-      warning << "This OpenGL has no sampler objects (3.3): lights with a LIGHT_SIZE cast hard "
-                 "shadows from depth maps.";
-      soft = false;
-    }
-    else if (!r.Representation->GetSupportsSizedLights())
-    {
-      warning << r.Representation->GetClassName()
-              << " draws hard shadows of lights with a LIGHT_SIZE in its present settings: soft "
-                 "shadows come from depth maps, dual-depth maps and mipmapped VSM, EVSM4 and MSM "
-                 "moments.";
-      soft = false;
-    }
-  }
-  if (!soft)
-  {
-    for (shadowmaps::ShadowLight& light : r.Lights)
-    {
-      light.Size = 0.0; // hard shadows
-    }
-  }
-  if (!warning.str().empty() && warning.str() != r.WarnedLightSizes)
-  {
-    vtkWarningMacro(<< warning.str());
-  }
-  r.WarnedLightSizes = warning.str();
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::CollectCastersAndCamera(vtkOpenGLRenderer* renderer)
-{
-  Internals& r = *this->Internal;
-  shadowmaps::ShadowFrame& frame = r.Frame;
-  const shadowmaps::SceneCamera camera = shadowmaps::ReadSceneCamera(renderer, frame);
-  r.SceneCameraParallel = camera.Parallel;
-  r.Programs.SetDrawnRadius(camera.DrawnRadius);
-  const std::string unmarchedVolume = shadowmaps::CollectProps(
-    renderer, camera.Sizing, CASTS_SHADOWS(), r.Maps().Props, frame, r.Casters);
-  r.Maps().Volumes.KeepOnly(CastingVolumes(r.Casters));
-  this->WarnAboutVolume(unmarchedVolume);
-
-  const Aabb given = Aabb::FromBounds(this->SceneBounds);
-  if (this->UseSceneBounds && given.IsUsable())
-  {
-    // The same on every process of a parallel renderer, whatever piece it
-    // holds; with an exchange, GatherPropBounds gives the fits every
-    // process's props.
-    frame.SceneBounds = given;
-    if (!this->Exchange)
-    {
-      frame.PropBounds.assign(1, given);
-    }
-  }
-  frame.FilterReachTexels = r.Representation->GetFilterReachTexels();
-  frame.Interactive = this->InteractiveUpdateRate < VTK_DOUBLE_MAX &&
-    renderer->GetRenderWindow()->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::UpdateShadowMaps(vtkOpenGLRenderer* renderer)
-{
-  Internals& r = *this->Internal;
-  shadowmaps::RendererMaps& maps = r.Maps();
-  r.Policy.SetExchange(this->Exchange);
-  const bool boundsGiven = this->UseSceneBounds && Aabb::FromBounds(this->SceneBounds).IsUsable();
-  r.TranslucentOnAnyProcess = r.Policy.BeginFrame(r.Frame, r.Casters, boundsGiven);
-  this->WarnAboutPolicy();
-  std::vector<vtkMTimeType> signature = shadowmaps::FramePolicy::Signature(
-    renderer, this->GetMTime(), r.Frame, r.Lights, r.Casters);
-  if (!r.Policy.MustRender(maps.Updates, signature))
-  {
-    // CollectLights rebuilt the lights without views; the maps hold these.
-    r.Lights = maps.Updates.GetRenderedLights();
-    this->NumberOfShadowMapLayers = maps.Layers;
-    if (r.CodeFor != &maps)
-    {
-      // The shaders follow the lights, layers and storage of the renderer
-      // they draw for: another renderer's may differ.
-      this->UpdateShaders(renderer);
-    }
-    return true;
-  }
-
-  r.Frame.Resolution = this->UsableResolution();
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  // Each failure still answers the other processes' question (CombineAcrossProcesses).
-  if (!this->FitViews())
-  {
-    this->CombineAcrossProcesses(window, false);
-    return false;
-  }
-  this->ChooseStorage();
-  this->UpdateShaders(renderer);
-  if (!r.ShaderCodeCompiles)
-  {
-    this->CombineAcrossProcesses(window, false);
-    this->ReportGLFailure("the shadow shader code does not compile (see the shader error above; a "
-                          "representation's GLSL?)");
-    return false;
-  }
-  std::string error;
-  if (!maps.Maps.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, maps.Storage.Format,
-        maps.Storage.Mipmaps, error) ||
-    !this->ReserveTransmittanceMaps(error))
-  {
-    this->CombineAcrossProcesses(window, false);
-    this->ReportGLFailure(error);
-    return false;
-  }
-  if (!this->RenderShadowMaps(renderer))
-  {
-    this->ReportGLFailure(r.LastGLError);
-    return false;
-  }
-  if (!shadowmaps::NeedsSecondOutput(maps.Storage, this->MapCombination(), r.Lights))
-  {
-    maps.Maps.ReleaseSecondOutput();
-  }
-  if (maps.Storage.Samples <= 1)
-  {
-    maps.Maps.ReleaseSamples();
-  }
-  maps.Uniforms.Pack(r.Lights, r.Frame.CameraView);
-  maps.Updates.Finish(
-    r.Lights, std::move(signature), this->GetMTime(), r.Frame.Resolution, r.Frame.SceneBounds);
-  maps.Layers = this->NumberOfShadowMapLayers;
-  r.WarnedGLError.clear();
-  ++this->NumberOfShadowMapUpdates;
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::ReserveTransmittanceMaps(std::string& error)
-{
-  Internals& r = *this->Internal;
-  shadowmaps::RendererMaps& maps = r.Maps();
-  if (!maps.Storage.Transmittance)
-  {
-    maps.Transmittances.Release();
-    return true;
-  }
-  return maps.Transmittances.Reserve(r.Frame.Resolution, this->NumberOfShadowMapLayers, error);
-}
-
-//------------------------------------------------------------------------------
-int vtkAbstractShadowMapPass::UsableResolution()
-{
-  Internals& r = *this->Internal;
-  GLint maximumSize = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumSize);
-  const int usable = std::min(this->Resolution, std::max(static_cast<int>(maximumSize), 64));
-  if (usable != this->Resolution && !r.WarnedResolution)
-  {
-    vtkWarningMacro(<< "Resolution " << this->Resolution
-                    << " exceeds the GL maximum texture size; using " << usable << ".");
-    r.WarnedResolution = true;
-  }
-  return usable;
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::FitViews()
-{
-  Internals& r = *this->Internal;
-  for (ShadowLight& light : r.Lights)
-  {
-    const ShadowLight* kept = r.Maps().Updates.KeptLight(
-      light, this->GetMTime(), r.Frame.Resolution, r.Frame.SceneBounds);
-    light.LastViews = kept ? kept->Views : std::vector<shadowmaps::LightView>{};
-    light.LastFaceSelection = kept ? kept->FaceSelection : std::vector<double>{};
-    r.Views->FitLight(r.Frame, light);
-    light.LastViews.clear();
-    light.LastFaceSelection.clear();
-    light.Depth = light.Kind == LightKind::Directional
-      ? shadowmaps::DirectionalLightDepth(light.Direction, r.Frame.SceneBounds)
-      : shadowmaps::PositionalLightDepth(light.Position, r.Frame.SceneBounds);
-  }
-  this->DropLightsWithoutUsableViews();
-  this->AssignLayers();
-  return !r.Lights.empty();
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::AssignLayers()
-{
-  int layers = 0;
-  for (ShadowLight& light : this->Internal->Lights)
-  {
-    light.FirstLayer = layers;
-    layers += static_cast<int>(light.Views.size());
-  }
-  this->NumberOfShadowMapLayers = layers;
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ChooseStorage()
-{
-  Internals& r = *this->Internal;
-  shadowmaps::RendererMaps& maps = r.Maps();
-  r.Representation->GetMapStorage(maps.Storage);
-  shadowmaps::StorageLimits limits;
-  limits.CombinesAcrossProcesses = this->Exchange != nullptr;
-  limits.ThirtyTwoBitDepthNow =
-    maps.Maps.GetResolution() != 0 && maps.Maps.GetFormat() == shadowmaps::TexelFormat::Depth;
-  if (maps.Storage.Samples > 1 && r.MaximumSamples <= 0)
-  {
-    r.MaximumSamples = MaximumSamples();
-  }
-  limits.MaximumSamples = std::max(r.MaximumSamples, 1);
-  shadowmaps::CompleteStorage(maps.Storage, r.Lights, r.Casters, r.ClosedCasters, limits);
-  maps.Storage.Transmittance = r.TranslucentOnAnyProcess;
-  this->NumberOfCasterPassesPerLayer =
-    shadowmaps::CasterPassesPerLayer(maps.Storage) + (maps.Storage.Transmittance ? 1 : 0);
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::UpdateShaders(vtkOpenGLRenderer* renderer)
-{
-  // Before the casters draw: they build the shaders the scene then uses.
-  Internals& r = *this->Internal;
-  shadowmaps::ShaderChoices choices;
-  choices.CasterFaces = this->CasterFaces;
-  // Analysis settings are pass parameters: a change re-renders the maps.
-  const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
-  choices.AnalysisView = recolours ? this->AnalysisView : 0;
-  choices.AnalysisLight = this->AnalysisLight;
-  choices.KeepsLightDepths =
-    this->MapCombination() == shadowmaps::Combination::NearestLightDepths;
-  r.CodeFor = &r.Maps();
-  if (r.Shaders.Update(r.Maps().Storage, r.Representation, r.Lights,
-        this->NumberOfShadowMapLayers, choices))
-  {
-    auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-    r.ShaderCodeCompiles = r.Shaders.Compiles(window, r.Lights, this->NumberOfShadowMapLayers);
-  }
-}
-
-//------------------------------------------------------------------------------
-shadowmaps::CastingSettings vtkAbstractShadowMapPass::CastingSettingsOfUpdate()
-{
-  Internals& r = *this->Internal;
-  const shadowmaps::DepthOffset offset = r.Representation->GetCasterDepthOffset();
-  shadowmaps::CastingSettings settings;
-  settings.Resolution = r.Frame.Resolution;
-  settings.Depth16 = r.Maps().Storage.Format == shadowmaps::TexelFormat::Depth16;
-  const shadowmaps::CasterCode& code = r.Shaders.GetCasterCode();
-  settings.LightDepth = code.LightDepth || code.Transmittance;
-  settings.SlopeScaledOffset = offset.SlopeScaled;
-  settings.ConstantOffset = offset.Constant;
-  settings.SceneCameraParallel = r.SceneCameraParallel;
-  settings.StoreUniforms = r.Maps().Storage.StoreUniforms;
-  return settings;
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::DropLightsWithoutUsableViews()
-{
-  std::vector<ShadowLight>& lights = this->Internal->Lights;
-  const std::size_t before = lights.size();
-  this->NumberOfNonFiniteViews = 0;
-  int withoutViews = 0;
-  lights.erase(std::remove_if(lights.begin(), lights.end(),
-                 [this, &withoutViews](const ShadowLight& light) {
-                   const auto nonFinite = std::count_if(light.Views.begin(), light.Views.end(), IsNonFinite);
-                   this->NumberOfNonFiniteViews += static_cast<int>(nonFinite);
-                   withoutViews += light.Views.empty() ? 1 : 0;
-                   return nonFinite > 0 || light.Views.empty();
-                 }),
-    lights.end());
-  if (lights.size() == before)
-  {
-    this->Internal->WarnedNonFiniteViews = false;
-    return;
-  }
-  if (!this->Internal->WarnedNonFiniteViews)
-  {
-    // A views strategy of the user's may leave a light without views.
-    vtkWarningMacro(<< this->NumberOfNonFiniteViews
-                    << " light view(s) came out with non-finite matrices and " << withoutViews
-                    << " light(s) got no view from " << this->Internal->Views->GetClassName()
-                    << "; these lights cast no shadows until their views are usable again.");
-    this->Internal->WarnedNonFiniteViews = true;
-  }
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::RenderShadowMaps(vtkOpenGLRenderer* renderer)
-{
-  Internals& r = *this->Internal;
-  shadowmaps::RendererMaps& maps = r.Maps();
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  const bool keepsLightDepths =
-    this->MapCombination() == shadowmaps::Combination::NearestLightDepths;
-  // What every layer depends on besides its view and casters: the parameters
-  // of the pass and its strategies (the bias, the caster faces and store code
-  // among them), the storage, and how a second depth is made (AUTO may change
-  // it when some other layer's casters change). Layers that hold every
-  // process's casters combined are all rendered and combined again.
-  maps.Updates.BeginUpdate({ this->GetMTime(), maps.Maps.GetAllocations(),
-                             maps.Transmittances.GetAllocations(),
-                             static_cast<vtkMTimeType>(r.Frame.Resolution),
-                             static_cast<vtkMTimeType>(maps.Storage.SecondDepth) },
-    this->NumberOfShadowMapLayers, r.Policy.CombinesLayers(maps.Storage), r.Casters);
-  if (keepsLightDepths)
-  {
-    maps.LightDepths.Reset(maps.Maps, this->NumberOfShadowMapLayers);
-  }
-  std::vector<shadowmaps::RenderedLayer> rendered;
-  bool ok = true;
-  {
-    shadowmaps::CasterGLState casterState(window->GetState(),
-      !shadowmaps::IsDepth(maps.Storage.Format) && maps.Storage.MinimumBlending);
-    this->ReserveTextureUnits(renderer);
-    r.Casting = true;
-    r.CastingState = &casterState;
-    shadowmaps::LayerDrawing::Update update;
-    update.Renderer = renderer;
-    update.Maps = &maps;
-    update.Frame = &r.Frame;
-    update.Programs = &r.Programs;
-    update.Casting = this->CastingSettingsOfUpdate();
-    update.KeepsLightDepths = keepsLightDepths;
-    update.PeelUnit = r.Textures.GetPeelUnit();
-    update.JoinCasters = [this](vtkProp* const* props, int count) {
-      this->JoinRenderPasses(props, count);
-    };
-    r.Layers.BeginUpdate(update);
-    r.Policy.BeginLayers(r.Frame, maps.Storage, this->LayerRulesOfUpdate());
-    for (const ShadowLight& light : r.Lights)
-    {
-      for (size_t v = 0; v < light.Views.size() && ok; ++v)
-      {
-        const int layer = light.FirstLayer + static_cast<int>(v);
-        shadowmaps::LayerPlan plan =
-          maps.Updates.Plan(r.Frame, r.Casters, r.Policy.RequestFor(light, v));
-        bool bound = false;
-        ok = !plan.Render || r.Layers.Draw(light, v, layer, plan.Casters, bound, r.LastGLError);
-        if (bound)
-        {
-          maps.Updates.Rendered(layer, std::move(plan));
-          rendered.push_back({ layer, shadowmaps::FilterScale(light, v) });
-        }
-      }
-    }
-    r.Casting = false;
-    r.CastingState = nullptr;
-    r.Layers.EndUpdate();
-  }
-  for (const std::string& warning : r.Layers.TakeWarnings())
+  for (const std::string& warning : this->Internal->Update.TakeWarnings())
   {
     vtkWarningMacro(<< warning);
   }
-  this->NumberOfRenderedLayers = static_cast<int>(rendered.size());
-  if (!rendered.empty())
-  {
-    this->NumberOfCasterDraws = r.Layers.GetDraws();
-  }
-  ok = this->CombineAcrossProcesses(window, ok);
-  if (!ok)
-  {
-    maps.Updates.Invalidate();
-    return false;
-  }
-  return rendered.empty() || this->PostProcessShadowMaps(renderer, rendered);
-}
-
-//------------------------------------------------------------------------------
-shadowmaps::LayerRules vtkAbstractShadowMapPass::LayerRulesOfUpdate()
-{
-  Internals& r = *this->Internal;
-  shadowmaps::LayerRules rules;
-  rules.ReachCulling = this->ShadowReachCulling;
-  rules.ViewsMayBeKept = this->GetViews()->MayKeepViews(r.Frame);
-  rules.NormalOffsetTexels = this->NormalOffset;
-  rules.PostProcessingFollowsFilterScale = r.Representation->GetPostProcessingFollowsFilterScale();
-  return rules;
-}
-
-//------------------------------------------------------------------------------
-shadowmaps::Combination vtkAbstractShadowMapPass::MapCombination() const
-{
-  return this->Internal->Policy.CombinationFor(this->Internal->Maps().Storage);
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::CombineAcrossProcesses(vtkOpenGLRenderWindow* window, bool ok)
-{
-  Internals& r = *this->Internal;
-  const bool combined = r.Policy.Combine(
-    window, r.Maps(), this->NumberOfShadowMapLayers, r.Frame.Resolution, ok, r.LastGLError);
-  this->WarnAboutPolicy();
-  return combined;
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::WarnAboutPolicy()
-{
-  for (const std::string& warning : this->Internal->Policy.TakeWarnings())
-  {
-    vtkWarningMacro(<< warning);
-  }
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::PostProcessShadowMaps(
-  vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered)
-{
-  Internals& r = *this->Internal;
-  if (!r.Representation->PostProcessMaps(renderer, r.Maps().Maps, rendered))
-  {
-    r.LastGLError = "the shadow maps could not be post-processed";
-    return false;
-  }
-  r.Maps().Maps.GenerateMipmaps();
-  return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::WarnAboutVolume(const std::string& why)
-{
-  // A volume that cannot be marched casts nothing; the others still do.
-  // Warned again once the scene has had none such.
-  Internals& r = *this->Internal;
-  if (!why.empty() && why != r.WarnedVolume)
-  {
-    vtkWarningMacro(<< "A volume casts no shadow: " << why << ".");
-  }
-  r.WarnedVolume = why;
-}
-
-//------------------------------------------------------------------------------
-vtkAbstractShadowMapPass::ReceiverRole vtkAbstractShadowMapPass::ReceiverRoleOf(vtkProp* prop) const
-{
-  if (!shadowmaps::TakesPart(prop, RECEIVES_SHADOWS()))
-  {
-    return ReceiverRole::None;
-  }
-  return shadowmaps::HoldsItsOwnTransmittance(prop, CASTS_SHADOWS())
-    ? ReceiverRole::ReceivesWithOwnShare
-    : ReceiverRole::Receives;
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::RebuildShadersOfChangedReceivers(const vtkRenderState* s)
-{
-  // A prop's shaders hold its receiving code or not: only a prop whose
-  // RECEIVES_SHADOWS (or HoldsItsOwnTransmittance) changed since it last drew
-  // here builds them again. Props
-  // entering or leaving the view, receivers or not, change no shader.
-  Internals& r = *this->Internal;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    vtkProp* prop = s->GetPropArray()[i];
-    const ReceiverRole receives = this->ReceiverRoleOf(prop);
-    auto known = r.Receives.find(prop);
-    if (known == r.Receives.end() || known->second.first != prop)
-    {
-      r.Receives[prop] = { prop, receives };
-      continue;
-    }
-    if (known->second.second != receives)
-    {
-      known->second.second = receives;
-      shadowmaps::RebuildShaders(prop);
-    }
-  }
-  // Forget deleted props.
-  for (auto it = r.Receives.begin(); it != r.Receives.end();)
-  {
-    it = it->second.first ? std::next(it) : r.Receives.erase(it);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ReserveTextureUnits(vtkOpenGLRenderer* renderer)
-{
-  // Before the casters draw: they share the receivers' programs.
-  Internals& r = *this->Internal;
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  const shadowmaps::MapStorage& storage = r.Maps().Storage;
-  if (r.Textures.Reserve(window, storage, this->ReadsRawDepths(), r.Representation) &&
-    storage.SecondDepth == shadowmaps::SecondDepthMethod::Peeling)
-  {
-    r.Programs.SetPeeling(false, r.Textures.GetPeelUnit());
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::BindShadowTextures(vtkOpenGLRenderer* renderer)
-{
-  Internals& r = *this->Internal;
-  this->ReserveTextureUnits(renderer);
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  r.Textures.Bind(window, r.Maps(), r.Representation);
-  r.Maps().Uniforms.NewFrame();
-}
-
-//------------------------------------------------------------------------------
-bool vtkAbstractShadowMapPass::ReadsRawDepths() const
-{
-  const Internals& r = *this->Internal;
-  return shadowmaps::IsDepth(r.Maps().Storage.Format) &&
-    std::any_of(r.Lights.begin(), r.Lights.end(),
-      [](const shadowmaps::ShadowLight& light) { return light.Size > 0.0; });
-}
-
-//------------------------------------------------------------------------------
-shadowmaps::ReceiverTextureUnits vtkAbstractShadowMapPass::ReceiverUnits() const
-{
-  return this->Internal->Textures.Units();
 }
 
 //------------------------------------------------------------------------------
@@ -1131,20 +513,7 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  r.Textures.Release(window, r.Representation);
-}
-
-//------------------------------------------------------------------------------
-void vtkAbstractShadowMapPass::ReportGLFailure(const std::string& error)
-{
-  Internals& r = *this->Internal;
-  r.Maps().ReleaseGraphicsResources(r.Context);
-  this->NumberOfShadowMapLayers = 0;
-  if (error != r.WarnedGLError)
-  {
-    vtkWarningMacro(<< "Rendering without shadows: " << error);
-    r.WarnedGLError = error;
-  }
+  r.Update.Textures().Release(window, r.Representation);
 }
 
 //------------------------------------------------------------------------------
@@ -1161,22 +530,26 @@ bool vtkAbstractShadowMapPass::PreReplaceShaderValues(std::string&, std::string&
 bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader,
   std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  const Internals& r = *this->Internal;
+  using shadowmaps::ReceiverRole;
+  const shadowmaps::FrameUpdate& update = this->Internal->Update;
+  const shadowmaps::PassShaders& shaders = update.Shaders();
+  const int layers = update.Statistics().Layers;
   ++this->NumberOfShaderBuilds;
   // Shaders first built by a caster draw are the ones the scene then uses; a
   // renderer drawing a prop the pass keeps joined (PropJoining) builds them
   // as the pass's renderer would.
-  const ReceiverRole role = prop ? this->ReceiverRoleOf(prop) : ReceiverRole::None;
+  const ReceiverRole role = prop
+    ? shadowmaps::ReceiverRoleOf(prop, CASTS_SHADOWS(), RECEIVES_SHADOWS())
+    : ReceiverRole::None;
   if (vtkVolume::SafeDownCast(prop))
   {
-    r.Shaders.InjectVolume(
-      fragmentShader, r.Lights, this->NumberOfShadowMapLayers, role != ReceiverRole::None);
+    shaders.InjectVolume(fragmentShader, update.Lights(), layers, role != ReceiverRole::None);
     return true;
   }
   int unpatched = 0;
-  const shadowmaps::CasterBranch branch = r.Shaders.Inject(vertexShader, geometryShader,
-    fragmentShader, r.Lights, this->NumberOfShadowMapLayers, role != ReceiverRole::None,
-    unpatched, role == ReceiverRole::ReceivesWithOwnShare);
+  const shadowmaps::CasterBranch branch = shaders.Inject(vertexShader, geometryShader,
+    fragmentShader, update.Lights(), layers, role != ReceiverRole::None, unpatched,
+    role == ReceiverRole::ReceivesWithOwnShare);
   ++(branch == shadowmaps::CasterBranch::DepthOnly ? this->NumberOfDepthOnlyCasterShaders
                                                    : this->NumberOfOwnFragmentCasterShaders);
   if (unpatched > 0 && this->NumberOfUnpatchedReceiverLights == 0)
@@ -1194,25 +567,28 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   Internals& r = *this->Internal;
-  if (r.Casting)
+  shadowmaps::FrameUpdate& update = r.Update;
+  shadowmaps::ProgramUniforms& programs = update.Programs();
+  const shadowmaps::ReceiverTextureUnits units = update.Textures().Units();
+  if (shadowmaps::CasterGLState* casting = update.CastingState())
   {
-    r.CastingState->UseProgramPointSize(shadowmaps::ImpostorShader::IsSized(program));
-    r.Programs.Casting(program, this->ReceiverUnits(), r.Representation);
+    casting->UseProgramPointSize(shadowmaps::ImpostorShader::IsSized(program));
+    programs.Casting(program, units, r.Representation);
   }
   else if (r.Active)
   {
-    r.Programs.Receiving(
-      program, r.Maps(), this->ReceiverUnits(), r.Frame.Resolution, this->NormalOffset,
-      r.Representation);
-    if (vtkVolume::SafeDownCast(prop) && !r.LightShares.empty())
+    programs.Receiving(program, update.Maps(), units, update.Frame().Resolution,
+      this->NormalOffset, r.Representation);
+    const std::vector<float>& shares = update.LightShares();
+    if (vtkVolume::SafeDownCast(prop) && !shares.empty())
     {
-      program->SetUniform1fv("vtkShadowVolumeLightShares", static_cast<int>(r.LightShares.size()),
-        r.LightShares.data());
+      program->SetUniform1fv(
+        "vtkShadowVolumeLightShares", static_cast<int>(shares.size()), shares.data());
     }
   }
   else
   {
-    r.Programs.DrawnWithoutThePass(program, this->ReceiverUnits(), r.Representation);
+    programs.DrawnWithoutThePass(program, units, r.Representation);
   }
   return true;
 }
@@ -1220,24 +596,26 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
 //------------------------------------------------------------------------------
 vtkMTimeType vtkAbstractShadowMapPass::GetShaderStageMTime()
 {
-  return this->Internal->Shaders.GetKeyTime();
+  return this->Internal->Update.Shaders().GetKeyTime();
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  shadowmaps::RendererMaps& maps = r.Maps();
-  if (this->AnalysisLight >= static_cast<int>(r.Lights.size()))
+  shadowmaps::FrameUpdate& update = r.Update;
+  shadowmaps::RendererMaps& maps = update.Maps();
+  if (this->AnalysisLight >= static_cast<int>(update.Lights().size()))
   {
     return;
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   const bool twoSurfaces = maps.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
-  if (!r.MapView.Render(window, maps.Maps, r.Textures.Units().Maps, r.Lights[this->AnalysisLight], twoSurfaces,
-        maps.Storage.WarpExponent))
+  if (!r.MapView.Render(window, maps.Maps, update.Textures().Units().Maps,
+        update.Lights()[this->AnalysisLight], twoSurfaces, maps.Storage.WarpExponent))
   {
-    this->ReportGLFailure("the shadow-map view shader did not compile");
+    update.Fail("the shadow-map view shader did not compile", window);
+    this->WarnAboutUpdate();
   }
 }
 
@@ -1249,20 +627,16 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   if (window == r.Context)
   {
     // The units kept past the last frame are that window's.
-    r.Textures.Release(static_cast<vtkOpenGLRenderWindow*>(window), r.Representation);
+    r.Update.Textures().Release(static_cast<vtkOpenGLRenderWindow*>(window), r.Representation);
   }
   r.HoldsGraphicsResources = false;
-  r.Renderers.ReleaseAll(window);
-  r.CodeFor = nullptr;
+  r.Update.ReleaseGraphicsResources(window);
   r.MapView.ReleaseGraphicsResources(window);
   r.Representation->ReleaseGraphicsResources(window);
   if (r.DefaultRepresentation != r.Representation)
   {
     r.DefaultRepresentation->ReleaseGraphicsResources(window);
   }
-  r.Programs.Clear();
-  r.MaximumSamples = 0;
-  r.Layers.ReleaseGraphicsResources(window);
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   r.DepthPeeling->ReleaseGraphicsResources(window);
   if (this->DelegatePass)
@@ -1293,13 +667,13 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "AnalysisView: " << this->AnalysisView << "\n";
   os << indent << "AnalysisLight: " << this->AnalysisLight << "\n";
-  os << indent << "NumberOfShadowedLights: " << this->NumberOfShadowedLights << "\n";
-  os << indent << "NumberOfShadowMapLayers: " << this->NumberOfShadowMapLayers << "\n";
-  os << indent << "NumberOfNonFiniteViews: " << this->NumberOfNonFiniteViews << "\n";
-  os << indent << "NumberOfShadowMapUpdates: " << this->NumberOfShadowMapUpdates << "\n";
-  os << indent << "NumberOfCasterDraws: " << this->NumberOfCasterDraws << "\n";
-  os << indent << "NumberOfRenderedLayers: " << this->NumberOfRenderedLayers << "\n";
+  os << indent << "NumberOfShadowedLights: " << this->GetNumberOfShadowedLights() << "\n";
+  os << indent << "NumberOfShadowMapLayers: " << this->GetNumberOfShadowMapLayers() << "\n";
+  os << indent << "NumberOfNonFiniteViews: " << this->GetNumberOfNonFiniteViews() << "\n";
+  os << indent << "NumberOfShadowMapUpdates: " << this->GetNumberOfShadowMapUpdates() << "\n";
+  os << indent << "NumberOfCasterDraws: " << this->GetNumberOfCasterDraws() << "\n";
+  os << indent << "NumberOfRenderedLayers: " << this->GetNumberOfRenderedLayers() << "\n";
   os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";
   os << indent << "NumberOfUnpatchedReceiverLights: " << this->NumberOfUnpatchedReceiverLights << "\n";
-  os << indent << "NumberOfCasterPassesPerLayer: " << this->NumberOfCasterPassesPerLayer << "\n";
+  os << indent << "NumberOfCasterPassesPerLayer: " << this->GetNumberOfCasterPassesPerLayer() << "\n";
 }

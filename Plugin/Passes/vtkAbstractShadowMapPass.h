@@ -63,31 +63,18 @@
 #include "vtkShadowMapSetMacros.h" // For vtkSetFiniteClampMacro
 
 #include <memory> // For std::unique_ptr
-#include <string> // For ReportGLFailure
-#include <vector> // For the casters and light views
+#include <string> // For the shader hooks
 
 class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
 class vtkLight;
-class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
-class vtkOpenGLState;
 class vtkProp;
 class vtkRenderer;
 class vtkRenderPass;
 class vtkShadowMapExchange;
 class vtkShadowMapRepresentation;
 class vtkShadowMapViews;
-namespace shadowmaps
-{
-enum class Combination : int;
-struct CastingSettings;
-struct LayerRules;
-struct LightView;
-struct ReceiverTextureUnits;
-struct RenderedLayer;
-struct ShadowLight;
-}
 
 #define VTK_MAX_SHADOWED_LIGHTS 8
 
@@ -338,26 +325,26 @@ public:
   ///@}
 
   /** Number of lights that received shadow maps in the last frame. */
-  vtkGetMacro(NumberOfShadowedLights, int);
+  int GetNumberOfShadowedLights() const;
 
   /** Number of map layers (light views) in use in the last frame. */
-  vtkGetMacro(NumberOfShadowMapLayers, int);
+  int GetNumberOfShadowMapLayers() const;
 
   /**
    * Light views of the last map update whose matrices were not finite (a
    * degenerate scene or camera). Their lights cast no shadow in that frame, and
    * a warning says so once until every view is finite again. 0 in a healthy frame.
    */
-  vtkGetMacro(NumberOfNonFiniteViews, int);
+  int GetNumberOfNonFiniteViews() const;
 
   /** How many times the shadow maps were (re-)rendered since creation. */
-  vtkGetMacro(NumberOfShadowMapUpdates, int);
+  int GetNumberOfShadowMapUpdates() const;
 
   /**
    * Caster draws (prop renders into maps, transmittance maps included) in the
    * last frame that rendered map layers.
    */
-  vtkGetMacro(NumberOfCasterDraws, int);
+  int GetNumberOfCasterDraws() const;
 
   /**
    * Map layers rendered in the last frame: 0 when nothing the maps depend on
@@ -365,7 +352,7 @@ public:
    * now need a caster they did not draw, or one of whose casters changed (a
    * stable cascade that did not move keeps its layer).
    */
-  vtkGetMacro(NumberOfRenderedLayers, int);
+  int GetNumberOfRenderedLayers() const;
 
   /**
    * Shader sources the mappers generated with this pass so far. Casters and
@@ -400,7 +387,7 @@ public:
    * one more while translucent casters are drawn into transmittance maps
    * (docs/TRANSLUCENT.md).
    */
-  vtkGetMacro(NumberOfCasterPassesPerLayer, int);
+  int GetNumberOfCasterPassesPerLayer() const;
 
   /**
    * Memory held by the shadow maps, in bytes (depth maps: 2 or 4 per texel;
@@ -444,34 +431,25 @@ protected:
   int AnalysisView = NO_ANALYSIS;
   int AnalysisLight = 0;
 
-  int NumberOfShadowedLights = 0;
-  int NumberOfShadowMapLayers = 0;
-  int NumberOfShadowMapUpdates = 0;
-  int NumberOfCasterDraws = 0;
-  int NumberOfNonFiniteViews = 0;
-  int NumberOfRenderedLayers = 0;
   int NumberOfShaderBuilds = 0;
   int NumberOfDepthOnlyCasterShaders = 0;
   int NumberOfOwnFragmentCasterShaders = 0;
   int NumberOfUnpatchedReceiverLights = 0;
-  int NumberOfCasterPassesPerLayer = 1;
 
 private:
-  /** This frame's lights, casters and views; the GL objects and the last map update. */
+  /**
+   * The strategies, the scene's delegates and what the pass's frames left
+   * (shadowmaps::FrameUpdate renders each renderer's maps).
+   */
   struct Internals;
   std::unique_ptr<Internals> Internal;
 
   /** A hardware selector's frame (picking): the props drawn as the renderer draws them without a pass. */
   void RenderForSelection(vtkOpenGLRenderer* renderer);
+  /** The frame's maps (shadowmaps::FrameUpdate): whether the frame has shadows. */
   bool PrepareShadows(vtkOpenGLRenderer* renderer, const vtkRenderState* s);
-  void CollectLights(vtkOpenGLRenderer* renderer);
-  void WarnAboutLightSizes(const std::vector<vtkLight*>& clamped);
-  /// Whether receivers read the depth maps without comparison this frame
-  /// (the soft shadows' blocker search).
-  bool ReadsRawDepths() const;
-  shadowmaps::ReceiverTextureUnits ReceiverUnits() const;
-  void CollectCastersAndCamera(vtkOpenGLRenderer* renderer);
-  void RebuildShadersOfChangedReceivers(const vtkRenderState* s);
+  /** Warns what the frame's update found to warn about. */
+  void WarnAboutUpdate();
   /** Records the window `renderer` draws in and that it draws through the pass. */
   void UseContextOf(vtkOpenGLRenderer* renderer);
   /** Makes the maps of `renderer` (and its camera's eye) the current ones. */
@@ -483,45 +461,6 @@ private:
    * still be made current, and forgets that window.
    */
   void ForgetContext();
-  bool UpdateShadowMaps(vtkOpenGLRenderer* renderer);
-  int UsableResolution();
-  // The transmittance maps as the storage asks (none without translucent casters).
-  bool ReserveTransmittanceMaps(std::string& error);
-  bool FitViews();
-  void DropLightsWithoutUsableViews();
-  void AssignLayers();
-  void ChooseStorage();
-  /**
-   * The shadow code for the current maps' lights, layers and storage; a new
-   * key rebuilds the mappers' shaders, once the code is known to compile.
-   */
-  void UpdateShaders(vtkOpenGLRenderer* renderer);
-  /** Draws the layers MapUpdates plans (shadowmaps::LayerDrawing), then combines and post-processes them. */
-  bool RenderShadowMaps(vtkOpenGLRenderer* renderer);
-  shadowmaps::CastingSettings CastingSettingsOfUpdate();
-  shadowmaps::LayerRules LayerRulesOfUpdate();
-  /** How the current storage combines across processes (shadowmaps::FramePolicy). */
-  shadowmaps::Combination MapCombination() const;
-  /**
-   * On every process that updates its maps: shadowmaps::FramePolicy::Combine
-   * (without an exchange, returns `ok`).
-   */
-  bool CombineAcrossProcesses(vtkOpenGLRenderWindow* window, bool ok);
-  // Warns what the frame policy found to warn about (each once).
-  void WarnAboutPolicy();
-  bool PostProcessShadowMaps(
-    vtkOpenGLRenderer* renderer, const std::vector<shadowmaps::RenderedLayer>& rendered);
-  // The receiver code a prop's shaders get: none, receiving, or receiving and
-  // dividing its own share out of the transmittance maps.
-  enum class ReceiverRole
-  {
-    None,
-    Receives,
-    ReceivesWithOwnShare
-  };
-  ReceiverRole ReceiverRoleOf(vtkProp* prop) const;
-  // Warns once why a volume's data cannot cast (`why` empty: every one can).
-  void WarnAboutVolume(const std::string& why);
   void JoinRenderPasses(vtkProp* const* props, int count);
   void LeaveRenderPasses();
   /**
@@ -529,11 +468,8 @@ private:
    * draws too, and frees the texture units unless such props stay joined.
    */
   void EndFrame(vtkOpenGLRenderer* renderer);
-  void ReserveTextureUnits(vtkOpenGLRenderer* renderer);
-  void BindShadowTextures(vtkOpenGLRenderer* renderer);
   void ReleaseTextureUnits(vtkOpenGLRenderer* renderer);
   void RenderShadowMapView(vtkOpenGLRenderer* renderer);
-  void ReportGLFailure(const std::string& error);
 
   vtkAbstractShadowMapPass(const vtkAbstractShadowMapPass&) = delete;
   void operator=(const vtkAbstractShadowMapPass&) = delete;
