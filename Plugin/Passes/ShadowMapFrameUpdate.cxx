@@ -345,7 +345,7 @@ bool FrameUpdate::FitViews()
       light, settings.ParametersTime, frame.Resolution, frame.SceneBounds);
     light.LastViews = kept ? kept->Views : std::vector<LightView>{};
     light.LastFaceSelection = kept ? kept->FaceSelection : std::vector<double>{};
-    settings.Views->FitLight(frame, light);
+    settings.ViewsOf(light.Light)->FitLight(frame, light);
     light.LastViews.clear();
     light.LastFaceSelection.clear();
     light.Depth = light.Kind == LightKind::Directional
@@ -364,13 +364,20 @@ void FrameUpdate::DropLightsWithoutUsableViews()
   const std::size_t before = lights.size();
   int nonFiniteViews = 0;
   int withoutViews = 0;
+  std::string strategies;
   lights.erase(std::remove_if(lights.begin(), lights.end(),
-                 [&nonFiniteViews, &withoutViews](const ShadowLight& light) {
+                 [&](const ShadowLight& light) {
                    const auto nonFinite =
                      std::count_if(light.Views.begin(), light.Views.end(), IsNonFinite);
                    nonFiniteViews += static_cast<int>(nonFinite);
                    withoutViews += light.Views.empty() ? 1 : 0;
-                   return nonFinite > 0 || light.Views.empty();
+                   const bool dropped = nonFinite > 0 || light.Views.empty();
+                   const std::string name = this->Settings->ViewsOf(light.Light)->GetClassName();
+                   if (dropped && strategies.find(name) == std::string::npos)
+                   {
+                     strategies += (strategies.empty() ? "" : ", ") + name;
+                   }
+                   return dropped;
                  }),
     lights.end());
   this->Counts.NonFiniteViews = nonFiniteViews;
@@ -384,9 +391,7 @@ void FrameUpdate::DropLightsWithoutUsableViews()
     // A views strategy of the user's may leave a light without views.
     std::ostringstream warning;
     warning << nonFiniteViews << " light view(s) came out with non-finite matrices and "
-            << withoutViews << " light(s) got no view from "
-            << this->Settings->Views->GetClassName()
-            << "; these lights cast no shadows until their views are usable again.";
+            << withoutViews << " light(s) got no view from " << strategies << "; these lights cast no shadows until their views are usable again.";
     this->Warnings.push_back(warning.str());
     this->WarnedNonFiniteViews = true;
   }
@@ -544,7 +549,12 @@ LayerRules FrameUpdate::LayerRulesOfUpdate() const
   const FrameSettings& settings = *this->Settings;
   LayerRules rules;
   rules.ReachCulling = settings.ShadowReachCulling;
-  rules.ViewsMayBeKept = settings.Views->MayKeepViews(this->CurrentFrame);
+  // Per frame: a layer of a light whose views are never kept that draws
+  // every caster in its view draws no other pixel.
+  rules.ViewsMayBeKept = std::any_of(this->FrameLights.begin(), this->FrameLights.end(),
+    [this, &settings](const ShadowLight& light) {
+      return settings.ViewsOf(light.Light)->MayKeepViews(this->CurrentFrame);
+    });
   rules.NormalOffsetTexels = settings.NormalOffset;
   rules.PostProcessingFollowsFilterScale =
     settings.Representation->GetPostProcessingFollowsFilterScale();

@@ -66,7 +66,8 @@ ReceiverRole ReceiverRoleOf(
 /// The pass's parameters, as one frame's update reads them.
 struct FrameSettings
 {
-  vtkShadowMapViews* Views = nullptr;
+  /// The views each light gets: its own, or the pass's.
+  std::function<vtkShadowMapViews*(vtkLight*)> ViewsOf;
   vtkShadowMapRepresentation* Representation = nullptr;
   vtkShadowMapExchange* Exchange = nullptr;
   /// The pass's modification time, its strategies' included: a change

@@ -13,6 +13,7 @@
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
+#include "vtkLight.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -31,6 +32,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <utility>
+#include <vector>
 
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, CASTS_SHADOWS, Integer);
 vtkInformationKeyMacro(vtkAbstractShadowMapPass, RECEIVES_SHADOWS, Integer);
@@ -62,6 +65,17 @@ struct vtkAbstractShadowMapPass::Internals
   vtkSmartPointer<vtkShadowMapRepresentation> DefaultRepresentation;
   vtkSmartPointer<vtkShadowMapViews> Views;
   vtkSmartPointer<vtkShadowMapRepresentation> Representation;
+  // The lights with views of their own (SetLightViews).
+  std::vector<std::pair<vtkWeakPointer<vtkLight>, vtkSmartPointer<vtkShadowMapViews>>> LightViews;
+
+  // Forgets the lights deleted since.
+  void ForgetDeletedLights()
+  {
+    auto deleted = [](const auto& entry) { return !entry.first; };
+    this->LightViews.erase(
+      std::remove_if(this->LightViews.begin(), this->LightViews.end(), deleted),
+      this->LightViews.end());
+  }
 
   // What renders each renderer's maps, and the settings of its frame.
   shadowmaps::FrameUpdate Update;
@@ -133,6 +147,7 @@ vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
   settings.Casts = CASTS_SHADOWS();
   settings.Receives = RECEIVES_SHADOWS();
   settings.LightSize = LIGHT_SIZE();
+  settings.ViewsOf = [this](vtkLight* light) { return this->GetLightViews(light); };
   settings.JoinProps = [this](vtkProp* const* props, int count) {
     this->JoinRenderPasses(props, count);
   };
@@ -186,6 +201,52 @@ void vtkAbstractShadowMapPass::SetViews(vtkShadowMapViews* views)
 //------------------------------------------------------------------------------
 vtkShadowMapViews* vtkAbstractShadowMapPass::GetViews()
 {
+  return this->Internal->Views;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SetLightViews(vtkLight* light, vtkShadowMapViews* views)
+{
+  if (!light)
+  {
+    vtkWarningMacro(<< "SetLightViews: no light given; nothing changes.");
+    return;
+  }
+  Internals& r = *this->Internal;
+  r.ForgetDeletedLights();
+  auto entry = std::find_if(r.LightViews.begin(), r.LightViews.end(),
+    [light](const auto& candidate) { return candidate.first == light; });
+  if (!views)
+  {
+    if (entry != r.LightViews.end())
+    {
+      r.LightViews.erase(entry);
+      this->Modified();
+    }
+    return;
+  }
+  if (entry == r.LightViews.end())
+  {
+    r.LightViews.emplace_back(light, views);
+    this->Modified();
+  }
+  else if (entry->second != views)
+  {
+    entry->second = views;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkShadowMapViews* vtkAbstractShadowMapPass::GetLightViews(vtkLight* light)
+{
+  for (const auto& entry : this->Internal->LightViews)
+  {
+    if (light && entry.first == light)
+    {
+      return entry.second;
+    }
+  }
   return this->Internal->Views;
 }
 
@@ -247,8 +308,13 @@ vtkShadowMapRepresentation* vtkAbstractShadowMapPass::GetRepresentation()
 //------------------------------------------------------------------------------
 vtkMTimeType vtkAbstractShadowMapPass::GetMTime()
 {
-  return std::max({ this->Superclass::GetMTime(), this->Internal->Views->GetMTime(),
-    this->Internal->Representation->GetMTime() });
+  vtkMTimeType time = std::max({ this->Superclass::GetMTime(),
+    this->Internal->Views->GetMTime(), this->Internal->Representation->GetMTime() });
+  for (const auto& entry : this->Internal->LightViews)
+  {
+    time = entry.first ? std::max(time, entry.second->GetMTime()) : time;
+  }
+  return time;
 }
 
 //------------------------------------------------------------------------------
@@ -478,7 +544,7 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
 {
   Internals& r = *this->Internal;
   shadowmaps::FrameSettings& settings = r.Settings;
-  settings.Views = r.Views;
+  r.ForgetDeletedLights();
   settings.Representation = r.Representation;
   settings.Exchange = this->Exchange;
   settings.ParametersTime = this->GetMTime();
@@ -658,6 +724,7 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->SceneBounds[5] << "\n";
   os << indent << "Views:\n";
   this->Internal->Views->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "Lights with views of their own: " << this->Internal->LightViews.size() << "\n";
   os << indent << "Representation:\n";
   this->Internal->Representation->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Resolution: " << this->Resolution << "\n";

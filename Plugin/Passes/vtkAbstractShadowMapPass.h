@@ -159,6 +159,19 @@ public:
    */
   void SetViews(vtkShadowMapViews* views);
   vtkShadowMapViews* GetViews();
+
+  /**
+   * The views of one light, instead of the pass's (GetViews()): a sun in
+   * cascades and a point light in Kozlov's cube in the same frame. Each
+   * light's receivers get the code of its own views, so that mixing them
+   * builds no shader while the camera moves. nullptr gives the light the
+   * pass's views again. The pass does not keep the light alive; a light
+   * deleted is forgotten. Changes of these views' parameters re-render the
+   * maps.
+   */
+  void SetLightViews(vtkLight* light, vtkShadowMapViews* views);
+  /** The views `light` gets: its own (SetLightViews), else the pass's. */
+  vtkShadowMapViews* GetLightViews(vtkLight* light);
   ///@}
 
   ///@{
