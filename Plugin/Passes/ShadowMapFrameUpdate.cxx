@@ -241,7 +241,7 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
     this->Policy.BeginFrame(this->CurrentFrame, this->Casters, boundsGiven);
   this->TakePolicyWarnings();
   std::vector<vtkMTimeType> signature = FramePolicy::Signature(
-    renderer, settings.ParametersTime, this->CurrentFrame, this->FrameLights, this->Casters);
+    renderer, settings.ParametersTime(), this->CurrentFrame, this->FrameLights, this->Casters);
   if (!this->Policy.MustRender(maps.Updates, signature))
   {
     // CollectLights rebuilt the lights without views; the maps hold these.
@@ -296,7 +296,7 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
     maps.Maps.ReleaseSamples();
   }
   maps.Uniforms.Pack(this->FrameLights, this->CurrentFrame.CameraView);
-  maps.Updates.Finish(this->FrameLights, std::move(signature), settings.ParametersTime,
+  maps.Updates.Finish(this->FrameLights, std::move(signature), settings.ParametersTime(),
     this->CurrentFrame.Resolution, this->CurrentFrame.SceneBounds);
   maps.Layers = this->Counts.Layers;
   this->WarnedGLError.clear();
@@ -342,7 +342,7 @@ bool FrameUpdate::FitViews()
   for (ShadowLight& light : this->FrameLights)
   {
     const ShadowLight* kept = this->Maps().Updates.KeptLight(
-      light, settings.ParametersTime, frame.Resolution, frame.SceneBounds);
+      light, settings.ParametersTime(), frame.Resolution, frame.SceneBounds);
     light.LastViews = kept ? kept->Views : std::vector<LightView>{};
     light.LastFaceSelection = kept ? kept->FaceSelection : std::vector<double>{};
     settings.ViewsOf(light.Light)->FitLight(frame, light);
@@ -479,7 +479,7 @@ bool FrameUpdate::RenderMaps(vtkOpenGLRenderer* renderer)
   // among them), the storage, and how a second depth is made (AUTO may change
   // it when some other layer's casters change). Layers that hold every
   // process's casters combined are all rendered and combined again.
-  maps.Updates.BeginUpdate({ settings.ParametersTime, maps.Maps.GetAllocations(),
+  maps.Updates.BeginUpdate({ settings.ParametersTime(), maps.Maps.GetAllocations(),
                              maps.Transmittances.GetAllocations(),
                              static_cast<vtkMTimeType>(frame.Resolution),
                              static_cast<vtkMTimeType>(maps.Storage.SecondDepth) },

@@ -71,8 +71,9 @@ struct FrameSettings
   vtkShadowMapRepresentation* Representation = nullptr;
   vtkShadowMapExchange* Exchange = nullptr;
   /// The pass's modification time, its strategies' included: a change
-  /// re-renders the maps.
-  vtkMTimeType ParametersTime = 0;
+  /// re-renders the maps. Asked at each step that reads it, as a strategy
+  /// may change itself during the update.
+  std::function<vtkMTimeType()> ParametersTime;
   /// The bounds the views are fitted to, when given (UseSceneBounds).
   bool UseSceneBounds = false;
   const double* SceneBounds = nullptr;

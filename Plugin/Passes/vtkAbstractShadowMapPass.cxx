@@ -68,18 +68,22 @@ struct vtkAbstractShadowMapPass::Internals
   // The lights with views of their own (SetLightViews).
   std::vector<std::pair<vtkWeakPointer<vtkLight>, vtkSmartPointer<vtkShadowMapViews>>> LightViews;
 
-  // Forgets the lights deleted since.
-  void ForgetDeletedLights()
+  // Forgets the lights deleted since: whether it forgot any (the pass is
+  // then modified, so that no new light at a deleted one's address keeps the
+  // views that light's strategy fitted).
+  bool ForgetDeletedLights()
   {
     auto deleted = [](const auto& entry) { return !entry.first; };
-    this->LightViews.erase(
-      std::remove_if(this->LightViews.begin(), this->LightViews.end(), deleted),
-      this->LightViews.end());
+    const auto kept = std::remove_if(this->LightViews.begin(), this->LightViews.end(), deleted);
+    const bool forgot = kept != this->LightViews.end();
+    this->LightViews.erase(kept, this->LightViews.end());
+    return forgot;
   }
 
-  // What renders each renderer's maps, and the settings of its frame.
-  shadowmaps::FrameUpdate Update;
+  // The settings of a renderer's frame, and what renders its maps (which
+  // reads them until it is destroyed).
   shadowmaps::FrameSettings Settings;
+  shadowmaps::FrameUpdate Update;
 
   // What draws the scene.
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
@@ -147,6 +151,7 @@ vtkAbstractShadowMapPass::vtkAbstractShadowMapPass(
   settings.Casts = CASTS_SHADOWS();
   settings.Receives = RECEIVES_SHADOWS();
   settings.LightSize = LIGHT_SIZE();
+  settings.ParametersTime = [this]() { return this->GetMTime(); };
   settings.ViewsOf = [this](vtkLight* light) { return this->GetLightViews(light); };
   settings.JoinProps = [this](vtkProp* const* props, int count) {
     this->JoinRenderPasses(props, count);
@@ -213,7 +218,10 @@ void vtkAbstractShadowMapPass::SetLightViews(vtkLight* light, vtkShadowMapViews*
     return;
   }
   Internals& r = *this->Internal;
-  r.ForgetDeletedLights();
+  if (r.ForgetDeletedLights())
+  {
+    this->Modified();
+  }
   auto entry = std::find_if(r.LightViews.begin(), r.LightViews.end(),
     [light](const auto& candidate) { return candidate.first == light; });
   if (!views)
@@ -544,10 +552,12 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
 {
   Internals& r = *this->Internal;
   shadowmaps::FrameSettings& settings = r.Settings;
-  r.ForgetDeletedLights();
+  if (r.ForgetDeletedLights())
+  {
+    this->Modified();
+  }
   settings.Representation = r.Representation;
   settings.Exchange = this->Exchange;
-  settings.ParametersTime = this->GetMTime();
   settings.UseSceneBounds = this->UseSceneBounds;
   settings.SceneBounds = this->SceneBounds;
   settings.SoftShadows = this->SoftShadows;

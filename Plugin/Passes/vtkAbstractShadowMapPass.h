@@ -167,7 +167,12 @@ public:
    * builds no shader while the camera moves. nullptr gives the light the
    * pass's views again. The pass does not keep the light alive; a light
    * deleted is forgotten. Changes of these views' parameters re-render the
-   * maps.
+   * maps. The pass's own parameters that forward to its views (a preset's
+   * NumberOfCascades or WarpMode, InteractiveTexelRatio, ParaView's views
+   * property) set the pass's views only: a light's own keep theirs. One views
+   * object may serve several lights and passes; what it reports of its last
+   * fit (a cascades' splits) is then the last light's. In parallel rendering
+   * every process must give a light the same views.
    */
   void SetLightViews(vtkLight* light, vtkShadowMapViews* views);
   /** The views `light` gets: its own (SetLightViews), else the pass's. */
