@@ -4,12 +4,7 @@
 #                    (the program checks a shadow on its own image);
 # SOURCE_DIR, BUILD_DIR, OUT and GENERATOR (this build's) are set by
 # Testing/CMakeLists.txt.
-function (run_or_fail what)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result)
-  if (NOT result EQUAL 0)
-    message(FATAL_ERROR "${what} failed (${result}): ${ARGN}")
-  endif ()
-endfunction ()
+include("${CMAKE_CURRENT_LIST_DIR}/../RunOrFail.cmake")
 
 if (STEP STREQUAL "install")
   file(REMOVE_RECURSE "${OUT}/prefix")

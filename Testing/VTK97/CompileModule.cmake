@@ -4,12 +4,7 @@
 # tree) and OUT (a folder of its own) configures the module alone against it,
 # then compiles each of its sources with -fsyntax-only (scripts/syntax_only.sh)
 # and fails on any error. Nothing links: the VTK has no libraries.
-function (run_or_fail what)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result)
-  if (NOT result EQUAL 0)
-    message(FATAL_ERROR "${what} failed (${result}): ${ARGN}")
-  endif ()
-endfunction ()
+include("${CMAKE_CURRENT_LIST_DIR}/../RunOrFail.cmake")
 
 # -Wno-dev: VTK's vtk_module_add_module warns about every header in a folder of
 # Plugin/ (9.6 already did).
