@@ -5,6 +5,8 @@
 #include "ShadowOracle.h"
 #include "ShadowProgress.h"
 #include "ShadowRecommendation.h"
+
+#include "vtkAutomaticShadowMapPass.h"
 #include "ShadowScenes.h"
 #include "ShadowTechniques.h"
 
@@ -192,6 +194,8 @@ struct Row
   double Flicker = NotMeasured;
   double Changes = NotMeasured;
   double TruthChanges = NotMeasured;
+  /// The automatic pass: what it chose for the set-up's light ("" otherwise).
+  std::string Choice;
   Timing Time;
 };
 
@@ -357,6 +361,11 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
     row.Time = timing[t];
     view.Window->Render();
     const auto rgb = CaptureRGB(view.Window);
+    if (auto* automatic = vtkAutomaticShadowMapPass::SafeDownCast(technique.Ours))
+    {
+      row.Choice = std::string(automatic->GetChosenViewsName(0)) + " views, " +
+        automatic->GetChosenRepresentationName(0);
+    }
     const auto factor = shadowmetrics::FactorFromRenders(rgb, plain, view.Width * view.Height);
     row.Translucent = !transmittance.empty();
     if (row.Translucent)
@@ -452,6 +461,39 @@ double Ratio(const std::vector<Row>& rows, const Row& row, const std::string& re
     }
   }
   return NotMeasured;
+}
+
+/// What the automatic pass chose in each set-up, beside its error and the most
+/// accurate technique's of the same set-up.
+void PrintAutomaticChoices(const std::vector<Row>& rows, std::ostream& out)
+{
+  bool header = false;
+  for (const Row& row : rows)
+  {
+    if (row.Choice.empty())
+    {
+      continue;
+    }
+    const Row* best = nullptr;
+    for (const Row& other : rows)
+    {
+      if (other.Scene == row.Scene && other.Setup == row.Setup && !other.PassClass.empty() &&
+        (!best || other.Errors.Misclassified < best->Errors.Misclassified))
+      {
+        best = &other;
+      }
+    }
+    if (!header)
+    {
+      out << "\nThe automatic pass's choices (vtkAutomaticShadowMapPass):\n\n| scene | light | "
+             "chosen | misclassified % | most accurate measured | its misclassified % |\n"
+             "|---|---|---|---:|---|---:|\n";
+      header = true;
+    }
+    out << "| " << row.Scene << " | " << row.Setup << " | " << row.Choice << " | "
+        << FormatNumber(row.Errors.Misclassified) << " | " << best->Technique << " | "
+        << FormatNumber(best->Errors.Misclassified) << " |\n";
+  }
 }
 
 void PrintTable(const std::vector<Row>& rows, std::ostream& out)
@@ -742,6 +784,7 @@ bool Run(const Options& requested, std::ostream& out, std::ostream& log, std::st
   PrintTranslucentTable(rows, report);
   const std::vector<Recommendation> recommendations = RecommendationsOf(rows);
   WriteRecommendationsMarkdown(recommendations, report);
+  PrintAutomaticChoices(rows, report);
   out << report.str();
   std::ofstream(options.OutputDirectory + "/results.md") << report.str();
   WriteCSV(rows, options.OutputDirectory + "/results.csv");

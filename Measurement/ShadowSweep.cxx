@@ -4,6 +4,8 @@
 #include "ShadowScenes.h"
 #include "ShadowTechniques.h"
 
+#include "ShadowMapSceneReading.h"
+
 #include "vtkAbstractShadowMapPass.h"
 
 #include <vtkCamera.h>
@@ -505,6 +507,20 @@ TechniqueResult MeasureTechnique(SceneView& view, const Case& drawn, const std::
   return result;
 }
 
+/// The situation of the renderer's first shadowed light, as the automatic pass reads it.
+shadowmaps::LightSituation SituationOfFirstLight(vtkRenderer* renderer)
+{
+  int skipped = 0;
+  std::vector<vtkLight*> clamped;
+  const std::vector<shadowmaps::ShadowLight> lights = shadowmaps::CollectShadowedLights(renderer,
+    vtkAbstractShadowMapPass::CASTS_SHADOWS(), vtkAbstractShadowMapPass::LIGHT_SIZE(), 1, skipped,
+    clamped);
+  shadowmaps::ShadowFrame frame;
+  const bool parallel = shadowmaps::ReadSceneCamera(renderer, frame).Parallel;
+  return lights.empty() ? shadowmaps::LightSituation()
+                        : shadowmaps::SituationOf(lights.front(), frame.CameraView, parallel);
+}
+
 CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& options)
 {
   CaseResult result;
@@ -531,6 +547,7 @@ CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& option
   }
   light->GetTransformedPosition(glm::value_ptr(result.LightWorldPosition));
   light->GetTransformedFocalPoint(glm::value_ptr(result.LightWorldFocalPoint));
+  result.Situation = SituationOfFirstLight(view.Renderer);
   result.Counted = std::count_if(
     truth.begin(), truth.end(), [](Truth t) { return t != Truth::Ignored; });
   result.TruthShadowed = std::count(truth.begin(), truth.end(), Truth::Shadowed);
@@ -716,7 +733,8 @@ void WriteCSV(const std::vector<CaseResult>& results, const std::string& path)
   std::ofstream csv(path);
   csv << "seed,scene,width,height,counted,truth_shadowed,technique,misclassified,false_shadow,"
          "leak,gl_errors,vtk_errors,vtk_warnings,nonfinite_views,shadow_lost,light_size,"
-         "visibility_mean_error,visibility_p95_error,case\n";
+         "visibility_mean_error,visibility_p95_error,light_kind,cos_light_view,"
+         "light_behind_camera,parallel_camera,case\n";
   for (const CaseResult& result : results)
   {
     for (const TechniqueResult& t : result.Techniques)
@@ -735,6 +753,9 @@ void WriteCSV(const std::vector<CaseResult>& results, const std::string& path)
       {
         csv << "nan,nan";
       }
+      const shadowmaps::LightSituation& situation = result.Situation;
+      csv << ',' << shadowmaps::KindName(situation.Kind) << ',' << situation.CosLightView << ','
+          << (situation.LightBehindCamera ? 1 : 0) << ',' << (situation.ParallelCamera ? 1 : 0);
       csv << ",\"" << Describe(result.Drawn) << "\"\n";
     }
   }

@@ -5,6 +5,7 @@
 #ifndef ShadowSweep_h
 #define ShadowSweep_h
 
+#include "ShadowMapLightSituation.h"
 #include "ShadowMetrics.h"
 
 #include <glm/vec3.hpp>
@@ -144,6 +145,8 @@ struct CaseResult
   /// The light in world coordinates as rendered (camera lights too).
   glm::dvec3 LightWorldPosition{ 0.0 };
   glm::dvec3 LightWorldFocalPoint{ 0.0 };
+  /// What the automatic pass chooses the light's views from.
+  shadowmaps::LightSituation Situation;
   std::int64_t Counted = 0;
   std::int64_t TruthShadowed = 0;
   std::vector<TechniqueResult> Techniques;

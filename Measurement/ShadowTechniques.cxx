@@ -4,7 +4,10 @@
 #include "ShadowScenes.h"
 
 #include "vtkAbstractShadowMapPass.h"
+#include "vtkAutomaticShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkCascadedShadowMapViews.h"
+#include "vtkDepthShadowMapPass.h"
 #include "vtkDualDepthShadowMapPass.h"
 #include "vtkVarianceShadowMapPass.h"
 #include "vtkWarpedShadowMapViews.h"
@@ -221,6 +224,84 @@ std::vector<std::string> BiasSweepNames()
   return names;
 }
 
+// "<representation>+<views>": a representation a preset has ("depth": the
+// uniform technique's depth map and filter; "dual": the dual technique;
+// "evsm4": the moments' defaults) on any views ("uniform", "psm", "psm-cube",
+// "lispsm", "tsm", "gmnpr"; "csm" and "csm-lispsm": four stable cascades of
+// half the resolution, the latter tight and LiSPSM-warped as "csm-lispsm").
+const std::vector<std::string> PairRepresentations = { "depth", "dual", "evsm4" };
+const std::vector<std::string> PairViews = { "uniform", "psm", "psm-cube", "lispsm", "tsm", "gmnpr",
+  "csm", "csm-lispsm" };
+
+std::vector<std::string> PairNames()
+{
+  std::vector<std::string> names;
+  for (const std::string& representation : PairRepresentations)
+  {
+    for (const std::string& views : PairViews)
+    {
+      names.push_back(representation + "+" + views);
+    }
+  }
+  return names;
+}
+
+/// The two halves of a pair's name; false if `name` is no pair.
+bool SplitPair(const std::string& name, std::string& representation, std::string& views)
+{
+  const auto plus = name.find('+');
+  if (plus == std::string::npos)
+  {
+    return false;
+  }
+  representation = name.substr(0, plus);
+  views = name.substr(plus + 1);
+  return std::find(PairRepresentations.begin(), PairRepresentations.end(), representation) !=
+    PairRepresentations.end() &&
+    std::find(PairViews.begin(), PairViews.end(), views) != PairViews.end();
+}
+
+vtkSmartPointer<vtkShadowMapViews> MakePairViews(const std::string& views)
+{
+  if (views.rfind("csm", 0) == 0)
+  {
+    auto cascades = vtkSmartPointer<vtkCascadedShadowMapViews>::New();
+    if (views == "csm-lispsm")
+    {
+      cascades->SetFitModeToTight();
+      cascades->SetCascadeWarpToLiSPSM();
+    }
+    return cascades;
+  }
+  auto warped = vtkSmartPointer<vtkWarpedShadowMapViews>::New();
+  warped->SetWarpMode(WarpModeOf(views));
+  warped->SetPSMCubeMap(PSMCubeMapOf(views));
+  return warped;
+}
+
+vtkSmartPointer<vtkAbstractShadowMapPass> MakePairPass(const std::string& representation)
+{
+  if (representation == "dual")
+  {
+    auto pass = vtkSmartPointer<vtkDualDepthShadowMapPass>::New();
+    pass->SetFilter(vtkDepthShadowMapPass::PCF_2X2);
+    pass->SetModeToDual();
+    pass->SetConstantBias(0.0);
+    pass->SetSlopeScaledBias(0.0);
+    pass->SetNormalOffset(0.0);
+    return pass;
+  }
+  if (representation == "evsm4")
+  {
+    auto pass = vtkSmartPointer<vtkVarianceShadowMapPass>::New();
+    pass->SetMoments(vtkVarianceShadowMapPass::EVSM4);
+    return pass;
+  }
+  auto pass = vtkSmartPointer<vtkDepthShadowMapPass>::New();
+  pass->SetFilter(vtkDepthShadowMapPass::PCF_2X2);
+  return pass;
+}
+
 class CountingOutputWindow : public vtkOutputWindow
 {
 public:
@@ -274,14 +355,14 @@ std::vector<std::string> DefaultTechniqueNames()
 //------------------------------------------------------------------------------
 std::vector<std::string> QuickTechniqueNames()
 {
-  return { "none", "vtk", "uniform", "lispsm", "csm", "second-depth", "evsm4" };
+  return { "none", "vtk", "uniform", "lispsm", "csm", "second-depth", "evsm4", "auto" };
 }
 
 //------------------------------------------------------------------------------
 std::vector<std::string> TechniqueNames()
 {
   std::vector<std::string> names = DefaultTechniqueNames();
-  names.insert(names.end(), { "psm-cube", "psm-single", "dual-minblend", "dual-peel", "vsm",
+  names.insert(names.end(), { "auto", "psm-cube", "psm-single", "dual-minblend", "dual-peel", "vsm",
                               "evsm2", "msm", "esm", "pcf3", "poisson" });
   const std::vector<std::string> variants = MomentVariantNames();
   names.insert(names.end(), variants.begin(), variants.end());
@@ -293,6 +374,8 @@ std::vector<std::string> TechniqueNames()
   names.insert(names.end(), radii.begin(), radii.end());
   const std::vector<std::string> blurs = MomentBlurSweepNames();
   names.insert(names.end(), blurs.begin(), blurs.end());
+  const std::vector<std::string> pairs = PairNames();
+  names.insert(names.end(), pairs.begin(), pairs.end());
   return names;
 }
 
@@ -343,7 +426,27 @@ std::vector<std::string> WithReferenceTechniques(std::vector<std::string> techni
 TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int resolution)
 {
   TechniqueInstance technique;
-  if (name == "vtk" || name == "vtk-equal")
+  std::string pairRepresentation;
+  std::string pairViews;
+  if (name == "auto")
+  {
+    auto pass = vtkSmartPointer<vtkAutomaticShadowMapPass>::New();
+    pass->SetResolution(resolution); // halved by the pass for cascades
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = resolution;
+  }
+  else if (SplitPair(name, pairRepresentation, pairViews))
+  {
+    auto pass = MakePairPass(pairRepresentation);
+    pass->SetViews(MakePairViews(pairViews));
+    // Cascades of half the resolution: four hold the memory of one map.
+    pass->SetResolution(pairViews.rfind("csm", 0) == 0 ? std::max(resolution / 2, 64) : resolution);
+    technique.Ours = pass;
+    technique.Pass = pass;
+    technique.Resolution = pass->GetResolution();
+  }
+  else if (name == "vtk" || name == "vtk-equal")
   {
     technique.Resolution = static_cast<int>(
       name == "vtk" ? VTKDefaultResolution : VTKEqualMemoryResolution(pointLight, resolution));

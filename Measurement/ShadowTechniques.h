@@ -46,7 +46,10 @@ vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(
 /// and "dual-peel" (dual with a forced layer method), "dual-offset<K>" for K
 /// in 0.5, 1, 4, 8 (dual with DualOffset K texels), and the uniform map's
 /// bias sweep "uniform-bias<B>" for B in 0, 1, 4, 16, 64 (default normal
-/// offset) and "uniform-bias<B>-offset0" (normal offset 0).
+/// offset) and "uniform-bias<B>-offset0" (normal offset 0), and the pairs
+/// "<representation>+<views>": depth, dual or evsm4 on uniform, psm, psm-cube,
+/// lispsm, tsm, gmnpr, csm or csm-lispsm views (e.g. "dual+csm"), and "auto"
+/// (vtkAutomaticShadowMapPass).
 std::vector<std::string> TechniqueNames();
 
 /// The techniques a benchmark measures unless told: TechniqueNames() without
@@ -54,7 +57,8 @@ std::vector<std::string> TechniqueNames();
 std::vector<std::string> DefaultTechniqueNames();
 
 /// One of each family, the ones that differ most: the references, the uniform
-/// map, LiSPSM, cascades, second-depth and moments (vtkshadows analyze).
+/// map, LiSPSM, cascades, second-depth and moments, and the automatic pass
+/// (vtkshadows analyze).
 std::vector<std::string> QuickTechniqueNames();
 
 /// True for a name in TechniqueNames().

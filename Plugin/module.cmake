@@ -2,7 +2,8 @@
 # when vtk_module_build() visits the module directory). The folders of Plugin/
 # are its layers: Compat (what differs between VTK versions), Math (pure
 # functions of the fits), Scene (what the passes read of the casters' data),
-# Views and Representations (the two strategies of a pass), OpenGL (GL objects
+# Views and Representations (the two strategies of a pass), Choice (what the
+# automatic pass chooses them from), OpenGL (GL objects
 # and the shader code injected into mappers) and Passes (the vtkRenderPass
 # subclasses that coordinate them).
 set(shadowmaps_shaders
@@ -44,11 +45,12 @@ foreach (shader IN LISTS shadowmaps_shaders)
   list(APPEND shadowmaps_shader_headers "${header}")
 endforeach ()
 
-set(shadowmaps_folders Compat Math OpenGL Passes Representations Scene Views)
+set(shadowmaps_folders Choice Compat Math OpenGL Passes Representations Scene Views)
 
 vtk_module_add_module(ShadowMaps::RenderingShadowMaps
   CLASSES
     Plugin/Passes/vtkAbstractShadowMapPass
+    Plugin/Passes/vtkAutomaticShadowMapPass
     Plugin/Passes/vtkCascadedShadowMapPass
     Plugin/Passes/vtkDepthShadowMapPass
     Plugin/Passes/vtkDualDepthShadowMapPass
@@ -67,6 +69,9 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     # The setter macro of the classes above, for downstream subclasses too.
     Plugin/vtkShadowMapSetMacros.h
   SOURCES
+    Plugin/Choice/ShadowMapLightChoices.cxx
+    Plugin/Choice/ShadowMapLightSituation.cxx
+    Plugin/Choice/ShadowMapViewsRules.cxx
     Plugin/Math/ShadowMapCascades.cxx
     Plugin/Math/ShadowMapCasterReach.cxx
     Plugin/Math/ShadowMapCrop.cxx

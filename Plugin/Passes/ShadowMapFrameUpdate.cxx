@@ -194,8 +194,7 @@ void FrameUpdate::CollectCastersAndCamera(vtkOpenGLRenderer* renderer)
     }
   }
   frame.FilterReachTexels = settings.Representation->GetFilterReachTexels();
-  frame.Interactive = settings.InteractiveUpdateRate < VTK_DOUBLE_MAX &&
-    renderer->GetRenderWindow()->GetDesiredUpdateRate() >= settings.InteractiveUpdateRate;
+  frame.Interactive = IsInteractiveRender(renderer, settings.InteractiveUpdateRate);
 }
 
 //------------------------------------------------------------------------------

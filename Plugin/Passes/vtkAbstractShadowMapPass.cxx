@@ -556,12 +556,13 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
   {
     this->Modified();
   }
+  this->ChooseForFrame(renderer);
   settings.Representation = r.Representation;
   settings.Exchange = this->Exchange;
   settings.UseSceneBounds = this->UseSceneBounds;
   settings.SceneBounds = this->SceneBounds;
   settings.SoftShadows = this->SoftShadows;
-  settings.Resolution = this->Resolution;
+  settings.Resolution = this->GetLayerResolution();
   settings.CasterFaces = this->CasterFaces;
   settings.NormalOffset = this->NormalOffset;
   settings.ShadowReachCulling = this->ShadowReachCulling;
@@ -573,6 +574,15 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
   const bool ready = r.Update.Prepare(renderer, s, settings);
   this->WarnAboutUpdate();
   return ready;
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::ChooseForFrame(vtkOpenGLRenderer*) {}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetLayerResolution()
+{
+  return this->Resolution;
 }
 
 //------------------------------------------------------------------------------

@@ -436,6 +436,16 @@ protected:
     vtkShadowMapViews* defaultViews, vtkShadowMapRepresentation* defaultRepresentation);
   ~vtkAbstractShadowMapPass() override;
 
+  /**
+   * Called at the start of each frame that may have shadows (not while a
+   * selector picks), before the lights' views are fitted: a subclass may
+   * choose each light's views (SetLightViews) from the frame. Does nothing here.
+   */
+  virtual void ChooseForFrame(vtkOpenGLRenderer* renderer);
+
+  /** The width and height of the maps' layers this frame: Resolution here. */
+  virtual int GetLayerResolution();
+
   vtkRenderPass* DelegatePass = nullptr;
   vtkShadowMapExchange* Exchange = nullptr;
   double SceneBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };

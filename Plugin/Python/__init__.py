@@ -4,12 +4,14 @@ or by a technique's name: ``renderer.SetPass(vtkshadowmaps.make_pass("cascaded")
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 from .vtkRenderingShadowMaps import *  # noqa: F401,F403
-from .vtkRenderingShadowMaps import (vtkCascadedShadowMapPass, vtkDepthShadowMapPass,
+from .vtkRenderingShadowMaps import (vtkAutomaticShadowMapPass, vtkCascadedShadowMapPass,
+                                     vtkDepthShadowMapPass,
                                      vtkDualDepthShadowMapPass, vtkVarianceShadowMapPass,
                                      vtkWarpedShadowMapPass)
 
 # A technique's name -> (the pass's class, its warp mode or None).
 TECHNIQUES = {
+    "auto": (vtkAutomaticShadowMapPass, None),
     "uniform": (vtkWarpedShadowMapPass, "Uniform"),
     "psm": (vtkWarpedShadowMapPass, "PSM"),
     "lispsm": (vtkWarpedShadowMapPass, "LiSPSM"),

@@ -141,6 +141,13 @@ std::vector<float> IntensityShares(vtkRenderer* renderer, const std::vector<Shad
 }
 
 //------------------------------------------------------------------------------
+bool IsInteractiveRender(vtkRenderer* renderer, double interactiveUpdateRate)
+{
+  return interactiveUpdateRate < VTK_DOUBLE_MAX &&
+    renderer->GetRenderWindow()->GetDesiredUpdateRate() >= interactiveUpdateRate;
+}
+
+//------------------------------------------------------------------------------
 SceneCamera ReadSceneCamera(vtkRenderer* renderer, ShadowFrame& frame)
 {
   vtkCamera* camera = renderer->GetActiveCamera();

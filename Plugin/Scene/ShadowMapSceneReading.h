@@ -83,6 +83,10 @@ std::vector<ShadowLight> CollectShadowedLights(vtkRenderer* renderer,
 /// when they have none.
 std::vector<float> IntensityShares(vtkRenderer* renderer, const std::vector<ShadowLight>& lights);
 
+/// Whether the user is moving the camera: `renderer`'s window asks for at
+/// least `interactiveUpdateRate` frames a second (VTK_DOUBLE_MAX: never).
+bool IsInteractiveRender(vtkRenderer* renderer, double interactiveUpdateRate);
+
 /// The scene camera as the frame needs it.
 struct SceneCamera
 {

@@ -110,7 +110,7 @@ def recommended_from_table(rows, setups):
 def test_analyze_recommends(program, output):
     directory = os.path.join(output, "analyze-wuson")
     result = run(program, "analyze", Y_UP_MODEL, "--setups", "perpendicular,facing,spot",
-                 "--techniques", "uniform,lispsm,csm,second-depth", "--flicker-frames", "0",
+                 "--techniques", "uniform,lispsm,csm,second-depth,auto", "--flicker-frames", "0",
                  "--out", directory, *SMALL)
     check(result.returncode == 0, "analyze failed: " + result.stderr[-2000:])
     check("model up axis: +y (the model stands on the plane y = 0" in result.stderr,
@@ -118,6 +118,9 @@ def test_analyze_recommends(program, output):
     check(re.search(r"\[\d+%, \d+:\d\d so far, about \d+:\d\d left\]", result.stderr),
           "progress with the time left")
     check("## Recommendation" in result.stdout, "the recommendation printed")
+    for setup in ("perpendicular", "facing", "spot"):
+        check(re.search(r"\| file \| %s \| [a-z]+ views, dual depth \|" % setup, result.stdout),
+              "the automatic pass's choice reported for " + setup)
     with open(os.path.join(directory, "results.md")) as markdown:
         check("## Recommendation" in markdown.read(), "and in results.md")
     rows = rows_by_case(os.path.join(directory, "results.csv"))

@@ -129,6 +129,25 @@ def main(output_dir):
     assert under < 80 and open_ground > 120 and sphere_top > 120
     assert dual.GetNumberOfCasterPassesPerLayer() == 2, "the ground is open: peeled"
 
+    # The automatic pass: its choice for the sun, read back from Python, and
+    # pinned to one views for every light.
+    automatic = vtkshadowmaps.make_pass("auto")
+    assert isinstance(automatic, vtkshadowmaps.vtkAutomaticShadowMapPass)
+    _, (under, open_ground) = render_with(renderer, window, grab, automatic, UNDER_THE_SPHERE,
+                                          OPEN_GROUND)
+    chosen = automatic.GetChosenViewsName(0)
+    print(f"automatic ({chosen} views, {automatic.GetChosenRepresentationName(0)}): "
+          f"under the sphere {under:.1f}, open ground {open_ground:.1f}")
+    assert chosen in ("uniform", "lispsm", "tsm", "psm", "cascades")
+    assert automatic.GetChosenRepresentationName(0) == "dual depth"
+    assert automatic.GetChosenViews(1) == -2, "one light"
+    assert under < 80 and open_ground > 120
+    automatic.SetViewsChoiceToLiSPSM()
+    render_with(renderer, window, grab, automatic, UNDER_THE_SPHERE)
+    assert automatic.GetChosenViews(0) == vtkshadowmaps.vtkAutomaticShadowMapPass.LISPSM_VIEWS
+    renderer.SetPass(None)
+    automatic.ReleaseGraphicsResources(window)
+
     # Filterable moments with cascades: the shadow, the lit ground and top.
     variance = vtkshadowmaps.vtkVarianceShadowMapPass()
     variance.SetMomentsToMSM()

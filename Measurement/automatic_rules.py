@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""The automatic pass's rules from a robustness sweep (`vtkshadows sweep`'s
+results.csv, run with the candidate pairs): per class of situation (the light's
+kind, the cosine between its direction and the view's, a positional light behind
+the camera), each candidate's median and 95th percentile of misclassified %, the
+candidate with the lowest of (median + p95) / 2, and how a technique (the
+automatic pass, by default) compares with the per-case best and with the old
+default (csm).
+
+  automatic_rules.py results.csv [--best-of T,T,...] [--technique auto]
+      [--default csm] [--candidates dual,dual+csm,...]
+"""
+import argparse
+import csv
+import statistics
+from collections import defaultdict
+
+COS_EDGES = [-1.0, -0.5, 0.0, 0.5, 1.0001]
+
+
+def percentile(values, fraction):
+    ordered = sorted(values)
+    if not ordered:
+        return float("nan")
+    position = fraction * (len(ordered) - 1)
+    low = int(position)
+    high = min(low + 1, len(ordered) - 1)
+    return ordered[low] + (ordered[high] - ordered[low]) * (position - low)
+
+
+def class_of(row):
+    cosine = float(row["cos_light_view"])
+    band = next(i for i in range(len(COS_EDGES) - 1) if cosine < COS_EDGES[i + 1])
+    behind = " behind" if row["light_behind_camera"] == "1" else ""
+    return f"{row['light_kind']}{behind} cos [{COS_EDGES[band]:+.1f}, {min(COS_EDGES[band + 1], 1.0):+.1f}]"
+
+
+def read_cases(path, minimum_counted):
+    cases = defaultdict(dict)
+    classes = {}
+    for row in csv.DictReader(open(path)):
+        if int(row["counted"]) < minimum_counted:
+            continue
+        cases[row["seed"]][row["technique"]] = float(row["misclassified"])
+        classes[row["seed"]] = class_of(row)
+    return cases, classes
+
+
+def summary(values):
+    return statistics.median(values), percentile(values, 0.95)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("csv")
+    parser.add_argument("--candidates", default="dual,dual+csm,dual+tsm,dual+lispsm,dual+psm")
+    parser.add_argument("--best-of", default="")
+    parser.add_argument("--technique", default="auto")
+    parser.add_argument("--default", default="csm")
+    parser.add_argument("--min-counted", type=int, default=300)
+    args = parser.parse_args()
+    cases, classes = read_cases(args.csv, args.min_counted)
+    candidates = args.candidates.split(",")
+    best_of = args.best_of.split(",") if args.best_of else None
+
+    by_class = defaultdict(list)
+    for seed, errors in cases.items():
+        by_class[classes[seed]].append(seed)
+
+    print("| class | cases | " + " | ".join(candidates) + " | lowest |")
+    print("|---|---:|" + "---:|" * len(candidates) + "---|")
+    for name in sorted(by_class):
+        seeds = by_class[name]
+        cells = []
+        scores = {}
+        for candidate in candidates:
+            values = [cases[s][candidate] for s in seeds if candidate in cases[s]]
+            if not values:
+                cells.append("–")
+                continue
+            median, p95 = summary(values)
+            scores[candidate] = (median + p95) / 2.0
+            cells.append(f"{median:.3f} / {p95:.3f}")
+        lowest = min(scores, key=scores.get) if scores else "–"
+        print(f"| {name} | {len(seeds)} | " + " | ".join(cells) + f" | {lowest} |")
+
+    technique = args.technique
+    measured = [s for s in cases if technique in cases[s]]
+    if not measured:
+        return
+    print(f"\n{technique} against the per-case best"
+          f" ({', '.join(best_of) if best_of else 'every technique measured'})"
+          f" and the old default ({args.default}), misclassified %:\n")
+    print("| class | cases | best median / p95 | " + technique + " median / p95 | "
+          + args.default + " median / p95 | cases where " + technique + " > 1.05 × "
+          + args.default + " |")
+    print("|---|---:|---:|---:|---:|---:|")
+    rows = sorted(by_class.items()) + [("all", measured)]
+    for name, seeds in rows:
+        seeds = [s for s in seeds if technique in cases[s]]
+        best = [min(v for t, v in cases[s].items() if best_of is None or t in best_of)
+                for s in seeds]
+        ours = [cases[s][technique] for s in seeds]
+        old = [cases[s].get(args.default, float("nan")) for s in seeds]
+        worse = sum(1 for o, d in zip(ours, old) if o > 1.05 * d + 1e-9)
+        b, o, d = summary(best), summary(ours), summary(old)
+        print(f"| {name} | {len(seeds)} | {b[0]:.3f} / {b[1]:.3f} | {o[0]:.3f} / {o[1]:.3f} | "
+              f"{d[0]:.3f} / {d[1]:.3f} | {worse} |")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,34 @@
+#include "ShadowMapLightSituation.h"
+
+namespace shadowmaps
+{
+//------------------------------------------------------------------------------
+LightSituation SituationOf(const ShadowLight& light, const glm::dmat4& cameraView, bool parallel)
+{
+  LightSituation situation;
+  situation.Kind = light.Kind;
+  if (light.Kind == LightKind::Spot && NeedsCubeFaces(light))
+  {
+    situation.Kind = LightKind::Point;
+  }
+  situation.ParallelCamera = parallel;
+  const glm::dmat4 eyeToWorld = glm::inverse(cameraView);
+  const glm::dvec3 eye(eyeToWorld[3]);
+  const glm::dvec3 viewDirection = SafeDirection(-glm::dvec3(eyeToWorld[2]));
+  glm::dvec3 lightDirection = SafeDirection(light.Direction);
+  if (light.Kind != LightKind::Directional)
+  {
+    lightDirection = SafeDirection(eye - light.Position);
+    const glm::dvec4 lightInEye = cameraView * glm::dvec4(light.Position, 1.0);
+    situation.LightBehindCamera = !parallel && lightInEye.z > 0.0;
+  }
+  situation.CosLightView = glm::clamp(glm::dot(viewDirection, lightDirection), -1.0, 1.0);
+  return situation;
+}
+
+//------------------------------------------------------------------------------
+std::string KindName(LightKind kind)
+{
+  return kind == LightKind::Directional ? "sun" : kind == LightKind::Spot ? "spot" : "point";
+}
+} // namespace shadowmaps

@@ -1,0 +1,350 @@
+// vtkAutomaticShadowMapPass: each light gets the views of its row of the
+// measured table (shadowmaps::ViewsRules) and the frame is the one those views
+// give by hand; a choice changes only in still frames (no shader built while
+// the camera moves) and only past the rows' margin; the user may pin the views
+// of every light or of one; processes holding different pieces choose the
+// same; shadows are where they fall, and the frame matches its baseline.
+#include "ShadowMapGlm.h"
+#include "ShadowMapLightChoices.h"
+#include "ShadowMapViewsRules.h"
+#include "ShadowTestUtilities.h"
+#include "vtkAutomaticShadowMapPass.h"
+#include "vtkCascadedShadowMapViews.h"
+#include "vtkDualDepthShadowMapPass.h"
+#include "vtkUniformShadowMapViews.h"
+#include "vtkWarpedShadowMapViews.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace shadowtest;
+
+namespace
+{
+const glm::dvec3 SunDirection = glm::normalize(glm::dvec3(1.0, 0.2, -0.45));
+const glm::dvec3 SpotPosition(-3.0, -2.0, 6.0);
+const glm::dvec3 PointPosition(3.0, -3.0, 5.0);
+/// Maps where the choice, not the picture, is tested.
+constexpr int SmallMaps = 512;
+
+/// The test scene lit by a sun, a spot and a point light, seen from `azimuth`
+/// degrees around the z axis (0: from -y), 20 degrees above the ground.
+struct ThreeLights
+{
+  TestScene Scene;
+  vtkLight* Sun = nullptr;
+  vtkNew<vtkLight> Spot;
+  vtkNew<vtkLight> Point;
+
+  ThreeLights()
+  {
+    this->Sun = this->Scene.SetSun(SunDirection);
+    this->Sun->SetIntensity(0.5);
+    AddPositional(this->Spot, SpotPosition, 40.0);
+    AddPositional(this->Point, PointPosition, 180.0);
+    this->Look(0.0);
+  }
+
+  void AddPositional(vtkLight* light, const glm::dvec3& position, double cone)
+  {
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(true);
+    light->SetPosition(position.x, position.y, position.z);
+    light->SetFocalPoint(0.0, 0.0, 0.0);
+    light->SetConeAngle(cone);
+    light->SetAttenuationValues(1.0, 0.0, 0.0);
+    light->SetIntensity(0.4);
+    this->Scene.Renderer->AddLight(light);
+  }
+
+  void Look(double azimuth)
+  {
+    const double a = vtkMath::RadiansFromDegrees(azimuth);
+    const double e = vtkMath::RadiansFromDegrees(20.0);
+    const double distance = 16.0;
+    vtkCamera* camera = this->Scene.Renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.5);
+    camera->SetPosition(distance * std::cos(e) * std::sin(a), -distance * std::cos(e) * std::cos(a),
+      0.5 + distance * std::sin(e));
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    this->Scene.Renderer->ResetCameraClippingRange();
+  }
+};
+
+/// A views object like the automatic pass's candidate of `chosen`.
+vtkSmartPointer<vtkShadowMapViews> ViewsLike(int chosen)
+{
+  switch (chosen)
+  {
+    case vtkAutomaticShadowMapPass::CASCADED_VIEWS:
+      return vtkSmartPointer<vtkCascadedShadowMapViews>::New();
+    case vtkAutomaticShadowMapPass::UNIFORM_VIEWS:
+      return vtkSmartPointer<vtkUniformShadowMapViews>::New();
+    default:
+    {
+      auto warped = vtkSmartPointer<vtkWarpedShadowMapViews>::New();
+      warped->SetWarpMode(chosen == vtkAutomaticShadowMapPass::LISPSM_VIEWS
+          ? vtkWarpedShadowMapViews::LISPSM
+          : chosen == vtkAutomaticShadowMapPass::TSM_VIEWS ? vtkWarpedShadowMapViews::TSM
+                                                           : vtkWarpedShadowMapViews::PSM);
+      if (chosen == vtkAutomaticShadowMapPass::PSM_CUBE_VIEWS)
+      {
+        warped->SetPSMCubeMapToAlways();
+      }
+      return warped;
+    }
+  }
+}
+
+/// A point light beside a street-level camera that walks from looking past it
+/// at the whole scene (t = 0: every prop in view, so none builds its shader
+/// later for entering it) to seeing the light side-on (t = 1).
+struct WalkPastALamp
+{
+  TestScene Scene;
+  WalkPastALamp() { this->Scene.SetPoint({ 8.0, 0.0, 3.0 }); }
+
+  void Walk(double t)
+  {
+    const glm::dvec3 position = glm::mix(glm::dvec3(8.0, -10.0, 3.0), glm::dvec3(2.0, -2.0, 3.0), t);
+    const glm::dvec3 focal = glm::mix(glm::dvec3(2.0, 0.0, 1.0), glm::dvec3(2.0, 10.0, 3.0), t);
+    vtkCamera* camera = this->Scene.Renderer->GetActiveCamera();
+    camera->SetPosition(position.x, position.y, position.z);
+    camera->SetFocalPoint(focal.x, focal.y, focal.z);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    this->Scene.Renderer->ResetCameraClippingRange();
+  }
+};
+
+/// The lamp's chosen views of a fresh pass at `t` of the walk.
+int FreshChoice(double t)
+{
+  WalkPastALamp walk;
+  walk.Walk(t);
+  vtkNew<vtkAutomaticShadowMapPass> pass;
+  pass->SetResolution(SmallMaps);
+  walk.Scene.Renderer->SetPass(pass);
+  walk.Scene.Window->Render();
+  return pass->GetChosenViews(0);
+}
+} // namespace
+
+// Each light's views are its row's; the frame is the dual-depth pass's with
+// the same views given by hand, at half the resolution while a light is in
+// cascades.
+TEST(ShadowAutomatic, EachLightGetsItsRowsViewsAndTheFrameTheyGive)
+{
+  ThreeLights automatic;
+  vtkNew<vtkAutomaticShadowMapPass> pass;
+  pass->SetResolution(SmallMaps);
+  automatic.Scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  auto frame = RenderAndCapture(automatic.Scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  ASSERT_EQ(pass->GetNumberOfShadowedLights(), 3);
+  EXPECT_EQ(pass->GetChosenViews(3), -2) << "no fourth light";
+
+  const glm::dmat4 view = shadowmaps::ToGlm(
+    automatic.Scene.Renderer->GetActiveCamera()->GetViewTransformMatrix());
+  ThreeLights byHand;
+  vtkNew<vtkDualDepthShadowMapPass> reference;
+  vtkLight* lights[] = { byHand.Sun, byHand.Spot, byHand.Point };
+  bool cascades = false;
+  for (int i = 0; i < 3; ++i)
+  {
+    shadowmaps::ShadowLight light;
+    vtkLight* original = i == 0 ? automatic.Sun : i == 1 ? automatic.Spot.Get() : automatic.Point.Get();
+    light.Kind = i == 0 ? shadowmaps::LightKind::Directional
+      : i == 1          ? shadowmaps::LightKind::Spot
+                        : shadowmaps::LightKind::Point;
+    light.Position = glm::make_vec3(original->GetPosition());
+    light.Direction = glm::make_vec3(original->GetFocalPoint()) - light.Position;
+    light.ConeAngle = original->GetConeAngle();
+    const auto& rules = shadowmaps::ViewsRules();
+    const int row = shadowmaps::ChooseViewsRule(rules, shadowmaps::SituationOf(light, view, false), -1);
+    ASSERT_GE(row, 0);
+    EXPECT_EQ(pass->GetChosenViews(i), static_cast<int>(rules[row].Views)) << "light " << i;
+    EXPECT_EQ(pass->GetChosenRepresentation(i), vtkAutomaticShadowMapPass::DUAL_DEPTH_REPRESENTATION);
+    EXPECT_STREQ(pass->GetChosenRepresentationName(i), "dual depth");
+    reference->SetLightViews(lights[i], ViewsLike(pass->GetChosenViews(i)));
+    cascades = cascades || pass->GetChosenViews(i) == vtkAutomaticShadowMapPass::CASCADED_VIEWS;
+  }
+  reference->SetResolution(cascades ? pass->GetResolution() / 2 : pass->GetResolution());
+  byHand.Scene.Renderer->SetPass(reference);
+  auto same = RenderAndCapture(byHand.Scene.Window);
+  EXPECT_EQ(RgbBytes(frame), RgbBytes(same));
+  EXPECT_EQ(pass->GetShadowMapMemory(), reference->GetShadowMapMemory());
+}
+
+// Walking past a lamp, from facing it to seeing it side-on, changes its row:
+// interactive frames keep the row and build no shader; the still frame after
+// takes the new row.
+TEST(ShadowAutomatic, ChoicesChangeOnlyInStillFrames)
+{
+  const int first = FreshChoice(0.0);
+  const int last = FreshChoice(1.0);
+  ASSERT_NE(first, last) << "the table gives the lamp the same views at both ends of the walk";
+
+  WalkPastALamp walk;
+  vtkNew<vtkAutomaticShadowMapPass> pass;
+  pass->SetResolution(SmallMaps);
+  walk.Walk(0.0);
+  walk.Scene.Renderer->SetPass(pass);
+  walk.Scene.Window->Render();
+  ASSERT_EQ(pass->GetChosenViews(0), first);
+  const int builds = pass->GetNumberOfShaderBuilds();
+  const int steps = 12;
+  for (int i = 1; i <= steps; ++i)
+  {
+    walk.Scene.Window->SetDesiredUpdateRate(15.0);
+    walk.Walk(static_cast<double>(i) / steps);
+    walk.Scene.Window->Render();
+    EXPECT_EQ(pass->GetChosenViews(0), first) << "step " << i;
+  }
+  EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds) << "a shader built while moving";
+  walk.Scene.Window->SetDesiredUpdateRate(0.0001);
+  walk.Scene.Window->Render();
+  EXPECT_EQ(pass->GetChosenViews(0), last);
+  EXPECT_GT(pass->GetNumberOfShaderBuilds(), builds) << "the new views' receivers";
+}
+
+// A light keeps its row while its situation stays within the margin past the
+// row's range, and takes the row that holds it beyond.
+TEST(ShadowAutomatic, ARowIsKeptWithinItsMargin)
+{
+  using shadowmaps::LightKind;
+  using shadowmaps::ViewsKind;
+  const std::vector<shadowmaps::ViewsRule> rules = {
+    { LightKind::Directional, 0.0, 1.0, -1, -1, ViewsKind::TSM },
+    { LightKind::Directional, -1.0, 1.0, -1, -1, ViewsKind::Cascades },
+  };
+  shadowmaps::LightSituation situation;
+  situation.CosLightView = 0.02;
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, -1, 0.05), 0);
+  situation.CosLightView = -0.02;
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, -1, 0.05), 1) << "fresh: the first row holding it";
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 0, 0.05), 0) << "within the margin";
+  situation.CosLightView = -0.06;
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 0, 0.05), 1) << "past the margin";
+  situation.CosLightView = 0.02;
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 0.05), 1) << "the wider row keeps it";
+  situation.CosLightView = 0.06;
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 0.05), 0)
+    << "the earlier row takes it past the margin";
+  situation.CosLightView = 0.98;
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 0.05), 0)
+    << "the range's end at 1 is no boundary";
+  situation.Kind = LightKind::Spot;
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 0.05), -1) << "no row for spots";
+
+  // LightChoices: a known light keeps its row in interactive frames.
+  vtkNew<vtkLight> light;
+  shadowmaps::LightChoices choices;
+  situation.Kind = LightKind::Directional;
+  situation.CosLightView = 0.5;
+  EXPECT_TRUE(choices.Update({ light }, { situation }, true, rules));
+  EXPECT_EQ(choices.Choices().front().Rule, 0) << "a new light is chosen for at once";
+  situation.CosLightView = -0.5;
+  EXPECT_FALSE(choices.Update({ light }, { situation }, true, rules));
+  EXPECT_EQ(choices.Choices().front().Rule, 0);
+  EXPECT_TRUE(choices.Update({ light }, { situation }, false, rules));
+  EXPECT_EQ(choices.Choices().front().Rule, 1);
+}
+
+// Every light pinned to one views kind, and one light pinned to the user's
+// views, which the pass leaves alone.
+TEST(ShadowAutomatic, TheUserPinsEveryLightsViewsOrOnes)
+{
+  ThreeLights scene;
+  vtkNew<vtkAutomaticShadowMapPass> pass;
+  pass->SetResolution(SmallMaps);
+  pass->SetViewsChoiceToTSM();
+  scene.Scene.Renderer->SetPass(pass);
+  scene.Scene.Window->Render();
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(pass->GetChosenViews(i), vtkAutomaticShadowMapPass::TSM_VIEWS);
+    EXPECT_STREQ(pass->GetChosenViewsName(i), "tsm");
+  }
+  EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 1 + 1 + 6) << "the point light's cube faces";
+
+  vtkNew<vtkUniformShadowMapViews> mine;
+  pass->SetViewsChoiceToAutomatic();
+  pass->SetLightViews(scene.Spot, mine);
+  scene.Scene.Window->Render();
+  EXPECT_EQ(pass->GetChosenViews(1), vtkAutomaticShadowMapPass::USER_VIEWS);
+  EXPECT_STREQ(pass->GetChosenViewsName(1), "user");
+  EXPECT_EQ(pass->GetLightViews(scene.Spot), mine.Get());
+  EXPECT_NE(pass->GetChosenViews(0), vtkAutomaticShadowMapPass::USER_VIEWS);
+
+  pass->SetLightViews(scene.Spot, nullptr);
+  scene.Scene.Window->Render();
+  EXPECT_NE(pass->GetChosenViews(1), vtkAutomaticShadowMapPass::USER_VIEWS) << "unpinned";
+  pass->SetViewsChoice(42);
+  EXPECT_EQ(pass->GetViewsChoice(), vtkAutomaticShadowMapPass::AUTOMATIC_VIEWS) << "clamped";
+}
+
+// Processes holding different pieces of the scene choose the same: the
+// choice reads the lights and the camera, not the props.
+TEST(ShadowAutomatic, ProcessesHoldingDifferentPiecesChooseTheSame)
+{
+  for (double azimuth : { 0.0, 150.0 })
+  {
+    ThreeLights whole;
+    ThreeLights piece;
+    whole.Look(azimuth);
+    piece.Look(azimuth);
+    piece.Scene.Renderer->RemoveActor(piece.Scene.Sphere);
+    piece.Scene.Renderer->RemoveActor(piece.Scene.Box);
+    vtkNew<vtkAutomaticShadowMapPass> wholePass;
+    vtkNew<vtkAutomaticShadowMapPass> piecePass;
+    wholePass->SetResolution(SmallMaps);
+    piecePass->SetResolution(SmallMaps);
+    whole.Scene.Renderer->SetPass(wholePass);
+    piece.Scene.Renderer->SetPass(piecePass);
+    whole.Scene.Window->Render();
+    piece.Scene.Window->Render();
+    for (int i = 0; i < 3; ++i)
+    {
+      EXPECT_EQ(wholePass->GetChosenViews(i), piecePass->GetChosenViews(i)) << azimuth;
+    }
+  }
+}
+
+// The sphere's shadow from each light is dark and the open ground lit; the
+// frame matches its baseline.
+TEST(ShadowAutomatic, ShadowsFallWhereTheyShould)
+{
+  for (int lightIndex = 0; lightIndex < 3; ++lightIndex)
+  {
+    TestScene scene;
+    vtkLight* light = lightIndex == 0 ? scene.SetSun(SunDirection)
+      : lightIndex == 1               ? scene.SetSpot(SpotPosition, 40.0)
+                                      : scene.SetPoint(PointPosition);
+    (void)light;
+    vtkNew<vtkAutomaticShadowMapPass> pass;
+    scene.Renderer->SetPass(pass);
+    ErrorCounter errors;
+    auto frame = RenderAndCapture(scene.Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+    const glm::dvec3 shadow = lightIndex == 0 ? GroundShadowOfSphereCenter(SunDirection)
+                                              : GroundShadowOfSphereCenterFrom(
+                                                  lightIndex == 1 ? SpotPosition : PointPosition);
+    const glm::dvec3 open = shadow + glm::dvec3(0.0, -2.5, 0.0);
+    EXPECT_LT(LuminanceAt(scene.Renderer, frame, shadow), 0.6 * LuminanceAt(scene.Renderer, frame, open))
+      << pass->GetChosenViewsName(0);
+    const std::string name = std::string("AutomaticPass") + (lightIndex == 0 ? "Sun" : lightIndex == 1 ? "Spot" : "Point");
+    EXPECT_EQ(CompareWithBaseline(frame, name), "") << name;
+  }
+}
