@@ -49,7 +49,7 @@ vtkSmartPointer<vtkRenderPass> MakeVTKShadowMapPass(
 /// offset) and "uniform-bias<B>-offset0" (normal offset 0), and the pairs
 /// "<representation>+<views>": depth, dual or evsm4 on uniform, psm, psm-cube,
 /// lispsm, tsm, gmnpr, csm or csm-lispsm views (e.g. "dual+csm"), and "auto"
-/// (vtkAutomaticShadowMapPass).
+/// (vtkAutomaticShadowMapPass) and "auto-cost6" (the same, CostBudget 6).
 std::vector<std::string> TechniqueNames();
 
 /// The techniques a benchmark measures unless told: TechniqueNames() without

@@ -127,6 +127,7 @@ void PrintUsage(std::ostream& out)
          "                           csm-tight,csm-lispsm,second-depth,midpoint,dual,evsm4\n"
          "                           [all of these] {uniform,lispsm,csm,second-depth,evsm4,auto}\n"
          "                           (auto: vtkAutomaticShadowMapPass, its choice reported;\n"
+         "                           auto-cost6: the same with CostBudget 6;\n"
          "                           R+V: representation R of depth, dual, evsm4 on views V of\n"
          "                           uniform, psm, psm-cube, lispsm, tsm, gmnpr, csm, csm-lispsm)\n"
          "                           (csm: 4 cascades of N/2, stable, tight, or tight with LiSPSM\n"

@@ -6,7 +6,8 @@ namespace shadowmaps
 {
 //------------------------------------------------------------------------------
 bool LightChoices::Update(const std::vector<vtkLight*>& lights,
-  const std::vector<LightSituation>& situations, bool interactive, const std::vector<ViewsRule>& rules)
+  const std::vector<LightSituation>& situations, bool interactive, const std::vector<ViewsRule>& rules,
+  double budget)
 {
   std::vector<Choice> next;
   next.reserve(lights.size());
@@ -25,7 +26,7 @@ bool LightChoices::Update(const std::vector<vtkLight*>& lights,
     else
     {
       const int previous = known != this->Current.end() ? known->Rule : -1;
-      choice.Rule = ChooseViewsRule(rules, situations[i], previous);
+      choice.Rule = ChooseViewsRule(rules, situations[i], previous, budget);
     }
     changed = changed || known == this->Current.end() || known->Rule != choice.Rule;
     next.push_back(choice);

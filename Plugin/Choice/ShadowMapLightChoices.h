@@ -27,10 +27,11 @@ public:
     int Rule = -1;
   };
 
-  /// Chooses for this frame's shadowed lights, in their order; lights no
-  /// longer shadowed are forgotten. Returns whether any light's row changed.
+  /// Chooses for this frame's shadowed lights, in their order, among the rows
+  /// within `budget` (ChooseViewsRule); lights no longer shadowed are
+  /// forgotten. Returns whether any light's row changed.
   bool Update(const std::vector<vtkLight*>& lights, const std::vector<LightSituation>& situations,
-    bool interactive, const std::vector<ViewsRule>& rules);
+    bool interactive, const std::vector<ViewsRule>& rules, double budget = 1.0);
 
   /// This frame's lights and what they got, in the order given to Update.
   const std::vector<Choice>& Choices() const { return this->Current; }

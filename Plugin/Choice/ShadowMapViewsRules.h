@@ -42,21 +42,26 @@ struct ViewsRule
   /// -1: either; 0: perspective cameras only; 1: parallel only.
   int Parallel = -1;
   ViewsKind Views = ViewsKind::Uniform;
+  /// The maps the row's views render for a light, in maps of the pass's
+  /// resolution over what the light's uniform views render (one map; a point
+  /// light's six faces): Kozlov's cube for a sun, up to six.
+  double Cost = 1.0;
 };
 
-/// The measured table, most specific rows first; its last row of each kind
-/// holds every situation of that kind.
+/// The measured table, most preferred rows first; its last row of each kind
+/// holds every situation of that kind at a cost of 1.
 const std::vector<ViewsRule>& ViewsRules();
 
 /// How far past its range's ends (in CosLightView) a light keeps its row.
 constexpr double ViewsRuleMargin = 0.05;
 
-/// The row of `rules` for `situation`, given the light's `previous` row (-1:
-/// none): an earlier row than `previous` once it holds the situation by more
-/// than `margin`, else `previous` while it holds the situation within
-/// `margin`, else the first row that holds it; -1 if none does.
+/// The row of `rules` for `situation` among those whose Cost is at most
+/// `budget`, given the light's `previous` row (-1: none): an earlier row than
+/// `previous` once it holds the situation by more than `margin`, else
+/// `previous` while it holds the situation within `margin`, else the first
+/// row that holds it; -1 if none does.
 int ChooseViewsRule(const std::vector<ViewsRule>& rules, const LightSituation& situation,
-  int previous, double margin = ViewsRuleMargin);
+  int previous, double budget = 1.0, double margin = ViewsRuleMargin);
 } // namespace shadowmaps
 
 #endif

@@ -101,7 +101,7 @@ void vtkAutomaticShadowMapPass::ChooseForFrame(vtkOpenGLRenderer* renderer)
   }
   const std::vector<shadowmaps::ViewsRule>& rules = shadowmaps::ViewsRules();
   r.Choices.Update(lights, situations,
-    shadowmaps::IsInteractiveRender(renderer, this->InteractiveUpdateRate), rules);
+    shadowmaps::IsInteractiveRender(renderer, this->InteractiveUpdateRate), rules, this->CostBudget);
 
   r.Chosen.clear();
   for (const shadowmaps::LightChoices::Choice& choice : r.Choices.Choices())
@@ -174,6 +174,7 @@ void vtkAutomaticShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ViewsChoice: " << this->ViewsChoice << "\n";
+  os << indent << "CostBudget: " << this->CostBudget << "\n";
   const std::vector<int>& chosen = this->Internal->Chosen;
   for (std::size_t i = 0; i < chosen.size(); ++i)
   {

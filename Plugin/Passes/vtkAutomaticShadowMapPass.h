@@ -7,9 +7,10 @@
  * light's kind and where it shines relative to the camera
  * (shadowmaps::LightSituation), by a table measured on the robustness sweep
  * (shadowmaps::ViewsRules(); docs/AUTOMATIC.md gives the figures behind each
- * row): Kozlov's post-perspective cube for suns, the focused uniform map
- * for spots, the uniform cube faces for point lights but those seen side-on
- * (Kozlov's cube); cascades, LiSPSM and TSM are there to pin.
+ * row) within a cost budget (CostBudget): LiSPSM for suns (Kozlov's
+ * post-perspective cube, up to six maps, with a budget of 6), the focused
+ * uniform map for spots, the uniform cube faces for point lights but those
+ * seen side-on (Kozlov's cube); cascades and TSM are there to pin.
  *
  * @code
  * renderer->SetPass(vtkNew<vtkAutomaticShadowMapPass>());
@@ -79,6 +80,20 @@ public:
   void SetViewsChoiceToPSMCube() { this->SetViewsChoice(PSM_CUBE_VIEWS); }
   ///@}
 
+  ///@{
+  /**
+   * The most maps a light's views may render, in maps of the pass's
+   * resolution over what its uniform views render (one map; a point light's
+   * six faces). 1 (default): every light's views cost what the uniform map
+   * does (LiSPSM for suns); 6 or more lets suns have Kozlov's post-perspective
+   * cube, the most accurate views measured, at up to six maps
+   * (docs/AUTOMATIC.md). Clamped to [1, 16]. In still frames a light whose row
+   * the budget no longer allows takes the next row that holds it.
+   */
+  vtkSetFiniteClampMacro(CostBudget, double, 1.0, 16.0);
+  vtkGetMacro(CostBudget, double);
+  ///@}
+
   /** The representations GetChosenRepresentation reports. */
   enum RepresentationType
   {
@@ -114,6 +129,7 @@ protected:
   int GetLayerResolution() override;
 
   int ViewsChoice = AUTOMATIC_VIEWS;
+  double CostBudget = 1.0;
 
 private:
   struct Internals;

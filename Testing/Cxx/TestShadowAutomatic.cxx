@@ -231,22 +231,32 @@ TEST(ShadowAutomatic, ARowIsKeptWithinItsMargin)
   };
   shadowmaps::LightSituation situation;
   situation.CosLightView = 0.02;
-  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, -1, 0.05), 0);
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, -1, 1.0, 0.05), 0);
   situation.CosLightView = -0.02;
-  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, -1, 0.05), 1) << "fresh: the first row holding it";
-  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 0, 0.05), 0) << "within the margin";
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, -1, 1.0, 0.05), 1) << "fresh: the first row holding it";
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 0, 1.0, 0.05), 0) << "within the margin";
   situation.CosLightView = -0.06;
-  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 0, 0.05), 1) << "past the margin";
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 0, 1.0, 0.05), 1) << "past the margin";
   situation.CosLightView = 0.02;
-  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 0.05), 1) << "the wider row keeps it";
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 1.0, 0.05), 1) << "the wider row keeps it";
   situation.CosLightView = 0.06;
-  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 0.05), 0)
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 1.0, 0.05), 0)
     << "the earlier row takes it past the margin";
   situation.CosLightView = 0.98;
-  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 0.05), 0)
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 1.0, 0.05), 0)
     << "the range's end at 1 is no boundary";
   situation.Kind = LightKind::Spot;
-  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 0.05), -1) << "no row for spots";
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(rules, situation, 1, 1.0, 0.05), -1) << "no row for spots";
+
+  // A row over the budget is passed over.
+  const std::vector<shadowmaps::ViewsRule> costly = {
+    { LightKind::Directional, -1.0, 1.0, -1, -1, ViewsKind::PSMCube, 6.0 },
+    { LightKind::Directional, -1.0, 1.0, -1, -1, ViewsKind::LiSPSM, 1.0 },
+  };
+  situation.Kind = LightKind::Directional;
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(costly, situation, -1, 1.0), 1);
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(costly, situation, -1, 6.0), 0);
+  EXPECT_EQ(shadowmaps::ChooseViewsRule(costly, situation, 0, 2.0), 1) << "no longer allowed";
 
   // LightChoices: a known light keeps its row in interactive frames.
   vtkNew<vtkLight> light;
@@ -291,6 +301,16 @@ TEST(ShadowAutomatic, TheUserPinsEveryLightsViewsOrOnes)
   pass->SetLightViews(scene.Spot, nullptr);
   scene.Scene.Window->Render();
   EXPECT_NE(pass->GetChosenViews(1), vtkAutomaticShadowMapPass::USER_VIEWS) << "unpinned";
+
+  // The budget: the sun's one map, or Kozlov's cube of up to six.
+  EXPECT_EQ(pass->GetChosenViews(0), vtkAutomaticShadowMapPass::LISPSM_VIEWS);
+  const int oneMap = pass->GetNumberOfShadowMapLayers();
+  pass->SetCostBudget(6.0);
+  scene.Scene.Window->Render();
+  EXPECT_EQ(pass->GetChosenViews(0), vtkAutomaticShadowMapPass::PSM_CUBE_VIEWS);
+  EXPECT_GT(pass->GetNumberOfShadowMapLayers(), oneMap);
+  pass->SetCostBudget(100.0);
+  EXPECT_EQ(pass->GetCostBudget(), 16.0) << "clamped";
   pass->SetViewsChoice(42);
   EXPECT_EQ(pass->GetViewsChoice(), vtkAutomaticShadowMapPass::AUTOMATIC_VIEWS) << "clamped";
 }
