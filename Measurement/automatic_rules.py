@@ -7,8 +7,11 @@ candidate with the lowest of (median + p95) / 2, and how a technique (the
 automatic pass, by default) compares with the per-case best and with the old
 default (csm).
 
-  automatic_rules.py results.csv [--best-of T,T,...] [--technique auto]
-      [--default csm] [--candidates dual,dual+csm,...]
+  automatic_rules.py results.csv [more.csv ...] [--best-of T,T,...]
+      [--technique auto] [--default csm] [--candidates dual,dual+csm,...]
+
+Several results.csv of the same sweep seed (the same cases, other techniques)
+are read as one; a technique measured in a later file replaces the earlier's.
 """
 import argparse
 import csv
@@ -35,14 +38,15 @@ def class_of(row):
     return f"{row['light_kind']}{behind} cos [{COS_EDGES[band]:+.1f}, {min(COS_EDGES[band + 1], 1.0):+.1f}]"
 
 
-def read_cases(path, minimum_counted):
+def read_cases(paths, minimum_counted):
     cases = defaultdict(dict)
     classes = {}
-    for row in csv.DictReader(open(path)):
-        if int(row["counted"]) < minimum_counted:
-            continue
-        cases[row["seed"]][row["technique"]] = float(row["misclassified"])
-        classes[row["seed"]] = class_of(row)
+    for path in paths:
+        for row in csv.DictReader(open(path)):
+            if int(row["counted"]) < minimum_counted:
+                continue
+            cases[row["seed"]][row["technique"]] = float(row["misclassified"])
+            classes[row["seed"]] = class_of(row)
     return cases, classes
 
 
@@ -52,12 +56,16 @@ def summary(values):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("csv")
+    parser.add_argument("csv", nargs="+")
     parser.add_argument("--candidates", default="dual,dual+csm,dual+tsm,dual+lispsm,dual+psm")
     parser.add_argument("--best-of", default="")
     parser.add_argument("--technique", default="auto")
     parser.add_argument("--default", default="csm")
     parser.add_argument("--min-counted", type=int, default=300)
+    parser.add_argument("--in-sample-rule", action="store_true",
+                        help="also the distribution of the rule that gives each class its "
+                             "candidate of the lowest mean there (the best any rule of the "
+                             "classes can do on these cases)")
     args = parser.parse_args()
     cases, classes = read_cases(args.csv, args.min_counted)
     candidates = args.candidates.split(",")
@@ -83,6 +91,17 @@ def main():
             cells.append(f"{median:.3f} / {p95:.3f}")
         lowest = min(scores, key=scores.get) if scores else "–"
         print(f"| {name} | {len(seeds)} | " + " | ".join(cells) + f" | {lowest} |")
+
+    if args.in_sample_rule:
+        chosen = {}
+        for name, seeds in by_class.items():
+            chosen[name] = min(candidates, key=lambda c: statistics.mean(
+                cases[s][c] for s in seeds if c in cases[s]) if any(
+                c in cases[s] for s in seeds) else float("inf"))
+        values = [cases[s][chosen[classes[s]]] for s in cases if chosen[classes[s]] in cases[s]]
+        median, p95 = summary(values)
+        print(f"\nThe in-sample rule (each class's lowest mean among the candidates): "
+              f"median {median:.3f}, p95 {p95:.3f} over {len(values)} cases")
 
     technique = args.technique
     measured = [s for s in cases if technique in cases[s]]
