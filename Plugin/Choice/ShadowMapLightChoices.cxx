@@ -9,29 +9,32 @@ bool LightChoices::Update(const std::vector<vtkLight*>& lights,
   const std::vector<LightSituation>& situations, bool interactive, const std::vector<ViewsRule>& rules,
   double budget)
 {
-  std::vector<Choice> next;
-  next.reserve(lights.size());
-  bool changed = lights.size() != this->Current.size();
+  this->Known.erase(std::remove_if(this->Known.begin(), this->Known.end(),
+                      [](const Choice& choice) { return !choice.Light; }),
+    this->Known.end());
+  this->Current.clear();
+  bool changed = false;
   for (std::size_t i = 0; i < lights.size() && i < situations.size(); ++i)
   {
-    const auto known = std::find_if(this->Current.begin(), this->Current.end(),
+    auto known = std::find_if(this->Known.begin(), this->Known.end(),
       [&](const Choice& choice) { return choice.Light == lights[i]; });
-    Choice choice;
-    choice.Light = lights[i];
-    choice.Situation = situations[i];
-    if (known != this->Current.end() && interactive)
+    if (known == this->Known.end())
     {
-      choice.Rule = known->Rule;
+      Choice fresh;
+      fresh.Light = lights[i];
+      fresh.Rule = ChooseViewsRule(rules, situations[i], -1, budget);
+      known = this->Known.insert(this->Known.end(), fresh);
+      changed = true;
     }
-    else
+    else if (!interactive)
     {
-      const int previous = known != this->Current.end() ? known->Rule : -1;
-      choice.Rule = ChooseViewsRule(rules, situations[i], previous, budget);
+      const int rule = ChooseViewsRule(rules, situations[i], known->Rule, budget);
+      changed = changed || rule != known->Rule;
+      known->Rule = rule;
     }
-    changed = changed || known == this->Current.end() || known->Rule != choice.Rule;
-    next.push_back(choice);
+    known->Situation = situations[i];
+    this->Current.push_back(*known);
   }
-  this->Current = std::move(next);
   return changed;
 }
 } // namespace shadowmaps

@@ -28,18 +28,19 @@ public:
   };
 
   /// Chooses for this frame's shadowed lights, in their order, among the rows
-  /// within `budget` (ChooseViewsRule); lights no longer shadowed are
-  /// forgotten. Returns whether any light's row changed.
+  /// within `budget` (ChooseViewsRule). Lights not in this frame keep their
+  /// rows (another renderer of the pass may shadow them); deleted lights are
+  /// forgotten. Returns whether any light's row changed or is new.
   bool Update(const std::vector<vtkLight*>& lights, const std::vector<LightSituation>& situations,
     bool interactive, const std::vector<ViewsRule>& rules, double budget = 1.0);
 
   /// This frame's lights and what they got, in the order given to Update.
   const std::vector<Choice>& Choices() const { return this->Current; }
 
-  /// Forgets every choice: the next frame chooses anew.
-  void Clear() { this->Current.clear(); }
-
 private:
+  /// Every light chosen for and not deleted since.
+  std::vector<Choice> Known;
+  /// This frame's lights, in their order.
   std::vector<Choice> Current;
 };
 } // namespace shadowmaps

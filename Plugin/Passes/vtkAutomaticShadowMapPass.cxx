@@ -4,6 +4,7 @@
 #include "ShadowMapSceneReading.h"
 #include "vtkCascadedShadowMapViews.h"
 #include "vtkDualDepthShadowMapRepresentation.h"
+#include "vtkShadowMapExchange.h"
 #include "vtkUniformShadowMapViews.h"
 #include "vtkVarianceShadowMapRepresentation.h"
 #include "vtkWarpedShadowMapViews.h"
@@ -99,9 +100,15 @@ void vtkAutomaticShadowMapPass::ChooseForFrame(vtkOpenGLRenderer* renderer)
     lights.push_back(light.Light);
     situations.push_back(shadowmaps::SituationOf(light, frame.CameraView, parallel));
   }
+  bool interactive = shadowmaps::IsInteractiveRender(renderer, this->InteractiveUpdateRate);
+  if (this->Exchange)
+  {
+    // Every process changes a light's views in the same frame, or their maps
+    // could not combine.
+    interactive = !this->Exchange->AnyOf(!interactive);
+  }
   const std::vector<shadowmaps::ViewsRule>& rules = shadowmaps::ViewsRules();
-  r.Choices.Update(lights, situations,
-    shadowmaps::IsInteractiveRender(renderer, this->InteractiveUpdateRate), rules, this->CostBudget);
+  r.Choices.Update(lights, situations, interactive, rules, this->CostBudget);
 
   r.Chosen.clear();
   for (const shadowmaps::LightChoices::Choice& choice : r.Choices.Choices())

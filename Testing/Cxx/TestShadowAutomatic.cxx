@@ -11,6 +11,7 @@
 #include "vtkAutomaticShadowMapPass.h"
 #include "vtkCascadedShadowMapViews.h"
 #include "vtkDualDepthShadowMapPass.h"
+#include "vtkShadowMapExchange.h"
 #include "vtkUniformShadowMapViews.h"
 #include "vtkWarpedShadowMapViews.h"
 
@@ -20,6 +21,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
+#include "vtkObjectFactory.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -138,6 +140,18 @@ int FreshChoice(double t)
   walk.Scene.Window->Render();
   return pass->GetChosenViews(0);
 }
+/// One process of several whose others render still frames: whatever this
+/// one asks, another says yes (a still frame somewhere, a translucent caster
+/// somewhere); the maps' texels are this process's alone.
+class OthersStill : public vtkShadowMapExchange
+{
+public:
+  static OthersStill* New();
+  vtkTypeMacro(OthersStill, vtkShadowMapExchange);
+  bool AnyOf(bool) override { return true; }
+  bool MinimumOf(std::vector<float>&) override { return true; }
+};
+vtkStandardNewMacro(OthersStill);
 } // namespace
 
 // Each light's views are its row's; the frame is the dual-depth pass's with
@@ -217,6 +231,27 @@ TEST(ShadowAutomatic, ChoicesChangeOnlyInStillFrames)
   walk.Scene.Window->Render();
   EXPECT_EQ(pass->GetChosenViews(0), last);
   EXPECT_GT(pass->GetNumberOfShaderBuilds(), builds) << "the new views' receivers";
+}
+
+// In parallel, a light's views change in the same frame on every process:
+// while another process renders still frames, this one's interactive frames
+// take the new row too.
+TEST(ShadowAutomatic, ProcessesChangeViewsInTheSameFrame)
+{
+  const int last = FreshChoice(1.0);
+  WalkPastALamp walk;
+  vtkNew<vtkAutomaticShadowMapPass> pass;
+  pass->SetResolution(SmallMaps);
+  vtkNew<OthersStill> exchange;
+  pass->SetExchange(exchange);
+  walk.Walk(0.0);
+  walk.Scene.Renderer->SetPass(pass);
+  walk.Scene.Window->Render();
+  ASSERT_NE(pass->GetChosenViews(0), last);
+  walk.Scene.Window->SetDesiredUpdateRate(15.0);
+  walk.Walk(1.0);
+  walk.Scene.Window->Render();
+  EXPECT_EQ(pass->GetChosenViews(0), last) << "an interactive frame here, a still one elsewhere";
 }
 
 // A light keeps its row while its situation stays within the margin past the
