@@ -31,7 +31,9 @@
  * with a views object of the user's pins one light (the pass leaves it
  * alone); SetRepresentation() replaces the dual-depth maps. The choices are
  * read from the light and the camera only, so every process of a parallel
- * renderer chooses the same.
+ * renderer chooses the same, and with an exchange (SetExchange) a frame
+ * counts as interactive only where it is on every process, so that a light's
+ * views change in the same frame on all of them.
  */
 #ifndef vtkAutomaticShadowMapPass_h
 #define vtkAutomaticShadowMapPass_h
