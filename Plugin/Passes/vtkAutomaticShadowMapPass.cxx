@@ -109,6 +109,11 @@ void vtkAutomaticShadowMapPass::ChooseForFrame(vtkOpenGLRenderer* renderer)
   }
   const std::vector<shadowmaps::ViewsRule>& rules = shadowmaps::ViewsRules();
   r.Choices.Update(lights, situations, interactive, rules, this->CostBudget);
+  for (vtkShadowMapViews* candidate : r.Candidates)
+  {
+    // The pass's own parameter, which the base class forwards to its views.
+    candidate->SetInteractiveTexelRatio(this->GetInteractiveTexelRatio());
+  }
 
   r.Chosen.clear();
   for (const shadowmaps::LightChoices::Choice& choice : r.Choices.Choices())

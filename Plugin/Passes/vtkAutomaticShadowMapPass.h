@@ -27,6 +27,8 @@
  * full resolution. All lights share one texture array, so while any light is
  * in cascades every map has half the resolution.
  *
+ * The views it chooses among take the pass's InteractiveTexelRatio.
+ *
  * Pinning: SetViewsChoice() gives every light the same views; SetLightViews()
  * with a views object of the user's pins one light (the pass leaves it
  * alone); SetRepresentation() replaces the dual-depth maps. The choices are

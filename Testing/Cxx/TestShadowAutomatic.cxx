@@ -346,6 +346,11 @@ TEST(ShadowAutomatic, TheUserPinsEveryLightsViewsOrOnes)
   EXPECT_GT(pass->GetNumberOfShadowMapLayers(), oneMap);
   pass->SetCostBudget(100.0);
   EXPECT_EQ(pass->GetCostBudget(), 16.0) << "clamped";
+
+  // The pass's InteractiveTexelRatio reaches the views it chooses.
+  pass->SetInteractiveTexelRatio(1.0);
+  scene.Scene.Window->Render();
+  EXPECT_EQ(pass->GetLightViews(scene.Sun)->GetInteractiveTexelRatio(), 1.0);
   pass->SetViewsChoice(42);
   EXPECT_EQ(pass->GetViewsChoice(), vtkAutomaticShadowMapPass::AUTOMATIC_VIEWS) << "clamped";
 }
