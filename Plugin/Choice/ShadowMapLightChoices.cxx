@@ -5,7 +5,7 @@
 namespace shadowmaps
 {
 //------------------------------------------------------------------------------
-bool LightChoices::Update(const std::vector<vtkLight*>& lights,
+bool LightChoices::Update(vtkRenderer* renderer, const std::vector<vtkLight*>& lights,
   const std::vector<LightSituation>& situations, bool interactive, const std::vector<ViewsRule>& rules,
   double budget)
 {
@@ -22,12 +22,14 @@ bool LightChoices::Update(const std::vector<vtkLight*>& lights,
     {
       Choice fresh;
       fresh.Light = lights[i];
+      fresh.Chooser = renderer;
       fresh.Rule = ChooseViewsRule(rules, situations[i], -1, budget);
       known = this->Known.insert(this->Known.end(), fresh);
       changed = true;
     }
-    else if (!interactive)
+    else if (!interactive && (!known->Chooser || known->Chooser == renderer))
     {
+      known->Chooser = renderer;
       const int rule = ChooseViewsRule(rules, situations[i], known->Rule, budget);
       changed = changed || rule != known->Rule;
       known->Rule = rule;

@@ -9,6 +9,7 @@
 #include "ShadowMapViewsRules.h" // For ViewsRule
 
 #include "vtkLight.h"       // For vtkWeakPointer<vtkLight>
+#include "vtkRenderer.h"    // For vtkWeakPointer<vtkRenderer>
 #include "vtkWeakPointer.h"
 
 #include <vector>
@@ -25,14 +26,20 @@ public:
     LightSituation Situation;
     /// Row of the rules (-1: none held).
     int Rule = -1;
+    /// The renderer whose camera chose the row: only it changes the row
+    /// while it lives, so that a light two renderers see differently does
+    /// not switch at every frame.
+    vtkWeakPointer<vtkRenderer> Chooser;
   };
 
-  /// Chooses for this frame's shadowed lights, in their order, among the rows
-  /// within `budget` (ChooseViewsRule). Lights not in this frame keep their
-  /// rows (another renderer of the pass may shadow them); deleted lights are
-  /// forgotten. Returns whether any light's row changed or is new.
-  bool Update(const std::vector<vtkLight*>& lights, const std::vector<LightSituation>& situations,
-    bool interactive, const std::vector<ViewsRule>& rules, double budget = 1.0);
+  /// Chooses for `renderer`'s frame's shadowed lights, in their order, among
+  /// the rows within `budget` (ChooseViewsRule). Lights not in this frame keep
+  /// their rows (another renderer of the pass may shadow them), as do lights
+  /// another living renderer chose for; deleted lights are forgotten. Returns
+  /// whether any light's row changed or is new.
+  bool Update(vtkRenderer* renderer, const std::vector<vtkLight*>& lights,
+    const std::vector<LightSituation>& situations, bool interactive,
+    const std::vector<ViewsRule>& rules, double budget = 1.0);
 
   /// This frame's lights and what they got, in the order given to Update.
   const std::vector<Choice>& Choices() const { return this->Current; }

@@ -1,5 +1,7 @@
 #include "ShadowMapLightSituation.h"
 
+#include <algorithm>
+
 namespace shadowmaps
 {
 //------------------------------------------------------------------------------
@@ -16,12 +18,17 @@ LightSituation SituationOf(const ShadowLight& light, const glm::dmat4& cameraVie
   const glm::dvec3 eye(eyeToWorld[3]);
   const glm::dvec3 viewDirection = SafeDirection(-glm::dvec3(eyeToWorld[2]));
   glm::dvec3 lightDirection = SafeDirection(light.Direction);
-  if (light.Kind != LightKind::Directional)
+  const glm::dvec3 toEye = eye - light.Position;
+  const bool atTheEye =
+    glm::length(toEye) <= 1e-9 * std::max(1.0, glm::length(eye) + glm::length(light.Position));
+  if (light.Kind != LightKind::Directional && !atTheEye)
   {
-    lightDirection = SafeDirection(eye - light.Position);
+    lightDirection = SafeDirection(toEye);
     const glm::dvec4 lightInEye = cameraView * glm::dvec4(light.Position, 1.0);
     situation.LightBehindCamera = !parallel && lightInEye.z > 0.0;
   }
+  // A light at the eye (a flashlight) shines along its own direction; the
+  // direction to the eye would be rounding noise.
   situation.CosLightView = glm::clamp(glm::dot(viewDirection, lightDirection), -1.0, 1.0);
   return situation;
 }

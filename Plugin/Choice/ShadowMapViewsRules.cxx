@@ -56,7 +56,8 @@ const std::vector<ViewsRule>& ViewsRules()
     { LightKind::Spot, -1.0, 1.0, -1, -1, ViewsKind::Uniform, 1.0 },
     // Point lights seen side-on, in front of the camera: Kozlov's cube (six
     // faces, as the uniform ones); otherwise the uniform cube faces.
-    { LightKind::Point, -0.5, 0.0, 0, -1, ViewsKind::PSM, 1.0 },
+    // (For a perspective camera a cosine below 0 is a light in front of it.)
+    { LightKind::Point, -0.5, 0.0, -1, -1, ViewsKind::PSM, 1.0 },
     { LightKind::Point, -1.0, 1.0, -1, -1, ViewsKind::Uniform, 1.0 },
   };
   return rules;

@@ -87,6 +87,9 @@ vtkDualDepthShadowMapRepresentation* vtkAutomaticShadowMapPass::GetDualDepthRepr
 void vtkAutomaticShadowMapPass::ChooseForFrame(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
+  // Camera lights where this frame's camera puts them (the frame update does
+  // the same later).
+  renderer->UpdateLightsGeometryToFollowCamera();
   int skipped = 0;
   std::vector<vtkLight*> clamped;
   const std::vector<shadowmaps::ShadowLight> shadowed = shadowmaps::CollectShadowedLights(renderer,
@@ -108,7 +111,7 @@ void vtkAutomaticShadowMapPass::ChooseForFrame(vtkOpenGLRenderer* renderer)
     interactive = !this->Exchange->AnyOf(!interactive);
   }
   const std::vector<shadowmaps::ViewsRule>& rules = shadowmaps::ViewsRules();
-  r.Choices.Update(lights, situations, interactive, rules, this->CostBudget);
+  r.Choices.Update(renderer, lights, situations, interactive, rules, this->CostBudget);
   for (vtkShadowMapViews* candidate : r.Candidates)
   {
     // The pass's own parameter, which the base class forwards to its views.

@@ -27,9 +27,12 @@
  * full resolution. All lights share one texture array, so while any light is
  * in cascades every map has half the resolution.
  *
- * The views it chooses among take the pass's InteractiveTexelRatio.
+ * The views it chooses among take the pass's InteractiveTexelRatio. A light
+ * that several renderers of the pass shadow gets the views the first of them
+ * to choose for it chose, from that renderer's camera.
  *
- * Pinning: SetViewsChoice() gives every light the same views; SetLightViews()
+ * Pinning: SetViewsChoice() gives every light the same views (SetViews()
+ * does not: the pass gives each light views of its own); SetLightViews()
  * with a views object of the user's pins one light (the pass leaves it
  * alone); SetRepresentation() replaces the dual-depth maps. The choices are
  * read from the light and the camera only, so every process of a parallel

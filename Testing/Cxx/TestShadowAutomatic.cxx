@@ -254,6 +254,42 @@ TEST(ShadowAutomatic, ProcessesChangeViewsInTheSameFrame)
   EXPECT_EQ(pass->GetChosenViews(0), last) << "an interactive frame here, a still one elsewhere";
 }
 
+// A lamp two renderers of the pass see differently (side-on in one, faced in
+// the other) keeps one views: still frames build no shader after the first.
+TEST(ShadowAutomatic, ALightTwoRenderersSeeDifferentlyKeepsItsViews)
+{
+  WalkPastALamp walk;
+  walk.Walk(1.0);
+  vtkNew<vtkRenderer> other;
+  other->AutomaticLightCreationOff();
+  other->AddLight(vtkLight::SafeDownCast(walk.Scene.Renderer->GetLights()->GetItemAsObject(0)));
+  for (vtkActor* actor : { walk.Scene.Ground.Get(), walk.Scene.Sphere.Get(), walk.Scene.Box.Get() })
+  {
+    other->AddActor(actor);
+  }
+  walk.Scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+  other->SetViewport(0.5, 0.0, 1.0, 1.0);
+  walk.Scene.Window->AddRenderer(other);
+  other->GetActiveCamera()->SetPosition(8.0, -10.0, 3.0);
+  other->GetActiveCamera()->SetFocalPoint(2.0, 0.0, 1.0);
+  other->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+  other->ResetCameraClippingRange();
+  vtkNew<vtkAutomaticShadowMapPass> pass;
+  pass->SetResolution(SmallMaps);
+  walk.Scene.Renderer->SetPass(pass);
+  other->SetPass(pass);
+  walk.Scene.Window->Render();
+  walk.Scene.Window->Render();
+  const int builds = pass->GetNumberOfShaderBuilds();
+  for (int i = 0; i < 3; ++i)
+  {
+    walk.Scene.Window->Render();
+  }
+  EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds);
+  walk.Scene.Renderer->SetPass(nullptr);
+  other->SetPass(nullptr);
+}
+
 // A light keeps its row while its situation stays within the margin past the
 // row's range, and takes the row that holds it beyond.
 TEST(ShadowAutomatic, ARowIsKeptWithinItsMargin)
@@ -298,12 +334,12 @@ TEST(ShadowAutomatic, ARowIsKeptWithinItsMargin)
   shadowmaps::LightChoices choices;
   situation.Kind = LightKind::Directional;
   situation.CosLightView = 0.5;
-  EXPECT_TRUE(choices.Update({ light }, { situation }, true, rules));
+  EXPECT_TRUE(choices.Update(nullptr, { light }, { situation }, true, rules));
   EXPECT_EQ(choices.Choices().front().Rule, 0) << "a new light is chosen for at once";
   situation.CosLightView = -0.5;
-  EXPECT_FALSE(choices.Update({ light }, { situation }, true, rules));
+  EXPECT_FALSE(choices.Update(nullptr, { light }, { situation }, true, rules));
   EXPECT_EQ(choices.Choices().front().Rule, 0);
-  EXPECT_TRUE(choices.Update({ light }, { situation }, false, rules));
+  EXPECT_TRUE(choices.Update(nullptr, { light }, { situation }, false, rules));
   EXPECT_EQ(choices.Choices().front().Rule, 1);
 }
 
