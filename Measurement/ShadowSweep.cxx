@@ -4,8 +4,6 @@
 #include "ShadowScenes.h"
 #include "ShadowTechniques.h"
 
-#include "ShadowMapSceneReading.h"
-
 #include "vtkAbstractShadowMapPass.h"
 
 #include <vtkCamera.h>
@@ -510,15 +508,9 @@ TechniqueResult MeasureTechnique(SceneView& view, const Case& drawn, const std::
 /// The situation of the renderer's first shadowed light, as the automatic pass reads it.
 shadowmaps::LightSituation SituationOfFirstLight(vtkRenderer* renderer)
 {
-  int skipped = 0;
-  std::vector<vtkLight*> clamped;
-  const std::vector<shadowmaps::ShadowLight> lights = shadowmaps::CollectShadowedLights(renderer,
-    vtkAbstractShadowMapPass::CASTS_SHADOWS(), vtkAbstractShadowMapPass::LIGHT_SIZE(), 1, skipped,
-    clamped);
-  shadowmaps::ShadowFrame frame;
-  const bool parallel = shadowmaps::ReadSceneCamera(renderer, frame).Parallel;
-  return lights.empty() ? shadowmaps::LightSituation()
-                        : shadowmaps::SituationOf(lights.front(), frame.CameraView, parallel);
+  const std::vector<shadowmaps::SituatedLight> lights = shadowmaps::ReadLightSituations(renderer,
+    vtkAbstractShadowMapPass::CASTS_SHADOWS(), vtkAbstractShadowMapPass::LIGHT_SIZE(), 1);
+  return lights.empty() ? shadowmaps::LightSituation() : lights.front().Situation;
 }
 
 CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& options)

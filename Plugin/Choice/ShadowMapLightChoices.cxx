@@ -5,36 +5,35 @@
 namespace shadowmaps
 {
 //------------------------------------------------------------------------------
-bool LightChoices::Update(vtkRenderer* renderer, const std::vector<vtkLight*>& lights,
-  const std::vector<LightSituation>& situations, bool interactive, const std::vector<ViewsRule>& rules,
-  double budget)
+bool LightChoices::Update(vtkRenderer* renderer, const std::vector<SituatedLight>& lights,
+  bool interactive, const std::vector<ViewsRule>& rules, double budget)
 {
   this->Known.erase(std::remove_if(this->Known.begin(), this->Known.end(),
                       [](const Choice& choice) { return !choice.Light; }),
     this->Known.end());
   this->Current.clear();
   bool changed = false;
-  for (std::size_t i = 0; i < lights.size() && i < situations.size(); ++i)
+  for (const SituatedLight& light : lights)
   {
     auto known = std::find_if(this->Known.begin(), this->Known.end(),
-      [&](const Choice& choice) { return choice.Light == lights[i]; });
+      [&](const Choice& choice) { return choice.Light == light.Light; });
     if (known == this->Known.end())
     {
       Choice fresh;
-      fresh.Light = lights[i];
+      fresh.Light = light.Light;
       fresh.Chooser = renderer;
-      fresh.Rule = ChooseViewsRule(rules, situations[i], -1, budget);
+      fresh.Rule = ChooseViewsRule(rules, light.Situation, -1, budget);
       known = this->Known.insert(this->Known.end(), fresh);
       changed = true;
     }
     else if (!interactive && (!known->Chooser || known->Chooser == renderer))
     {
       known->Chooser = renderer;
-      const int rule = ChooseViewsRule(rules, situations[i], known->Rule, budget);
+      const int rule = ChooseViewsRule(rules, light.Situation, known->Rule, budget);
       changed = changed || rule != known->Rule;
       known->Rule = rule;
     }
-    known->Situation = situations[i];
+    known->Situation = light.Situation;
     this->Current.push_back(*known);
   }
   return changed;

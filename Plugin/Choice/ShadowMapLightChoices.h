@@ -37,8 +37,7 @@ public:
   /// their rows (another renderer of the pass may shadow them), as do lights
   /// another living renderer chose for; deleted lights are forgotten. Returns
   /// whether any light's row changed or is new.
-  bool Update(vtkRenderer* renderer, const std::vector<vtkLight*>& lights,
-    const std::vector<LightSituation>& situations, bool interactive,
+  bool Update(vtkRenderer* renderer, const std::vector<SituatedLight>& lights, bool interactive,
     const std::vector<ViewsRule>& rules, double budget = 1.0);
 
   /// This frame's lights and what they got, in the order given to Update.

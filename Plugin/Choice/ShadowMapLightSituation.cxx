@@ -1,5 +1,9 @@
 #include "ShadowMapLightSituation.h"
 
+#include "ShadowMapSceneReading.h"
+
+#include "vtkRenderer.h"
+
 #include <algorithm>
 
 namespace shadowmaps
@@ -31,6 +35,26 @@ LightSituation SituationOf(const ShadowLight& light, const glm::dmat4& cameraVie
   // direction to the eye would be rounding noise.
   situation.CosLightView = glm::clamp(glm::dot(viewDirection, lightDirection), -1.0, 1.0);
   return situation;
+}
+
+//------------------------------------------------------------------------------
+std::vector<SituatedLight> ReadLightSituations(vtkRenderer* renderer,
+  vtkInformationIntegerKey* castsShadows, vtkInformationDoubleKey* lightSize, int maximum)
+{
+  // Camera lights where this frame's camera puts them (the frame update does
+  // the same later).
+  renderer->UpdateLightsGeometryToFollowCamera();
+  int skipped = 0;
+  std::vector<vtkLight*> clamped;
+  ShadowFrame frame;
+  const bool parallel = ReadSceneCamera(renderer, frame).Parallel;
+  std::vector<SituatedLight> situated;
+  for (const ShadowLight& light :
+    CollectShadowedLights(renderer, castsShadows, lightSize, maximum, skipped, clamped))
+  {
+    situated.push_back({ light.Light, SituationOf(light, frame.CameraView, parallel) });
+  }
+  return situated;
 }
 
 //------------------------------------------------------------------------------

@@ -10,6 +10,11 @@
 #include <glm/glm.hpp>
 
 #include <string>
+#include <vector>
+
+class vtkInformationDoubleKey;
+class vtkInformationIntegerKey;
+class vtkRenderer;
 
 namespace shadowmaps
 {
@@ -32,6 +37,19 @@ struct LightSituation
 /// seen by a camera of world-to-eye `cameraView` (VTK's eye space, looking
 /// down -z).
 LightSituation SituationOf(const ShadowLight& light, const glm::dmat4& cameraView, bool parallel);
+
+/// A shadowed light and its situation.
+struct SituatedLight
+{
+  vtkLight* Light = nullptr;
+  LightSituation Situation;
+};
+
+/// `renderer`'s shadowed lights (CollectShadowedLights: `castsShadows`,
+/// `lightSize`, at most `maximum`) and their situations seen by its active
+/// camera, camera lights placed for that camera first.
+std::vector<SituatedLight> ReadLightSituations(vtkRenderer* renderer,
+  vtkInformationIntegerKey* castsShadows, vtkInformationDoubleKey* lightSize, int maximum);
 
 /// "sun", "spot" or "point" (cube faces).
 std::string KindName(LightKind kind);

@@ -87,22 +87,8 @@ vtkDualDepthShadowMapRepresentation* vtkAutomaticShadowMapPass::GetDualDepthRepr
 void vtkAutomaticShadowMapPass::ChooseForFrame(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  // Camera lights where this frame's camera puts them (the frame update does
-  // the same later).
-  renderer->UpdateLightsGeometryToFollowCamera();
-  int skipped = 0;
-  std::vector<vtkLight*> clamped;
-  const std::vector<shadowmaps::ShadowLight> shadowed = shadowmaps::CollectShadowedLights(renderer,
-    CASTS_SHADOWS(), LIGHT_SIZE(), VTK_MAX_SHADOWED_LIGHTS, skipped, clamped);
-  shadowmaps::ShadowFrame frame;
-  const bool parallel = shadowmaps::ReadSceneCamera(renderer, frame).Parallel;
-  std::vector<vtkLight*> lights;
-  std::vector<shadowmaps::LightSituation> situations;
-  for (const shadowmaps::ShadowLight& light : shadowed)
-  {
-    lights.push_back(light.Light);
-    situations.push_back(shadowmaps::SituationOf(light, frame.CameraView, parallel));
-  }
+  const std::vector<shadowmaps::SituatedLight> lights = shadowmaps::ReadLightSituations(
+    renderer, CASTS_SHADOWS(), LIGHT_SIZE(), VTK_MAX_SHADOWED_LIGHTS);
   bool interactive = shadowmaps::IsInteractiveRender(renderer, this->InteractiveUpdateRate);
   if (this->Exchange)
   {
@@ -111,7 +97,7 @@ void vtkAutomaticShadowMapPass::ChooseForFrame(vtkOpenGLRenderer* renderer)
     interactive = !this->Exchange->AnyOf(!interactive);
   }
   const std::vector<shadowmaps::ViewsRule>& rules = shadowmaps::ViewsRules();
-  r.Choices.Update(renderer, lights, situations, interactive, rules, this->CostBudget);
+  r.Choices.Update(renderer, lights, interactive, rules, this->CostBudget);
   for (vtkShadowMapViews* candidate : r.Candidates)
   {
     // The pass's own parameter, which the base class forwards to its views.

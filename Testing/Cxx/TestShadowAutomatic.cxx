@@ -334,12 +334,12 @@ TEST(ShadowAutomatic, ARowIsKeptWithinItsMargin)
   shadowmaps::LightChoices choices;
   situation.Kind = LightKind::Directional;
   situation.CosLightView = 0.5;
-  EXPECT_TRUE(choices.Update(nullptr, { light }, { situation }, true, rules));
+  EXPECT_TRUE(choices.Update(nullptr, { { light, situation } }, true, rules));
   EXPECT_EQ(choices.Choices().front().Rule, 0) << "a new light is chosen for at once";
   situation.CosLightView = -0.5;
-  EXPECT_FALSE(choices.Update(nullptr, { light }, { situation }, true, rules));
+  EXPECT_FALSE(choices.Update(nullptr, { { light, situation } }, true, rules));
   EXPECT_EQ(choices.Choices().front().Rule, 0);
-  EXPECT_TRUE(choices.Update(nullptr, { light }, { situation }, false, rules));
+  EXPECT_TRUE(choices.Update(nullptr, { { light, situation } }, false, rules));
   EXPECT_EQ(choices.Choices().front().Rule, 1);
 }
 
