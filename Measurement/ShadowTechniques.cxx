@@ -362,7 +362,7 @@ std::vector<std::string> QuickTechniqueNames()
 std::vector<std::string> TechniqueNames()
 {
   std::vector<std::string> names = DefaultTechniqueNames();
-  names.insert(names.end(), { "auto", "auto-cost6", "psm-cube", "psm-single", "dual-minblend", "dual-peel", "vsm",
+  names.insert(names.end(), { "auto", "auto-cost6", "auto-full-drag", "psm-cube", "psm-single", "dual-minblend", "dual-peel", "vsm",
                               "evsm2", "msm", "esm", "pcf3", "poisson" });
   const std::vector<std::string> variants = MomentVariantNames();
   names.insert(names.end(), variants.begin(), variants.end());
@@ -428,11 +428,15 @@ TechniqueInstance MakeTechnique(const std::string& name, bool pointLight, int re
   TechniqueInstance technique;
   std::string pairRepresentation;
   std::string pairViews;
-  if (name == "auto" || name == "auto-cost6")
+  if (name.rfind("auto", 0) == 0)
   {
     auto pass = vtkSmartPointer<vtkAutomaticShadowMapPass>::New();
     pass->SetResolution(resolution); // halved by the pass for cascades
-    pass->SetCostBudget(name == "auto" ? 1.0 : 6.0);
+    pass->SetCostBudget(name == "auto-cost6" ? 6.0 : 1.0);
+    if (name == "auto-full-drag")
+    {
+      pass->SetInteractiveResolutionScale(1.0);
+    }
     technique.Ours = pass;
     technique.Pass = pass;
     technique.Resolution = resolution;

@@ -127,21 +127,21 @@ bool TextureArray::Reserve(int resolution, int layers, TexelFormat format, bool 
   std::string& error, bool depthTest)
 {
   mipmaps = mipmaps && !IsDepth(format);
-  if (this->Texture != 0 && this->Resolution == resolution && this->Layers >= layers &&
-    this->Format == format && this->Mipmaps == mipmaps && this->DepthTest == depthTest)
+  if (this->H.Texture != 0 && this->H.Resolution == resolution && this->H.Layers >= layers &&
+    this->H.Format == format && this->H.Mipmaps == mipmaps && this->H.DepthTest == depthTest)
   {
     return true;
   }
   this->Release();
-  ++this->Allocations;
+  ++this->H.Allocations;
   ClearGLErrors();
   ScopedTextureBinding keep(true);
-  this->Format = format;
-  this->Mipmaps = mipmaps;
-  this->DepthTest = depthTest;
+  this->H.Format = format;
+  this->H.Mipmaps = mipmaps;
+  this->H.DepthTest = depthTest;
 
-  glGenTextures(1, &this->Texture);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glGenTextures(1, &this->H.Texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->H.Texture);
   if (IsDepth(format))
   {
     this->AllocateDepthLayers(resolution, layers, format);
@@ -152,10 +152,10 @@ bool TextureArray::Reserve(int resolution, int layers, TexelFormat format, bool 
   }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  this->LinearFiltering = -1;
+  this->H.LinearFiltering = -1;
   this->ApplyFiltering(true);
 
-  glGenFramebuffers(1, &this->Framebuffer);
+  glGenFramebuffers(1, &this->H.Framebuffer);
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
   {
@@ -164,8 +164,8 @@ bool TextureArray::Reserve(int resolution, int layers, TexelFormat format, bool 
     this->Release();
     return false;
   }
-  this->Resolution = resolution;
-  this->Layers = layers;
+  this->H.Resolution = resolution;
+  this->H.Layers = layers;
   return true;
 }
 
@@ -180,42 +180,42 @@ void TextureArray::AllocateDepthLayers(int resolution, int layers, TexelFormat f
 
 void TextureArray::AllocateValueLayers(int resolution, int layers, TexelFormat format)
 {
-  AllocateValueLevels(resolution, layers, format, this->Mipmaps ? MipmapLevels(resolution) : 1);
-  if (!this->DepthTest)
+  AllocateValueLevels(resolution, layers, format, this->H.Mipmaps ? MipmapLevels(resolution) : 1);
+  if (!this->H.DepthTest)
   {
     return;
   }
-  glGenRenderbuffers(1, &this->DepthBuffer);
-  glBindRenderbuffer(GL_RENDERBUFFER, this->DepthBuffer);
+  glGenRenderbuffers(1, &this->H.DepthBuffer);
+  glBindRenderbuffer(GL_RENDERBUFFER, this->H.DepthBuffer);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, resolution, resolution);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
 }
 
 bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& error, bool secondOutput)
 {
-  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer);
-  if (secondOutput && this->SecondOutput == 0)
+  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->H.Framebuffer);
+  if (secondOutput && this->H.SecondOutput == 0)
   {
     ScopedTextureBinding keep(false);
-    glGenTextures(1, &this->SecondOutput);
-    glBindTexture(GL_TEXTURE_2D, this->SecondOutput);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, this->Resolution, this->Resolution, 0, GL_RED,
+    glGenTextures(1, &this->H.SecondOutput);
+    glBindTexture(GL_TEXTURE_2D, this->H.SecondOutput);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, this->H.Resolution, this->H.Resolution, 0, GL_RED,
       GL_FLOAT, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
-  const GLuint second = secondOutput ? this->SecondOutput : 0;
-  if (IsDepth(this->Format))
+  const GLuint second = secondOutput ? this->H.SecondOutput : 0;
+  if (IsDepth(this->H.Format))
   {
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->H.Texture, 0, layer);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, second, 0);
     const unsigned int outputs[2] = { GL_NONE, GL_COLOR_ATTACHMENT0 };
     SelectBuffers(state, secondOutput ? 2 : 1, outputs, GL_NONE);
   }
   else
   {
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->Texture, 0, layer);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->DepthBuffer);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, this->H.Texture, 0, layer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->H.DepthBuffer);
     // Detached when not asked for: a texture sampled while attached would
     // make a feedback loop.
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, second, 0);
@@ -235,30 +235,30 @@ bool TextureArray::BindLayer(vtkOpenGLState* state, int layer, std::string& erro
 
 bool TextureArray::BindSamples(vtkOpenGLState* state, int samples, std::string& error)
 {
-  if (this->SampleFramebuffer != 0 && this->Samples != samples)
+  if (this->H.SampleFramebuffer != 0 && this->H.Samples != samples)
   {
     this->ReleaseSamples();
   }
-  if (this->SampleFramebuffer == 0)
+  if (this->H.SampleFramebuffer == 0)
   {
     ClearGLErrors();
-    glGenRenderbuffers(1, &this->SampleColor);
-    glBindRenderbuffer(GL_RENDERBUFFER, this->SampleColor);
+    glGenRenderbuffers(1, &this->H.SampleColor);
+    glBindRenderbuffer(GL_RENDERBUFFER, this->H.SampleColor);
     glRenderbufferStorageMultisample(
-      GL_RENDERBUFFER, samples, InternalFormat(this->Format), this->Resolution, this->Resolution);
-    glGenRenderbuffers(1, &this->SampleDepth);
-    glBindRenderbuffer(GL_RENDERBUFFER, this->SampleDepth);
+      GL_RENDERBUFFER, samples, InternalFormat(this->H.Format), this->H.Resolution, this->H.Resolution);
+    glGenRenderbuffers(1, &this->H.SampleDepth);
+    glBindRenderbuffer(GL_RENDERBUFFER, this->H.SampleDepth);
     glRenderbufferStorageMultisample(
-      GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, this->Resolution, this->Resolution);
+      GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, this->H.Resolution, this->H.Resolution);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
-    glGenFramebuffers(1, &this->SampleFramebuffer);
+    glGenFramebuffers(1, &this->H.SampleFramebuffer);
     // GL may round the count up to one it supports: the memory counts those.
     GLint allocated = samples;
-    glBindRenderbuffer(GL_RENDERBUFFER, this->SampleColor);
+    glBindRenderbuffer(GL_RENDERBUFFER, this->H.SampleColor);
     glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &allocated);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
-    this->Samples = samples;
-    this->AllocatedSamples = std::max(static_cast<int>(allocated), samples);
+    this->H.Samples = samples;
+    this->H.AllocatedSamples = std::max(static_cast<int>(allocated), samples);
     const GLenum code = glGetError();
     if (code != GL_NO_ERROR)
     {
@@ -268,9 +268,9 @@ bool TextureArray::BindSamples(vtkOpenGLState* state, int samples, std::string& 
       return false;
     }
   }
-  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->SampleFramebuffer);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, this->SampleColor);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->SampleDepth);
+  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->H.SampleFramebuffer);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, this->H.SampleColor);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->H.SampleDepth);
   const unsigned int output = GL_COLOR_ATTACHMENT0;
   SelectBuffers(state, 1, &output, GL_COLOR_ATTACHMENT0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
@@ -287,13 +287,13 @@ bool TextureArray::ResolveSamples(vtkOpenGLState* state, int layer, std::string&
   {
     return false;
   }
-  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, this->SampleFramebuffer);
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, this->H.SampleFramebuffer);
   state->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
   ClearGLErrors();
-  glBlitFramebuffer(0, 0, this->Resolution, this->Resolution, 0, 0, this->Resolution,
-    this->Resolution, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBlitFramebuffer(0, 0, this->H.Resolution, this->H.Resolution, 0, 0, this->H.Resolution,
+    this->H.Resolution, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   const GLenum code = glGetError();
-  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, this->Framebuffer);
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, this->H.Framebuffer);
   if (code != GL_NO_ERROR)
   {
     error = "cannot resolve the shadow map's samples (" + GLErrorText(code) + ")";
@@ -304,21 +304,21 @@ bool TextureArray::ResolveSamples(vtkOpenGLState* state, int layer, std::string&
 
 void TextureArray::ReleaseSamples()
 {
-  DeleteFramebuffer(this->SampleFramebuffer);
-  DeleteRenderbuffer(this->SampleColor);
-  DeleteRenderbuffer(this->SampleDepth);
-  this->Samples = 0;
-  this->AllocatedSamples = 0;
+  DeleteFramebuffer(this->H.SampleFramebuffer);
+  DeleteRenderbuffer(this->H.SampleColor);
+  DeleteRenderbuffer(this->H.SampleDepth);
+  this->H.Samples = 0;
+  this->H.AllocatedSamples = 0;
 }
 
 void TextureArray::SetLinearFiltering(bool linear)
 {
-  if (this->Texture == 0 || this->LinearFiltering == static_cast<int>(linear))
+  if (this->H.Texture == 0 || this->H.LinearFiltering == static_cast<int>(linear))
   {
     return;
   }
   ScopedTextureBinding keep(true);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->H.Texture);
   this->ApplyFiltering(linear);
 }
 
@@ -326,35 +326,35 @@ void TextureArray::SetLinearFiltering(bool linear)
 void TextureArray::ApplyFiltering(bool linear)
 {
   GLint minification = linear ? GL_LINEAR : GL_NEAREST;
-  if (linear && this->Mipmaps)
+  if (linear && this->H.Mipmaps)
   {
     minification = GL_LINEAR_MIPMAP_LINEAR;
   }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, minification);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, linear ? GL_LINEAR : GL_NEAREST);
-  this->LinearFiltering = static_cast<int>(linear);
+  this->H.LinearFiltering = static_cast<int>(linear);
 }
 
 void TextureArray::SetDepthComparison(bool compare)
 {
-  if (this->Texture == 0 || !IsDepth(this->Format))
+  if (this->H.Texture == 0 || !IsDepth(this->H.Format))
   {
     return;
   }
   ScopedTextureBinding keep(true);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->H.Texture);
   glTexParameteri(
     GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
 }
 
 void TextureArray::GenerateMipmaps()
 {
-  if (this->Texture == 0 || !this->Mipmaps)
+  if (this->H.Texture == 0 || !this->H.Mipmaps)
   {
     return;
   }
   ScopedTextureBinding keep(true);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->H.Texture);
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
 }
 
@@ -369,25 +369,25 @@ GLenum TexelsAsFloats(TexelFormat format)
 
 std::size_t TextureArray::FloatsPerLayer() const
 {
-  const int channels = IsDepth(this->Format) ? 1 : ValueChannels(this->Format);
-  return static_cast<std::size_t>(this->Resolution) * this->Resolution * channels;
+  const int channels = IsDepth(this->H.Format) ? 1 : ValueChannels(this->H.Format);
+  return static_cast<std::size_t>(this->H.Resolution) * this->H.Resolution * channels;
 }
 
 bool TextureArray::ReadTexels(
   vtkOpenGLState* state, int layers, std::vector<float>& texels, std::string& error) const
 {
-  if (this->Texture == 0 || layers < 1 || layers > this->Layers)
+  if (this->H.Texture == 0 || layers < 1 || layers > this->H.Layers)
   {
     error = "no such shadow maps to read";
     return false;
   }
-  texels.resize(this->FloatsPerLayer() * this->Layers);
+  texels.resize(this->FloatsPerLayer() * this->H.Layers);
   ScopedTextureBinding keep(true);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->H.Texture);
   ClearGLErrors();
   state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
   // GL reads a whole level: every allocated layer, then the used ones are kept.
-  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, TexelsAsFloats(this->Format), GL_FLOAT, texels.data());
+  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, TexelsAsFloats(this->H.Format), GL_FLOAT, texels.data());
   texels.resize(this->FloatsPerLayer() * layers);
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
@@ -401,18 +401,18 @@ bool TextureArray::ReadTexels(
 bool TextureArray::WriteTexels(
   vtkOpenGLState* state, int layers, const std::vector<float>& texels, std::string& error)
 {
-  if (this->Texture == 0 || layers < 1 || layers > this->Layers ||
+  if (this->H.Texture == 0 || layers < 1 || layers > this->H.Layers ||
     texels.size() != this->FloatsPerLayer() * layers)
   {
     error = "no shadow maps of that size to write";
     return false;
   }
   ScopedTextureBinding keep(true);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->H.Texture);
   ClearGLErrors();
   state->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, this->Resolution, this->Resolution, layers,
-    TexelsAsFloats(this->Format), GL_FLOAT, texels.data());
+  glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, this->H.Resolution, this->H.Resolution, layers,
+    TexelsAsFloats(this->H.Format), GL_FLOAT, texels.data());
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
   {
@@ -425,7 +425,7 @@ bool TextureArray::WriteTexels(
 void TextureArray::BindToUnit(vtkOpenGLState* state, int unit) const
 {
   state->vtkglActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->H.Texture);
 }
 
 bool SamplerObjectsAvailable()
@@ -439,17 +439,17 @@ bool TextureArray::BindRawDepthToUnit(vtkOpenGLState* state, int unit)
   {
     return false;
   }
-  if (this->RawDepthSampler == 0)
+  if (this->H.RawDepthSampler == 0)
   {
-    glGenSamplers(1, &this->RawDepthSampler);
-    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glGenSamplers(1, &this->H.RawDepthSampler);
+    glSamplerParameteri(this->H.RawDepthSampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(this->H.RawDepthSampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(this->H.RawDepthSampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(this->H.RawDepthSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(this->H.RawDepthSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
   this->BindToUnit(state, unit);
-  glBindSampler(static_cast<GLuint>(unit), this->RawDepthSampler);
+  glBindSampler(static_cast<GLuint>(unit), this->H.RawDepthSampler);
   return true;
 }
 
@@ -465,41 +465,41 @@ void TextureArray::UnbindRawDepth(vtkOpenGLState* state, int unit)
 
 void TextureArray::ReleaseSecondOutput()
 {
-  DeleteTexture(this->SecondOutput);
+  DeleteTexture(this->H.SecondOutput);
 }
 
 void TextureArray::Release()
 {
-  DeleteFramebuffer(this->Framebuffer);
+  DeleteFramebuffer(this->H.Framebuffer);
   this->ReleaseSecondOutput();
   this->ReleaseSamples();
-  DeleteRenderbuffer(this->DepthBuffer);
-  DeleteTexture(this->Texture);
-  if (this->RawDepthSampler != 0)
+  DeleteRenderbuffer(this->H.DepthBuffer);
+  DeleteTexture(this->H.Texture);
+  if (this->H.RawDepthSampler != 0)
   {
-    glDeleteSamplers(1, &this->RawDepthSampler);
-    this->RawDepthSampler = 0;
+    glDeleteSamplers(1, &this->H.RawDepthSampler);
+    this->H.RawDepthSampler = 0;
   }
-  this->Resolution = 0;
-  this->Layers = 0;
-  this->LinearFiltering = -1;
+  this->H.Resolution = 0;
+  this->H.Layers = 0;
+  this->H.LinearFiltering = -1;
 }
 
 std::size_t TextureArray::GetMemoryBytes() const
 {
-  const std::size_t texels = static_cast<std::size_t>(this->Resolution) * this->Resolution;
-  const std::size_t secondOutput = this->SecondOutput != 0 ? texels * 4 : 0;
-  const std::size_t layers = texels * this->Layers * TexelBytes(this->Format);
-  if (IsDepth(this->Format))
+  const std::size_t texels = static_cast<std::size_t>(this->H.Resolution) * this->H.Resolution;
+  const std::size_t secondOutput = this->H.SecondOutput != 0 ? texels * 4 : 0;
+  const std::size_t layers = texels * this->H.Layers * TexelBytes(this->H.Format);
+  if (IsDepth(this->H.Format))
   {
     return layers + secondOutput;
   }
   // A full mipmap chain adds a third; the depth buffer is shared by all layers.
   const std::size_t values = layers;
   const std::size_t samples =
-    texels * static_cast<std::size_t>(this->AllocatedSamples) * (TexelBytes(this->Format) + 4);
-  const std::size_t depth = this->DepthBuffer != 0 ? texels * 4 : 0;
-  return (this->Mipmaps ? values + values / 3 : values) + depth + secondOutput + samples;
+    texels * static_cast<std::size_t>(this->H.AllocatedSamples) * (TexelBytes(this->H.Format) + 4);
+  const std::size_t depth = this->H.DepthBuffer != 0 ? texels * 4 : 0;
+  return (this->H.Mipmaps ? values + values / 3 : values) + depth + secondOutput + samples;
 }
 
 } // namespace shadowmaps

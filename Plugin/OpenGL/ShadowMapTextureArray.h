@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkOpenGLState;
@@ -154,7 +155,7 @@ public:
   bool ResolveSamples(vtkOpenGLState* state, int layer, std::string& error);
 
   /// The colour buffer of BindLayer's secondOutput (0 before its first use).
-  unsigned int GetSecondOutput() const { return this->SecondOutput; }
+  unsigned int GetSecondOutput() const { return this->H.SecondOutput; }
 
   /// Frees that buffer while no view needs it (it is made again on demand).
   void ReleaseSecondOutput();
@@ -181,12 +182,12 @@ public:
   bool WriteTexels(
     vtkOpenGLState* state, int layers, const std::vector<float>& texels, std::string& error);
 
-  TexelFormat GetFormat() const { return this->Format; }
-  unsigned int GetTextureName() const { return this->Texture; }
-  int GetResolution() const { return this->Resolution; }
+  TexelFormat GetFormat() const { return this->H.Format; }
+  unsigned int GetTextureName() const { return this->H.Texture; }
+  int GetResolution() const { return this->H.Resolution; }
 
   /// Counts the allocations so far: layers keep their content while it stays the same.
-  unsigned long GetAllocations() const { return this->Allocations; }
+  unsigned long GetAllocations() const { return this->H.Allocations; }
 
   /// Binds the texture to texture unit `unit`, which it leaves active (through
   /// the state cache, which VTK's textures rely on to find their units).
@@ -204,6 +205,10 @@ public:
 
   void Release();
 
+  /// Exchanges what this array and `other` hold (GL objects, contents and
+  /// allocation counts), allocating nothing.
+  void Swap(TextureArray& other) noexcept { std::swap(this->H, other.H); }
+
   std::size_t GetMemoryBytes() const;
 
 private:
@@ -213,23 +218,28 @@ private:
   /// Floats of one layer's texels for ReadTexels and WriteTexels.
   std::size_t FloatsPerLayer() const;
 
-  unsigned int Texture = 0;
-  unsigned int Framebuffer = 0;
-  unsigned int DepthBuffer = 0; // value formats only
-  unsigned int SecondOutput = 0; // BindLayer's secondOutput, made on first use
-  unsigned int SampleFramebuffer = 0; // BindSamples' buffers, made on first use
-  unsigned int SampleColor = 0;
-  unsigned int SampleDepth = 0;
-  unsigned int RawDepthSampler = 0; // BindRawDepthToUnit's, made on first use
-  int Samples = 0;
-  int AllocatedSamples = 0;
-  TexelFormat Format = TexelFormat::Depth;
-  bool Mipmaps = false;
-  bool DepthTest = true;
-  int Resolution = 0;
-  int Layers = 0;
-  int LinearFiltering = -1;
-  unsigned long Allocations = 0;
+  // Everything the array holds, in one place so that Swap exchanges all of it.
+  struct Held
+  {
+    unsigned int Texture = 0;
+    unsigned int Framebuffer = 0;
+    unsigned int DepthBuffer = 0; // value formats only
+    unsigned int SecondOutput = 0; // BindLayer's secondOutput, made on first use
+    unsigned int SampleFramebuffer = 0; // BindSamples' buffers, made on first use
+    unsigned int SampleColor = 0;
+    unsigned int SampleDepth = 0;
+    unsigned int RawDepthSampler = 0; // BindRawDepthToUnit's, made on first use
+    int Samples = 0;
+    int AllocatedSamples = 0;
+    TexelFormat Format = TexelFormat::Depth;
+    bool Mipmaps = false;
+    bool DepthTest = true;
+    int Resolution = 0;
+    int Layers = 0;
+    int LinearFiltering = -1;
+    unsigned long Allocations = 0;
+  };
+  Held H;
 };
 
 } // namespace shadowmaps

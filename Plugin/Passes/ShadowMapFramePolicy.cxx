@@ -53,8 +53,13 @@ std::vector<vtkMTimeType> FramePolicy::Signature(vtkRenderer* renderer, vtkMTime
 bool FramePolicy::MustRender(
   const MapUpdates& updates, const std::vector<vtkMTimeType>& signature) const
 {
-  const bool stale = !updates.Current(signature);
-  return this->Exchange ? this->Exchange->AnyOf(stale) : stale;
+  return this->AnyProcess(!updates.Current(signature));
+}
+
+//------------------------------------------------------------------------------
+bool FramePolicy::AnyProcess(bool here) const
+{
+  return this->Exchange ? this->Exchange->AnyOf(here) : here;
 }
 
 //------------------------------------------------------------------------------

@@ -68,6 +68,11 @@ public:
   /// casters may have moved).
   bool MustRender(const MapUpdates& updates, const std::vector<vtkMTimeType>& signature) const;
 
+  /// Whether `here` holds on this process or on any other (every process
+  /// asks, in the same order): decisions every process must take alike, such
+  /// as drawing a drag's layers coarser when any process draws one.
+  bool AnyProcess(bool here) const;
+
   /// How the processes' maps of `storage` combine (None on one process).
   Combination CombinationFor(const MapStorage& storage) const;
 

@@ -17,6 +17,7 @@
 #include "ShadowMapVTKCompat.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <sstream>
 
@@ -53,6 +54,12 @@ bool IsNonFinite(const LightView& view)
 vtkOpenGLRenderWindow* WindowOf(vtkOpenGLRenderer* renderer)
 {
   return static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+}
+
+bool AnyRenders(const std::vector<LayerPlan>& plans)
+{
+  return std::any_of(
+    plans.begin(), plans.end(), [](const LayerPlan& plan) { return plan.Render; });
 }
 } // namespace
 
@@ -246,6 +253,8 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
     // CollectLights rebuilt the lights without views; the maps hold these.
     this->FrameLights = maps.Updates.GetRenderedLights();
     this->Counts.Layers = maps.Layers;
+    this->CurrentFrame.Resolution = maps.Maps.GetResolution();
+    this->Counts.Resolution = this->CurrentFrame.Resolution;
     if (this->CodeFor != &maps)
     {
       // The shaders follow the lights, layers and storage of the renderer
@@ -255,33 +264,36 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
     return true;
   }
 
-  this->CurrentFrame.Resolution = this->UsableResolution();
-  // Each failure still answers the other processes' question (CombineAcrossProcesses).
-  if (!this->FitViews())
-  {
-    this->CombineAcrossProcesses(WindowOf(renderer), false);
-    return false;
-  }
-  this->ChooseStorage();
-  this->UpdateShaders(renderer);
-  if (!this->CodeCompiles)
-  {
-    this->CombineAcrossProcesses(WindowOf(renderer), false);
-    this->Fail("the shadow shader code does not compile (see the shader error above; a "
-               "representation's GLSL?)",
-      renderer->GetRenderWindow());
-    return false;
-  }
+  // A drag draws whatever layers it must draw coarser (CoarseResolution); the
+  // still frame's maps serve it while no layer needs drawing.
+  const int still = this->UsableResolution();
+  const int coarse = this->CoarseResolution(still);
+  const int drag = this->CurrentFrame.Interactive ? coarse : still;
+  int resolution = drag < still && maps.Maps.GetResolution() != still ? drag : still;
+  // Maps of the other resolution are kept for the next switch.
+  const auto spareFor = [still, coarse](int used) {
+    return coarse == still ? 0 : used == still ? coarse : still;
+  };
   std::string error;
-  if (!maps.Maps.Reserve(this->CurrentFrame.Resolution, this->Counts.Layers, maps.Storage.Format,
-        maps.Storage.Mipmaps, error) ||
-    !this->ReserveTransmittanceMaps(error))
+  bool ok = this->PrepareLayers(renderer, resolution, spareFor(resolution), error);
+  std::vector<LayerPlan> plans = ok ? this->PlanLayers() : std::vector<LayerPlan>();
+  if (resolution != drag && this->Policy.AnyProcess(!ok || AnyRenders(plans)))
   {
+    resolution = drag;
+    ok = ok && this->PrepareLayers(renderer, resolution, spareFor(resolution), error);
+    plans = ok ? this->PlanLayers() : std::vector<LayerPlan>();
+  }
+  if (!ok)
+  {
+    // Each failure still answers the other processes' question.
     this->CombineAcrossProcesses(WindowOf(renderer), false);
-    this->Fail(error, renderer->GetRenderWindow());
+    if (!error.empty())
+    {
+      this->Fail(error, renderer->GetRenderWindow());
+    }
     return false;
   }
-  if (!this->RenderMaps(renderer))
+  if (!this->RenderMaps(renderer, std::move(plans)))
   {
     this->Fail(this->LastGLError, renderer->GetRenderWindow());
     return false;
@@ -298,6 +310,7 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
   maps.Updates.Finish(this->FrameLights, std::move(signature), settings.ParametersTime(),
     this->CurrentFrame.Resolution, this->CurrentFrame.SceneBounds);
   maps.Layers = this->Counts.Layers;
+  this->Counts.Resolution = this->CurrentFrame.Resolution;
   this->WarnedGLError.clear();
   ++this->Counts.Updates;
   return true;
@@ -331,6 +344,38 @@ int FrameUpdate::UsableResolution()
     this->WarnedResolution = true;
   }
   return usable;
+}
+
+//------------------------------------------------------------------------------
+int FrameUpdate::CoarseResolution(int still) const
+{
+  const int coarse =
+    static_cast<int>(std::lround(still * this->Settings->InteractiveResolutionScale));
+  return std::min(still, std::max(coarse, 64));
+}
+
+//------------------------------------------------------------------------------
+bool FrameUpdate::PrepareLayers(
+  vtkOpenGLRenderer* renderer, int resolution, int spare, std::string& error)
+{
+  this->CurrentFrame.Resolution = resolution;
+  if (!this->FitViews())
+  {
+    return false; // no light with usable views: no failure to warn of
+  }
+  this->ChooseStorage();
+  this->UpdateShaders(renderer);
+  if (!this->CodeCompiles)
+  {
+    error = "the shadow shader code does not compile (see the shader error above; a "
+            "representation's GLSL?)";
+    return false;
+  }
+  RendererMaps& maps = this->Maps();
+  maps.SwitchMaps(resolution, spare);
+  return maps.Maps.Reserve(resolution, this->Counts.Layers, maps.Storage.Format,
+           maps.Storage.Mipmaps, error) &&
+    this->ReserveTransmittanceMaps(error);
 }
 
 //------------------------------------------------------------------------------
@@ -465,14 +510,11 @@ CastingSettings FrameUpdate::CastingSettingsOfUpdate() const
 }
 
 //------------------------------------------------------------------------------
-bool FrameUpdate::RenderMaps(vtkOpenGLRenderer* renderer)
+std::vector<LayerPlan> FrameUpdate::PlanLayers()
 {
   const FrameSettings& settings = *this->Settings;
   RendererMaps& maps = this->Maps();
   const ShadowFrame& frame = this->CurrentFrame;
-  const int layers = this->Counts.Layers;
-  vtkOpenGLRenderWindow* window = WindowOf(renderer);
-  const bool keepsLightDepths = this->MapCombination() == Combination::NearestLightDepths;
   // What every layer depends on besides its view and casters: the parameters
   // of the pass and its strategies (the bias, the caster faces and store code
   // among them), the storage, and how a second depth is made (AUTO may change
@@ -482,10 +524,31 @@ bool FrameUpdate::RenderMaps(vtkOpenGLRenderer* renderer)
                              maps.Transmittances.GetAllocations(),
                              static_cast<vtkMTimeType>(frame.Resolution),
                              static_cast<vtkMTimeType>(maps.Storage.SecondDepth) },
-    layers, this->Policy.CombinesLayers(maps.Storage), this->Casters);
+    this->Counts.Layers, this->Policy.CombinesLayers(maps.Storage), this->Casters);
+  this->Policy.BeginLayers(frame, maps.Storage, this->LayerRulesOfUpdate());
+  std::vector<LayerPlan> plans;
+  plans.reserve(static_cast<std::size_t>(this->Counts.Layers));
+  for (const ShadowLight& light : this->FrameLights)
+  {
+    for (std::size_t v = 0; v < light.Views.size(); ++v)
+    {
+      plans.push_back(maps.Updates.Plan(frame, this->Casters, this->Policy.RequestFor(light, v)));
+    }
+  }
+  return plans;
+}
+
+//------------------------------------------------------------------------------
+bool FrameUpdate::RenderMaps(vtkOpenGLRenderer* renderer, std::vector<LayerPlan> plans)
+{
+  const FrameSettings& settings = *this->Settings;
+  RendererMaps& maps = this->Maps();
+  const ShadowFrame& frame = this->CurrentFrame;
+  vtkOpenGLRenderWindow* window = WindowOf(renderer);
+  const bool keepsLightDepths = this->MapCombination() == Combination::NearestLightDepths;
   if (keepsLightDepths)
   {
-    maps.LightDepths.Reset(maps.Maps, layers);
+    maps.LightDepths.Reset(maps.Maps, this->Counts.Layers);
   }
   std::vector<RenderedLayer> rendered;
   bool ok = true;
@@ -504,13 +567,12 @@ bool FrameUpdate::RenderMaps(vtkOpenGLRenderer* renderer)
     update.PeelUnit = this->Units.GetPeelUnit();
     update.JoinCasters = settings.JoinProps;
     this->Layers.BeginUpdate(update);
-    this->Policy.BeginLayers(frame, maps.Storage, this->LayerRulesOfUpdate());
     for (const ShadowLight& light : this->FrameLights)
     {
-      for (size_t v = 0; v < light.Views.size() && ok; ++v)
+      for (std::size_t v = 0; v < light.Views.size() && ok; ++v)
       {
         const int layer = light.FirstLayer + static_cast<int>(v);
-        LayerPlan plan = maps.Updates.Plan(frame, this->Casters, this->Policy.RequestFor(light, v));
+        LayerPlan& plan = plans[static_cast<std::size_t>(layer)];
         bool bound = false;
         ok = !plan.Render ||
           this->Layers.Draw(light, v, layer, plan.Casters, bound, this->LastGLError);

@@ -83,6 +83,8 @@ struct FrameSettings
   double NormalOffset = 1.0;
   bool ShadowReachCulling = true;
   double InteractiveUpdateRate = 1.0;
+  /// The share of Resolution maps drawn during a drag are drawn at.
+  double InteractiveResolutionScale = 1.0;
   /// An analysis view that recolours the receivers (0: none).
   int RecolouringAnalysisView = 0;
   int AnalysisLight = 0;
@@ -108,6 +110,8 @@ struct FrameStatistics
   int RenderedLayers = 0;
   /// Of the last map update.
   int CasterPassesPerLayer = 1;
+  /// The width and height of the maps the last frame read.
+  int Resolution = 0;
 };
 
 class FrameUpdate
@@ -168,6 +172,18 @@ private:
   void RebuildShadersOfChangedReceivers(const vtkRenderState* s);
   bool UpdateMaps(vtkOpenGLRenderer* renderer);
   int UsableResolution();
+  /// The maps' resolution when a drag must draw layers: `still` scaled by
+  /// InteractiveResolutionScale, not below 64.
+  int CoarseResolution(int still) const;
+  /// Fits the views at `resolution`, chooses the storage and the shader code,
+  /// and reserves the maps, keeping maps of resolution `spare` (0: none) for
+  /// the next switch between a drag's and a still frame's resolutions. False
+  /// with `error` on a failure to warn of, with none where no light has
+  /// usable views.
+  bool PrepareLayers(vtkOpenGLRenderer* renderer, int resolution, int spare, std::string& error);
+  /// Which layers must be drawn, and with which casters (MapUpdates::Plan),
+  /// in layer order.
+  std::vector<LayerPlan> PlanLayers();
   bool FitViews();
   void DropLightsWithoutUsableViews();
   void AssignLayers();
@@ -177,8 +193,8 @@ private:
   void UpdateShaders(vtkOpenGLRenderer* renderer);
   /// The transmittance maps as the storage asks (none without translucent casters).
   bool ReserveTransmittanceMaps(std::string& error);
-  /// Draws the layers MapUpdates plans, then combines and post-processes them.
-  bool RenderMaps(vtkOpenGLRenderer* renderer);
+  /// Draws the layers `plans` render, then combines and post-processes them.
+  bool RenderMaps(vtkOpenGLRenderer* renderer, std::vector<LayerPlan> plans);
   void ReserveTextureUnits(vtkOpenGLRenderer* renderer);
   /// Whether receivers read the depth maps without comparison this frame
   /// (the soft shadows' blocker search).

@@ -7,9 +7,23 @@
 namespace shadowmaps
 {
 //------------------------------------------------------------------------------
+void RendererMaps::SwitchMaps(int resolution, int spare)
+{
+  if (this->Maps.GetResolution() != resolution && this->Maps.GetResolution() != 0)
+  {
+    this->Maps.Swap(this->SpareMaps);
+  }
+  if (this->SpareMaps.GetResolution() != spare || spare == resolution)
+  {
+    this->SpareMaps.Release();
+  }
+}
+
+//------------------------------------------------------------------------------
 void RendererMaps::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Maps.Release();
+  this->SpareMaps.Release();
   this->Transmittances.Release();
   this->Volumes.Release(window);
   this->LinearDepths.ReleaseGraphicsResources(window);
@@ -82,7 +96,8 @@ std::size_t MapsByRenderer::MemoryBytes() const
   std::size_t bytes = 0;
   for (const auto& maps : this->Maps)
   {
-    bytes += maps.second->Maps.GetMemoryBytes() + maps.second->Transmittances.GetMemoryBytes() +
+    bytes += maps.second->Maps.GetMemoryBytes() + maps.second->SpareMaps.GetMemoryBytes() +
+      maps.second->Transmittances.GetMemoryBytes() +
       maps.second->Volumes.GetMemoryBytes();
   }
   return bytes;

@@ -31,6 +31,9 @@ namespace shadowmaps
 struct RendererMaps
 {
   TextureArray Maps;
+  /// The maps of the other of a drag's two resolutions (still and coarse,
+  /// InteractiveResolutionScale), kept so that switching allocates nothing.
+  TextureArray SpareMaps;
   /// Beside the maps while some caster is translucent (MapStorage::Transmittance).
   TransmittanceMaps Transmittances;
   /// The casting volumes' data, marched into the transmittance maps.
@@ -44,6 +47,10 @@ struct RendererMaps
   /// The props' bounds and versions, read again only when they change.
   PropRecords Props;
   int Layers = 0;
+
+  /// Makes Maps those held at `resolution` if SpareMaps holds them, and keeps
+  /// as SpareMaps only maps of resolution `spare` (0: none), released else.
+  void SwitchMaps(int resolution, int spare);
 
   /// Frees the GL objects (`window`'s context current); the maps are then
   /// rendered anew.

@@ -362,6 +362,12 @@ int vtkAbstractShadowMapPass::GetNumberOfCasterDraws() const
 }
 
 //------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetShadowMapResolution() const
+{
+  return this->Internal->Update.Statistics().Resolution;
+}
+
+//------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfRenderedLayers() const
 {
   return this->Internal->Update.Statistics().RenderedLayers;
@@ -567,6 +573,7 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
   settings.NormalOffset = this->NormalOffset;
   settings.ShadowReachCulling = this->ShadowReachCulling;
   settings.InteractiveUpdateRate = this->InteractiveUpdateRate;
+  settings.InteractiveResolutionScale = this->InteractiveResolutionScale;
   // Analysis settings are pass parameters: a change re-renders the maps.
   const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
   settings.RecolouringAnalysisView = recolours ? this->AnalysisView : 0;
@@ -752,10 +759,12 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalOffset: " << this->NormalOffset << "\n";
   os << indent << "ShadowReachCulling: " << this->ShadowReachCulling << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "InteractiveResolutionScale: " << this->InteractiveResolutionScale << "\n";
   os << indent << "AnalysisView: " << this->AnalysisView << "\n";
   os << indent << "AnalysisLight: " << this->AnalysisLight << "\n";
   os << indent << "NumberOfShadowedLights: " << this->GetNumberOfShadowedLights() << "\n";
   os << indent << "NumberOfShadowMapLayers: " << this->GetNumberOfShadowMapLayers() << "\n";
+  os << indent << "ShadowMapResolution: " << this->GetShadowMapResolution() << "\n";
   os << indent << "NumberOfNonFiniteViews: " << this->GetNumberOfNonFiniteViews() << "\n";
   os << indent << "NumberOfShadowMapUpdates: " << this->GetNumberOfShadowMapUpdates() << "\n";
   os << indent << "NumberOfCasterDraws: " << this->GetNumberOfCasterDraws() << "\n";

@@ -301,6 +301,21 @@ public:
 
   ///@{
   /**
+   * The share of the maps' resolution (Resolution, or the GL's largest) at
+   * which maps are drawn in interactive renders (InteractiveUpdateRate) that
+   * must draw any of them: the drag then draws all its maps at this share,
+   * and the first still render draws them at the full resolution again. The
+   * maps a still render left serve a drag until a layer must be drawn. A map's
+   * cost is its texels on a fill-bound GPU or a software rasteriser: 0.5 draws
+   * a quarter of them. Not below 64 texels. Clamped to [0.0625, 1]; default 1
+   * (drags draw full maps), vtkAutomaticShadowMapPass's 0.5.
+   */
+  vtkSetFiniteClampMacro(InteractiveResolutionScale, double, 0.0625, 1.0);
+  vtkGetMacro(InteractiveResolutionScale, double);
+  ///@}
+
+  ///@{
+  /**
    * Receiver offset along its normal, in shadow-map texels (scaled by the
    * world-space size of a texel at the receiver). Clamped to [0, 10]; default 1.
    */
@@ -347,6 +362,14 @@ public:
 
   /** Number of map layers (light views) in use in the last frame. */
   int GetNumberOfShadowMapLayers() const;
+
+  /**
+   * Width and height in texels of the map layers the last frame read:
+   * Resolution (at most the GL's largest texture), or its
+   * InteractiveResolutionScale share in a drag that drew them; the automatic
+   * pass's lights in cascades halve it. 0 before any map.
+   */
+  int GetShadowMapResolution() const;
 
   /**
    * Light views of the last map update whose matrices were not finite (a
@@ -409,7 +432,9 @@ public:
 
   /**
    * Memory held by the shadow maps, in bytes (depth maps: 2 or 4 per texel;
-   * transmittance maps, while a caster is translucent: 16).
+   * transmittance maps, while a caster is translucent: 16), the maps of a
+   * drag's coarser resolution kept beside them included
+   * (InteractiveResolutionScale).
    */
   size_t GetShadowMapMemory() const;
 
@@ -456,6 +481,7 @@ protected:
   double NormalOffset = 1.0;
   bool ShadowReachCulling = true;
   double InteractiveUpdateRate = 1.0;
+  double InteractiveResolutionScale = 1.0;
   int AnalysisView = NO_ANALYSIS;
   int AnalysisLight = 0;
 

@@ -72,6 +72,8 @@ vtkAutomaticShadowMapPass::vtkAutomaticShadowMapPass()
   , Internal(new Internals)
 {
   this->NormalOffset = 0.0; // the dual test needs no offset (vtkDualDepthShadowMapPass)
+  // A dual-depth map costs several depth maps' texels to draw (docs/AUTOMATIC.md).
+  this->InteractiveResolutionScale = 0.5;
 }
 
 //------------------------------------------------------------------------------

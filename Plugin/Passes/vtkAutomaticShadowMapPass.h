@@ -27,6 +27,11 @@
  * full resolution. All lights share one texture array, so while any light is
  * in cascades every map has half the resolution.
  *
+ * Its dual-depth maps cost several depth maps' texels to draw, so a drag that
+ * must draw them draws them at half the resolution (InteractiveResolutionScale
+ * 0.5 here, 1 in the other passes); the still frame after draws them at full
+ * resolution again.
+ *
  * The views it chooses among take the pass's InteractiveTexelRatio. A light
  * that several renderers of the pass shadow gets the views the first of them
  * to choose for it chose, from that renderer's camera.

@@ -444,3 +444,69 @@ TEST(ShadowAutomatic, ShadowsFallWhereTheyShould)
     EXPECT_EQ(CompareWithBaseline(frame, name), "") << name;
   }
 }
+
+// A drag that must draw the maps draws them at half the resolution, kept from
+// then on in the drag; the still frame after draws them at full resolution,
+// the same frame as a fresh pass's. The drag's maps are kept beside the still
+// ones, so that later drags allocate nothing; no shader is built.
+TEST(ShadowAutomatic, DragsDrawCoarserMapsAndStillFramesFullOnes)
+{
+  WalkPastALamp walk;
+  vtkNew<vtkAutomaticShadowMapPass> pass;
+  pass->SetResolution(SmallMaps);
+  EXPECT_EQ(pass->GetInteractiveResolutionScale(), 0.5);
+  walk.Walk(0.0);
+  walk.Scene.Renderer->SetPass(pass);
+  walk.Scene.Window->Render();
+  EXPECT_EQ(pass->GetShadowMapResolution(), SmallMaps);
+  const size_t stillMemory = pass->GetShadowMapMemory();
+  const int builds = pass->GetNumberOfShaderBuilds();
+  size_t memoryAfterFirstDrag = 0;
+  for (int drag = 0; drag < 2; ++drag)
+  {
+    bool drawn = false;
+    const int steps = 6;
+    for (int i = 1; i <= steps; ++i)
+    {
+      walk.Scene.Window->SetDesiredUpdateRate(15.0);
+      walk.Walk((drag == 0 ? 0.0 : 0.5) + 0.5 * i / steps);
+      walk.Scene.Window->Render();
+      drawn = drawn || pass->GetNumberOfRenderedLayers() > 0;
+      EXPECT_EQ(pass->GetShadowMapResolution(), drawn ? SmallMaps / 2 : SmallMaps)
+        << "drag " << drag << " step " << i;
+    }
+    ASSERT_TRUE(drawn) << "the drag kept the still frame's maps throughout";
+    walk.Scene.Window->SetDesiredUpdateRate(0.0001);
+    walk.Scene.Window->Render();
+    EXPECT_EQ(pass->GetShadowMapResolution(), SmallMaps);
+    EXPECT_GT(pass->GetNumberOfRenderedLayers(), 0) << "drag " << drag;
+    auto still = RenderAndCapture(walk.Scene.Window);
+
+    WalkPastALamp fresh;
+    fresh.Walk(drag == 0 ? 0.5 : 1.0);
+    vtkNew<vtkAutomaticShadowMapPass> freshPass;
+    freshPass->SetResolution(SmallMaps);
+    fresh.Scene.Renderer->SetPass(freshPass);
+    auto expected = RenderAndCapture(fresh.Scene.Window);
+    ASSERT_EQ(freshPass->GetChosenViews(0), pass->GetChosenViews(0));
+    EXPECT_EQ(RgbBytes(still), RgbBytes(expected)) << "drag " << drag;
+    fresh.Scene.Renderer->SetPass(nullptr);
+    if (drag == 0)
+    {
+      memoryAfterFirstDrag = pass->GetShadowMapMemory();
+      EXPECT_GT(memoryAfterFirstDrag, stillMemory) << "the drag's maps kept";
+    }
+  }
+  EXPECT_EQ(pass->GetShadowMapMemory(), memoryAfterFirstDrag) << "the second drag reused them";
+  EXPECT_GT(pass->GetNumberOfShaderBuilds(), builds) << "the lamp's new views, in a still frame";
+
+  // Scale 1: drags draw full maps, and no spare is kept.
+  pass->SetInteractiveResolutionScale(1.0);
+  walk.Walk(0.0);
+  walk.Scene.Window->SetDesiredUpdateRate(15.0);
+  walk.Scene.Window->Render();
+  EXPECT_GT(pass->GetNumberOfRenderedLayers(), 0);
+  EXPECT_EQ(pass->GetShadowMapResolution(), SmallMaps);
+  pass->SetInteractiveResolutionScale(0.0);
+  EXPECT_EQ(pass->GetInteractiveResolutionScale(), 0.0625) << "clamped";
+}
