@@ -53,7 +53,7 @@ struct Options
   std::string light = "sun";
   double azimuth = 60.0;
   double elevation = 45.0;
-  std::string technique = "uniform"; // a shadowbench::TechniqueNames() name
+  std::string technique = "auto"; // a shadowbench::TechniqueNames() name
   int resolution = 2048;
   int filter = vtkDepthShadowMapPass::PCF_2X2;
   int kernelSize = 3; // N of pcf:N
@@ -92,13 +92,15 @@ void PrintUsage(std::ostream& out)
          "  --light sun|spot|point   light kind [sun]\n"
          "  --azimuth A              light azimuth in degrees, from +x towards +y [60]\n"
          "  --elevation E            light elevation above the ground, -90..90 [45]\n"
-         "  --technique NAME         uniform, psm, lispsm, tsm, gmnpr: vtkWarpedShadowMapPass's\n"
+         "  --technique NAME         auto: vtkAutomaticShadowMapPass (each light's views chosen\n"
+         "                           from its situation, dual-depth maps); uniform, psm,\n"
+         "                           lispsm, tsm, gmnpr: vtkWarpedShadowMapPass's\n"
          "                           warp modes (psm-cube, psm-single: PSMCubeMap always,\n"
          "                           never); csm, csm-tight, csm-lispsm: vtkCascadedShadowMapPass\n"
          "                           at half the resolution; second-depth, midpoint, dual:\n"
          "                           vtkDualDepthShadowMapPass, no bias; vsm, evsm2, evsm4, msm,\n"
          "                           esm: vtkVarianceShadowMapPass; vtk, vtk-equal: VTK's\n"
-         "                           vtkShadowMapPass; none: no shadows [uniform]\n"
+         "                           vtkShadowMapPass; none: no shadows [auto]\n"
          "  --resolution N           shadow map size in texels, 64..16384 [2048]\n"
          "  --filter hard|pcf2x2|pcf:N|poisson\n"
          "                           shadow filter, N of pcf:N in 2..7 [pcf2x2]\n"
@@ -127,7 +129,8 @@ void PrintUsage(std::ostream& out)
          "                           csm-tight,csm-lispsm,second-depth,midpoint,dual,evsm4\n"
          "                           [all of these] {uniform,lispsm,csm,second-depth,evsm4,auto}\n"
          "                           (auto: vtkAutomaticShadowMapPass, its choice reported;\n"
-         "                           auto-cost6: the same with CostBudget 6;\n"
+         "                           auto-cost6: the same with CostBudget 6; auto-full-drag:\n"
+         "                           with InteractiveResolutionScale 1;\n"
          "                           R+V: representation R of depth, dual, evsm4 on views V of\n"
          "                           uniform, psm, psm-cube, lispsm, tsm, gmnpr, csm, csm-lispsm)\n"
          "                           (csm: 4 cascades of N/2, stable, tight, or tight with LiSPSM\n"

@@ -1,5 +1,7 @@
-"""Shadow-map render passes for VTK: ``renderer.SetPass(vtkshadowmaps.vtkWarpedShadowMapPass())``,
-or by a technique's name: ``renderer.SetPass(vtkshadowmaps.make_pass("cascaded"))``."""
+"""Shadow-map render passes for VTK: ``renderer.SetPass(vtkshadowmaps.make_pass())`` (the
+automatic pass: each light's views chosen from where it shines, in dual-depth maps), a
+technique by name (``make_pass("cascaded")``), or a class
+(``renderer.SetPass(vtkshadowmaps.vtkWarpedShadowMapPass())``)."""
 # The base classes live in VTK's own modules; load them before ours.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
@@ -35,10 +37,11 @@ def _setter(shadow_pass, name):
     raise ValueError(f"{type(shadow_pass).__name__} has no {setter} (from {name!r})")
 
 
-def make_pass(technique="cascaded", **settings):
-    """The shadow pass of a technique (a key of TECHNIQUES), its settings given
-    as snake_case names of its setters: ``resolution=2048`` calls
-    ``SetResolution(2048)``, ``psm_cube_map=1`` ``SetPSMCubeMap(1)``."""
+def make_pass(technique="auto", **settings):
+    """The shadow pass of a technique (a key of TECHNIQUES; by default "auto",
+    vtkAutomaticShadowMapPass), its settings given as snake_case names of its
+    setters: ``resolution=2048`` calls ``SetResolution(2048)``, ``psm_cube_map=1``
+    ``SetPSMCubeMap(1)``."""
     if technique not in TECHNIQUES:
         raise ValueError(
             f"unknown shadow technique {technique!r}; one of {', '.join(TECHNIQUES)}")

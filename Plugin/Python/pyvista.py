@@ -6,6 +6,7 @@
     plotter = pv.Plotter(lighting="none")
     plotter.add_light(pv.Light(light_type="scene light", position=(2, 3, 5)))
     ...
+    shadows = enable_shadows(plotter)  # the automatic pass; or a technique:
     shadows = enable_shadows(plotter, "cascaded", number_of_cascades=3)
     plotter.enable_ssao()            # PyVista's own passes compose with it
     disable_shadows(plotter)         # the plain view again, GL memory released
@@ -52,9 +53,10 @@ def _current_shadow_pass(passes):
     return current if isinstance(current, _module.vtkAbstractShadowMapPass) else None
 
 
-def enable_shadows(plotter, technique="cascaded", **settings):
+def enable_shadows(plotter, technique="auto", **settings):
     """Turns on this module's shadows in the plotter's active renderer (or in
-    the renderer given as ``plotter``) and returns the pass. Replaces VTK's
+    the renderer given as ``plotter``) and returns the pass (make_pass's:
+    vtkAutomaticShadowMapPass by default). Replaces VTK's
     shadows (``plotter.enable_shadows()``) and an earlier call's pass. To go
     back to VTK's shadows, call disable_shadows first: PyVista's
     enable_shadows() sees a shadow pass in place and does nothing."""

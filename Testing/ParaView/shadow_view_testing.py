@@ -162,6 +162,13 @@ def check_same_image(expected, actual, what):
     check(result.returncode == 0, what + ("" if result.returncode == 0 else ":\n" + result.stdout))
 
 
+def check_nearly_same_image(expected, actual, percent, what):
+    """At most `percent` % of the pixels off by more than 1.5/255."""
+    result = subprocess.run(["idiff", "-fail", "0.0059", "-failpercent", str(percent), "-warn", "0.0059",
+                             expected, actual], capture_output=True, text=True)
+    check(result.returncode in (0, 1), what + ("" if result.returncode in (0, 1) else ":\n" + result.stdout))
+
+
 def shadow_probes(view, png, what):
     dark = luminance_at(view, png, SHADOWED)
     lit = luminance_at(view, png, LIT)

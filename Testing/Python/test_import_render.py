@@ -131,8 +131,8 @@ def main(output_dir):
 
     # The automatic pass: its choice for the sun, read back from Python, and
     # pinned to one views for every light.
-    automatic = vtkshadowmaps.make_pass("auto")
-    assert isinstance(automatic, vtkshadowmaps.vtkAutomaticShadowMapPass)
+    automatic = vtkshadowmaps.make_pass()
+    assert isinstance(automatic, vtkshadowmaps.vtkAutomaticShadowMapPass), "make_pass()'s default"
     _, (under, open_ground) = render_with(renderer, window, grab, automatic, UNDER_THE_SPHERE,
                                           OPEN_GROUND)
     chosen = automatic.GetChosenViewsName(0)

@@ -160,6 +160,10 @@ def translucent_layers_are_peeled():
 
 def replaces_vtk_shadows():
     plotter = scene()
+    default = enable_shadows(plotter)
+    check(default.GetClassName() == "vtkAutomaticShadowMapPass",
+          f"enable_shadows(plotter) gives the automatic pass ({default.GetClassName()})")
+    disable_shadows(plotter)
     plotter.enable_shadows()
     enable_shadows(plotter, "lispsm")
     chain = pass_chain(plotter.renderer)

@@ -1,6 +1,7 @@
 #include "vtkPVShadowRenderView.h"
 
 #include "vtkAbstractShadowMapPass.h"
+#include "vtkAutomaticShadowMapPass.h"
 #include "vtkCascadedShadowMapViews.h"
 #include "vtkCompositeRepresentation.h"
 #include "vtkDepthShadowMapPass.h"
@@ -26,6 +27,7 @@
 #include "vtkWarpedShadowMapViews.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -55,12 +57,13 @@ T Clamped(vtkObject* self, const char* name, T value, T lowest, T highest)
 vtkPVShadowRenderView::vtkPVShadowRenderView()
   : Passes{ vtkDepthShadowMapPass::New(), vtkDualDepthShadowMapPass::New(),
     vtkVarianceShadowMapPass::New() }
+  , AutomaticPass(vtkAutomaticShadowMapPass::New())
   , WarpedViews(vtkWarpedShadowMapViews::New())
   , CascadedViews(vtkCascadedShadowMapViews::New())
   , ScenePass(vtkPVDefaultPass::New())
   , Exchange(vtkPVShadowMapExchange::New())
 {
-  for (vtkAbstractShadowMapPass* pass : this->Passes)
+  for (vtkAbstractShadowMapPass* pass : this->AllPasses())
   {
     // The renderer's own steps (SSAO, hidden lines, translucency, volumes)
     // render the scene, as in ParaView's plain render view.
@@ -76,12 +79,12 @@ vtkPVShadowRenderView::~vtkPVShadowRenderView()
 {
   // Before the pass leaves the renderer: the window's release then no longer
   // reaches it, and the maps' texture array frees nothing on its own.
-  for (vtkAbstractShadowMapPass* pass : this->Passes)
+  for (vtkAbstractShadowMapPass* pass : this->AllPasses())
   {
     this->ReleasePass(pass);
   }
   this->SynchronizedRenderers->SetRenderPass(nullptr);
-  for (vtkAbstractShadowMapPass* pass : this->Passes)
+  for (vtkAbstractShadowMapPass* pass : this->AllPasses())
   {
     pass->Delete();
   }
@@ -94,7 +97,18 @@ vtkPVShadowRenderView::~vtkPVShadowRenderView()
 //------------------------------------------------------------------------------
 vtkAbstractShadowMapPass* vtkPVShadowRenderView::GetShadowPass()
 {
+  if (this->ShadowViews == AUTOMATIC)
+  {
+    return this->AutomaticPass;
+  }
   return this->Passes[this->ShadowStorage];
+}
+
+//------------------------------------------------------------------------------
+std::array<vtkAbstractShadowMapPass*, 4> vtkPVShadowRenderView::AllPasses()
+{
+  return { this->Passes[DEPTH], this->Passes[DUAL_DEPTH], this->Passes[MOMENTS],
+    this->AutomaticPass };
 }
 
 //------------------------------------------------------------------------------
@@ -124,6 +138,7 @@ void vtkPVShadowRenderView::SetShadowFilter(int filter)
   {
     this->DepthPass(storage)->SetFilter(filter);
   }
+  this->AutomaticPass->SetFilter(filter); // its own dual-depth maps
 }
 
 //------------------------------------------------------------------------------
@@ -140,6 +155,7 @@ void vtkPVShadowRenderView::SetShadowFilterRadius(double texels)
   {
     this->DepthPass(storage)->SetFilterRadius(texels);
   }
+  this->AutomaticPass->SetFilterRadius(texels);
 }
 
 //------------------------------------------------------------------------------
@@ -345,7 +361,16 @@ void vtkPVShadowRenderView::SetLampRadius(double radius)
 //------------------------------------------------------------------------------
 void vtkPVShadowRenderView::UsePass()
 {
-  if (this->ShadowViews == CASCADES)
+  if (this->ShadowViews == AUTOMATIC)
+  {
+    // The storage passes' representations carry the view's filter, bias and
+    // blur; the automatic pass's own is dual depth, which needs no offset.
+    const bool dual = this->ShadowStorage == DUAL_DEPTH;
+    vtkAbstractShadowMapPass* storage = this->Passes[this->ShadowStorage];
+    this->AutomaticPass->SetRepresentation(dual ? nullptr : storage->GetRepresentation());
+    this->AutomaticPass->SetNormalOffset(dual ? 0.0 : storage->GetNormalOffset());
+  }
+  else if (this->ShadowViews == CASCADES)
   {
     this->GetShadowPass()->SetViews(this->CascadedViews);
   }
@@ -383,10 +408,16 @@ void vtkPVShadowRenderView::MarkLightKitLights()
 //------------------------------------------------------------------------------
 void vtkPVShadowRenderView::SetShadowViews(int views)
 {
-  views = Clamped(this, "ShadowViews", views, static_cast<int>(UNIFORM), static_cast<int>(CASCADES));
+  views = Clamped(this, "ShadowViews", views, static_cast<int>(UNIFORM), static_cast<int>(AUTOMATIC));
   if (views != this->ShadowViews)
   {
+    vtkAbstractShadowMapPass* before = this->GetShadowPass();
     this->ShadowViews = views;
+    if (this->GetShadowPass() != before)
+    {
+      // As for a storage change: the pass left behind frees its maps now.
+      this->ReleasePass(before);
+    }
     this->UsePass();
     this->Modified();
   }
@@ -415,7 +446,7 @@ void vtkPVShadowRenderView::SetShadowMapResolution(int resolution)
   if (resolution != this->ShadowMapResolution)
   {
     this->ShadowMapResolution = resolution;
-    for (vtkAbstractShadowMapPass* pass : this->Passes)
+    for (vtkAbstractShadowMapPass* pass : this->AllPasses())
     {
       pass->SetResolution(resolution);
     }

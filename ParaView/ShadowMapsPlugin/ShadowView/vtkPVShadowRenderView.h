@@ -11,8 +11,9 @@
  * keep working.
  *
  * Two independent choices, as in the module: where each light's views go
- * (ShadowViews: a uniform or warped map, or cascades) and what a texel stores
- * (ShadowStorage: depth with PCF, two depths without bias, or filterable
+ * (ShadowViews: chosen per light by vtkAutomaticShadowMapPass, the default; a
+ * uniform or warped map; or cascades) and what a texel stores (ShadowStorage:
+ * two depths without bias, the default; depth with PCF; or filterable
  * moments). Lights: the light kit's key light casts shadows (KeyLightShadows),
  * its fill, back and head lights do not; every light added to the view casts.
  *
@@ -34,7 +35,10 @@
 #include "vtkPVRenderView.h"
 #include "vtkParaViewShadowViewModule.h" // For export macro
 
+#include <array> // For AllPasses
+
 class vtkAbstractShadowMapPass;
+class vtkAutomaticShadowMapPass;
 class vtkCascadedShadowMapViews;
 class vtkPVDefaultPass;
 class vtkDepthShadowMapPass;
@@ -57,11 +61,16 @@ public:
     TSM = 2,
     PSM = 3,
     GMNPR = 4,
-    CASCADES = 5
+    CASCADES = 5,
+    AUTOMATIC = 6
   };
 
   ///@{
-  /** Where each light's views go: a focused uniform map (default), a warped map, or cascades. */
+  /**
+   * Where each light's views go: chosen per light from its situation
+   * (AUTOMATIC, vtkAutomaticShadowMapPass, default), a focused uniform map, a
+   * warped map, or cascades.
+   */
   void SetShadowViews(int views);
   vtkGetMacro(ShadowViews, int);
   ///@}
@@ -75,8 +84,11 @@ public:
 
   ///@{
   /**
-   * What a texel stores: depth with 2 x 2 PCF (default), two depths and no
-   * bias (vtkDualDepthShadowMapPass), or EVSM4 moments (vtkVarianceShadowMapPass).
+   * What a texel stores: depth with 2 x 2 PCF, two depths and no bias
+   * (vtkDualDepthShadowMapPass, default), or EVSM4 moments
+   * (vtkVarianceShadowMapPass). Under AUTOMATIC views the automatic pass
+   * stores what this says (its own dual-depth maps, or the other passes'
+   * representations).
    */
   void SetShadowStorage(int storage);
   vtkGetMacro(ShadowStorage, int);
@@ -185,6 +197,8 @@ private:
 
   /** Puts the pass for the current choices in the geometry slot. */
   void UsePass();
+  /** The storage passes and the automatic pass. */
+  std::array<vtkAbstractShadowMapPass*, 4> AllPasses();
   /** Marks which of the light kit's lights cast shadows. */
   void MarkLightKitLights();
   /** Frees a pass's GL objects, if the window ever rendered. */
@@ -209,14 +223,16 @@ private:
 
   double SunDiameter = 0.0;
   double LampRadius = 0.0;
-  int ShadowViews = UNIFORM;
-  int ShadowStorage = DEPTH;
+  int ShadowViews = AUTOMATIC;
+  int ShadowStorage = DUAL_DEPTH;
   int ShadowMapResolution = 2048;
   int ShadowAnalysisView = 0;
   bool KeyLightShadows = true;
 
   /** One pass per ShadowStorage, in its order: depth, dual depth, moments. */
   vtkAbstractShadowMapPass* Passes[3];
+  /** The pass of AUTOMATIC views, with the representation ShadowStorage says. */
+  vtkAutomaticShadowMapPass* AutomaticPass;
   vtkWarpedShadowMapViews* WarpedViews;
   vtkCascadedShadowMapViews* CascadedViews;
   vtkPVDefaultPass* ScenePass;
