@@ -265,7 +265,10 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
   }
 
   // A drag draws whatever layers it must draw coarser (CoarseResolution); the
-  // still frame's maps serve it while no layer needs drawing.
+  // still frame's maps serve it while no layer needs drawing here or on any
+  // other process. Every process asks that question whenever a drag may be
+  // coarser, whatever its own maps hold (one may have lost them), so that
+  // they all make the same collective calls.
   const int still = this->UsableResolution();
   const int coarse = this->CoarseResolution(still);
   const int drag = this->CurrentFrame.Interactive ? coarse : still;
@@ -277,7 +280,8 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
   std::string error;
   bool ok = this->PrepareLayers(renderer, resolution, spareFor(resolution), error);
   std::vector<LayerPlan> plans = ok ? this->PlanLayers() : std::vector<LayerPlan>();
-  if (resolution != drag && this->Policy.AnyProcess(!ok || AnyRenders(plans)))
+  if (drag < still &&
+    this->Policy.AnyProcess(resolution == drag || !ok || AnyRenders(plans)) && resolution != drag)
   {
     resolution = drag;
     ok = ok && this->PrepareLayers(renderer, resolution, spareFor(resolution), error);
@@ -693,6 +697,7 @@ void FrameUpdate::Fail(const std::string& error, vtkWindow* context)
 {
   this->Maps().ReleaseGraphicsResources(context);
   this->Counts.Layers = 0;
+  this->Counts.Resolution = 0;
   if (error != this->WarnedGLError)
   {
     this->Warnings.push_back("Rendering without shadows: " + error);

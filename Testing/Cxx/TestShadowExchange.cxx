@@ -15,10 +15,12 @@
 #include "vtkWarpedShadowMapViews.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
 #include <gtest/gtest.h>
@@ -443,6 +445,41 @@ TEST(ShadowExchange, AChangeOnAnyProcessReRendersAll)
   EXPECT_LT(LuminanceAt(processes.B.Renderer, image, moved), 0.45 * LuminanceAt(processes.B.Renderer, image, left))
     << "the shadow moved with the sphere, and left its old place";
   processes.Release();
+}
+
+// A drag draws the maps coarser on every process alike
+// (InteractiveResolutionScale), even where one process lost its maps on its
+// own (a failure, its context released): the processes still make the same
+// collective calls, and both draw at the coarse resolution.
+TEST(ShadowExchange, ADragIsCoarserOnEveryProcessEvenOneThatLostItsMaps)
+{
+  for (bool oneLost : { false, true })
+  {
+    TwoProcesses processes;
+    vtkNew<vtkDualDepthShadowMapPass> a;
+    vtkNew<vtkDualDepthShadowMapPass> b;
+    for (vtkAbstractShadowMapPass* pass : { a.Get(), b.Get() })
+    {
+      pass->SetResolution(512);
+      pass->SetInteractiveResolutionScale(0.5);
+    }
+    processes.Use(a, b, true);
+    processes.RenderBoth();
+    EXPECT_EQ(b->GetShadowMapResolution(), 512);
+    if (oneLost)
+    {
+      b->ReleaseGraphicsResources(processes.B.Window);
+    }
+    for (TestScene* scene : { &processes.A, &processes.B })
+    {
+      scene->Window->SetDesiredUpdateRate(15.0);
+      scene->Renderer->GetActiveCamera()->Azimuth(10.0);
+    }
+    processes.RenderBoth();
+    EXPECT_EQ(a->GetShadowMapResolution(), 256) << (oneLost ? "B lost its maps" : "");
+    EXPECT_EQ(b->GetShadowMapResolution(), 256) << (oneLost ? "B lost its maps" : "");
+    processes.Release();
+  }
 }
 
 // Translucent casters on one process tint another's receivers: the
