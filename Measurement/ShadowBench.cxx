@@ -266,8 +266,11 @@ double TotalWork(const Options& options, std::size_t scenes)
 /// Flicker along the camera path: the mean over frame pairs of the pixels
 /// whose state changed while the truth did not.
 void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
-  std::vector<TechniqueInstance>& techniques, std::vector<Row>& rows, int frames, Progress& progress)
+  std::vector<TechniqueInstance>& techniques, std::vector<Row>& rows, int frames, double yaw,
+  Progress& progress, std::ostream& log)
 {
+  // The automatic pass's views of its first light along the path, as runs.
+  std::vector<std::vector<std::pair<std::string, int>>> chosen(techniques.size());
   std::vector<std::vector<float>> previousFactor(techniques.size());
   std::vector<Truth> previousTruth;
   std::vector<double> flicker(techniques.size(), 0.0);
@@ -275,7 +278,8 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
   double truthChanges = 0.0;
   for (int frame = 0; frame < frames; ++frame)
   {
-    SetPathFrame(view, frame, frames);
+    shadowscenes::SetCameraPathFrame(
+      view.InitialCamera, view.Renderer->GetActiveCamera(), frame, frames, yaw);
     view.Renderer->SetPass(nullptr);
     view.Window->Render();
     const auto plain = CaptureRGB(view.Window);
@@ -286,6 +290,14 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
       view.Window->Render();
       auto factor = shadowmetrics::FactorFromRenders(
         CaptureRGB(view.Window), plain, view.Width * view.Height);
+      if (auto* automatic = vtkAutomaticShadowMapPass::SafeDownCast(techniques[t].Ours))
+      {
+        const std::string views = automatic->GetChosenViewsName(0);
+        if (chosen[t].empty() || chosen[t].back().first != views)
+        {
+          chosen[t].emplace_back(views, frame);
+        }
+      }
       if (frame > 0)
       {
         flicker[t] += shadowmetrics::Flicker(previousTruth, previousFactor[t], truth, factor);
@@ -302,6 +314,11 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
   }
   for (size_t t = 0; t < techniques.size(); ++t)
   {
+    for (const auto& run : chosen[t])
+    {
+      log << "    " << rows[rows.size() - techniques.size() + t].Technique << ": " << run.first
+          << " views from path frame " << run.second << std::endl;
+    }
     rows[rows.size() - techniques.size() + t].Flicker = flicker[t] / (frames - 1);
     rows[rows.size() - techniques.size() + t].Changes = changes[t] / (frames - 1);
     rows[rows.size() - techniques.size() + t].TruthChanges = truthChanges / (frames - 1);
@@ -402,7 +419,8 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
   {
     log << progress.Line() << "  " << scene << " / " << setup << ": flicker over "
         << options.FlickerFrames << " frames" << std::endl;
-    MeasureFlicker(view, oracle, techniques, rows, options.FlickerFrames, progress);
+    MeasureFlicker(view, oracle, techniques, rows, options.FlickerFrames,
+      options.FlickerYawDegrees, progress, log);
   }
   view.Renderer->SetPass(nullptr);
   for (TechniqueInstance& technique : techniques)

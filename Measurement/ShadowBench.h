@@ -35,6 +35,8 @@ struct Options
   /// set-ups measured along it.
   int FlickerFrames = 60;
   std::vector<std::string> FlickerSetups;
+  /// How far the camera turns over the path (shadowscenes::SetCameraPathFrame).
+  double FlickerYawDegrees = 6.0;
   /// Frames averaged per frame-time figure.
   int TimedFrames = 8;
   std::string OutputDirectory = "bench";

@@ -665,9 +665,8 @@ SceneSphere VisibleSceneSphere(vtkRenderer* renderer)
 // --- benchmark scenes: camera --------------------------------------------------
 
 // The camera path (SetCameraPathFrame): forward by this fraction of the
-// initial focal distance, turning left by this angle, over the whole path.
+// initial focal distance over the whole path.
 constexpr double CameraPathDollyFraction = 0.2;
-constexpr double CameraPathYawDeg = 6.0;
 
 /**
  * Widens a camera's clipping range, as set by ResetCameraClippingRange, so
@@ -1873,7 +1872,8 @@ bool AddLightSetup(vtkRenderer* renderer, const std::string& setup)
   return true;
 }
 
-void SetCameraPathFrame(vtkCamera* initial, vtkCamera* camera, int frame, int frameCount)
+void SetCameraPathFrame(
+  vtkCamera* initial, vtkCamera* camera, int frame, int frameCount, double yawDegrees)
 {
   if (!initial || !camera || initial == camera)
   {
@@ -1896,7 +1896,7 @@ void SetCameraPathFrame(vtkCamera* initial, vtkCamera* camera, int frame, int fr
     position[axis] += dolly * direction[axis];
   }
   // Turn about the world's +z axis through the (moved) camera.
-  const double yaw = vtkMath::RadiansFromDegrees(t * CameraPathYawDeg);
+  const double yaw = vtkMath::RadiansFromDegrees(t * yawDegrees);
   RotateAboutZ(direction, yaw);
   RotateAboutZ(viewUp, yaw);
   camera->SetPosition(position);

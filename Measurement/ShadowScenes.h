@@ -260,7 +260,8 @@ bool AddLightSetup(vtkRenderer* renderer, const std::string& setup);
  * Sets `camera` to frame `frame` of a smooth, deterministic path of
  * `frameCount` frames starting at `initial`: the camera moves straight along
  * the initial view direction by 20% of the initial focal distance in total
- * while turning left by 6 degrees about the world's +z axis through itself,
+ * while turning left by `yawDegrees` (6 by default) about the world's +z axis
+ * through itself,
  * both linearly in frame / (frameCount - 1). Frame 0 is `initial`; frames are
  * clamped to [0, frameCount - 1]. Everything else, the clipping range
  * included, is copied from `initial`. `initial` must be a separate copy of the
@@ -271,7 +272,8 @@ bool AddLightSetup(vtkRenderer* renderer, const std::string& setup);
  *   for (int f = 0; f < n; ++f)
  *     shadowscenes::SetCameraPathFrame(initial, renderer->GetActiveCamera(), f, n);
  */
-void SetCameraPathFrame(vtkCamera* initial, vtkCamera* camera, int frame, int frameCount);
+void SetCameraPathFrame(vtkCamera* initial, vtkCamera* camera, int frame, int frameCount,
+  double yawDegrees = 6.0);
 
 } // namespace shadowscenes
 

@@ -154,6 +154,7 @@ void PrintUsage(std::ostream& out)
          "  --size WxH               image size [640x360]\n"
          "  --flicker-frames N       frames of the camera path, 0 or 2..600 [60] {12}\n"
          "  --flicker-setups LIST    set-ups measured along the path [perpendicular]\n"
+         "  --flicker-yaw DEG        how far the camera turns along the path, 0..180 [6]\n"
          "  --timed-frames N         frames per frame-time figure, 1..100 [8] {3}\n"
          "  --out DIR                output directory [./bench]\n"
          "\n"
@@ -501,6 +502,17 @@ std::string ParseFlickerFrames(const std::string& value, Options& options)
   return {};
 }
 
+std::string ParseFlickerYaw(const std::string& value, Options& options)
+{
+  double degrees = 0.0;
+  if (!ParseDouble(value, degrees) || !(degrees >= 0.0 && degrees <= 180.0))
+  {
+    return "flicker yaw '" + value + "' is not a number of degrees in 0..180";
+  }
+  options.bench.FlickerYawDegrees = degrees;
+  return {};
+}
+
 std::string ParseTimedFrames(const std::string& value, Options& options)
 {
   int frames = 0;
@@ -664,6 +676,7 @@ const std::map<std::string, OptionParser>& BenchOptionParsers(bool withScenes)
     { "--size", ParseBenchSize },
     { "--flicker-frames", ParseFlickerFrames },
     { "--flicker-setups", ParseFlickerSetups },
+    { "--flicker-yaw", ParseFlickerYaw },
     { "--timed-frames", ParseTimedFrames },
     { "--out", ParseOutputDirectory },
   };
@@ -693,6 +706,7 @@ const std::map<std::string, OptionParser>& SpeedOptionParsers()
     auto speed = BenchOptionParsers(false);
     speed.erase("--flicker-frames");
     speed.erase("--flicker-setups");
+    speed.erase("--flicker-yaw");
     speed["--scenes"] = ParseSpeedScenes;
     speed["--moving"] = ParseMoving;
     return speed;

@@ -56,6 +56,9 @@ def main(program, output_dir):
         ["speed", "--scenes", "city"],
         ["speed", "--techniques", "magic"],
         ["speed", "--moving", "fast"],
+        ["speed", "--flicker-yaw", "30"],
+        ["bench", "--flicker-yaw", "270"],
+        ["bench", "--flicker-yaw", "nan"],
     ]
     for args in bad_inputs:
         result = run(program, *args)
