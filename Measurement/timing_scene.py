@@ -30,8 +30,9 @@ def add_ground_and_boxes(renderer, half_size, boxes):
         add(renderer, c)
 
 
-def add_sun(renderer):
-    sun = vtkLight(); sun.SetPositional(False); sun.SetPosition(0.3, 0.4, 1); sun.SetFocalPoint(0, 0, 0)
+def add_sun(renderer, toward=(0.3, 0.4, 1)):
+    """A directional scene light shining from `toward` to the origin."""
+    sun = vtkLight(); sun.SetPositional(False); sun.SetPosition(*toward); sun.SetFocalPoint(0, 0, 0)
     renderer.AddLight(sun)
 
 

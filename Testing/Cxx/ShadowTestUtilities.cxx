@@ -1,6 +1,7 @@
 #include "ShadowTestUtilities.h"
 
 #include "vtkAbstractShadowMapPass.h"
+#include "vtkAutomaticShadowMapPass.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkDepthShadowMapPass.h"
 #include "vtkDualDepthShadowMapPass.h"
@@ -77,7 +78,8 @@ PassKinds EveryPassKind()
     { "warped", NewPass<vtkWarpedShadowMapPass> },
     { "cascaded", NewPass<vtkCascadedShadowMapPass> },
     { "dual depth", NewPass<vtkDualDepthShadowMapPass> },
-    { "moments", NewPass<vtkVarianceShadowMapPass> } };
+    { "moments", NewPass<vtkVarianceShadowMapPass> },
+    { "automatic", NewPass<vtkAutomaticShadowMapPass> } };
 }
 
 //------------------------------------------------------------------------------

@@ -68,7 +68,7 @@ using PassKinds =
   std::vector<std::pair<std::string, std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>>>;
 
 /// Every preset: uniform, warped and cascaded views of depth maps; dual depth
-/// and moments in uniform views.
+/// and moments in uniform views; and the automatic pass, the default.
 PassKinds EveryPassKind();
 
 /// Resident memory of this process in MiB (llvmpipe keeps textures there),

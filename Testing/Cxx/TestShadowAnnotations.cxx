@@ -5,7 +5,7 @@
 #include "ShadowTestUtilities.h"
 
 #include "vtkAbstractShadowMapPass.h"
-#include "vtkCascadedShadowMapPass.h"
+#include "vtkAutomaticShadowMapPass.h"
 
 #include "vtkActor.h"
 #include "vtkAxesActor.h"
@@ -196,7 +196,7 @@ int DarkerPixels(vtkImageData* image, vtkImageData* reference)
 struct AnnotatedScene
 {
   TestScene Scene{ 360, 270 };
-  vtkNew<vtkCascadedShadowMapPass> Pass;
+  vtkNew<vtkAutomaticShadowMapPass> Pass; // the default
   vtkSmartPointer<vtkProp> Prop;
 
   explicit AnnotatedScene(const Annotation& annotation)
@@ -280,7 +280,7 @@ TEST(ShadowAnnotations, UnlitPropsRaiseNoWarning)
   vtkSmartPointer<vtkProp> axes = CubeAxes(scene);
   scene.Renderer->AddViewProp(axes);
   SetRoles(axes, -1, 1);
-  vtkNew<vtkCascadedShadowMapPass> pass;
+  vtkNew<vtkAutomaticShadowMapPass> pass;
   scene.Renderer->SetPass(pass);
   auto image = RenderAndCapture(scene.Window);
   EXPECT_GT(pass->GetNumberOfShaderBuilds(), 3);
