@@ -16,7 +16,7 @@ package_version() {
 # The host runs every test. The other stacks leave out the longest, whose
 # subject is the module's own code rather than the VTK it runs on, to keep the
 # three stacks within CI's time: the LeakSanitizer reruns (Leaks.*), the
-# 100-case fixed-seed sweep, the 80 pass toggles of the memory test and the
+# 100-case fixed-seed sweep, the 40 pass toggles of the memory test and the
 # soft shadows' three penumbra-width measurements (about eight minutes a stack
 # on this machine; the other soft-shadow tests run the same shader code).
 ctest_filter=()
