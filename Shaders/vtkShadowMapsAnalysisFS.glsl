@@ -3,7 +3,8 @@
 // They replace the colour of the receivers, by VTK_SHADOW_ANALYSIS: 1 the
 // analysed light's visibility as grey (per channel where translucent casters
 // tint it); 2 the texel density as a heat map; 4
-// the map (partition) each pixel was shaded from.
+// the map (partition) each pixel was shaded from; 5 the kind of views the
+// light got (VTK_SHADOW_VIEWS_COLOR), its odd maps a quarter darker.
 
 // Screen pixels covered by one map texel, along one side: 1 / sqrt(|det J|)
 // with J the derivative of texel coordinates by window pixels.
@@ -52,8 +53,12 @@ vec4 vtkShadowAnalysisColor(
   return vec4(vec3(visibility), 1.0);
 #elif VTK_SHADOW_ANALYSIS == 2
   return vec4(vtkShadowInsideMap(clip, view, features) ? vtkShadowDensityColor(footprint) : vec3(0.0), 1.0);
-#else
+#elif VTK_SHADOW_ANALYSIS == 4
   vec3 color = vtkShadowInsideMap(clip, view, features) ? vtkShadowPartitionColor(view - firstView) : vec3(0.0);
+  return vec4(color * (0.5 + 0.5 * visibility), 1.0);
+#else
+  float shade = (view - firstView) % 2 == 1 ? 0.75 : 1.0;
+  vec3 color = vtkShadowInsideMap(clip, view, features) ? shade * VTK_SHADOW_VIEWS_COLOR : vec3(0.0);
   return vec4(color * (0.5 + 0.5 * visibility), 1.0);
 #endif
 }

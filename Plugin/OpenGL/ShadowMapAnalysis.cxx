@@ -1,5 +1,6 @@
 #include "ShadowMapAnalysis.h"
 
+#include "ShadowMapGlslLiteral.h"
 #include "ShadowMapLight.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapTextureArray.h"
@@ -13,11 +14,31 @@
 #include "vtkShadowMapsViewFS.h"
 #include "ShadowMapVTKCompat.h"
 
+#include <map>
+
 namespace shadowmaps
 {
 //------------------------------------------------------------------------------
-void AddAnalysisReceiverCode(
-  int view, int light, const std::vector<ShadowLight>& lights, ReceiverCode& code)
+std::array<float, 3> ViewsKindColor(const std::string& viewsKind)
+{
+  static const std::map<std::string, std::array<float, 3>> legend = {
+    { "uniform", { 0.6f, 0.6f, 0.6f } },
+    { "cube faces", { 0.2f, 0.85f, 0.85f } },
+    { "lispsm", { 0.2f, 0.8f, 0.2f } },
+    { "gmnpr", { 0.55f, 0.65f, 0.1f } },
+    { "tsm", { 0.95f, 0.85f, 0.2f } },
+    { "psm", { 0.9f, 0.2f, 0.2f } },
+    { "psm-cube", { 0.8f, 0.3f, 0.9f } },
+    { "cascades", { 0.2f, 0.4f, 1.0f } },
+    { "tiles", { 1.0f, 0.55f, 0.1f } },
+  };
+  const auto found = legend.find(viewsKind);
+  return found != legend.end() ? found->second : std::array<float, 3>{ 1.0f, 1.0f, 1.0f };
+}
+
+//------------------------------------------------------------------------------
+void AddAnalysisReceiverCode(int view, int light, const std::string& viewsKind,
+  const std::vector<ShadowLight>& lights, ReceiverCode& code)
 {
   code.AnalysisFunctions.clear();
   code.AnalysisStatement.clear();
@@ -25,8 +46,10 @@ void AddAnalysisReceiverCode(
   {
     return;
   }
-  code.AnalysisFunctions =
-    "#define VTK_SHADOW_ANALYSIS " + std::to_string(view) + "\n" + vtkShadowMapsAnalysisFS;
+  const std::array<float, 3> colour = ViewsKindColor(viewsKind);
+  code.AnalysisFunctions = "#define VTK_SHADOW_ANALYSIS " + std::to_string(view) +
+    "\n#define VTK_SHADOW_VIEWS_COLOR vec3(" + GlslFloat(colour[0]) + ", " +
+    GlslFloat(colour[1]) + ", " + GlslFloat(colour[2]) + ")\n" + vtkShadowMapsAnalysisFS;
   code.AnalysisStatement = "  gl_FragData[0] = vtkShadowAnalysisColor(" +
     ReceiverCallArguments(lights[light], light) + ");\n";
 }

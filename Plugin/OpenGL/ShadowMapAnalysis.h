@@ -4,6 +4,7 @@
 #ifndef ShadowMapAnalysis_h
 #define ShadowMapAnalysis_h
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,10 +21,16 @@ class TextureArray;
 
 /// Fills code's analysis members for the receiver analysis view `view` of light
 /// `light`: VTK_SHADOW_ANALYSIS of vtkShadowMapsAnalysisFS (1 visibility, 2
-/// texel density, 4 partition; vtkAbstractShadowMapPass's AnalysisViewType
-/// values). Leaves them empty for 0 and for a light index out of range.
-void AddAnalysisReceiverCode(
-  int view, int light, const std::vector<ShadowLight>& lights, ReceiverCode& code);
+/// texel density, 4 partition, 5 chosen views; vtkAbstractShadowMapPass's
+/// AnalysisViewType values). `viewsKind`: the light's views
+/// (vtkShadowMapViews::GetKindName), coloured by ViewsKindColor in view 5.
+/// Leaves them empty for 0 and for a light index out of range.
+void AddAnalysisReceiverCode(int view, int light, const std::string& viewsKind,
+  const std::vector<ShadowLight>& lights, ReceiverCode& code);
+
+/// The colour of the CHOSEN_VIEWS view for a kind of views (the legend in
+/// vtkAbstractShadowMapPass.h); white for a kind it does not know.
+std::array<float, 3> ViewsKindColor(const std::string& viewsKind);
 
 /// The SHADOW_MAP view: one light's maps tiled over the viewport, depths as grey.
 class MapView

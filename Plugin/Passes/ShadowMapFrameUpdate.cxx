@@ -486,6 +486,11 @@ void FrameUpdate::UpdateShaders(vtkOpenGLRenderer* renderer)
   choices.CasterFaces = settings.CasterFaces;
   choices.AnalysisView = settings.RecolouringAnalysisView;
   choices.AnalysisLight = settings.AnalysisLight;
+  if (settings.AnalysisLight < static_cast<int>(this->FrameLights.size()))
+  {
+    const ShadowLight& analysed = this->FrameLights[settings.AnalysisLight];
+    choices.AnalysisViewsKind = settings.ViewsOf(analysed.Light)->GetKindName(analysed);
+  }
   choices.KeepsLightDepths = this->MapCombination() == Combination::NearestLightDepths;
   this->CodeFor = &this->Maps();
   if (this->Code.Update(this->Maps().Storage, settings.Representation, this->FrameLights,

@@ -31,7 +31,8 @@ bool PassShaders::Update(const MapStorage& storage, vtkShadowMapRepresentation* 
     (sized ? representation->GetSoftShadowCode() : "") +
     (storage.Transmittance ? vtkShadowMapsTransmittanceFS : "");
   this->Receivers.Transmittance = storage.Transmittance;
-  AddAnalysisReceiverCode(choices.AnalysisView, choices.AnalysisLight, lights, this->Receivers);
+  AddAnalysisReceiverCode(
+    choices.AnalysisView, choices.AnalysisLight, choices.AnalysisViewsKind, lights, this->Receivers);
   this->Receivers.Rehash();
 
   CasterCode& casters = this->Casters;

@@ -32,6 +32,9 @@ struct ShaderChoices
   /// The analysis view that recolours receivers (0: none) and its light.
   int AnalysisView = 0;
   int AnalysisLight = 0;
+  /// The analysed light's views (vtkShadowMapViews::GetKindName), which the
+  /// CHOSEN_VIEWS view colours.
+  std::string AnalysisViewsKind;
   /// The casters also write their light depth, for the processes' maps to be
   /// combined by it (Combination::NearestLightDepths).
   bool KeepsLightDepths = false;

@@ -329,7 +329,8 @@ public:
     SHADOW_FACTOR = 1,
     TEXEL_DENSITY = 2,
     SHADOW_MAP = 3,
-    PARTITION = 4
+    PARTITION = 4,
+    CHOSEN_VIEWS = 5
   };
 
   ///@{
@@ -342,17 +343,24 @@ public:
    *   covers (log scale): blue dense, green 1.5 pixels, orange to red
    *   undersampled (red channel 255 exactly when over 1.5 pixels);
    * - PARTITION: a colour per map view (cascade, cube face) that shaded the
-   *   pixel, darker in shadow.
+   *   pixel, darker in shadow;
+   * - CHOSEN_VIEWS: a colour per kind of views the light got (what the
+   *   automatic pass chose for it): grey uniform map, cyan uniform cube
+   *   faces, green LiSPSM, olive GMNPR, yellow TSM, red PSM, violet
+   *   Kozlov's post-perspective cube, blue cascades, orange tiles
+   *   (shadowmaps::ViewsKindColor); its odd maps (cascades, faces) a quarter
+   *   darker, and darker in shadow.
    * SHADOW_MAP replaces the frame by the light's maps, tiled, depth as grey.
    * Clamped; default NO_ANALYSIS.
    */
-  vtkSetClampMacro(AnalysisView, int, NO_ANALYSIS, PARTITION);
+  vtkSetClampMacro(AnalysisView, int, NO_ANALYSIS, CHOSEN_VIEWS);
   vtkGetMacro(AnalysisView, int);
   void SetAnalysisViewToNone() { this->SetAnalysisView(NO_ANALYSIS); }
   void SetAnalysisViewToShadowFactor() { this->SetAnalysisView(SHADOW_FACTOR); }
   void SetAnalysisViewToTexelDensity() { this->SetAnalysisView(TEXEL_DENSITY); }
   void SetAnalysisViewToShadowMap() { this->SetAnalysisView(SHADOW_MAP); }
   void SetAnalysisViewToPartition() { this->SetAnalysisView(PARTITION); }
+  void SetAnalysisViewToChosenViews() { this->SetAnalysisView(CHOSEN_VIEWS); }
   vtkSetClampMacro(AnalysisLight, int, 0, VTK_MAX_SHADOWED_LIGHTS - 1);
   vtkGetMacro(AnalysisLight, int);
   ///@}

@@ -142,6 +142,24 @@ LightView vtkShadowMapViews::InteractiveView(const ShadowFrame& frame, const Sha
 }
 
 //------------------------------------------------------------------------------
+const char* vtkShadowMapViews::GetKindName(const shadowmaps::ShadowLight& light) const
+{
+  switch (light.Layout)
+  {
+    case shadowmaps::ViewLayout::CubeFaces:
+      return "cube faces";
+    case shadowmaps::ViewLayout::PerspectiveCube:
+      return "psm-cube";
+    case shadowmaps::ViewLayout::Cascades:
+      return "cascades";
+    case shadowmaps::ViewLayout::Tiles:
+      return "tiles";
+    default:
+      return this->GetSingleMapKindName();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowMapViews::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

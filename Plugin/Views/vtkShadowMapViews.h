@@ -96,9 +96,19 @@ public:
   VTK_WRAPEXCLUDE static std::vector<shadowmaps::ShadowFrame> WidenedFrames(
     const shadowmaps::ShadowFrame& frame);
 
+  /**
+   * What `light`, as this strategy last fitted it, got: "cube faces",
+   * "psm-cube" (Kozlov's post-perspective cube), "cascades", "tiles", or for
+   * one map its warp ("uniform", "lispsm", "gmnpr", "psm", "tsm").
+   */
+  VTK_WRAPEXCLUDE const char* GetKindName(const shadowmaps::ShadowLight& light) const;
+
 protected:
   vtkShadowMapViews() = default;
   ~vtkShadowMapViews() override = default;
+
+  /** GetKindName of a light given one map: how the strategy warps it. */
+  virtual const char* GetSingleMapKindName() const { return "uniform"; }
 
   /** Fits a view of a light to a frame (for a cascade: to its sub-frustum). */
   using ViewFit = std::function<shadowmaps::LightView(const shadowmaps::ShadowFrame&)>;

@@ -97,6 +97,24 @@ std::vector<shadowmaps::Plane> ReceiversOfLight(const glm::dmat4& cameraViewProj
 } // namespace
 
 //------------------------------------------------------------------------------
+const char* vtkWarpedShadowMapViews::GetSingleMapKindName() const
+{
+  switch (this->WarpMode)
+  {
+    case LISPSM:
+      return "lispsm";
+    case GMNPR:
+      return "gmnpr";
+    case PSM:
+      return "psm";
+    case TSM:
+      return "tsm";
+    default:
+      return "uniform";
+  }
+}
+
+//------------------------------------------------------------------------------
 shadowmaps::DirectionalWarp vtkWarpedShadowMapViews::LightSpaceWarpOf(int warpMode)
 {
   return warpMode == GMNPR ? shadowmaps::DirectionalWarp::GMNPR : shadowmaps::DirectionalWarp::LiSPSM;

@@ -164,6 +164,7 @@ public:
   VTK_WRAPEXCLUDE static shadowmaps::DirectionalWarp LightSpaceWarpOf(int warpMode);
 
 protected:
+  const char* GetSingleMapKindName() const override;
   vtkWarpedShadowMapViews() = default;
   ~vtkWarpedShadowMapViews() override = default;
 

@@ -4,6 +4,7 @@
 // the camera moves) and only past the rows' margin; the user may pin the views
 // of every light or of one; processes holding different pieces choose the
 // same; shadows are where they fall, and the frame matches its baseline.
+#include "ShadowMapAnalysis.h"
 #include "ShadowMapGlm.h"
 #include "ShadowMapLightChoices.h"
 #include "ShadowMapViewsRules.h"
@@ -27,7 +28,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
 #include <vector>
 
 using namespace shadowtest;
@@ -509,4 +514,110 @@ TEST(ShadowAutomatic, DragsDrawCoarserMapsAndStillFramesFullOnes)
   EXPECT_EQ(pass->GetShadowMapResolution(), SmallMaps);
   pass->SetInteractiveResolutionScale(0.0);
   EXPECT_EQ(pass->GetInteractiveResolutionScale(), 0.0625) << "clamped";
+}
+
+namespace
+{
+/// The colour most pixels of `image` have, the background's aside.
+glm::ivec3 CommonestColour(vtkImageData* image)
+{
+  const std::vector<unsigned char> rgb = RgbBytes(image);
+  std::map<std::tuple<int, int, int>, int> counts;
+  for (std::size_t i = 0; i + 2 < rgb.size(); i += 3)
+  {
+    ++counts[{ rgb[i], rgb[i + 1], rgb[i + 2] }];
+  }
+  for (auto it = counts.begin(); it != counts.end();)
+  {
+    const auto& [r, g, b] = it->first;
+    const bool background = std::abs(r - 51) <= 1 && std::abs(g - 77) <= 1 &&
+      std::abs(b - 102) <= 1; // TestScene's (0.2, 0.3, 0.4)
+    it = background ? counts.erase(it) : std::next(it);
+  }
+  const auto commonest = std::max_element(counts.begin(), counts.end(),
+    [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto& [r, g, b] = commonest->first;
+  return { r, g, b };
+}
+
+/// Whether `colour` is the CHOSEN_VIEWS legend's for `kind`, in an even or an
+/// odd map, lit.
+bool IsLegendColour(const glm::ivec3& colour, const std::string& kind)
+{
+  const std::array<float, 3> legend = shadowmaps::ViewsKindColor(kind);
+  for (double shade : { 1.0, 0.75 })
+  {
+    bool same = true;
+    for (int c = 0; c < 3; ++c)
+    {
+      same = same && std::abs(colour[c] - 255.0 * shade * legend[c]) <= 1.0;
+    }
+    if (same)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The kind of views (vtkShadowMapViews::GetKindName) a light of `kind` gets
+/// from the automatic pass's `chosen` views.
+std::string KindOfChosen(int chosen, shadowmaps::LightKind kind)
+{
+  if (kind == shadowmaps::LightKind::Point)
+  {
+    return chosen == vtkAutomaticShadowMapPass::PSM_VIEWS ||
+        chosen == vtkAutomaticShadowMapPass::PSM_CUBE_VIEWS
+      ? "psm-cube"
+      : "cube faces";
+  }
+  return shadowmaps::ViewsKindName(static_cast<shadowmaps::ViewsKind>(chosen));
+}
+} // namespace
+
+// The CHOSEN_VIEWS analysis view colours what each light got: the legend's
+// colour of its chosen views covers most of the frame, and follows the choice
+// when it changes.
+TEST(ShadowAutomatic, ChosenViewsAnalysisColoursWhatEachLightGot)
+{
+  ThreeLights three;
+  vtkNew<vtkAutomaticShadowMapPass> pass;
+  pass->SetResolution(SmallMaps);
+  pass->SetAnalysisViewToChosenViews();
+  three.Scene.Renderer->SetPass(pass);
+  const shadowmaps::LightKind kinds[] = { shadowmaps::LightKind::Directional,
+    shadowmaps::LightKind::Spot, shadowmaps::LightKind::Point };
+  std::set<std::tuple<int, int, int>> colours;
+  for (int i = 0; i < 3; ++i)
+  {
+    pass->SetAnalysisLight(i);
+    ErrorCounter errors;
+    auto image = RenderAndCapture(three.Scene.Window);
+    EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+    const std::string kind = KindOfChosen(pass->GetChosenViews(i), kinds[i]);
+    const glm::ivec3 commonest = CommonestColour(image);
+    EXPECT_TRUE(IsLegendColour(commonest, kind))
+      << "light " << i << " got " << kind << "; the frame is mostly " << commonest.r << " "
+      << commonest.g << " " << commonest.b;
+    colours.insert({ commonest.r, commonest.g, commonest.b });
+  }
+  EXPECT_EQ(colours.size(), 3u) << "the sun, the spot and the point light got different views";
+
+  // The lamp of the walk: its uniform cube faces first, Kozlov's cube side-on.
+  for (double t : { 0.0, 1.0 })
+  {
+    WalkPastALamp walk;
+    walk.Walk(t);
+    vtkNew<vtkAutomaticShadowMapPass> lamp;
+    lamp->SetResolution(SmallMaps);
+    lamp->SetAnalysisViewToChosenViews();
+    walk.Scene.Renderer->SetPass(lamp);
+    auto image = RenderAndCapture(walk.Scene.Window);
+    const std::string kind = KindOfChosen(lamp->GetChosenViews(0), shadowmaps::LightKind::Point);
+    EXPECT_EQ(kind, t == 0.0 ? "cube faces" : "psm-cube");
+    const glm::ivec3 commonest = CommonestColour(image);
+    EXPECT_TRUE(IsLegendColour(commonest, kind))
+      << "t = " << t << ": the frame is mostly " << commonest.r << " " << commonest.g << " "
+      << commonest.b;
+  }
 }

@@ -471,7 +471,7 @@ int vtkPVShadowRenderView::GetNumberOfCascades()
 void vtkPVShadowRenderView::SetShadowAnalysisView(int view)
 {
   view = Clamped(this, "ShadowAnalysisView", view, static_cast<int>(vtkAbstractShadowMapPass::NO_ANALYSIS),
-    static_cast<int>(vtkAbstractShadowMapPass::PARTITION));
+    static_cast<int>(vtkAbstractShadowMapPass::CHOSEN_VIEWS));
   if (view != this->ShadowAnalysisView)
   {
     this->ShadowAnalysisView = view;

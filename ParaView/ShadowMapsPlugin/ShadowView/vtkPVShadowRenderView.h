@@ -107,7 +107,7 @@ public:
   ///@}
 
   ///@{
-  /** vtkAbstractShadowMapPass's AnalysisView (0 none, 1 shadow factor, 2 texel density, 3 map, 4 partition). */
+  /** vtkAbstractShadowMapPass's AnalysisView (0 none, 1 shadow factor, 2 texel density, 3 map, 4 partition, 5 chosen views). */
   void SetShadowAnalysisView(int view);
   vtkGetMacro(ShadowAnalysisView, int);
   ///@}
