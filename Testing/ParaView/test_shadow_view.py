@@ -104,6 +104,14 @@ view.ShadowAnalysisView = "Shadow factor"
 png = render(view, "ParaViewShadowViewFactor")
 check(luminance_at(view, png, SHADOWED) < 10 and luminance_at(view, png, LIT) > 245,
       "the shadow-factor analysis view shows visibility as grey (0 in the shadow, 1 on the lit ground)")
+# Chosen views: the legend's colour of the sun's views (vtkAbstractShadowMapPass.h), in
+# the even or odd (a quarter darker) map: blue cascades, green LiSPSM (the automatic pass's).
+view.ShadowAnalysisView = "Chosen views"
+for views_choice, legend in (("Cascades", (0.2, 0.4, 1.0)), ("Automatic", (0.2, 0.8, 0.2))):
+    view.ShadowViews = views_choice
+    lit = rgb_at(view, render(view, "ParaViewShadowViewChosen" + views_choice), LIT)
+    check(any(all(abs(c - 255 * shade * l) <= 1 for c, l in zip(lit, legend)) for shade in (1.0, 0.75)),
+          f"the chosen-views analysis view colours {views_choice} as its legend says {tuple(lit)}")
 Delete(view)
 
 # The filter, the bias and the moments' blur reach the passes: each changes the
