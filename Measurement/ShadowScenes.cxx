@@ -29,6 +29,7 @@
 #include <vtkMath.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
 #include <vtkPlane.h>
@@ -1599,6 +1600,70 @@ void BuildParaViewScene(vtkRenderer* renderer)
   HoldClippingRangeAlongCameraPath(renderer->GetActiveCamera());
 }
 
+namespace
+{
+/// The contour whose value the time steps change: its own type, so that
+/// AdvanceTimeVaryingData leaves the other scenes' contours alone.
+class TimeVaryingContour : public vtkContourFilter
+{
+public:
+  static TimeVaryingContour* New();
+  vtkTypeMacro(TimeVaryingContour, vtkContourFilter);
+};
+vtkStandardNewMacro(TimeVaryingContour);
+
+constexpr int ContourHalfExtent = 110;
+/// The contour's value swings around 160 (RTData's mid-range), where the
+/// surface's area changes least with it.
+double ContourValueAt(int step)
+{
+  return 160.0 + 12.0 * std::sin(0.7 * step);
+}
+} // namespace
+
+void BuildContourScene(vtkRenderer* renderer)
+{
+  const int h = ContourHalfExtent;
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-h, h, -h, h, -h, h);
+  vtkNew<TimeVaryingContour> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, ContourValueAt(0));
+  renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
+  AddGround(renderer, -4.0 * h, 4.0 * h, -4.0 * h, 4.0 * h, -1.3 * h);
+  AddActor(renderer, contour->GetOutputPort(), IsosurfaceColor, 0.4);
+
+  const double focalPoint[3] = { 0.0, 0.0, -0.2 * h };
+  double direction[3];
+  DirectionFromAngles(ParaViewCameraAzimuthDeg, ParaViewCameraElevationDeg, direction);
+  double position[3];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    position[axis] = focalPoint[axis] + 4.0 * h * direction[axis];
+  }
+  SetCamera(renderer, position, focalPoint, 30.0);
+  HoldClippingRangeAlongCameraPath(renderer->GetActiveCamera());
+}
+
+int AdvanceTimeVaryingData(vtkRenderer* renderer, int step)
+{
+  int advanced = 0;
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    vtkMapper* mapper = actor->GetMapper();
+    auto* contour = TimeVaryingContour::SafeDownCast(mapper ? mapper->GetInputAlgorithm() : nullptr);
+    if (contour)
+    {
+      contour->SetValue(0, ContourValueAt(step));
+      contour->Update();
+      ++advanced;
+    }
+  }
+  return advanced;
+}
+
 std::string ModelScenePath()
 {
   return "/usr/share/assimp/models/STL/Spider_binary.stl";
@@ -1813,13 +1878,19 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
     BuildStreetScene(renderer);
     return true;
   }
+  if (name == "contour")
+  {
+    BuildContourScene(renderer);
+    return true;
+  }
   if (name == "blocks")
   {
     BuildBlocksScene(renderer);
     return true;
   }
   error = "unknown scene '" + name +
-    "' (expected default, outdoor, paraview, model, city, field, room, street or blocks)";
+    "' (expected default, outdoor, paraview, model, city, field, room, street, blocks or "
+    "contour)";
   return false;
 }
 

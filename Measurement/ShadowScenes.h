@@ -161,6 +161,22 @@ constexpr int BlocksPerSide = 45;
  */
 void BuildBlocksScene(vtkRenderer* renderer);
 
+/**
+ * Data that change every frame, as a time series or a dragged slider change
+ * them: a wavelet of 221^3 samples contoured (about 780,000 triangles at
+ * every value AdvanceTimeVaryingData gives it), floating over a ground, seen
+ * as the paraview scene is.
+ */
+void BuildContourScene(vtkRenderer* renderer);
+
+/**
+ * Moves the renderer's time-varying data to time step `step`: the contour of
+ * BuildContourScene takes the step's value and updates (so a
+ * render after it draws new geometry without running the filter). Returns how
+ * many it advanced: 0 for a scene without time-varying data.
+ */
+int AdvanceTimeVaryingData(vtkRenderer* renderer, int step);
+
 /** The sweep's scenes: "default", the benchmark's, then "city", "field", "room". */
 std::vector<std::string> SweepSceneNames();
 
@@ -183,7 +199,8 @@ void BuildSmokeScene(vtkRenderer* renderer);
  * Builds a benchmark scene, a sweep scene, "street", "blocks", "glass",
  * "glass-opaque" (the glass scene whose translucent actors cast nothing: its
  * frame without transmittance maps), "smoke" (BuildSmokeScene), "smoke-opaque"
- * (its volume casting nothing) or "default" (BuildDefaultScene) into an empty
+ * (its volume casting nothing), "contour" (BuildContourScene) or "default"
+ * (BuildDefaultScene) into an empty
  * renderer. Returns false with a one-line `error` for an unknown name or a
  * scene that cannot be built.
  */

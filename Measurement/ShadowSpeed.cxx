@@ -75,6 +75,11 @@ bool BuildSpeedView(SpeedView& view, const std::string& scene, const SpeedOption
   {
     return false;
   }
+  if (options.MovingData && shadowscenes::AdvanceTimeVaryingData(view.Renderer, 0) == 0)
+  {
+    error = "scene '" + scene + "' has no time-varying data to play (--moving data: contour)";
+    return false;
+  }
   view.Initial->DeepCopy(view.Renderer->GetActiveCamera());
   view.Window->SetOffScreenRendering(1);
   view.Window->SetMultiSamples(0);
@@ -95,9 +100,21 @@ CameraMotion Orbit(SpeedView& view, double degreesPerFrame)
   };
 }
 
+/// Moving frames play the scene's time-varying data with the camera still.
+CameraMotion PlayData(SpeedView& view)
+{
+  return [&view](int frame, int) { shadowscenes::AdvanceTimeVaryingData(view.Renderer, frame); };
+}
+
+/// What moving frames do: play the data or orbit.
+CameraMotion MotionOf(SpeedView& view, const SpeedOptions& options)
+{
+  return options.MovingData ? PlayData(view) : Orbit(view, options.OrbitDegrees);
+}
+
 /// Counts one of our passes' work over `frames` moving frames after its first.
 MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique,
-  double degrees, int frames, bool interactive)
+  const CameraMotion& orbit, int frames, bool interactive)
 {
   MovingCounts counts;
   if (!technique.Ours)
@@ -108,7 +125,6 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
   // once over before counting, still and as counted (a drag's maps may take in
   // casters that still frames' maps cull).
   view.Renderer->SetPass(technique.Pass);
-  const CameraMotion orbit = Orbit(view, degrees);
   const auto orbitOnce = [&](bool drag) {
     const MovingCameraRenders renders(view.Window, drag);
     for (int frame = 0; frame < frames + 2; ++frame)
@@ -180,13 +196,14 @@ void MeasureCase(SpeedView& view, const std::string& scene, const std::string& s
     techniques.push_back(MakeTechnique(name, shadowscenes::LightKindOfSetup(setup) == "point", resolution));
     passes.push_back(techniques.back().Pass);
   }
+  const bool interactive = options.InteractiveMoving && !options.MovingData;
   const std::vector<Timing> timing = MeasureFrameTimes(view.Window, view.Renderer, passes,
-    options.TimedFrames, Orbit(view, options.OrbitDegrees), options.InteractiveMoving);
+    options.TimedFrames, MotionOf(view, options), interactive);
   for (size_t t = 0; t < techniques.size(); ++t)
   {
     SpeedRow row{ scene, setup, resolution, names[t], timing[t],
-      CountMovingWork(view, techniques[t], options.OrbitDegrees, MovingFramesCounted,
-        options.InteractiveMoving),
+      CountMovingWork(
+        view, techniques[t], MotionOf(view, options), MovingFramesCounted, interactive),
       CountSteadyGLCalls(view, techniques[t].Pass), CountProps(view.Renderer) };
     rows.push_back(row);
   }

@@ -49,6 +49,7 @@ struct Options
   shadowbench::Options bench = shadowbench::DefaultOptions();
   shadowsweep::Options sweep;
   bool interactiveMoving = true; // speed: moving frames rendered as a drag
+  bool movingData = false;       // speed: moving frames play the scene's data
   std::string scene = "default";
   std::string light = "sun";
   double azimuth = 60.0;
@@ -162,15 +163,19 @@ void PrintUsage(std::ostream& out)
          "  --scenes LIST            outdoor,paraview,model,street (225 actors),\n"
          "                           blocks (2,026 actors), glass (translucent casters),\n"
          "                           glass-opaque (the same casting opaque shadows only),\n"
-         "                           smoke (a volume), smoke-opaque (its volume not casting)\n"
+         "                           smoke (a volume), smoke-opaque (its volume not casting),\n"
+         "                           contour (an isosurface of 780k triangles whose value\n"
+         "                           --moving data changes every frame)\n"
          "                           [outdoor,paraview,model,street]\n"
          "  --setups LIST            [perpendicular,spot]\n"
          "  --techniques LIST        [uniform,lispsm,csm] (none and vtk always measured)\n"
          "  --size WxH               [960x540]\n"
-         "  --moving interactive|still\n"
+         "  --moving interactive|still|data\n"
          "                           moving frames rendered as a user's drag (the window's\n"
-         "                           desired update rate at an interactor's 15) or as a\n"
-         "                           scripted animation (the still rate) [interactive]\n"
+         "                           desired update rate at an interactor's 15), as a\n"
+         "                           scripted animation (the still rate), or as a time\n"
+         "                           series playing (the camera still, the scene's data\n"
+         "                           changed before each frame's clock starts) [interactive]\n"
          "  --out DIR                [./speed]\n"
          "\n"
          "options of sweep:\n"
@@ -408,13 +413,14 @@ std::string ParseSpeedScenes(const std::string& value, Options& options)
   names.push_back("glass-opaque");
   names.push_back("smoke");
   names.push_back("smoke-opaque");
+  names.push_back("contour");
   for (const std::string& scene : SplitList(value))
   {
     if (std::find(names.begin(), names.end(), scene) == names.end())
     {
       return "unknown scene '" + scene +
-        "' (expected outdoor, paraview, model, street, blocks, glass, glass-opaque, smoke or "
-        "smoke-opaque)";
+        "' (expected outdoor, paraview, model, street, blocks, glass, glass-opaque, smoke, "
+        "smoke-opaque or contour)";
     }
   }
   options.bench.Scenes = SplitList(value);
@@ -526,11 +532,12 @@ std::string ParseTimedFrames(const std::string& value, Options& options)
 
 std::string ParseMoving(const std::string& value, Options& options)
 {
-  if (value != "interactive" && value != "still")
+  if (value != "interactive" && value != "still" && value != "data")
   {
-    return "moving '" + value + "' is neither interactive nor still";
+    return "moving '" + value + "' is none of interactive, still and data";
   }
   options.interactiveMoving = value == "interactive";
+  options.movingData = value == "data";
   return {};
 }
 
@@ -738,6 +745,7 @@ shadowbench::SpeedOptions SpeedOptionsOf(const Options& options)
   speed.Height = options.bench.Height;
   speed.TimedFrames = options.bench.TimedFrames;
   speed.InteractiveMoving = options.interactiveMoving;
+  speed.MovingData = options.movingData;
   speed.OutputDirectory = options.bench.OutputDirectory;
   return speed;
 }

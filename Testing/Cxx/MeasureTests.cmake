@@ -62,6 +62,12 @@ target_link_libraries(TestShadowModelUp PRIVATE ShadowScenes VTK::IOPLY VTK::Fil
 vtk_module_autoinit(TARGETS TestShadowModelUp MODULES ${shadowscenes_vtk_modules})
 gtest_discover_tests(TestShadowModelUp DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
 
+# The benchmark's time-varying scene: new geometry every step.
+add_executable(TestShadowScenes Cxx/TestShadowScenes.cxx)
+target_link_libraries(TestShadowScenes PRIVATE ShadowScenes VTK::RenderingCore GTest::gtest_main)
+vtk_module_autoinit(TARGETS TestShadowScenes MODULES ${shadowscenes_vtk_modules})
+gtest_discover_tests(TestShadowScenes DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
+
 add_executable(TestShadowRecommendation Cxx/TestShadowRecommendation.cxx)
 target_link_libraries(TestShadowRecommendation PRIVATE ShadowBench GTest::gtest_main)
 gtest_discover_tests(TestShadowRecommendation)

@@ -56,6 +56,7 @@ def main(program, output_dir):
         ["speed", "--scenes", "city"],
         ["speed", "--techniques", "magic"],
         ["speed", "--moving", "fast"],
+        ["speed", "--scenes", "street", "--moving", "data"],
         ["speed", "--flicker-yaw", "30"],
         ["bench", "--flicker-yaw", "270"],
         ["bench", "--flicker-yaw", "nan"],

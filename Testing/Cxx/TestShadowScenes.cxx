@@ -1,0 +1,69 @@
+// The benchmark's time-varying scene (Measurement/ShadowScenes.h): each time
+// step gives the isosurface new geometry of about the same size, and only
+// scenes with such data can be played.
+#include "ShadowScenes.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
+#include <vtkMapper.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+
+#include <set>
+#include <string>
+
+namespace
+{
+/// The first actor whose mapper has input: the contour's (the ground comes first
+/// but its plane holds one cell).
+vtkPolyData* LargestInput(vtkRenderer* renderer)
+{
+  vtkPolyData* largest = nullptr;
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    auto* data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput());
+    if (data && (!largest || data->GetNumberOfCells() > largest->GetNumberOfCells()))
+    {
+      largest = data;
+    }
+  }
+  return largest;
+}
+} // namespace
+
+TEST(ShadowScenes, ContourGetsNewGeometryEveryStep)
+{
+  vtkNew<vtkRenderer> renderer;
+  std::string error;
+  ASSERT_TRUE(shadowscenes::BuildSceneByName(renderer, "contour", error)) << error;
+  std::set<vtkIdType> pointCounts;
+  for (int step = 0; step < 4; ++step)
+  {
+    ASSERT_EQ(shadowscenes::AdvanceTimeVaryingData(renderer, step), 1) << "step " << step;
+    vtkPolyData* surface = LargestInput(renderer);
+    ASSERT_NE(surface, nullptr);
+    const vtkMTimeType advanced = surface->GetMTime();
+    EXPECT_GT(surface->GetNumberOfCells(), 650000) << "step " << step;
+    EXPECT_LT(surface->GetNumberOfCells(), 900000) << "step " << step;
+    pointCounts.insert(surface->GetNumberOfPoints());
+    // Advanced before the render: drawing it runs no filter.
+    EXPECT_EQ(LargestInput(renderer)->GetMTime(), advanced);
+  }
+  EXPECT_EQ(pointCounts.size(), 4u) << "each step's surface differs";
+}
+
+TEST(ShadowScenes, ScenesWithoutTimeVaryingDataPlayNothing)
+{
+  for (const char* name : { "street", "paraview", "default" })
+  {
+    vtkNew<vtkRenderer> renderer;
+    std::string error;
+    ASSERT_TRUE(shadowscenes::BuildSceneByName(renderer, name, error)) << error;
+    EXPECT_EQ(shadowscenes::AdvanceTimeVaryingData(renderer, 1), 0) << name;
+  }
+}
