@@ -27,7 +27,9 @@ fi
 # One test per core: llvmpipe's shader compilation, Python's start and the
 # fitting run on one thread, so two tests side by side take about 0.7 of the
 # time one after the other (measured: 55 tests, 156 s serial, 109 s with -j2).
+# At most four: each llvmpipe context starts a thread per core.
 ctest_jobs="$(nproc 2>/dev/null || echo 2)"
+[ "$ctest_jobs" -le 4 ] || ctest_jobs=4
 
 passed=0
 failed=0

@@ -534,6 +534,10 @@ glm::ivec3 CommonestColour(vtkImageData* image)
       std::abs(b - 102) <= 1; // TestScene's (0.2, 0.3, 0.4)
     it = background ? counts.erase(it) : std::next(it);
   }
+  if (counts.empty())
+  {
+    return { -1, -1, -1 }; // nothing but background
+  }
   const auto commonest = std::max_element(counts.begin(), counts.end(),
     [](const auto& a, const auto& b) { return a.second < b.second; });
   const auto& [r, g, b] = commonest->first;

@@ -444,7 +444,8 @@ TEST(ShadowSweep, FixedSeedSweepStaysWithinItsBounds)
   options.Seed = 2;
   options.BaseWidth = 160;
   options.BaseHeight = 120;
-  options.OutputDirectory = std::string(SHADOWMAPS_TEST_OUTPUT_DIR) + "/sweep";
+  // Not CLI.Sweep's folder: ctest may run the two side by side.
+  options.OutputDirectory = std::string(SHADOWMAPS_TEST_OUTPUT_DIR) + "/fixed-seed-sweep";
   std::vector<CaseResult> results;
   std::ostringstream report, log;
   std::string error;
