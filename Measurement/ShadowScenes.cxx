@@ -1664,6 +1664,11 @@ int AdvanceTimeVaryingData(vtkRenderer* renderer, int step)
   return advanced;
 }
 
+bool HasTimeVaryingData(const std::string& scene)
+{
+  return scene == "contour";
+}
+
 std::string ModelScenePath()
 {
   return "/usr/share/assimp/models/STL/Spider_binary.stl";

@@ -177,6 +177,9 @@ void BuildContourScene(vtkRenderer* renderer);
  */
 int AdvanceTimeVaryingData(vtkRenderer* renderer, int step);
 
+/** True for the scenes whose data AdvanceTimeVaryingData plays: "contour". */
+bool HasTimeVaryingData(const std::string& scene);
+
 /** The sweep's scenes: "default", the benchmark's, then "city", "field", "room". */
 std::vector<std::string> SweepSceneNames();
 

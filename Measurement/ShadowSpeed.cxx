@@ -65,6 +65,15 @@ bool ValidateSpeedOptions(const SpeedOptions& options, std::string& error)
     error = "nothing to measure";
     return false;
   }
+  // Before any scene is measured: a run must not end on its last scene.
+  for (const std::string& scene : options.Scenes)
+  {
+    if (options.MovingData && !shadowscenes::HasTimeVaryingData(scene))
+    {
+      error = "scene '" + scene + "' has no time-varying data to play (--moving data: contour)";
+      return false;
+    }
+  }
   return MakeOutputDirectory(options.OutputDirectory, error);
 }
 
@@ -77,7 +86,7 @@ bool BuildSpeedView(SpeedView& view, const std::string& scene, const SpeedOption
   }
   if (options.MovingData && shadowscenes::AdvanceTimeVaryingData(view.Renderer, 0) == 0)
   {
-    error = "scene '" + scene + "' has no time-varying data to play (--moving data: contour)";
+    error = "scene '" + scene + "' played no time-varying data";
     return false;
   }
   view.Initial->DeepCopy(view.Renderer->GetActiveCamera());

@@ -41,6 +41,7 @@ TEST(ShadowScenes, ContourGetsNewGeometryEveryStep)
   vtkNew<vtkRenderer> renderer;
   std::string error;
   ASSERT_TRUE(shadowscenes::BuildSceneByName(renderer, "contour", error)) << error;
+  EXPECT_TRUE(shadowscenes::HasTimeVaryingData("contour"));
   std::set<vtkIdType> pointCounts;
   for (int step = 0; step < 4; ++step)
   {
@@ -67,5 +68,6 @@ TEST(ShadowScenes, ScenesWithoutTimeVaryingDataPlayNothing)
     std::string error;
     ASSERT_TRUE(shadowscenes::BuildSceneByName(renderer, name, error)) << error;
     EXPECT_EQ(shadowscenes::AdvanceTimeVaryingData(renderer, 1), 0) << name;
+    EXPECT_FALSE(shadowscenes::HasTimeVaryingData(name)) << name;
   }
 }

@@ -57,6 +57,7 @@ def main(program, output_dir):
         ["speed", "--techniques", "magic"],
         ["speed", "--moving", "fast"],
         ["speed", "--scenes", "street", "--moving", "data"],
+        ["speed", "--scenes", "contour,street", "--moving", "data"],
         ["speed", "--flicker-yaw", "30"],
         ["bench", "--flicker-yaw", "270"],
         ["bench", "--flicker-yaw", "nan"],
