@@ -84,11 +84,6 @@ bool BuildSpeedView(SpeedView& view, const std::string& scene, const SpeedOption
   {
     return false;
   }
-  if (options.MovingData && shadowscenes::AdvanceTimeVaryingData(view.Renderer, 0) == 0)
-  {
-    error = "scene '" + scene + "' played no time-varying data";
-    return false;
-  }
   view.Initial->DeepCopy(view.Renderer->GetActiveCamera());
   view.Window->SetOffScreenRendering(1);
   view.Window->SetMultiSamples(0);

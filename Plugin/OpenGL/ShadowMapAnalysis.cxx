@@ -46,10 +46,17 @@ void AddAnalysisReceiverCode(int view, int light, const std::string& viewsKind,
   {
     return;
   }
-  const std::array<float, 3> colour = ViewsKindColor(viewsKind);
-  code.AnalysisFunctions = "#define VTK_SHADOW_ANALYSIS " + std::to_string(view) +
-    "\n#define VTK_SHADOW_VIEWS_COLOR vec3(" + GlslFloat(colour[0]) + ", " +
-    GlslFloat(colour[1]) + ", " + GlslFloat(colour[2]) + ")\n" + vtkShadowMapsAnalysisFS;
+  // Only the view that shows it holds the colour: a change of the light's views
+  // rebuilds no other view's shaders.
+  std::string viewsColour;
+  if (view == ChosenViewsAnalysis)
+  {
+    const std::array<float, 3> colour = ViewsKindColor(viewsKind);
+    viewsColour = "#define VTK_SHADOW_VIEWS_COLOR vec3(" + GlslFloat(colour[0]) + ", " +
+      GlslFloat(colour[1]) + ", " + GlslFloat(colour[2]) + ")\n";
+  }
+  code.AnalysisFunctions = "#define VTK_SHADOW_ANALYSIS " + std::to_string(view) + "\n" +
+    viewsColour + vtkShadowMapsAnalysisFS;
   code.AnalysisStatement = "  gl_FragData[0] = vtkShadowAnalysisColor(" +
     ReceiverCallArguments(lights[light], light) + ");\n";
 }

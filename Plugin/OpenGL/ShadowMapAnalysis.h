@@ -19,6 +19,10 @@ struct ReceiverCode;
 struct ShadowLight;
 class TextureArray;
 
+/// The analysis view that colours a light's kind of views
+/// (vtkAbstractShadowMapPass::CHOSEN_VIEWS).
+constexpr int ChosenViewsAnalysis = 5;
+
 /// Fills code's analysis members for the receiver analysis view `view` of light
 /// `light`: VTK_SHADOW_ANALYSIS of vtkShadowMapsAnalysisFS (1 visibility, 2
 /// texel density, 4 partition, 5 chosen views; vtkAbstractShadowMapPass's

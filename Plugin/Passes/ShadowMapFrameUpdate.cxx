@@ -1,5 +1,6 @@
 #include "ShadowMapFrameUpdate.h"
 
+#include "ShadowMapAnalysis.h"
 #include "ShadowMapCasterShader.h"
 #include "ShadowMapLightDepth.h"
 #include "ShadowMapPropParts.h"
@@ -486,7 +487,9 @@ void FrameUpdate::UpdateShaders(vtkOpenGLRenderer* renderer)
   choices.CasterFaces = settings.CasterFaces;
   choices.AnalysisView = settings.RecolouringAnalysisView;
   choices.AnalysisLight = settings.AnalysisLight;
-  if (settings.AnalysisLight < static_cast<int>(this->FrameLights.size()))
+  static_assert(ChosenViewsAnalysis == vtkAbstractShadowMapPass::CHOSEN_VIEWS, "one value");
+  if (settings.RecolouringAnalysisView == ChosenViewsAnalysis &&
+    settings.AnalysisLight < static_cast<int>(this->FrameLights.size()))
   {
     const ShadowLight& analysed = this->FrameLights[settings.AnalysisLight];
     choices.AnalysisViewsKind = settings.ViewsOf(analysed.Light)->GetKindName(analysed);
