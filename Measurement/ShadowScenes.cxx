@@ -1658,6 +1658,7 @@ int AdvanceTimeVaryingData(vtkRenderer* renderer, int step)
     {
       contour->SetValue(0, ContourValueAt(step));
       contour->Update();
+      actor->Modified();
       ++advanced;
     }
   }

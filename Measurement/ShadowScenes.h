@@ -172,8 +172,12 @@ void BuildContourScene(vtkRenderer* renderer);
 /**
  * Moves the renderer's time-varying data to time step `step`: the contour of
  * BuildContourScene takes the step's value and updates (so a
- * render after it draws new geometry without running the filter). Returns how
- * many it advanced: 0 for a scene without time-varying data.
+ * render after it draws new geometry without running the filter), and its
+ * actor is marked modified, as an application must for VTK's own
+ * vtkShadowMapPass to render its map again: its baker pass compares the
+ * lights' and props' times, not their data's, and keeps the first step's
+ * shadow otherwise (this module's passes follow the data without it). Returns
+ * how many it advanced: 0 for a scene without time-varying data.
  */
 int AdvanceTimeVaryingData(vtkRenderer* renderer, int step);
 

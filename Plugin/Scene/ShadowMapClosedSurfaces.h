@@ -21,10 +21,12 @@ namespace shadowmaps
 {
 /// True if every edge of the polygons and strips is shared by exactly two of
 /// them, wound opposite ways (a consistently oriented surface: minimum
-/// blending tells its entries from its exits by facing), points being the same
-/// where their coordinates are (sources such as vtkCubeSource repeat corners
-/// per face), and there are no lines or vertices. False for data without
-/// polygons.
+/// blending tells its entries from its exits by facing), and there are no lines
+/// or vertices. Edges without a partner pair up with points that have the same
+/// coordinates made one (sources such as vtkCubeSource repeat corners per
+/// face); edges paired as stored count as paired even where other points
+/// coincide with theirs. False for data without polygons. Linear in the size of
+/// the surface: it runs for every new version of a caster's data.
 bool IsClosedSurface(vtkPolyData* surface);
 
 /// IsClosedSurface of every leaf of composite data; false for data that is not

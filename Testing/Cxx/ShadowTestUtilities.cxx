@@ -229,6 +229,20 @@ std::vector<unsigned char> FreshPassFrame(
   return frame;
 }
 
+//------------------------------------------------------------------------------
+std::string ChangeShownAsFresh(TestScene& scene, vtkAbstractShadowMapPass* pass,
+  const std::function<void()>& change,
+  const std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>& fresh, const std::string& what)
+{
+  scene.Renderer->SetPass(pass);
+  RenderAndCapture(scene.Window);
+  change();
+  const auto after = RgbBytes(RenderAndCapture(scene.Window));
+  return after == FreshPassFrame(scene, fresh())
+    ? std::string()
+    : what + ": the frame after the change differs from a fresh pass's";
+}
+
 namespace
 {
 // Pixel where `world` is seen, or {-1, -1} when off the image.

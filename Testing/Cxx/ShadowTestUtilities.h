@@ -89,6 +89,13 @@ vtkSmartPointer<vtkImageData> CaptureAsRendered(vtkRenderWindow* window);
 std::vector<unsigned char> FreshPassFrame(
   TestScene& scene, vtkSmartPointer<vtkAbstractShadowMapPass> fresh);
 
+/// Renders `scene` with `pass`, applies `change` and renders once more.
+/// Returns an empty string when that frame equals the one a fresh pass made by
+/// `fresh` draws, else what differed, named by `what`.
+std::string ChangeShownAsFresh(TestScene& scene, vtkAbstractShadowMapPass* pass,
+  const std::function<void()>& change,
+  const std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>& fresh, const std::string& what);
+
 /// Mean luminance (0-255) of a 3 x 3 block around the pixel where `world` is seen.
 double LuminanceAt(vtkRenderer* renderer, vtkImageData* image, const glm::dvec3& world);
 

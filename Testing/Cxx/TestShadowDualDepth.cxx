@@ -13,6 +13,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkCellArray.h"
+#include "vtkIdList.h"
 #include "vtkLineSource.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -408,6 +409,42 @@ TEST(DualDepth, ClosedSurfacesAreToldFromOpenOnes)
   flipped->GetPolys()->ReverseCellAtId(0);
   EXPECT_FALSE(shadowmaps::IsClosedSurface(flipped));
   EXPECT_FALSE(shadowmaps::IsClosedData(nullptr));
+}
+
+// The cases that take the other ways through the edge pairing: corners merged
+// that still leave an edge alone, a face given twice, faces that bound nothing.
+TEST(DualDepth, OpenSurfacesStayOpenWhateverPointsMerge)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->Update();
+  vtkNew<vtkPolyData> lidless;
+  lidless->DeepCopy(cube->GetOutput());
+  vtkNew<vtkCellArray> fiveFaces;
+  for (vtkIdType face = 1; face < 6; ++face)
+  {
+    vtkNew<vtkIdList> ids;
+    lidless->GetPolys()->GetCellAtId(face, ids);
+    fiveFaces->InsertNextCell(ids);
+  }
+  lidless->SetPolys(fiveFaces);
+  EXPECT_FALSE(shadowmaps::IsClosedSurface(lidless));
+
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  vtkNew<vtkPolyData> doubled;
+  doubled->DeepCopy(sphere->GetOutput());
+  vtkNew<vtkIdList> first;
+  doubled->GetPolys()->GetCellAtId(0, first);
+  doubled->GetPolys()->InsertNextCell(first);
+  EXPECT_FALSE(shadowmaps::IsClosedSurface(doubled));
+
+  vtkNew<vtkPolyData> flat;
+  flat->SetPoints(sphere->GetOutput()->GetPoints());
+  vtkNew<vtkCellArray> degenerate;
+  const vtkIdType samePoint[3] = { 0, 0, 0 };
+  degenerate->InsertNextCell(3, samePoint);
+  flat->SetPolys(degenerate);
+  EXPECT_FALSE(shadowmaps::IsClosedSurface(flat));
 }
 
 class DualDepthViewsAndModes : public ::testing::TestWithParam<std::tuple<std::string, int>>

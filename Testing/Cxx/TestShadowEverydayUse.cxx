@@ -69,20 +69,6 @@ const glm::dvec3 AwayFromEverything(-4.0, -3.0, 0.0);
 // a caster changing inside the scene leaves as they are: only its version
 // tells the pass to render the maps again.
 
-// Renders `scene` with `pass`, applies `change`, renders once more and
-// expects that frame to equal the one a fresh pass of `fresh`'s kind draws.
-void ExpectChangeShownAsFresh(TestScene& scene, vtkAbstractShadowMapPass* pass,
-  const std::function<void()>& change,
-  const std::function<vtkSmartPointer<vtkAbstractShadowMapPass>()>& fresh, const std::string& what)
-{
-  scene.Renderer->SetPass(pass);
-  RenderAndCapture(scene.Window);
-  change();
-  const auto after = RgbBytes(RenderAndCapture(scene.Window));
-  EXPECT_TRUE(after == FreshPassFrame(scene, fresh())) << what << ": the frame after the change "
-                                                        "differs from a fresh pass's";
-}
-
 // Every pass kind, the warps the focused map's default (uniform) leaves out
 // (LiSPSM, TSM with its linear depth, PSM), and casting back faces only.
 PassKinds EveryPassKindAndWarp()
@@ -127,9 +113,9 @@ TEST(ShadowEverydayUse, ClippingPlaneMovedInPlace)
   EXPECT_GT(LuminanceAt(scene.Renderer, image, { 0.5, 0.0, 0.0 }), LitAbove) << "after the move";
   EXPECT_TRUE(RgbBytes(image) == FreshPassFrame(scene, NewPass<vtkWarpedShadowMapPass>()));
   // And turn it round: the other half comes back.
-  ExpectChangeShownAsFresh(
+  EXPECT_EQ(ChangeShownAsFresh(
     scene, pass, [&] { plane->SetNormal(-1.0, 0.0, 0.0); plane->SetOrigin(0.0, 0.0, 0.0); },
-    NewPass<vtkWarpedShadowMapPass>, "normal turned");
+    NewPass<vtkWarpedShadowMapPass>, "normal turned"), "");
 }
 
 // A part of an assembly, its transform or its input, moves the shadow.
@@ -144,15 +130,15 @@ TEST(ShadowEverydayUse, AssemblyParts)
   vtkNew<vtkDepthShadowMapPass> pass;
   vtkNew<vtkCubeSource> cube; // the sphere's bounds: the same fits, another shadow
   cube->SetBounds(-1.0, 1.0, -1.0, 1.0, 0.5, 2.5);
-  ExpectChangeShownAsFresh(
+  EXPECT_EQ(ChangeShownAsFresh(
     scene, pass,
     [&] { vtkPolyDataMapper::SafeDownCast(scene.Sphere->GetMapper())->SetInputConnection(cube->GetOutputPort()); },
-    NewPass<vtkDepthShadowMapPass>, "part's mapper input");
+    NewPass<vtkDepthShadowMapPass>, "part's mapper input"), "");
   auto image = CaptureAsRendered(scene.Window);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, { 0.9, 0.9, 0.0 }), ShadowedBelow) << "cube's corner";
-  ExpectChangeShownAsFresh(
+  EXPECT_EQ(ChangeShownAsFresh(
     scene, pass, [&] { scene.Sphere->SetPosition(3.0, -1.0, 0.0); },
-    NewPass<vtkDepthShadowMapPass>, "part's position");
+    NewPass<vtkDepthShadowMapPass>, "part's position"), "");
   // Assemblies modify their parts at every draw (PokeMatrix): still frames
   // must still keep the maps.
   scene.Window->Render();
@@ -171,9 +157,9 @@ TEST(ShadowEverydayUse, PropAssemblyParts)
   scene.Renderer->AddViewProp(assembly);
   vtkNew<vtkDepthShadowMapPass> pass;
   // Half the sphere's facets, in the same bounds.
-  ExpectChangeShownAsFresh(
+  EXPECT_EQ(ChangeShownAsFresh(
     scene, pass, [&] { scene.SphereSource->SetThetaResolution(4); },
-    NewPass<vtkDepthShadowMapPass>, "part's input");
+    NewPass<vtkDepthShadowMapPass>, "part's input"), "");
   auto image = CaptureAsRendered(scene.Window);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, UnderSphere), ShadowedBelow);
   EXPECT_GT(LuminanceAt(scene.Renderer, image, { 0.75, 0.75, 0.0 }), LitAbove) << "cut away by the facets";
@@ -202,8 +188,8 @@ TEST(ShadowEverydayUse, GlyphSourceChanged)
   glyphs->SetMapper(mapper);
   scene.Renderer->AddActor(glyphs);
   vtkNew<vtkDepthShadowMapPass> pass;
-  ExpectChangeShownAsFresh(
-    scene, pass, [&] { shape->SetXLength(3.0); }, NewPass<vtkDepthShadowMapPass>, "glyph source");
+  EXPECT_EQ(ChangeShownAsFresh(
+    scene, pass, [&] { shape->SetXLength(3.0); }, NewPass<vtkDepthShadowMapPass>, "glyph source"), "");
   auto image = CaptureAsRendered(scene.Window);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, { 1.2, 0.0, 0.0 }), ShadowedBelow);
 }
@@ -226,9 +212,9 @@ TEST(ShadowEverydayUse, FollowerTurnsWithTheCamera)
   follower->SetCamera(scene.Renderer->GetActiveCamera());
   scene.Renderer->AddActor(follower);
   vtkNew<vtkDepthShadowMapPass> pass;
-  ExpectChangeShownAsFresh(
+  EXPECT_EQ(ChangeShownAsFresh(
     scene, pass, [&] { scene.Renderer->GetActiveCamera()->Azimuth(60.0); },
-    NewPass<vtkDepthShadowMapPass>, "camera turned");
+    NewPass<vtkDepthShadowMapPass>, "camera turned"), "");
 }
 
 // A level-of-detail prop switched to another level draws that level into
@@ -250,8 +236,8 @@ TEST(ShadowEverydayUse, LevelOfDetailSwitch)
   lod->SetSelectedLODID(fine);
   scene.Renderer->AddViewProp(lod);
   vtkNew<vtkDepthShadowMapPass> pass;
-  ExpectChangeShownAsFresh(
-    scene, pass, [&] { lod->SetSelectedLODID(boxed); }, NewPass<vtkDepthShadowMapPass>, "level switched");
+  EXPECT_EQ(ChangeShownAsFresh(
+    scene, pass, [&] { lod->SetSelectedLODID(boxed); }, NewPass<vtkDepthShadowMapPass>, "level switched"), "");
   auto image = CaptureAsRendered(scene.Window);
   EXPECT_LT(LuminanceAt(scene.Renderer, image, { 0.9, 0.9, 0.0 }), ShadowedBelow) << "box's corner";
 }

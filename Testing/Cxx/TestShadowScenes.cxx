@@ -43,9 +43,13 @@ TEST(ShadowScenes, ContourGetsNewGeometryEveryStep)
   ASSERT_TRUE(shadowscenes::BuildSceneByName(renderer, "contour", error)) << error;
   EXPECT_TRUE(shadowscenes::HasTimeVaryingData("contour"));
   std::set<vtkIdType> pointCounts;
+  vtkActor* contour = renderer->GetActors()->GetLastActor();
   for (int step = 0; step < 4; ++step)
   {
+    const vtkMTimeType actorBefore = contour->GetMTime();
     ASSERT_EQ(shadowscenes::AdvanceTimeVaryingData(renderer, step), 1) << "step " << step;
+    EXPECT_GT(contour->GetMTime(), actorBefore)
+      << "step " << step << ": the actor is touched, for VTK's pass to render its map again";
     vtkPolyData* surface = LargestInput(renderer);
     ASSERT_NE(surface, nullptr);
     const vtkMTimeType advanced = surface->GetMTime();
