@@ -198,6 +198,10 @@ void MeasureCase(SpeedView& view, const std::string& scene, const std::string& s
   for (const std::string& name : names)
   {
     techniques.push_back(MakeTechnique(name, shadowscenes::LightKindOfSetup(setup) == "point", resolution));
+    if (techniques.back().Ours)
+    {
+      techniques.back().Ours->SetAnimationKeepsViews(options.AnimationKeepsViews);
+    }
     passes.push_back(techniques.back().Pass);
   }
   const bool interactive = options.InteractiveMoving && !options.MovingData;

@@ -31,6 +31,9 @@ struct SpeedOptions
   /// Moving frames are rendered as a user's drag, or at the still rate as a
   /// scripted animation is (MovingCameraRenders).
   bool InteractiveMoving = true;
+  /// Our passes keep views in still renders (AnimationKeepsViews), as a movie
+  /// maker asks them to.
+  bool AnimationKeepsViews = false;
   /// Moving frames keep the camera and play the scene's time-varying data
   /// instead (shadowscenes::AdvanceTimeVaryingData, run before the clock
   /// starts), at the still rate as an animation plays.

@@ -50,6 +50,7 @@ struct Options
   shadowsweep::Options sweep;
   bool interactiveMoving = true; // speed: moving frames rendered as a drag
   bool movingData = false;       // speed: moving frames play the scene's data
+  bool movie = false;            // speed: still moving frames, views kept
   std::string scene = "default";
   std::string light = "sun";
   double azimuth = 60.0;
@@ -170,10 +171,11 @@ void PrintUsage(std::ostream& out)
          "  --setups LIST            [perpendicular,spot]\n"
          "  --techniques LIST        [uniform,lispsm,csm] (none and vtk always measured)\n"
          "  --size WxH               [960x540]\n"
-         "  --moving interactive|still|data\n"
+         "  --moving interactive|still|movie|data\n"
          "                           moving frames rendered as a user's drag (the window's\n"
          "                           desired update rate at an interactor's 15), as a\n"
-         "                           scripted animation (the still rate), or as a time\n"
+         "                           scripted animation (the still rate), as one with our\n"
+         "                           passes' AnimationKeepsViews on (movie), or as a time\n"
          "                           series playing (the camera still, the scene's data\n"
          "                           changed before each frame's clock starts) [interactive]\n"
          "  --out DIR                [./speed]\n"
@@ -532,12 +534,13 @@ std::string ParseTimedFrames(const std::string& value, Options& options)
 
 std::string ParseMoving(const std::string& value, Options& options)
 {
-  if (value != "interactive" && value != "still" && value != "data")
+  if (value != "interactive" && value != "still" && value != "movie" && value != "data")
   {
-    return "moving '" + value + "' is none of interactive, still and data";
+    return "moving '" + value + "' is none of interactive, still, movie and data";
   }
   options.interactiveMoving = value == "interactive";
   options.movingData = value == "data";
+  options.movie = value == "movie";
   return {};
 }
 
@@ -746,6 +749,7 @@ shadowbench::SpeedOptions SpeedOptionsOf(const Options& options)
   speed.TimedFrames = options.bench.TimedFrames;
   speed.InteractiveMoving = options.interactiveMoving;
   speed.MovingData = options.movingData;
+  speed.AnimationKeepsViews = options.movie;
   speed.OutputDirectory = options.bench.OutputDirectory;
   return speed;
 }

@@ -246,6 +246,7 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
     settings.UseSceneBounds && Aabb::FromBounds(settings.SceneBounds).IsUsable();
   this->TranslucentOnAnyProcess =
     this->Policy.BeginFrame(this->CurrentFrame, this->Casters, boundsGiven);
+  this->CurrentFrame.StillKeepsViews = !this->CurrentFrame.Interactive && settings.AnimationKeepsViews;
   this->TakePolicyWarnings();
   std::vector<vtkMTimeType> signature = FramePolicy::Signature(
     renderer, settings.ParametersTime(), this->CurrentFrame, this->FrameLights, this->Casters);

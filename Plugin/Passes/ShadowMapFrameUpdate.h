@@ -83,6 +83,8 @@ struct FrameSettings
   double NormalOffset = 1.0;
   bool ShadowReachCulling = true;
   double InteractiveUpdateRate = 1.0;
+  /// Still renders may keep views as interactive ones do (ShadowFrame::StillKeepsViews).
+  bool AnimationKeepsViews = false;
   /// The share of Resolution maps drawn during a drag are drawn at.
   double InteractiveResolutionScale = 1.0;
   /// An analysis view that recolours the receivers (0: none).

@@ -573,6 +573,7 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
   settings.NormalOffset = this->NormalOffset;
   settings.ShadowReachCulling = this->ShadowReachCulling;
   settings.InteractiveUpdateRate = this->InteractiveUpdateRate;
+  settings.AnimationKeepsViews = this->AnimationKeepsViews;
   settings.InteractiveResolutionScale = this->InteractiveResolutionScale;
   // Analysis settings are pass parameters: a change re-renders the maps.
   const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
@@ -759,6 +760,7 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalOffset: " << this->NormalOffset << "\n";
   os << indent << "ShadowReachCulling: " << this->ShadowReachCulling << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "AnimationKeepsViews: " << this->AnimationKeepsViews << "\n";
   os << indent << "InteractiveResolutionScale: " << this->InteractiveResolutionScale << "\n";
   os << indent << "AnalysisView: " << this->AnalysisView << "\n";
   os << indent << "AnalysisLight: " << this->AnalysisLight << "\n";

@@ -290,6 +290,22 @@ public:
 
   ///@{
   /**
+   * Whether still renders (a scripted camera path, a movie, a time series
+   * played) keep a light's views while they still serve the frame, under the
+   * rule interactive renders follow (InteractiveTexelRatio), with maps of the
+   * full Resolution: a camera path then re-renders warped and cascaded maps
+   * only every few frames. Off by default: every still render fits its views
+   * anew, so that a frame does not depend on the camera's path and image
+   * tests repeat exactly. Every process of a parallel renderer must set it
+   * alike.
+   */
+  vtkSetMacro(AnimationKeepsViews, bool);
+  vtkGetMacro(AnimationKeepsViews, bool);
+  vtkBooleanMacro(AnimationKeepsViews, bool);
+  ///@}
+
+  ///@{
+  /**
    * InteractiveTexelRatio (vtkShadowMapViews) of the views the pass uses now
    * (GetViews(); a views object set later keeps its own), [1, 16], default
    * 1.5: how much coarser a view kept while the user drags the camera may get
@@ -489,6 +505,7 @@ protected:
   double NormalOffset = 1.0;
   bool ShadowReachCulling = true;
   double InteractiveUpdateRate = 1.0;
+  bool AnimationKeepsViews = false;
   double InteractiveResolutionScale = 1.0;
   int AnalysisView = NO_ANALYSIS;
   int AnalysisLight = 0;

@@ -201,6 +201,10 @@ struct ShadowFrame
   /// follow the camera may keep a light's LastViews while they still serve,
   /// and re-render its maps only every few frames. Still frames fit anew.
   bool Interactive = false;
+  /// A still render of a pass whose AnimationKeepsViews is on (a scripted
+  /// camera path): it may keep views as interactive frames do, but draws full
+  /// maps, which the still frames after it keep.
+  bool StillKeepsViews = false;
 
   glm::dmat4 CameraViewProjection() const { return this->CameraProjection * this->CameraView; }
 };

@@ -114,7 +114,7 @@ void vtkShadowMapViews::FitUniformViews(const ShadowFrame& frame, ShadowLight& l
 //------------------------------------------------------------------------------
 bool vtkShadowMapViews::MayKeepViews(const ShadowFrame& frame) const
 {
-  return frame.Interactive && this->InteractiveTexelRatio > 1.0;
+  return (frame.Interactive || frame.StillKeepsViews) && this->InteractiveTexelRatio > 1.0;
 }
 
 //------------------------------------------------------------------------------

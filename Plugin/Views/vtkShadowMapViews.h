@@ -52,9 +52,9 @@ public:
    * Fits the views of `light` for `frame`: sets its Layout, Views (one per map
    * layer), PossibleFeatures and what the layout needs (Tiles, CascadeDepths,
    * CoverageBlendFraction, Fade). Views may come out non-finite on a
-   * degenerate frame; the pass then drops the light for the frame. In
-   * interactive frames (frame.Interactive) a strategy whose views follow the
-   * camera may give light.LastViews again while they serve; still frames must
+   * degenerate frame; the pass then drops the light for the frame. In frames
+   * that may keep views (MayKeepViews) a strategy whose views follow the
+   * camera may give light.LastViews again while they serve; other frames must
    * get the frame's own fit.
    */
   VTK_WRAPEXCLUDE virtual void FitLight(
@@ -84,7 +84,8 @@ public:
 
   /**
    * Whether views may be kept in `frame` (InteractiveView): an interactive
-   * frame, with InteractiveTexelRatio above 1.
+   * frame, or a still one of a pass whose AnimationKeepsViews is on
+   * (frame.StillKeepsViews), with InteractiveTexelRatio above 1.
    */
   VTK_WRAPEXCLUDE bool MayKeepViews(const shadowmaps::ShadowFrame& frame) const;
 
@@ -115,8 +116,8 @@ protected:
 
   /**
    * The view to render in `frame` for `fresh`, the frame's own fit by `fit`:
-   * fresh in still frames and when InteractiveTexelRatio is 1. In interactive
-   * frames, `last` (the view the light was last rendered with, if any) while
+   * fresh when views may not be kept (MayKeepViews). Where they may,
+   * `last` (the view the light was last rendered with, if any) while
    * it still serves as fresh would; else, unless `fit` is empty, the fit of
    * the widest of a few widened cameras whose texels stay within three
    * quarters of the ratio's margin, so that it lasts several frames; else

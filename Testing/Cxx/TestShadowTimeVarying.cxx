@@ -6,6 +6,9 @@
 #include "ShadowTestUtilities.h"
 #include "ShadowMapVTKCompat.h" // the GL loader first
 #include "vtkAbstractShadowMapPass.h"
+#include "vtkCamera.h"
+#include "vtkCascadedShadowMapPass.h"
+#include "vtkWarpedShadowMapPass.h"
 #include "vtkActor.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkImageData.h"
@@ -167,4 +170,56 @@ TEST(ShadowTimeVarying, ShadowFollowsTheDataUnderASun)
   image = RenderAndCapture(scene.Scene.Window);
   EXPECT_GT(LuminanceAt(scene.Scene.Renderer, image, underCentre), LitAbove) << "moved away";
   EXPECT_LT(LuminanceAt(scene.Scene.Renderer, image, underMoved), ShadowedBelow) << "moved there";
+}
+
+// A scripted camera path (still renders, as a movie is made: a turn of 6
+// degrees and a step of 3.6 aside over 12 frames) with
+// AnimationKeepsViews on keeps warped and cascaded views as a drag does, at
+// the full resolution; off, the default, it fits every frame anew.
+TEST(ShadowTimeVarying, AnimationKeepsViewsAlongAScriptedOrbit)
+{
+  const auto lispsm = [] {
+    auto pass = vtkSmartPointer<vtkWarpedShadowMapPass>::New();
+    pass->SetWarpModeToLiSPSM();
+    return vtkSmartPointer<vtkAbstractShadowMapPass>(pass);
+  };
+  const PassKinds kinds = { { "LiSPSM", lispsm }, { "cascades", NewPass<vtkCascadedShadowMapPass> } };
+  constexpr int Frames = 12;
+  for (const auto& kind : kinds)
+  {
+    int renderedLayers[2] = { 0, 0 };
+    for (const bool keeps : { false, true })
+    {
+      TestScene scene;
+      scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
+      vtkSmartPointer<vtkAbstractShadowMapPass> pass = kind.second();
+      pass->SetAnimationKeepsViews(keeps);
+      scene.Renderer->SetPass(pass);
+      scene.Window->Render();
+      for (int frame = 0; frame < Frames; ++frame)
+      {
+        // A turn and a step aside: stable cascades keep their layers through
+        // a turn alone.
+        vtkCamera* camera = scene.Renderer->GetActiveCamera();
+        camera->Azimuth(0.5);
+        const double* position = camera->GetPosition();
+        const double* focus = camera->GetFocalPoint();
+        camera->SetPosition(position[0] + 0.3, position[1], position[2]);
+        camera->SetFocalPoint(focus[0] + 0.3, focus[1], focus[2]);
+        scene.Renderer->ResetCameraClippingRange();
+        scene.Window->Render();
+        renderedLayers[keeps] += pass->GetNumberOfRenderedLayers();
+        auto image = CaptureAsRendered(scene.Window);
+        EXPECT_EQ(pass->GetShadowMapResolution(), kind.first == "cascades" ? 1024 : 2048)
+          << kind.first << ": full maps";
+        EXPECT_LT(LuminanceAt(scene.Renderer, image,
+                    GroundShadowOfSphereCenter(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)))),
+          ShadowedBelow)
+          << kind.first << ", keeps " << keeps << ", frame " << frame;
+      }
+    }
+    EXPECT_LT(2 * renderedLayers[1], renderedLayers[0])
+      << kind.first << ": layers re-rendered along the path, kept " << renderedLayers[1]
+      << " against " << renderedLayers[0];
+  }
 }
