@@ -26,6 +26,7 @@
 #include <vtkGLTFReader.h>
 #include <vtkGradientFilter.h>
 #include <vtkLight.h>
+#include <vtkLinearSubdivisionFilter.h>
 #include <vtkMath.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
@@ -1621,17 +1622,15 @@ double ContourValueAt(int step)
 }
 } // namespace
 
-void BuildContourScene(vtkRenderer* renderer)
+namespace
+{
+// The contour scenes' ground, background and camera around `surface`.
+void BuildIsosurfaceScene(vtkRenderer* renderer, vtkAlgorithmOutput* surface)
 {
   const int h = ContourHalfExtent;
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-h, h, -h, h, -h, h);
-  vtkNew<TimeVaryingContour> contour;
-  contour->SetInputConnection(wavelet->GetOutputPort());
-  contour->SetValue(0, ContourValueAt(0));
   renderer->SetBackground(BackgroundColor.r, BackgroundColor.g, BackgroundColor.b);
   AddGround(renderer, -4.0 * h, 4.0 * h, -4.0 * h, 4.0 * h, -1.3 * h);
-  AddActor(renderer, contour->GetOutputPort(), IsosurfaceColor, 0.4);
+  AddActor(renderer, surface, IsosurfaceColor, 0.4);
 
   const double focalPoint[3] = { 0.0, 0.0, -0.2 * h };
   double direction[3];
@@ -1643,6 +1642,33 @@ void BuildContourScene(vtkRenderer* renderer)
   }
   SetCamera(renderer, position, focalPoint, 30.0);
   HoldClippingRangeAlongCameraPath(renderer->GetActiveCamera());
+}
+} // namespace
+
+void BuildContourScene(vtkRenderer* renderer)
+{
+  const int h = ContourHalfExtent;
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-h, h, -h, h, -h, h);
+  vtkNew<TimeVaryingContour> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, ContourValueAt(0));
+  BuildIsosurfaceScene(renderer, contour->GetOutputPort());
+}
+
+void BuildBigMeshScene(vtkRenderer* renderer)
+{
+  const int h = ContourHalfExtent;
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-h, h, -h, h, -h, h);
+  // Not a TimeVaryingContour: AdvanceTimeVaryingData leaves it alone.
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, ContourValueAt(0));
+  vtkNew<vtkLinearSubdivisionFilter> finer;
+  finer->SetInputConnection(contour->GetOutputPort());
+  finer->SetNumberOfSubdivisions(1);
+  BuildIsosurfaceScene(renderer, finer->GetOutputPort());
 }
 
 int AdvanceTimeVaryingData(vtkRenderer* renderer, int step)
@@ -1887,6 +1913,11 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
   if (name == "contour")
   {
     BuildContourScene(renderer);
+    return true;
+  }
+  if (name == "bigmesh")
+  {
+    BuildBigMeshScene(renderer);
     return true;
   }
   if (name == "blocks")

@@ -170,6 +170,13 @@ void BuildBlocksScene(vtkRenderer* renderer);
 void BuildContourScene(vtkRenderer* renderer);
 
 /**
+ * A big still mesh: the contour scene's isosurface at its first value with
+ * each triangle split in four (about 3.3 million triangles), over the same
+ * ground, under the same camera. Its data do not change.
+ */
+void BuildBigMeshScene(vtkRenderer* renderer);
+
+/**
  * Moves the renderer's time-varying data to time step `step`: the contour of
  * BuildContourScene takes the step's value and updates (so a
  * render after it draws new geometry without running the filter), and its
@@ -206,7 +213,7 @@ void BuildSmokeScene(vtkRenderer* renderer);
  * Builds a benchmark scene, a sweep scene, "street", "blocks", "glass",
  * "glass-opaque" (the glass scene whose translucent actors cast nothing: its
  * frame without transmittance maps), "smoke" (BuildSmokeScene), "smoke-opaque"
- * (its volume casting nothing), "contour" (BuildContourScene) or "default"
+ * (its volume casting nothing), "contour" (BuildContourScene), "bigmesh" (BuildBigMeshScene) or "default"
  * (BuildDefaultScene) into an empty
  * renderer. Returns false with a one-line `error` for an unknown name or a
  * scene that cannot be built.

@@ -66,7 +66,7 @@ TEST(ShadowScenes, ContourGetsNewGeometryEveryStep)
 
 TEST(ShadowScenes, ScenesWithoutTimeVaryingDataPlayNothing)
 {
-  for (const char* name : { "street", "paraview", "default" })
+  for (const char* name : { "street", "paraview", "default", "bigmesh" })
   {
     vtkNew<vtkRenderer> renderer;
     std::string error;
@@ -74,4 +74,16 @@ TEST(ShadowScenes, ScenesWithoutTimeVaryingDataPlayNothing)
     EXPECT_EQ(shadowscenes::AdvanceTimeVaryingData(renderer, 1), 0) << name;
     EXPECT_FALSE(shadowscenes::HasTimeVaryingData(name)) << name;
   }
+}
+
+TEST(ShadowScenes, BigMeshHoldsMillionsOfTriangles)
+{
+  vtkNew<vtkRenderer> renderer;
+  std::string error;
+  ASSERT_TRUE(shadowscenes::BuildSceneByName(renderer, "bigmesh", error)) << error;
+  vtkMapper* mapper = renderer->GetActors()->GetLastActor()->GetMapper();
+  mapper->GetInputAlgorithm()->Update();
+  const vtkIdType triangles = LargestInput(renderer)->GetNumberOfCells();
+  EXPECT_GT(triangles, 2500000);
+  EXPECT_LT(triangles, 4000000);
 }
