@@ -6,7 +6,8 @@ shadow point lit, so the probes can fail; the light kit's key light is the only
 kit light that casts, and only while KeyLightShadows is on; a representation's
 Casts Shadows and Receives Shadows turn its part off; SunDiameter softens the
 sun's shadow; translucent and volume representations cast partial shadows; the
-axes grid and data axes grid cast none.
+axes grid and data axes grid cast none; the frames of an animation (each at a new
+view time) are the ones that keep views.
 
   xvfb-run -a pvpython Testing/ParaView/test_shadow_view.py PLUGIN OUTDIR
   (SHADOWMAPS_UPDATE_BASELINES=1 writes the baselines; look at them.)
@@ -380,6 +381,23 @@ for kind in ("RenderView", "ShadowRenderView"):
     Delete(view)
 check_same_image(frames["RenderView"], frames["ShadowRenderView"],
                  "the axes grid and the data axes grid cast no shadow (the plain view's frame)")
+
+# An animation: ParaView gives each frame a new view time; such still renders
+# keep warped and cascaded views as a drag does, and a render at the time
+# already shown fits anew. The camera moves along the way, as a camera track
+# moves it.
+view = make_view("ShadowRenderView", ShadowViews="Cascades")
+show_scene(view)
+kept = []
+for frame, time in enumerate((0.0, 0.0, 1.0, 2.0, 2.0)):
+    view.ViewTime = time
+    view.CameraPosition = [0.1 * frame, -12, 7]
+    png = render(view, f"ParaViewAnimationFrame{frame}")
+    view.UpdatePropertyInformation()
+    kept.append(view.GetPropertyValue("AnimationFrame"))
+    shadow_probes(view, png, f"animation frame {frame} at time {time}")
+check(kept == [0, 0, 1, 1, 0], f"frames at a new view time are animation frames ({kept})")
+Delete(view)
 
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)

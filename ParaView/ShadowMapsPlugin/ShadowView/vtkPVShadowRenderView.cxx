@@ -118,6 +118,12 @@ int vtkPVShadowRenderView::GetNumberOfShadowedLights()
 }
 
 //------------------------------------------------------------------------------
+bool vtkPVShadowRenderView::GetAnimationFrame()
+{
+  return this->AnimationFrame;
+}
+
+//------------------------------------------------------------------------------
 vtkDepthShadowMapPass* vtkPVShadowRenderView::DepthPass(int storage)
 {
   return static_cast<vtkDepthShadowMapPass*>(this->Passes[storage]);
@@ -263,6 +269,12 @@ void vtkPVShadowRenderView::Render(bool interactive, bool skip_rendering)
   pass->SetUseSceneBounds(global);
   this->ApplyShadowRoles();
   this->ApplyLightSizes();
+  // Every rank has the same view time, so all keep views alike.
+  const double time = this->GetViewTime();
+  this->AnimationFrame = !interactive && !std::isnan(this->RenderedViewTime) &&
+    time != this->RenderedViewTime;
+  this->RenderedViewTime = time;
+  pass->SetAnimationKeepsViews(this->AnimationFrame);
   this->Superclass::Render(interactive, skip_rendering);
 }
 

@@ -36,6 +36,7 @@
 #include "vtkParaViewShadowViewModule.h" // For export macro
 
 #include <array> // For AllPasses
+#include <limits> // For RenderedViewTime
 
 class vtkAbstractShadowMapPass;
 class vtkAutomaticShadowMapPass;
@@ -169,6 +170,15 @@ public:
   /** Lights the last frame rendered shadows of (an information property). */
   int GetNumberOfShadowedLights();
 
+  /**
+   * Whether the last frame was an animation's: a still render at a view time
+   * other than the previous render's, as ParaView's animation gives each
+   * frame. Such frames keep warped and cascaded views as a drag does
+   * (vtkAbstractShadowMapPass::AnimationKeepsViews); a render at the time
+   * already shown fits anew. An information property.
+   */
+  bool GetAnimationFrame();
+
   ///@{
   /**
    * What combining the maps across ranks has cost this rank so far: bytes it
@@ -228,6 +238,9 @@ private:
   int ShadowMapResolution = 2048;
   int ShadowAnalysisView = 0;
   bool KeyLightShadows = true;
+  bool AnimationFrame = false;
+  /** The view time of the last render, NaN before the first. */
+  double RenderedViewTime = std::numeric_limits<double>::quiet_NaN();
 
   /** One pass per ShadowStorage, in its order: depth, dual depth, moments. */
   vtkAbstractShadowMapPass* Passes[3];
