@@ -382,21 +382,24 @@ for kind in ("RenderView", "ShadowRenderView"):
 check_same_image(frames["RenderView"], frames["ShadowRenderView"],
                  "the axes grid and the data axes grid cast no shadow (the plain view's frame)")
 
-# An animation: ParaView gives each frame a new view time; such still renders
-# keep warped and cascaded views as a drag does, and a render at the time
-# already shown fits anew. The camera moves along the way, as a camera track
-# moves it.
+# An animation: ParaView gives each frame a new view time; still renders from
+# then on (the screenshot's too) keep warped and cascaded views as a drag does,
+# until a drag, whose closing still render fits anew. The camera moves along
+# the way, as a camera track moves it.
 view = make_view("ShadowRenderView", ShadowViews="Cascades")
 show_scene(view)
 kept = []
-for frame, time in enumerate((0.0, 0.0, 1.0, 2.0, 2.0)):
-    view.ViewTime = time
+for frame, time in enumerate((0.0, 0.0, 1.0, 2.0, 2.0, "drag")):
+    if time == "drag":
+        view.InteractiveRender()
+    else:
+        view.ViewTime = time
     view.CameraPosition = [0.1 * frame, -12, 7]
     png = render(view, f"ParaViewAnimationFrame{frame}")
     view.UpdatePropertyInformation()
     kept.append(view.GetPropertyValue("AnimationFrame"))
-    shadow_probes(view, png, f"animation frame {frame} at time {time}")
-check(kept == [0, 0, 1, 1, 0], f"frames at a new view time are animation frames ({kept})")
+    shadow_probes(view, png, f"animation frame {frame} ({time})")
+check(kept == [0, 0, 1, 1, 1, 0], f"frames from a new view time to a drag are animation frames ({kept})")
 Delete(view)
 
 print(f"{len(failures)} failures")

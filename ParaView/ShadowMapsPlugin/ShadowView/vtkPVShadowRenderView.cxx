@@ -269,10 +269,12 @@ void vtkPVShadowRenderView::Render(bool interactive, bool skip_rendering)
   pass->SetUseSceneBounds(global);
   this->ApplyShadowRoles();
   this->ApplyLightSizes();
-  // Every rank has the same view time, so all keep views alike.
+  // Every rank has the same view time, so all keep views alike. The renders
+  // after a new time (a screenshot's, a saved animation's capture) stay
+  // animation frames, or they would draw the maps once more at each frame.
   const double time = this->GetViewTime();
-  this->AnimationFrame = !interactive && !std::isnan(this->RenderedViewTime) &&
-    time != this->RenderedViewTime;
+  const bool newTime = !std::isnan(this->RenderedViewTime) && time != this->RenderedViewTime;
+  this->AnimationFrame = !interactive && (newTime || this->AnimationFrame);
   this->RenderedViewTime = time;
   pass->SetAnimationKeepsViews(this->AnimationFrame);
   this->Superclass::Render(interactive, skip_rendering);

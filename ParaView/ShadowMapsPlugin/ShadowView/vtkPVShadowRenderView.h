@@ -171,11 +171,11 @@ public:
   int GetNumberOfShadowedLights();
 
   /**
-   * Whether the last frame was an animation's: a still render at a view time
-   * other than the previous render's, as ParaView's animation gives each
-   * frame. Such frames keep warped and cascaded views as a drag does
-   * (vtkAbstractShadowMapPass::AnimationKeepsViews); a render at the time
-   * already shown fits anew. An information property.
+   * Whether the last frame was an animation's: a still render from the first
+   * at a new view time (ParaView's animation gives each frame one) until the
+   * next interactive render. Such frames keep warped and cascaded views as a
+   * drag does (vtkAbstractShadowMapPass::AnimationKeepsViews); the still
+   * render that ends a drag fits anew. An information property.
    */
   bool GetAnimationFrame();
 
