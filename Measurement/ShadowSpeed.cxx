@@ -33,6 +33,9 @@ struct MovingCounts
   double LayersPerFrame = -1.0;
   int Layers = -1;
   double CasterDrawsPerFrame = -1.0;
+  /// Milliseconds per frame in each of the pass's frame steps
+  /// (vtkAbstractShadowMapPass::GetFrameStepMilliseconds); empty: not ours.
+  std::vector<double> StepMillisecondsPerFrame;
 };
 
 struct SpeedRow
@@ -149,6 +152,7 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
   const int before = technique.Ours->GetNumberOfShaderBuilds();
   int layers = 0;
   int casterDraws = 0;
+  std::vector<double> steps(vtkAbstractShadowMapPass::NUMBER_OF_FRAME_STEPS, 0.0);
   {
     const MovingCameraRenders drag(view.Window, interactive);
     for (int frame = 2; frame < frames + 2; ++frame)
@@ -160,6 +164,10 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
       ReadMapWork(technique.Ours, frameLayers, frameDraws);
       layers += frameLayers;
       casterDraws += frameDraws;
+      for (std::size_t step = 0; step < steps.size(); ++step)
+      {
+        steps[step] += technique.Ours->GetFrameStepMilliseconds(static_cast<int>(step));
+      }
     }
   }
   orbit(0, frames + 2);
@@ -167,6 +175,11 @@ MovingCounts CountMovingWork(SpeedView& view, const TechniqueInstance& technique
   counts.LayersPerFrame = double(layers) / double(frames);
   counts.Layers = technique.Ours->GetNumberOfShadowMapLayers();
   counts.CasterDrawsPerFrame = double(casterDraws) / double(frames);
+  for (double& total : steps)
+  {
+    total /= double(frames);
+  }
+  counts.StepMillisecondsPerFrame = steps;
   return counts;
 }
 
@@ -269,14 +282,26 @@ std::string CallCounts(const GLCallCounts& calls)
     std::to_string(calls.All());
 }
 
+/// The pass's milliseconds per moving frame in each frame step, "a / b / ...".
+std::string StepTimes(const MovingCounts& counts)
+{
+  std::string text;
+  for (double milliseconds : counts.StepMillisecondsPerFrame)
+  {
+    text += (text.empty() ? "" : " / ") + FormatNumber(milliseconds, 1);
+  }
+  return text;
+}
+
 void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
 {
   out << "| scene | light | map | technique | first ms | steady ms | moving ms | moving mean ms "
          "| moving / steady | steady / none | moving / none | moving / vtk | moving mean / vtk "
          "| shaders built in 8 moving frames | layers per moving frame "
          "| caster draws per moving frame | steady CPU µs per prop over none | moving CPU µs per prop over none "
-         "| steady GL draws / uniform sets / counted calls |\n"
-         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "| steady GL draws / uniform sets / counted calls "
+         "| pass ms per moving frame: reading / fitting / storage / shaders / drawing / finishing |\n"
+         "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const SpeedRow& row : rows)
   {
     const SpeedRow* none = Reference(rows, row, "none");
@@ -301,7 +326,7 @@ void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
                                                : FormatNumber(row.Counts.CasterDrawsPerFrame, 1))
         << " | " << CpuPerProp(row, none, &Timing::SteadyMainThreadCpuPerRound) << " | "
         << CpuPerProp(row, none, &Timing::MovingMainThreadCpuPerRound) << " | "
-        << CallCounts(row.SteadyCalls) << " |\n";
+        << CallCounts(row.SteadyCalls) << " | " << StepTimes(row.Counts) << " |\n";
   }
 }
 
@@ -311,7 +336,12 @@ void WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& path)
   csv << "scene,setup,resolution,technique,first_s,steady_s,moving_s,moving_mean_s,"
          "shader_builds_in_8_moving_frames,layers_per_moving_frame,layers,props,"
          "steady_main_thread_cpu_s,moving_main_thread_cpu_s,steady_gl_draws,"
-         "steady_gl_uniform_sets,steady_gl_counted_calls,caster_draws_per_moving_frame\n";
+         "steady_gl_uniform_sets,steady_gl_counted_calls,caster_draws_per_moving_frame";
+  for (int step = 0; step < vtkAbstractShadowMapPass::NUMBER_OF_FRAME_STEPS; ++step)
+  {
+    csv << ",moving_" << vtkAbstractShadowMapPass::GetFrameStepName(step) << "_ms";
+  }
+  csv << '\n';
   csv << std::setprecision(6);
   for (const SpeedRow& row : rows)
   {
@@ -321,7 +351,13 @@ void WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& path)
         << row.Counts.Layers << ',' << row.Props << ',' << row.Time.SteadyMainThreadCpu << ','
         << row.Time.MovingMainThreadCpu << ',' << row.SteadyCalls.Draws << ','
         << row.SteadyCalls.UniformSets << ',' << row.SteadyCalls.All() << ','
-        << row.Counts.CasterDrawsPerFrame << '\n';
+        << row.Counts.CasterDrawsPerFrame;
+    for (int step = 0; step < vtkAbstractShadowMapPass::NUMBER_OF_FRAME_STEPS; ++step)
+    {
+      const std::vector<double>& steps = row.Counts.StepMillisecondsPerFrame;
+      csv << ',' << (steps.empty() ? -1.0 : steps[static_cast<std::size_t>(step)]);
+    }
+    csv << '\n';
   }
 }
 

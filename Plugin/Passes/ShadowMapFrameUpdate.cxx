@@ -87,16 +87,23 @@ bool FrameUpdate::Prepare(
   vtkOpenGLRenderer* renderer, const vtkRenderState* s, const FrameSettings& settings)
 {
   this->Settings = &settings;
-  renderer->UpdateLightsGeometryToFollowCamera();
-  this->CollectLights(renderer);
-  this->Counts.ShadowedLights = static_cast<int>(this->FrameLights.size());
-  if (this->FrameLights.empty())
+  this->Counts.Steps.Clear();
   {
-    this->Counts.Layers = 0;
-    return false;
+    const StepTimes::Scope reading(this->Counts.Steps, FrameStep::Reading);
+    renderer->UpdateLightsGeometryToFollowCamera();
+    this->CollectLights(renderer);
+    this->Counts.ShadowedLights = static_cast<int>(this->FrameLights.size());
+    if (this->FrameLights.empty())
+    {
+      this->Counts.Layers = 0;
+      return false;
+    }
+    this->CollectCastersAndCamera(renderer);
   }
-  this->CollectCastersAndCamera(renderer);
-  this->RebuildShadersOfChangedReceivers(s);
+  {
+    const StepTimes::Scope shaders(this->Counts.Steps, FrameStep::Shaders);
+    this->RebuildShadersOfChangedReceivers(s);
+  }
   const bool ready = this->UpdateMaps(renderer);
   // Lights whose views were not finite are gone by now.
   this->Counts.ShadowedLights = static_cast<int>(this->FrameLights.size());
@@ -365,18 +372,29 @@ bool FrameUpdate::PrepareLayers(
   vtkOpenGLRenderer* renderer, int resolution, int spare, std::string& error)
 {
   this->CurrentFrame.Resolution = resolution;
-  if (!this->FitViews())
+  StepTimes& steps = this->Counts.Steps;
   {
-    return false; // no light with usable views: no failure to warn of
+    const StepTimes::Scope fitting(steps, FrameStep::Fitting);
+    if (!this->FitViews())
+    {
+      return false; // no light with usable views: no failure to warn of
+    }
   }
-  this->ChooseStorage();
-  this->UpdateShaders(renderer);
+  {
+    const StepTimes::Scope storage(steps, FrameStep::Storage);
+    this->ChooseStorage();
+  }
+  {
+    const StepTimes::Scope shaders(steps, FrameStep::Shaders);
+    this->UpdateShaders(renderer);
+  }
   if (!this->CodeCompiles)
   {
     error = "the shadow shader code does not compile (see the shader error above; a "
             "representation's GLSL?)";
     return false;
   }
+  const StepTimes::Scope storage(steps, FrameStep::Storage);
   RendererMaps& maps = this->Maps();
   maps.SwitchMaps(resolution, spare);
   return maps.Maps.Reserve(resolution, this->Counts.Layers, maps.Storage.Format,
@@ -566,6 +584,7 @@ bool FrameUpdate::RenderMaps(vtkOpenGLRenderer* renderer, std::vector<LayerPlan>
   std::vector<RenderedLayer> rendered;
   bool ok = true;
   {
+    const StepTimes::Scope drawing(this->Counts.Steps, FrameStep::Drawing);
     CasterGLState casterState(
       window->GetState(), !IsDepth(maps.Storage.Format) && maps.Storage.MinimumBlending);
     this->ReserveTextureUnits(renderer);
@@ -608,6 +627,7 @@ bool FrameUpdate::RenderMaps(vtkOpenGLRenderer* renderer, std::vector<LayerPlan>
   {
     this->Counts.CasterDraws = this->Layers.GetDraws();
   }
+  const StepTimes::Scope finishing(this->Counts.Steps, FrameStep::Finishing);
   ok = this->CombineAcrossProcesses(window, ok);
   if (!ok)
   {

@@ -23,6 +23,7 @@
 #include "ShadowMapReceiverTextures.h" // For ReceiverTextures
 #include "ShadowMapRendererMaps.h"    // For MapsByRenderer
 #include "ShadowMapSceneReading.h"   // For Caster
+#include "ShadowMapStepTimes.h"       // For StepTimes
 
 #include "vtkType.h"
 #include "vtkWeakPointer.h"
@@ -114,6 +115,8 @@ struct FrameStatistics
   int CasterPassesPerLayer = 1;
   /// The width and height of the maps the last frame read.
   int Resolution = 0;
+  /// Where the last frame's shadow work went.
+  StepTimes Steps;
 };
 
 class FrameUpdate

@@ -374,6 +374,26 @@ int vtkAbstractShadowMapPass::GetNumberOfRenderedLayers() const
 }
 
 //------------------------------------------------------------------------------
+double vtkAbstractShadowMapPass::GetFrameStepMilliseconds(int step) const
+{
+  static_assert(NUMBER_OF_FRAME_STEPS == static_cast<int>(shadowmaps::FrameStep::Count),
+    "one FrameStepType per shadowmaps::FrameStep");
+  if (step < 0 || step >= NUMBER_OF_FRAME_STEPS)
+  {
+    return 0.0;
+  }
+  return this->Internal->Update.Statistics().Steps.Get(static_cast<shadowmaps::FrameStep>(step));
+}
+
+//------------------------------------------------------------------------------
+const char* vtkAbstractShadowMapPass::GetFrameStepName(int step)
+{
+  static const char* const names[NUMBER_OF_FRAME_STEPS] = { "reading", "fitting", "storage",
+    "shaders", "drawing", "finishing" };
+  return step >= 0 && step < NUMBER_OF_FRAME_STEPS ? names[step] : "";
+}
+
+//------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfCasterPassesPerLayer() const
 {
   return this->Internal->Update.Statistics().CasterPassesPerLayer;
@@ -771,6 +791,11 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfShadowMapUpdates: " << this->GetNumberOfShadowMapUpdates() << "\n";
   os << indent << "NumberOfCasterDraws: " << this->GetNumberOfCasterDraws() << "\n";
   os << indent << "NumberOfRenderedLayers: " << this->GetNumberOfRenderedLayers() << "\n";
+  for (int step = 0; step < NUMBER_OF_FRAME_STEPS; ++step)
+  {
+    os << indent << "FrameStepMilliseconds(" << GetFrameStepName(step)
+       << "): " << this->GetFrameStepMilliseconds(step) << "\n";
+  }
   os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";
   os << indent << "NumberOfUnpatchedReceiverLights: " << this->NumberOfUnpatchedReceiverLights << "\n";
   os << indent << "NumberOfCasterPassesPerLayer: " << this->GetNumberOfCasterPassesPerLayer() << "\n";

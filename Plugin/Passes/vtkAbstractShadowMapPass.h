@@ -420,6 +420,26 @@ public:
   int GetNumberOfRenderedLayers() const;
 
   /**
+   * Where the last frame's shadow work went: milliseconds of the thread that
+   * renders in each step (FrameStepType), in the order they run. A GPU driver
+   * defers most GL work, which the drawing then leaves out; llvmpipe shades the
+   * casters' vertices on this thread. 0 for a step out of range.
+   */
+  enum FrameStepType
+  {
+    READING_STEP = 0, ///< lights, casters and camera collected
+    FITTING_STEP,     ///< the lights' views fitted
+    STORAGE_STEP,     ///< the storage chosen (casters' closedness) and the maps reserved
+    SHADERS_STEP,     ///< the receivers' shadow code made
+    DRAWING_STEP,     ///< the changed layers drawn
+    FINISHING_STEP,   ///< the maps combined across processes and post-processed
+    NUMBER_OF_FRAME_STEPS
+  };
+  double GetFrameStepMilliseconds(int step) const;
+  /** The name of a FrameStepType ("reading", ...), "" out of range. */
+  static const char* GetFrameStepName(int step);
+
+  /**
    * Shader sources the mappers generated with this pass so far. Casters and
    * receivers share one program per mapper primitive (see
    * Shaders/vtkShadowMapsCasterFS.glsl), so an orbiting camera, with the scene,

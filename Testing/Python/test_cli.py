@@ -1,6 +1,7 @@
 """vtkshadows: renders the default scene to a PNG, runs a small speed benchmark
 (a table row per technique, no shader built in a moving frame), and rejects bad
 input with one line on stderr and exit status 2."""
+import csv
 import os
 import subprocess
 import sys
@@ -39,6 +40,20 @@ def main(program, output_dir):
         failures.append(f"speed: rows {[r[1:5] for r in rows]}")
     elif shaders < 0 or any(r[4].strip() in ("uniform", "csm") and r[shaders].strip() != "0" for r in rows):
         failures.append(f"speed: shaders built in a moving frame: {result.stdout}")
+    else:
+        # Each of our techniques says where its frames' shadow work went, in
+        # six steps that add up to a part of the frame; the references have none.
+        with open(os.path.join(speed_dir, "speed.csv")) as table:
+            records = list(csv.DictReader(table))
+        step_columns = [name for name in (records[0] if records else {}) if name.endswith("_ms")]
+        for record in records:
+            steps = [float(record[name]) for name in step_columns]
+            ours = record["technique"] in ("uniform", "csm")
+            frame_ms = 1000.0 * float(record["moving_s"])
+            if len(steps) != 6 or (ours and not all(0.0 <= step for step in steps)) or \
+                    (ours and sum(steps) > 2.0 * frame_ms) or (not ours and steps != [-1.0] * 6):
+                failures.append(f"speed: frame steps of {record['technique']}: {steps} "
+                                f"(moving frame {frame_ms:.1f} ms)")
 
     bad_inputs = [
         [],
