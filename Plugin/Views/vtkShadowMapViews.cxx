@@ -155,7 +155,7 @@ const char* vtkShadowMapViews::GetKindName(const shadowmaps::ShadowLight& light)
     case shadowmaps::ViewLayout::Tiles:
       return "tiles";
     default:
-      return this->GetSingleMapKindName();
+      return this->GetSingleMapKindName(light);
   }
 }
 

@@ -108,8 +108,12 @@ protected:
   vtkShadowMapViews() = default;
   ~vtkShadowMapViews() override = default;
 
-  /** GetKindName of a light given one map: how the strategy warps it. */
-  virtual const char* GetSingleMapKindName() const { return "uniform"; }
+  /** GetKindName of a light given one map: how the strategy warped it. */
+  VTK_WRAPEXCLUDE virtual const char* GetSingleMapKindName(
+    const shadowmaps::ShadowLight& vtkNotUsed(light)) const
+  {
+    return "uniform";
+  }
 
   /** Fits a view of a light to a frame (for a cascade: to its sub-frustum). */
   using ViewFit = std::function<shadowmaps::LightView(const shadowmaps::ShadowFrame&)>;

@@ -97,8 +97,15 @@ std::vector<shadowmaps::Plane> ReceiversOfLight(const glm::dmat4& cameraViewProj
 } // namespace
 
 //------------------------------------------------------------------------------
-const char* vtkWarpedShadowMapViews::GetSingleMapKindName() const
+const char* vtkWarpedShadowMapViews::GetSingleMapKindName(const ShadowLight& light) const
 {
+  // Only warped views take their texel size from the map's gradient; a fit
+  // that could not warp (a parallel camera, the light along the view) is the
+  // focused uniform map.
+  if (light.Views.empty() || !light.Views.front().TexelSizeFromGradient)
+  {
+    return "uniform";
+  }
   switch (this->WarpMode)
   {
     case LISPSM:

@@ -164,7 +164,9 @@ public:
   VTK_WRAPEXCLUDE static shadowmaps::DirectionalWarp LightSpaceWarpOf(int warpMode);
 
 protected:
-  const char* GetSingleMapKindName() const override;
+  /** The warp mode, or "uniform" where the fit fell back to the focused uniform map. */
+  VTK_WRAPEXCLUDE const char* GetSingleMapKindName(
+    const shadowmaps::ShadowLight& light) const override;
   vtkWarpedShadowMapViews() = default;
   ~vtkWarpedShadowMapViews() override = default;
 

@@ -18,6 +18,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkWarpedShadowMapPass.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -623,5 +624,28 @@ TEST(ShadowAutomatic, ChosenViewsAnalysisColoursWhatEachLightGot)
     EXPECT_TRUE(IsLegendColour(commonest, kind))
       << "t = " << t << ": the frame is mostly " << commonest.r << " " << commonest.g << " "
       << commonest.b;
+  }
+}
+
+// A warp that cannot be made (a parallel camera) falls back to the focused
+// uniform map, and the chosen-views analysis colours what was rendered.
+TEST(ShadowAutomatic, ChosenViewsAnalysisTellsAWarpsFallBack)
+{
+  for (const bool parallel : { false, true })
+  {
+    TestScene scene;
+    scene.SetSun(glm::normalize(glm::dvec3(-0.4, 0.3, -1.0)));
+    scene.Renderer->GetActiveCamera()->SetParallelProjection(parallel);
+    vtkNew<vtkWarpedShadowMapPass> pass;
+    pass->SetWarpModeToLiSPSM();
+    pass->SetResolution(SmallMaps);
+    pass->SetAnalysisViewToChosenViews();
+    scene.Renderer->SetPass(pass);
+    auto image = RenderAndCapture(scene.Window);
+    const std::string kind = parallel ? "uniform" : "lispsm";
+    const glm::ivec3 commonest = CommonestColour(image);
+    EXPECT_TRUE(IsLegendColour(commonest, kind))
+      << "parallel " << parallel << ": the frame is mostly " << commonest.r << " " << commonest.g
+      << " " << commonest.b << ", not " << kind << "'s colour";
   }
 }
