@@ -1,7 +1,28 @@
-"""Shadow-map render passes for VTK: ``renderer.SetPass(vtkshadowmaps.make_pass())`` (the
-automatic pass: each light's views chosen from where it shines, in dual-depth maps), a
-technique by name (``make_pass("cascaded")``), or a class
-(``renderer.SetPass(vtkshadowmaps.vtkWarpedShadowMapPass())``)."""
+"""Shadow-map render passes for VTK, one line to turn shadows on::
+
+    renderer.SetPass(vtkshadowmaps.make_pass())
+
+``make_pass(technique, **settings)`` makes a pass by name, its settings given as
+snake_case names of its setters (``make_pass("cascaded", number_of_cascades=3)``):
+
+- ``auto`` (the default): vtkAutomaticShadowMapPass gives each light the views its
+  situation measured best for, on dual-depth maps; ``cost_budget`` lets it spend
+  more maps, ``SetLightViews(light, views)`` pins a light's views.
+- ``uniform``, ``psm``, ``lispsm``, ``tsm``, ``gmnpr``: vtkWarpedShadowMapPass in that
+  warp mode (one map per sun or spot, warped to give the viewer's near field more
+  texels; ``psm_cube_map`` for Kozlov's cube).
+- ``cascaded``: vtkCascadedShadowMapPass, a sun's maps split along the view
+  (``number_of_cascades``, ``split_lambda``, ``maximum_shadow_distance``).
+- ``depth``: vtkDepthShadowMapPass, depth maps in any views (``SetViews``).
+- ``dual-depth``: vtkDualDepthShadowMapPass, two surfaces a texel, no bias to tune.
+- ``variance``: vtkVarianceShadowMapPass, filterable moments (``SetMomentsToEVSM4()``,
+  ``blur_radius``, ``light_bleeding_reduction``).
+
+Every pass takes ``resolution``, a filter (``SetFilterToPoisson()``, ...),
+``soft_shadows`` (lights with a LIGHT_SIZE), ``animation_keeps_views`` (scripted
+camera paths keep views as drags do) and the CASTS_SHADOWS and RECEIVES_SHADOWS
+property keys. ``vtkshadowmaps.pyvista.enable_shadows(plotter)`` puts a pass in
+PyVista's chain. The guide (docs/GUIDE.md in the sources) has every setting."""
 # The base classes live in VTK's own modules; load them before ours.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
