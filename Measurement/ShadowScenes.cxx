@@ -1624,6 +1624,19 @@ double ContourValueAt(int step)
 
 namespace
 {
+// A contour filter of type Contour over the wavelet, at the first step's value.
+template <typename Contour>
+vtkSmartPointer<Contour> ContourOfWavelet()
+{
+  const int h = ContourHalfExtent;
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-h, h, -h, h, -h, h);
+  auto contour = vtkSmartPointer<Contour>::New();
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, ContourValueAt(0));
+  return contour;
+}
+
 // The contour scenes' ground, background and camera around `surface`.
 void BuildIsosurfaceScene(vtkRenderer* renderer, vtkAlgorithmOutput* surface)
 {
@@ -1647,24 +1660,14 @@ void BuildIsosurfaceScene(vtkRenderer* renderer, vtkAlgorithmOutput* surface)
 
 void BuildContourScene(vtkRenderer* renderer)
 {
-  const int h = ContourHalfExtent;
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-h, h, -h, h, -h, h);
-  vtkNew<TimeVaryingContour> contour;
-  contour->SetInputConnection(wavelet->GetOutputPort());
-  contour->SetValue(0, ContourValueAt(0));
+  auto contour = ContourOfWavelet<TimeVaryingContour>();
   BuildIsosurfaceScene(renderer, contour->GetOutputPort());
 }
 
 void BuildBigMeshScene(vtkRenderer* renderer)
 {
-  const int h = ContourHalfExtent;
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  wavelet->SetWholeExtent(-h, h, -h, h, -h, h);
   // Not a TimeVaryingContour: AdvanceTimeVaryingData leaves it alone.
-  vtkNew<vtkContourFilter> contour;
-  contour->SetInputConnection(wavelet->GetOutputPort());
-  contour->SetValue(0, ContourValueAt(0));
+  auto contour = ContourOfWavelet<vtkContourFilter>();
   vtkNew<vtkLinearSubdivisionFilter> finer;
   finer->SetInputConnection(contour->GetOutputPort());
   finer->SetNumberOfSubdivisions(1);
