@@ -283,7 +283,7 @@ std::string CallCounts(const GLCallCounts& calls)
 }
 
 /// The pass's milliseconds per moving frame in each frame step, "a / b / ...".
-std::string StepTimes(const MovingCounts& counts)
+std::string FrameStepsText(const MovingCounts& counts)
 {
   std::string text;
   for (double milliseconds : counts.StepMillisecondsPerFrame)
@@ -326,7 +326,7 @@ void PrintSpeedTable(const std::vector<SpeedRow>& rows, std::ostream& out)
                                                : FormatNumber(row.Counts.CasterDrawsPerFrame, 1))
         << " | " << CpuPerProp(row, none, &Timing::SteadyMainThreadCpuPerRound) << " | "
         << CpuPerProp(row, none, &Timing::MovingMainThreadCpuPerRound) << " | "
-        << CallCounts(row.SteadyCalls) << " | " << StepTimes(row.Counts) << " |\n";
+        << CallCounts(row.SteadyCalls) << " | " << FrameStepsText(row.Counts) << " |\n";
   }
 }
 
