@@ -253,14 +253,48 @@ double SetupWork(const Options& options, const std::string& setup)
   return work;
 }
 
-double TotalWork(const Options& options, std::size_t scenes)
+/// Each scene measured, in order, with its set-ups.
+using ScenePlan = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+ScenePlan PlanOf(const Options& options)
+{
+  ScenePlan plan;
+  if (!options.ModelFile.empty())
+  {
+    return { { "file", options.Setups } };
+  }
+  if (options.Cases.empty())
+  {
+    for (const std::string& scene : options.Scenes)
+    {
+      plan.emplace_back(scene, options.Setups);
+    }
+    return plan;
+  }
+  for (const auto& [scene, setup] : options.Cases)
+  {
+    auto planned = std::find_if(
+      plan.begin(), plan.end(), [&](const auto& entry) { return entry.first == scene; });
+    if (planned == plan.end())
+    {
+      planned = plan.insert(plan.end(), { scene, {} });
+    }
+    planned->second.push_back(setup);
+  }
+  return plan;
+}
+
+double TotalWork(const Options& options, const ScenePlan& plan)
 {
   double work = 0.0;
-  for (const std::string& setup : options.Setups)
+  for (const auto& scene : plan)
   {
-    work += SetupWork(options, setup);
+    for (const std::string& setup : scene.second)
+    {
+      work += SetupWork(options, setup);
+    }
   }
-  return work * static_cast<double>(scenes);
+  return work;
 }
 
 /// Flicker along the camera path: the mean over frame pairs of the pixels
@@ -334,6 +368,15 @@ std::string CaseName(const std::string& scene, const std::string& setup)
 
 void WriteChart(const std::vector<Row>& rows, const std::string& path, const std::string& title);
 
+void WriteShownFrame(const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& plain,
+  const View& view, const std::string& path, std::ostream& log)
+{
+  if (!WritePNG(shadowmetrics::ShownFrame(rgb, plain), view.Width, view.Height, path))
+  {
+    log << "  cannot write " << path << std::endl;
+  }
+}
+
 bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string& scene,
   const std::string& setup, const Options& options, std::vector<Row>& rows, std::ostream& log,
   Progress& progress)
@@ -353,6 +396,12 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
     ? oracle.Transmittance(surface, FirstLight(view.Renderer))
     : std::vector<glm::vec3>();
   progress.Advance(TruthFrames);
+  const std::string casePath = options.OutputDirectory + "/" + CaseName(scene, setup);
+  if (options.WriteFrames)
+  {
+    WriteShownFrame(shadowmetrics::TruthFrame(plain, truth, visibility, transmittance), plain,
+      view, casePath + "-truth.png", log);
+  }
 
   std::vector<TechniqueInstance> techniques;
   for (const std::string& name : options.Techniques)
@@ -405,9 +454,16 @@ bool RunSetup(View& view, const shadoworacle::Oracle& oracle, const std::string&
                                              : Sampling{};
     row.Undersampled = sampling.Undersampled;
     row.DensitySpread = sampling.Spread;
-    const std::string errors = options.OutputDirectory + "/" + CaseName(scene, setup) + "-" + name + "-errors.png";
-    const auto errorMap = row.Sized ? shadowmetrics::VisibilityErrorMap(visibility, factor)
-                                    : shadowmetrics::ErrorMap(truth, factor);
+    if (options.WriteFrames)
+    {
+      WriteShownFrame(rgb, plain, view, casePath + "-" + name + "-frame.png", log);
+    }
+    const std::string errors = casePath + "-" + name + "-errors.png";
+    const auto errorMap = row.Translucent
+      ? shadowmetrics::VisibilityErrorMap(
+          shadowmetrics::MeanOfChannels(transmittance, surface.SeenThroughTranslucent), factor)
+      : row.Sized ? shadowmetrics::VisibilityErrorMap(visibility, factor)
+                  : shadowmetrics::ErrorMap(truth, factor);
     if (!WritePNG(errorMap, view.Width, view.Height, errors))
     {
       log << "  cannot write " << errors << std::endl;
@@ -717,11 +773,16 @@ void WriteChart(const std::vector<Row>& rows, const std::string& path, const std
 
 bool ValidateOptions(const Options& options, std::string& error)
 {
-  if (!CheckTechniquesAndSetups(options.Techniques, options.Setups, error))
+  std::vector<std::string> setups;
+  for (const auto& scene : PlanOf(options))
+  {
+    setups.insert(setups.end(), scene.second.begin(), scene.second.end());
+  }
+  if (!CheckTechniquesAndSetups(options.Techniques, setups, error))
   {
     return false;
   }
-  if (options.Scenes.empty() && options.ModelFile.empty())
+  if (options.Scenes.empty() && options.Cases.empty() && options.ModelFile.empty())
   {
     error = "no scene to measure";
     return false;
@@ -760,18 +821,18 @@ Options QuickAnalyzeOptions()
 }
 
 //------------------------------------------------------------------------------
-bool Run(const Options& requested, std::ostream& out, std::ostream& log, std::string& error)
+bool Run(const Options& requested, std::ostream& out, std::ostream& log, std::string& error,
+  std::vector<CaseFigures>* figures)
 {
   if (!ValidateOptions(requested, error))
   {
     return false;
   }
   const Options options = WithReferences(requested);
-  const std::vector<std::string> scenes =
-    options.ModelFile.empty() ? options.Scenes : std::vector<std::string>{ "file" };
+  const ScenePlan plan = PlanOf(options);
   std::vector<Row> rows;
-  Progress progress(TotalWork(options, scenes.size()));
-  for (const std::string& scene : scenes)
+  Progress progress(TotalWork(options, plan));
+  for (const auto& [scene, setups] : plan)
   {
     View view;
     view.Width = options.Width;
@@ -787,7 +848,7 @@ bool Run(const Options& requested, std::ostream& out, std::ostream& log, std::st
       return false;
     }
     log << scene << ": " << oracle.GetNumberOfTriangles() << " triangles" << std::endl;
-    for (const std::string& setup : options.Setups)
+    for (const std::string& setup : setups)
     {
       if (!RunSetup(view, oracle, scene, setup, options, rows, log, progress))
       {
@@ -808,6 +869,15 @@ bool Run(const Options& requested, std::ostream& out, std::ostream& log, std::st
   WriteCSV(rows, options.OutputDirectory + "/results.csv");
   std::ofstream json(options.OutputDirectory + "/recommendation.json");
   WriteRecommendationsJSON(recommendations, json);
+  if (figures)
+  {
+    for (const Row& row : rows)
+    {
+      const glm::dvec3& light = row.Transmittance.MeanAbsolute;
+      figures->push_back({ row.Scene, row.Setup, row.Technique, row.Choice, row.Errors,
+        row.Translucent, row.Translucent ? (light.x + light.y + light.z) / 3.0 : NotMeasured });
+    }
+  }
   return true;
 }
 

@@ -5,10 +5,12 @@
 #ifndef ShadowBench_h
 #define ShadowBench_h
 
+#include "ShadowMetrics.h"
 #include "ShadowModelUp.h"
 
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowbench
@@ -24,6 +26,9 @@ struct Options
   shadowscenes::UpAxis Up = shadowscenes::UpAxis::Auto;
   /// shadowscenes::LightSetupNames.
   std::vector<std::string> Setups;
+  /// When not empty, the (scene, set-up) pairs measured instead of every
+  /// scene under every set-up.
+  std::vector<std::pair<std::string, std::string>> Cases;
   /// TechniqueNames() (ShadowTechniques.h); by default DefaultTechniqueNames().
   std::vector<std::string> Techniques;
   /// Map resolution of this project's techniques; VTK's pass runs at its
@@ -40,6 +45,27 @@ struct Options
   /// Frames averaged per frame-time figure.
   int TimedFrames = 8;
   std::string OutputDirectory = "bench";
+  /// Also writes each case's frames: <scene>-<setup>-<technique>-frame.png and
+  /// the ray-cast truth's <scene>-<setup>-truth.png, both as
+  /// shadowmetrics::ShownFrame shows them.
+  bool WriteFrames = false;
+};
+
+/// One technique's figures in one case, for callers that compose the
+/// benchmark's outputs (the gallery).
+struct CaseFigures
+{
+  std::string Scene;
+  std::string Setup;
+  std::string Technique;
+  /// The automatic pass's choice for the light ("" for other techniques).
+  std::string Choice;
+  shadowmetrics::Classification Errors;
+  /// Scenes with translucent casters or volumes: the mean over pixels and
+  /// channels of |factor - transmittance| (Errors then counts the opaque
+  /// casters' shadows alone as the truth).
+  bool Translucent = false;
+  double TransmittanceError = 0.0;
 };
 
 /// Default lists: every benchmark scene, every light set-up, the techniques
@@ -60,10 +86,14 @@ constexpr double RecommendationBudget = 1.25;
 /// (ShadowRecommendation.h) on `out` and writes into the output directory
 /// results.md (both), results.csv, recommendation.json, one error map PNG per
 /// case (<scene>-<setup>-<technique>-errors.png: leaks red, false shadows
-/// blue, agreement grey) and one chart PNG per scene and set-up. Progress, with
+/// blue, agreement grey; for a sized light or translucent casters, red or
+/// blue in proportion to the light's error against the visibility or the
+/// transmittance's mean channel) and one chart PNG per scene and set-up. Progress, with
 /// the time left, goes to `log`, and for a model file the up axis it was given.
 /// Returns false with a one-line `error` on bad options or failure.
-bool Run(const Options& options, std::ostream& out, std::ostream& log, std::string& error);
+/// `figures`, when given, receives every technique's figures in every case.
+bool Run(const Options& options, std::ostream& out, std::ostream& log, std::string& error,
+  std::vector<CaseFigures>* figures = nullptr);
 
 } // namespace shadowbench
 

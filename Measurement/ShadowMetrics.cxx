@@ -474,6 +474,20 @@ std::vector<std::uint8_t> ErrorMap(const std::vector<Truth>& truth, const std::v
 }
 
 //------------------------------------------------------------------------------
+std::vector<float> MeanOfChannels(
+  const std::vector<glm::vec3>& transmittance, const std::vector<std::uint8_t>& excluded)
+{
+  std::vector<float> mean(transmittance.size());
+  for (std::size_t i = 0; i < transmittance.size(); ++i)
+  {
+    const glm::vec3& t = transmittance[i];
+    const bool left = t.x == shadoworacle::NotCounted || (i < excluded.size() && excluded[i]);
+    mean[i] = left ? shadoworacle::NotCounted : (t.x + t.y + t.z) / 3.0f;
+  }
+  return mean;
+}
+
+//------------------------------------------------------------------------------
 std::vector<glm::vec3> ChannelFactorsFromRenders(const std::vector<std::uint8_t>& shadowedRgb,
   const std::vector<std::uint8_t>& unshadowedRgb, int pixelCount)
 {
@@ -541,4 +555,42 @@ TransmittanceErrors CompareTransmittance(const std::vector<glm::vec3>& transmitt
   result.Percentile95 = largest[rank];
   return result;
 }
+//------------------------------------------------------------------------------
+std::vector<std::uint8_t> TruthFrame(const std::vector<std::uint8_t>& unshadowedRgb,
+  const std::vector<Truth>& truth, const std::vector<float>& visibility,
+  const std::vector<glm::vec3>& transmittance)
+{
+  std::vector<std::uint8_t> rgb = unshadowedRgb;
+  for (size_t i = 0; i < truth.size() && 3 * i + 2 < rgb.size(); ++i)
+  {
+    if (!Counted(truth[i]))
+    {
+      continue;
+    }
+    const float light = !visibility.empty() ? visibility[i]
+      : truth[i] == Truth::Shadowed         ? 0.0f
+                                            : 1.0f;
+    const glm::vec3 tint = !transmittance.empty() ? transmittance[i] : glm::vec3(light);
+    for (int c = 0; c < 3; ++c)
+    {
+      const float scaled = static_cast<float>(rgb[3 * i + c]) * std::clamp(tint[c], 0.0f, 1.0f);
+      rgb[3 * i + c] = static_cast<std::uint8_t>(std::lround(scaled));
+    }
+  }
+  return rgb;
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::uint8_t> ShownFrame(
+  const std::vector<std::uint8_t>& shadowedRgb, const std::vector<std::uint8_t>& unshadowedRgb)
+{
+  std::vector<std::uint8_t> rgb(shadowedRgb.size());
+  for (size_t i = 0; i < rgb.size() && i < unshadowedRgb.size(); ++i)
+  {
+    const float shown = (1.0f - ShownAmbient) * shadowedRgb[i] + ShownAmbient * unshadowedRgb[i];
+    rgb[i] = static_cast<std::uint8_t>(std::lround(std::min(255.0f, shown)));
+  }
+  return rgb;
+}
+
 } // namespace shadowmetrics

@@ -132,6 +132,12 @@ struct TransmittanceErrors
   glm::dvec3 PartialMeanAbsolute{ 0.0 };
 };
 
+/// The mean of each pixel's channels, NotCounted where it was or where
+/// `excluded` (empty: nowhere) is set: a transmittance as one visibility, for
+/// VisibilityErrorMap, leaving out the pixels CompareTransmittance leaves out.
+std::vector<float> MeanOfChannels(
+  const std::vector<glm::vec3>& transmittance, const std::vector<std::uint8_t>& excluded);
+
 /// Compares the technique's factor per channel with the oracle's
 /// transmittance (Oracle::Transmittance), leaving out the pixels
 /// `seenThroughTranslucent` marks (Surface::SeenThroughTranslucent; empty:
@@ -204,6 +210,25 @@ double TruthChanges(const std::vector<Truth>& truthBefore, const std::vector<Tru
 /// Error map as RGB bytes: light leaks red, false shadows blue, agreement grey
 /// (light where lit, dark where shadowed), ignored pixels black.
 std::vector<std::uint8_t> ErrorMap(const std::vector<Truth>& truth, const std::vector<float>& factor);
+
+// --- pictures: what a technique's frame and the truth look like ------------------
+
+/// The frame a technique without error renders, from the frame without
+/// shadows: each counted pixel scaled by the truth's light, per channel where
+/// `transmittance` is given (translucent casters), else by `visibility` where
+/// given (a sized light), else 1 lit and 0 shadowed; other pixels as without
+/// shadows.
+std::vector<std::uint8_t> TruthFrame(const std::vector<std::uint8_t>& unshadowedRgb,
+  const std::vector<Truth>& truth, const std::vector<float>& visibility,
+  const std::vector<glm::vec3>& transmittance);
+
+/// A frame as the gallery shows it: the measurement's materials have no
+/// ambient term, so a shadow is black; this lifts every pixel by
+/// `ambient` of the frame without shadows, the look of a white material with
+/// that ambient, so that shapes stay readable inside shadows.
+constexpr float ShownAmbient = 0.2f;
+std::vector<std::uint8_t> ShownFrame(
+  const std::vector<std::uint8_t>& shadowedRgb, const std::vector<std::uint8_t>& unshadowedRgb);
 
 } // namespace shadowmetrics
 

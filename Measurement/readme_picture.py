@@ -1,4 +1,4 @@
-"""The README's first picture: VTK's vtkShadowMapPass, the old default (depth maps in
+"""docs/AUTOMATIC.md's picture (the README's first until the gallery): VTK's vtkShadowMapPass, the old default (depth maps in
 cascades) and the automatic pass on the same bench set-ups, each as the bench's error
 map against ray-cast truth (grey where it agrees, red where light leaks into a true
 shadow, blue where it draws a false shadow), captioned with its misclassified %.

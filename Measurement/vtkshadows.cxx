@@ -2,13 +2,16 @@
 // techniques against ray-traced truth.
 //
 //   vtkshadows render [options]        see PrintUsage() below
+//   vtkshadows gallery [options]
 //   vtkshadows bench [options]
 //   vtkshadows analyze FILE [options]
 //   vtkshadows sweep [options]
+//   vtkshadows speed [options]
 //
 // Every error prints one line "vtkshadows: error: ..." on stderr and exits
 // with status 2.
 #include "ShadowBench.h"
+#include "ShadowGallery.h"
 #include "ShadowSpeed.h"
 #include "ShadowScenes.h"
 #include "ShadowSweep.h"
@@ -44,9 +47,10 @@ constexpr int ExitUsageError = 2;
 
 struct Options
 {
-  std::string command; // "render", "bench", "analyze", "sweep" or "speed"
+  std::string command; // "render", "gallery", "bench", "analyze", "sweep" or "speed"
   bool help = false;
   shadowbench::Options bench = shadowbench::DefaultOptions();
+  shadowgallery::Options gallery; // its techniques, size, resolution and folder: bench's
   shadowsweep::Options sweep;
   bool interactiveMoving = true; // speed: moving frames rendered as a drag
   bool movingData = false;       // speed: moving frames play the scene's data
@@ -64,28 +68,36 @@ struct Options
   std::string output = "vtkshadows.png";
 };
 
-void PrintUsage(std::ostream& out)
+/** What every command does, on one screen. */
+void PrintOverview(std::ostream& out)
 {
-  out << "usage: vtkshadows render [options]\n"
-         "       vtkshadows bench [options]\n"
-         "       vtkshadows analyze FILE [options]\n"
-         "       vtkshadows sweep [options]\n"
-         "       vtkshadows speed [options]\n"
-         "       vtkshadows --help\n"
-         "\n"
-         "render: renders a scene with shadows and writes a PNG; prints the PNG's absolute path.\n"
-         "bench: measures every technique on the benchmark scenes against ray-traced truth;\n"
-         "prints a markdown table and which technique to use per light kind (the most accurate\n"
-         "within 1.25x the uniform map's frame), writes error maps, charts, results.md,\n"
-         "results.csv and recommendation.json.\n"
-         "analyze: the same for a model file (.obj .ply .stl .vtp .gltf .glb) on a ground,\n"
-         "by default a quick answer (about a minute and a half on 2 cores, llvmpipe).\n"
-         "sweep: measures techniques against ray-traced truth on random scenes, cameras and\n"
-         "lights; prints each technique's distribution, worst cases and flagged cases.\n"
-         "speed: first, steady and moving (orbiting) frame times of none, vtk and techniques,\n"
-         "interleaved in one process, at --resolution and at 64; prints a markdown table,\n"
-         "writes speed.md, speed.csv and frames.csv (every timed frame).\n"
-         "\n"
+  out <<
+    "usage: vtkshadows COMMAND [options]\n"
+    "\n"
+    "commands:\n"
+    "  render    renders a scene with shadows into a PNG and prints its path\n"
+    "  gallery   a few scenes drawn by VTK's pass, the default and each technique\n"
+    "            beside the ray-cast truth, with error maps, figures and a page\n"
+    "  bench     every technique against ray-traced truth on the benchmark scenes:\n"
+    "            a table, error maps, charts and a technique per light kind\n"
+    "  analyze   the same for a model FILE (.obj .ply .stl .vtp .gltf .glb) on a\n"
+    "            ground, a quick answer (about a minute and a half, 2 cores)\n"
+    "  sweep     random scenes, cameras and lights: each technique's distribution\n"
+    "  speed     first, steady and moving frame times beside no shadows and VTK's\n"
+    "\n"
+    "examples:\n"
+    "  vtkshadows render --technique auto -o shadows.png\n"
+    "  vtkshadows analyze model.stl --out analysis\n"
+    "  vtkshadows gallery --out gallery\n"
+    "\n"
+    "vtkshadows COMMAND --help lists a command's options (help COMMAND: the same);\n"
+    "docs/GUIDE.md explains the techniques and their settings.\n";
+}
+
+const char* RenderHelp()
+{
+  return "usage: vtkshadows render [options]\n\n"
+         "Renders a scene with shadows and writes a PNG; prints the PNG's absolute path.\n\n"
          "options of render:\n"
          "  --scene default|FILE     built-in scene or a model (.obj .ply .stl .vtp .gltf .glb)\n"
          "                           [default]\n"
@@ -108,8 +120,23 @@ void PrintUsage(std::ostream& out)
          "                           shadow filter, N of pcf:N in 2..7 [pcf2x2]\n"
          "  --size WxH               image size, each 16..8192 [800x600]\n"
          "  -o, --output FILE        output PNG [./vtkshadows.png]\n"
-         "  -h, --help               this help\n"
-         "\n"
+         "  -h, --help               this help\n";
+}
+
+const char* BenchIntro()
+{
+  return "usage: vtkshadows bench [options]\n"
+         "       vtkshadows analyze FILE [options]\n\n"
+         "bench measures every technique on the benchmark scenes against ray-traced truth;\n"
+         "prints a markdown table and which technique to use per light kind (the most accurate\n"
+         "within 1.25x the uniform map's frame), writes error maps, charts, results.md,\n"
+         "results.csv and recommendation.json. analyze does the same for a model file on a\n"
+         "ground, by default a quick answer.\n\n";
+}
+
+const char* BenchOptionsHelp()
+{
+  return
          "options of bench and analyze (lists are comma-separated; analyze's defaults in\n"
          "braces):\n"
          "  --scenes LIST            bench only: outdoor,paraview,model [these three],\n"
@@ -158,8 +185,15 @@ void PrintUsage(std::ostream& out)
          "  --flicker-setups LIST    set-ups measured along the path [perpendicular]\n"
          "  --flicker-yaw DEG        how far the camera turns along the path, 0..180 [6]\n"
          "  --timed-frames N         frames per frame-time figure, 1..100 [8] {3}\n"
-         "  --out DIR                output directory [./bench]\n"
-         "\n"
+         "  --out DIR                output directory [./bench]\n";
+}
+
+const char* SpeedHelp()
+{
+  return "usage: vtkshadows speed [options]\n\n"
+         "First, steady and moving (orbiting) frame times of none, vtk and techniques,\n"
+         "interleaved in one process, at --resolution and at 64; prints a markdown table,\n"
+         "writes speed.md, speed.csv and frames.csv (every timed frame).\n\n"
          "options of speed: those of bench but the flicker options, with\n"
          "  --scenes LIST            outdoor,paraview,model,street (225 actors),\n"
          "                           blocks (2,026 actors), glass (translucent casters),\n"
@@ -179,8 +213,14 @@ void PrintUsage(std::ostream& out)
          "                           passes' AnimationKeepsViews on (movie), or as a time\n"
          "                           series playing (the camera still, the scene's data\n"
          "                           changed before each frame's clock starts) [interactive]\n"
-         "  --out DIR                [./speed]\n"
-         "\n"
+         "  --out DIR                [./speed]\n";
+}
+
+const char* SweepHelp()
+{
+  return "usage: vtkshadows sweep [options]\n\n"
+         "Measures techniques against ray-traced truth on random scenes, cameras and\n"
+         "lights; prints each technique's distribution, worst cases and flagged cases.\n\n"
          "options of sweep:\n"
          "  --cases N                random cases, 1..1000000 [200]\n"
          "  --seed S                 seed of the sweep, 0..2^64-1 [1]\n"
@@ -196,6 +236,50 @@ void PrintUsage(std::ostream& out)
          "                           seed (suns 0.25..8 degrees, lamps 0.2..5% of the\n"
          "                           scene), measured against ray-traced area lights [hard]\n"
          "  --out DIR                output directory [./sweep]\n";
+}
+
+const char* GalleryHelp()
+{
+  return "usage: vtkshadows gallery [options]\n\n"
+         "Draws each case with VTK's pass, the default and each technique beside the\n"
+         "ray-cast truth; writes per case <scene>-<set-up>-truth.png and one PNG per\n"
+         "technique (the frame beside its error map: light leaks red, false shadows\n"
+         "blue), gallery.csv, overview.png (VTK's pass, the default and the truth for\n"
+         "the first three cases) and a markdown page; prints the page's path.\n\n"
+         "options of gallery:\n"
+         "  --out DIR                the pictures and gallery.csv [./gallery]\n"
+         "  --page FILE              the markdown page, its image links relative to its\n"
+         "                           folder [DIR/gallery.md]\n"
+         "  --cases LIST             scene:set-up pairs, scenes as speed's, set-ups as\n"
+         "                           bench's [street:perpendicular,outdoor:perpendicular,\n"
+         "                           model:spot,outdoor:street-point,glass:perpendicular,\n"
+         "                           smoke:perpendicular,paraview:soft-spot-3]\n"
+         "  --techniques LIST        as bench's [vtk,auto,uniform,lispsm,csm,dual,evsm4]\n"
+         "  --size WxH               each picture's size [400x225]\n"
+         "  --resolution N           map size of this project's techniques [2048]\n";
+}
+
+/** The help of `command`, or the overview for none or an unknown one. */
+void PrintUsage(std::ostream& out, const std::string& command = std::string())
+{
+  if (command == "bench" || command == "analyze")
+  {
+    out << BenchIntro() << BenchOptionsHelp();
+    return;
+  }
+  const std::map<std::string, const char*> helps = { { "render", RenderHelp() },
+    { "speed", SpeedHelp() }, { "sweep", SweepHelp() }, { "gallery", GalleryHelp() } };
+  const auto help = helps.find(command);
+  if (help == helps.end())
+  {
+    PrintOverview(out);
+    return;
+  }
+  out << help->second;
+  if (command == "speed")
+  {
+    out << "\n" << BenchOptionsHelp();
+  }
 }
 
 // --- value parsing -----------------------------------------------------------
@@ -657,6 +741,31 @@ std::string ParseSweepOutputDirectory(const std::string& value, Options& options
 
 // --- command line --------------------------------------------------------------
 
+std::string ParseGalleryCases(const std::string& value, Options& options)
+{
+  options.gallery.Cases.clear();
+  for (const std::string& key : SplitList(value))
+  {
+    shadowgallery::Case c;
+    if (!shadowgallery::CaseOfKey(key, c))
+    {
+      return "gallery case '" + key + "' is not scene:set-up (for instance city:perpendicular)";
+    }
+    options.gallery.Cases.push_back(c);
+  }
+  return options.gallery.Cases.empty() ? "no gallery case given" : std::string();
+}
+
+std::string ParsePage(const std::string& value, Options& options)
+{
+  if (value.empty())
+  {
+    return "page name is empty";
+  }
+  options.gallery.PagePath = value;
+  return {};
+}
+
 using OptionParser = std::function<std::string(const std::string&, Options&)>;
 
 /** Options taking a value, by every name they are spelled with. */
@@ -756,6 +865,41 @@ shadowbench::SpeedOptions SpeedOptionsOf(const Options& options)
   return speed;
 }
 
+/** Bench's techniques, size, resolution and folder, with the cases and the page. */
+const std::map<std::string, OptionParser>& GalleryOptionParsers()
+{
+  static const std::map<std::string, OptionParser> parsers = {
+    { "--cases", ParseGalleryCases },
+    { "--page", ParsePage },
+    { "--techniques", ParseTechniques },
+    { "--resolution", ParseBenchResolution },
+    { "--size", ParseBenchSize },
+    { "--out", ParseOutputDirectory },
+  };
+  return parsers;
+}
+
+/** The gallery's defaults, in the bench options its parsers fill. */
+void SetGalleryDefaults(Options& options)
+{
+  options.bench.Techniques = options.gallery.Techniques;
+  options.bench.Resolution = options.gallery.Resolution;
+  options.bench.Width = options.gallery.Width;
+  options.bench.Height = options.gallery.Height;
+  options.bench.OutputDirectory = options.gallery.OutputDirectory;
+}
+
+shadowgallery::Options GalleryOptionsOf(const Options& options)
+{
+  shadowgallery::Options gallery = options.gallery;
+  gallery.Techniques = options.bench.Techniques;
+  gallery.Resolution = options.bench.Resolution;
+  gallery.Width = options.bench.Width;
+  gallery.Height = options.bench.Height;
+  gallery.OutputDirectory = options.bench.OutputDirectory;
+  return gallery;
+}
+
 const std::map<std::string, OptionParser>& SweepOptionParsers()
 {
   static const std::map<std::string, OptionParser> parsers = {
@@ -833,7 +977,7 @@ bool ParseCommandLine(
 {
   if (arguments.empty())
   {
-    error = "missing subcommand (expected render, bench, analyze, sweep or speed)";
+    error = "missing subcommand (expected render, gallery, bench, analyze, sweep or speed)";
     return false;
   }
   if (IsHelpFlag(arguments[0]) || arguments[0] == "help")
@@ -853,6 +997,11 @@ bool ParseCommandLine(
   if (options.command == "sweep")
   {
     return ParseSubcommandOptions(arguments, 1, SweepOptionParsers(), options, error);
+  }
+  if (options.command == "gallery")
+  {
+    SetGalleryDefaults(options);
+    return ParseSubcommandOptions(arguments, 1, GalleryOptionParsers(), options, error);
   }
   if (options.command == "speed")
   {
@@ -875,7 +1024,7 @@ bool ParseCommandLine(
     options.bench.ModelFile = arguments[1];
     return ParseSubcommandOptions(arguments, 2, AnalyzeOptionParsers(), options, error);
   }
-  error = "unknown subcommand '" + arguments[0] + "' (expected render, bench, analyze, sweep or speed)";
+  error = "unknown subcommand '" + arguments[0] + "' (expected render, gallery, bench, analyze, sweep or speed)";
   return false;
 }
 
@@ -1013,7 +1162,7 @@ int Run(const std::vector<std::string>& arguments)
   }
   if (options.help)
   {
-    PrintUsage(std::cout);
+    PrintUsage(std::cout, options.command);
     return EXIT_SUCCESS;
   }
   bool ok = false;
@@ -1028,6 +1177,10 @@ int Run(const std::vector<std::string>& arguments)
   else if (options.command == "speed")
   {
     ok = shadowbench::RunSpeed(SpeedOptionsOf(options), std::cout, std::cerr, error);
+  }
+  else if (options.command == "gallery")
+  {
+    ok = shadowgallery::Run(GalleryOptionsOf(options), std::cout, std::cerr, error);
   }
   else
   {

@@ -1,6 +1,6 @@
 #!/bin/bash
 # Packs what `vtkshadows speed` needs on a GPU machine that has no VTK and no
-# display (the device machine of docs/BENCHMARKS.md, "On a GPU"): the program
+# display (the device machine of docs/notes/many-actors.md, "On a GPU"): the program
 # and this build's module, the VTK and system libraries they load, an Xvfb
 # with Mesa's GLX for it to serve, and xkbcomp with its keymaps. Clients then
 # take the NVIDIA driver's GLX (run_on_gpu.sh). Embree and ICU's data, which

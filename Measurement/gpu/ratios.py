@@ -1,7 +1,7 @@
 """Steady and moving frames over VTK's pass's, per scene, map size and
 technique, over several `vtkshadows speed` runs (their speed.csv files): the
 median and the range of the runs, for machines whose frame times vary from run
-to run (the GPU machine of docs/BENCHMARKS.md, "On a GPU").
+to run (the GPU machine of docs/notes/many-actors.md, "On a GPU").
 
   /usr/bin/python3 Measurement/gpu/ratios.py RUN1/speed.csv RUN2/speed.csv ...
 """

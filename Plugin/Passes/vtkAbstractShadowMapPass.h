@@ -17,7 +17,7 @@
  * shadows on:
  *
  * @code
- * renderer->SetPass(vtkNew<vtkWarpedShadowMapPass>());
+ * renderer->SetPass(vtkNew< vtkWarpedShadowMapPass >());
  * @endcode
  *
  * Every frame: collect the shadowed lights and the casters; if anything the

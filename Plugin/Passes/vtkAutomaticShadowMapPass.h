@@ -13,8 +13,13 @@
  * seen side-on (Kozlov's cube); cascades and TSM are there to pin.
  *
  * @code
- * renderer->SetPass(vtkNew<vtkAutomaticShadowMapPass>());
+ * renderer->SetPass(vtkNew< vtkAutomaticShadowMapPass >());
  * @endcode
+ *
+ * Main settings: SetResolution() (each light's budget), SetCostBudget() (6
+ * allows Kozlov's cube for suns), SetViewsChoice() (SetViewsChoiceToLiSPSM(),
+ * ... pins every light), SetLightViews() (one light), SetSoftShadows(). In
+ * Python: vtkshadowmaps.make_pass() or make_pass("auto", cost_budget=6).
  *
  * A light seen for the first time gets its views at once. After that its
  * views change only in still frames (InteractiveUpdateRate), so that no

@@ -12,10 +12,16 @@
  * change that unused one.
  *
  * @code
- * vtkNew<vtkCascadedShadowMapPass> shadows;
+ * vtkNew< vtkCascadedShadowMapPass > shadows;
  * shadows->SetMaximumShadowDistance(200.0);
  * renderer->SetPass(shadows);
  * @endcode
+ *
+ * Main settings: SetNumberOfCascades(), SetSplitLambda() (PSSM's blend of
+ * logarithmic and uniform splits), SetMaximumShadowDistance(), SetFitMode()
+ * (SetFitModeToStable(): no shimmer as the camera moves; SetFitModeToTight()),
+ * SetBlendFraction(), SetCascadeWarp(), SetResolution() (per cascade). In
+ * Python: vtkshadowmaps.make_pass("cascaded", number_of_cascades=3).
  */
 #ifndef vtkCascadedShadowMapPass_h
 #define vtkCascadedShadowMapPass_h

@@ -8,12 +8,18 @@
  * other strategy:
  *
  * @code
- * vtkNew<vtkDepthShadowMapPass> shadows;
- * vtkNew<vtkCascadedShadowMapViews> cascades;
+ * vtkNew< vtkDepthShadowMapPass > shadows;
+ * vtkNew< vtkCascadedShadowMapViews > cascades;
  * shadows->SetViews(cascades);
  * shadows->SetFilterToPoisson();
  * renderer->SetPass(shadows);
  * @endcode
+ *
+ * Main settings: SetViews(), SetResolution(), SetFilter() (SetFilterToHard(),
+ * SetFilterToPCF2x2(), SetFilterToPCFNxN() with SetKernelSize(),
+ * SetFilterToPoisson() with SetFilterRadius()), SetConstantBias(),
+ * SetSlopeScaledBias(), SetNormalOffset(). In Python:
+ * vtkshadowmaps.make_pass("depth", resolution=2048).
  *
  * vtkWarpedShadowMapPass and vtkCascadedShadowMapPass are this pass with
  * warped and cascaded views. After SetRepresentation() with another

@@ -10,12 +10,16 @@
  * default to vtkUniformShadowMapViews and take any other strategy:
  *
  * @code
- * vtkNew<vtkDualDepthShadowMapPass> shadows;
+ * vtkNew< vtkDualDepthShadowMapPass > shadows;
  * shadows->SetModeToDual();            // or SetModeToMidpoint(), SetModeToSecondDepth()
  * renderer->SetPass(shadows);
- * vtkNew<vtkCascadedShadowMapViews> cascades;
+ * vtkNew< vtkCascadedShadowMapViews > cascades;
  * shadows->SetViews(cascades);         // dual-depth cascades
  * @endcode
+ *
+ * Main settings: SetMode() (SetModeToDual(), SetModeToMidpoint(),
+ * SetModeToSecondDepth()), SetDualOffset(), SetLayerMethod(), SetViews(),
+ * SetResolution(). In Python: vtkshadowmaps.make_pass("dual-depth").
  */
 #ifndef vtkDualDepthShadowMapPass_h
 #define vtkDualDepthShadowMapPass_h

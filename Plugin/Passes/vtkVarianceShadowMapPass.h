@@ -10,13 +10,19 @@
  * vtkUniformShadowMapViews and take any other strategy:
  *
  * @code
- * vtkNew<vtkVarianceShadowMapPass> shadows;
+ * vtkNew< vtkVarianceShadowMapPass > shadows;
  * shadows->SetMomentsToEVSM4();        // VSM, EVSM2, EVSM4, MSM, ESM
  * shadows->SetBlurRadius(2.0);         // texels of the finest view
  * renderer->SetPass(shadows);
- * vtkNew<vtkCascadedShadowMapViews> cascades;
+ * vtkNew< vtkCascadedShadowMapViews > cascades;
  * shadows->SetViews(cascades);         // filterable cascades
  * @endcode
+ *
+ * Main settings: SetMoments() (SetMomentsToVSM(), SetMomentsToEVSM4(),
+ * SetMomentsToMSM(), SetMomentsToESM()), SetBlurRadius(),
+ * SetLightBleedingReduction(), SetMipmaps(), SetStorage(), SetViews(),
+ * SetResolution(). In Python: vtkshadowmaps.make_pass("variance",
+ * blur_radius=2.0).
  */
 #ifndef vtkVarianceShadowMapPass_h
 #define vtkVarianceShadowMapPass_h

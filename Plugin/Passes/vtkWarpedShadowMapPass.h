@@ -10,10 +10,16 @@
  * change that unused one.
  *
  * @code
- * vtkNew<vtkWarpedShadowMapPass> shadows;
+ * vtkNew< vtkWarpedShadowMapPass > shadows;
  * shadows->SetWarpModeToLiSPSM();
  * renderer->SetPass(shadows);
  * @endcode
+ *
+ * Main settings: SetWarpMode() (SetWarpModeToUniform(), SetWarpModeToPSM(),
+ * SetWarpModeToLiSPSM(), SetWarpModeToTSM(), SetWarpModeToGMNPR()),
+ * SetResolution(), SetPSMCubeMap() (Kozlov's cube), SetLiSPSMFreeParameter(),
+ * and the depth filters (SetFilterToPoisson(), ...). In Python:
+ * vtkshadowmaps.make_pass("lispsm", resolution=4096).
  */
 #ifndef vtkWarpedShadowMapPass_h
 #define vtkWarpedShadowMapPass_h

@@ -17,7 +17,7 @@ namespace
 // is moved back by WidenedBackwardPerNearDepth times the nearest visible prop's
 // depth and whose sides are turned out by WidenedTurnDegrees, both multiplied
 // by the largest of WidenedShares whose fit serves. It then holds several
-// frames of a drag (docs/BENCHMARKS.md, "Wider refits").
+// frames of a drag (docs/notes/interactive-speed.md, "Wider refits").
 constexpr double WidenedBackwardPerNearDepth = 0.1;
 constexpr double WidenedTurnDegrees = 1.0;
 constexpr std::array<double, 5> WidenedShares{ 4.0, 2.0, 1.0, 0.5, 0.25 };

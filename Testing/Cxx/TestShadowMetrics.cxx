@@ -258,3 +258,39 @@ TEST(ShadowMetrics, VisibilityErrorMapColoursTheSignedError)
   // Not counted: black.
   EXPECT_EQ(rgb[12] + rgb[13] + rgb[14], 0);
 }
+
+TEST(ShadowMetrics, TruthFrameDarkensWhatTheTruthShadows)
+{
+  // Three pixels: lit, shadowed, ignored (the background keeps its colour).
+  const std::vector<std::uint8_t> plain = { 200, 100, 50, 200, 100, 50, 10, 20, 30 };
+  const std::vector<Truth> truth = { L, S, I };
+  EXPECT_EQ(shadowmetrics::TruthFrame(plain, truth, {}, {}),
+    (std::vector<std::uint8_t>{ 200, 100, 50, 0, 0, 0, 10, 20, 30 }));
+  // A sized light's visibility scales every channel alike.
+  EXPECT_EQ(shadowmetrics::TruthFrame(plain, truth, { 1.0f, 0.5f, 0.0f }, {}),
+    (std::vector<std::uint8_t>{ 200, 100, 50, 100, 50, 25, 10, 20, 30 }));
+  // A transmittance tints channel by channel.
+  const std::vector<glm::vec3> transmittance = { glm::vec3(1.0f), glm::vec3(0.5f, 1.0f, 0.0f),
+    glm::vec3(0.0f) };
+  EXPECT_EQ(shadowmetrics::TruthFrame(plain, truth, {}, transmittance),
+    (std::vector<std::uint8_t>{ 200, 100, 50, 100, 100, 0, 10, 20, 30 }));
+}
+
+TEST(ShadowMetrics, ShownFrameLiftsShadowsByTheAmbientShare)
+{
+  const std::vector<std::uint8_t> plain = { 200, 100, 0 };
+  const std::vector<std::uint8_t> black = { 0, 0, 0 };
+  EXPECT_EQ(shadowmetrics::ShownFrame(black, plain), (std::vector<std::uint8_t>{ 40, 20, 0 }));
+  EXPECT_EQ(shadowmetrics::ShownFrame(plain, plain), plain);
+}
+
+TEST(ShadowMetrics, MeanOfChannelsLeavesOutWhatTheComparisonDoes)
+{
+  const float n = shadoworacle::NotCounted;
+  const std::vector<glm::vec3> transmittance = { glm::vec3(0.3f, 0.6f, 0.9f), glm::vec3(n),
+    glm::vec3(1.0f) };
+  const auto mean = shadowmetrics::MeanOfChannels(transmittance, { 0, 0, 1 });
+  EXPECT_NEAR(mean[0], 0.6f, 1e-6f);
+  EXPECT_EQ(mean[1], n);
+  EXPECT_EQ(mean[2], n);
+}

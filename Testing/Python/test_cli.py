@@ -1,6 +1,7 @@
 """vtkshadows: renders the default scene to a PNG, runs a small speed benchmark
-(a table row per technique, no shader built in a moving frame), and rejects bad
-input with one line on stderr and exit status 2."""
+(a table row per technique, no shader built in a moving frame), rejects bad
+input with one line on stderr and exit status 2, and keeps --help to one screen
+with each command's options a "COMMAND --help" away."""
 import csv
 import os
 import subprocess
@@ -85,9 +86,24 @@ def main(program, output_dir):
         elif args and (len(lines) != 1 or "error" not in lines[0]):
             failures.append(f"{args}: stderr should be one error line, got {result.stderr!r}")
 
+    # The overview fits one screen (24 lines) and names every command; each
+    # command's help has its options.
+    commands = ["render", "gallery", "bench", "analyze", "sweep", "speed"]
+    result = run(program, "--help")
+    overview = result.stdout.splitlines()
+    if result.returncode != 0 or len(overview) > 24 or \
+            not all(any(line.startswith("  " + c + " ") for line in overview) for c in commands) or \
+            "COMMAND --help" not in result.stdout:
+        failures.append(f"--help: {len(overview)} lines, rc={result.returncode}: {result.stdout!r}")
+    for command in commands:
+        result = run(program, command, "--help") if command != "analyze" else run(program, "analyze", "--help")
+        if result.returncode != 0 or f"vtkshadows {command}" not in result.stdout or \
+                "--out" not in result.stdout and command != "render" or "options of" not in result.stdout:
+            failures.append(f"{command} --help: rc={result.returncode}: {result.stdout[:300]!r}")
+
     for failure in failures:
         print("FAIL:", failure)
-    checks = 3 + len(bad_inputs)
+    checks = 4 + len(commands) + len(bad_inputs)
     print(f"{checks - len(failures)} passed, {len(failures)} failed")
     return 1 if failures else 0
 
