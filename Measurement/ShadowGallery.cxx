@@ -277,7 +277,7 @@ void WriteCase(const Options& options, const std::vector<shadowbench::CaseFigure
 }
 
 void WritePage(const Options& options, const std::vector<shadowbench::CaseFigures>& figures,
-  const std::string& pagePath)
+  const std::string& commit, const std::string& pagePath)
 {
   const fs::path pageFolder = fs::absolute(pagePath).parent_path();
   std::string images =
@@ -304,7 +304,7 @@ void WritePage(const Options& options, const std::vector<shadowbench::CaseFigure
        << " % of the unshadowed frame as an ambient term, so that shapes stay visible in "
           "shadow.\n\n"
        << "Made by `" << CommandOf(options, pagePath) << "` on Mesa's llvmpipe, source "
-       << SourceCommit() << "; maps of " << options.Resolution
+       << commit << "; maps of " << options.Resolution
        << "² texels (cascades: 4 of half that), VTK's pass at its default 1024².\n\n";
   if (fs::exists(options.OutputDirectory + "/overview.png"))
   {
@@ -437,6 +437,8 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
   {
     return false;
   }
+  // Before anything is written: the page and the pictures are in the tree.
+  const std::string commit = SourceCommit();
   const std::string scratch = (fs::temp_directory_path() /
     ("vtkshadows-gallery-" + std::to_string(getpid()))).string();
   std::vector<shadowbench::CaseFigures> figures;
@@ -453,7 +455,7 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
   WriteCSV(options, figures);
   const std::string page =
     options.PagePath.empty() ? options.OutputDirectory + "/gallery.md" : options.PagePath;
-  WritePage(options, figures, page);
+  WritePage(options, figures, commit, page);
   out << fs::absolute(page).string() << std::endl;
   return true;
 }
