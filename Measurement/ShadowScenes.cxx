@@ -40,7 +40,9 @@
 #include <vtkPoints.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataAlgorithm.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkInformationVector.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkRTAnalyticSource.h>
@@ -1613,6 +1615,51 @@ public:
 };
 vtkStandardNewMacro(TimeVaryingContour);
 
+/// A data set of many time steps as a reader of a file series delivers it:
+/// every step's surface made once, SetStep choosing one (as a reader's time
+/// step index does), each execution handing on that step's arrays.
+class TimeStepSeries : public vtkPolyDataAlgorithm
+{
+public:
+  static TimeStepSeries* New();
+  vtkTypeMacro(TimeStepSeries, vtkPolyDataAlgorithm);
+
+  void AddStep(vtkPolyData* surface) { this->Steps.emplace_back(surface); }
+
+  void SetStep(int step)
+  {
+    const int count = static_cast<int>(this->Steps.size());
+    const int chosen = count > 0 ? ((step % count) + count) % count : 0;
+    if (chosen != this->Step)
+    {
+      this->Step = chosen;
+      this->Modified();
+    }
+  }
+
+protected:
+  TimeStepSeries() { this->SetNumberOfInputPorts(0); }
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputs) override
+  {
+    vtkPolyData* output = vtkPolyData::GetData(outputs);
+    if (this->Step < static_cast<int>(this->Steps.size()))
+    {
+      output->ShallowCopy(this->Steps[this->Step]);
+    }
+    return 1;
+  }
+
+private:
+  std::vector<vtkSmartPointer<vtkPolyData>> Steps;
+  int Step = 0;
+};
+vtkStandardNewMacro(TimeStepSeries);
+
+/// Steps of the time-step series: the contour's first values, each step a
+/// surface of its own (about 30 MB each).
+constexpr int TimeStepCount = 6;
+
 constexpr int ContourHalfExtent = 110;
 /// The contour's value swings around 160 (RTData's mid-range), where the
 /// surface's area changes least with it.
@@ -1664,6 +1711,19 @@ void BuildContourScene(vtkRenderer* renderer)
   BuildIsosurfaceScene(renderer, contour->GetOutputPort());
 }
 
+void BuildTimeStepsScene(vtkRenderer* renderer)
+{
+  vtkNew<TimeStepSeries> series;
+  for (int step = 0; step < TimeStepCount; ++step)
+  {
+    auto contour = ContourOfWavelet<vtkContourFilter>();
+    contour->SetValue(0, ContourValueAt(step));
+    contour->Update();
+    series->AddStep(contour->GetOutput());
+  }
+  BuildIsosurfaceScene(renderer, series->GetOutputPort());
+}
+
 void BuildBigMeshScene(vtkRenderer* renderer)
 {
   // Not a TimeVaryingContour: AdvanceTimeVaryingData leaves it alone.
@@ -1682,21 +1742,29 @@ int AdvanceTimeVaryingData(vtkRenderer* renderer, int step)
   while (vtkActor* actor = actors->GetNextActor())
   {
     vtkMapper* mapper = actor->GetMapper();
-    auto* contour = TimeVaryingContour::SafeDownCast(mapper ? mapper->GetInputAlgorithm() : nullptr);
-    if (contour)
+    vtkAlgorithm* input = mapper ? mapper->GetInputAlgorithm() : nullptr;
+    if (auto* contour = TimeVaryingContour::SafeDownCast(input))
     {
       contour->SetValue(0, ContourValueAt(step));
-      contour->Update();
-      actor->Modified();
-      ++advanced;
     }
+    else if (auto* series = TimeStepSeries::SafeDownCast(input))
+    {
+      series->SetStep(step);
+    }
+    else
+    {
+      continue;
+    }
+    input->Update();
+    actor->Modified();
+    ++advanced;
   }
   return advanced;
 }
 
 bool HasTimeVaryingData(const std::string& scene)
 {
-  return scene == "contour";
+  return scene == "contour" || scene == "timesteps";
 }
 
 std::string ModelScenePath()
@@ -1918,6 +1986,11 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
     BuildContourScene(renderer);
     return true;
   }
+  if (name == "timesteps")
+  {
+    BuildTimeStepsScene(renderer);
+    return true;
+  }
   if (name == "bigmesh")
   {
     BuildBigMeshScene(renderer);
@@ -1929,8 +2002,8 @@ bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::strin
     return true;
   }
   error = "unknown scene '" + name +
-    "' (expected default, outdoor, paraview, model, city, field, room, street, blocks or "
-    "contour)";
+    "' (expected default, outdoor, paraview, model, city, field, room, street, blocks, glass, "
+    "smoke, contour, timesteps or bigmesh)";
   return false;
 }
 

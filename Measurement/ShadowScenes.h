@@ -170,6 +170,15 @@ void BuildBlocksScene(vtkRenderer* renderer);
 void BuildContourScene(vtkRenderer* renderer);
 
 /**
+ * A data set of many time steps, as a reader of a file series plays it: the
+ * contour scene's surface at six values, each made once when the scene is
+ * built (about 180 MB in all), AdvanceTimeVaryingData choosing the step (the
+ * mapper's input then holds another surface's arrays), under the contour
+ * scene's ground and camera.
+ */
+void BuildTimeStepsScene(vtkRenderer* renderer);
+
+/**
  * A big still mesh: the contour scene's isosurface at its first value with
  * each triangle split in four (about 3.3 million triangles), over the same
  * ground, under the same camera. Its data do not change.
@@ -178,7 +187,8 @@ void BuildBigMeshScene(vtkRenderer* renderer);
 
 /**
  * Moves the renderer's time-varying data to time step `step`: the contour of
- * BuildContourScene takes the step's value and updates (so a
+ * BuildContourScene takes the step's value, the series of BuildTimeStepsScene
+ * its step (modulo its count), and updates (so a
  * render after it draws new geometry without running the filter), and its
  * actor is marked modified, as an application must for VTK's own
  * vtkShadowMapPass to render its map again: its baker pass compares the
@@ -188,7 +198,7 @@ void BuildBigMeshScene(vtkRenderer* renderer);
  */
 int AdvanceTimeVaryingData(vtkRenderer* renderer, int step);
 
-/** True for the scenes whose data AdvanceTimeVaryingData plays: "contour". */
+/** True for the scenes whose data AdvanceTimeVaryingData plays: "contour", "timesteps". */
 bool HasTimeVaryingData(const std::string& scene);
 
 /** The sweep's scenes: "default", the benchmark's, then "city", "field", "room". */
@@ -213,7 +223,8 @@ void BuildSmokeScene(vtkRenderer* renderer);
  * Builds a benchmark scene, a sweep scene, "street", "blocks", "glass",
  * "glass-opaque" (the glass scene whose translucent actors cast nothing: its
  * frame without transmittance maps), "smoke" (BuildSmokeScene), "smoke-opaque"
- * (its volume casting nothing), "contour" (BuildContourScene), "bigmesh" (BuildBigMeshScene) or "default"
+ * (its volume casting nothing), "contour" (BuildContourScene), "timesteps" (BuildTimeStepsScene),
+ * "bigmesh" (BuildBigMeshScene) or "default"
  * (BuildDefaultScene) into an empty
  * renderer. Returns false with a one-line `error` for an unknown name or a
  * scene that cannot be built.

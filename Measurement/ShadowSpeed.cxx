@@ -73,7 +73,7 @@ bool ValidateSpeedOptions(const SpeedOptions& options, std::string& error)
   {
     if (options.MovingData && !shadowscenes::HasTimeVaryingData(scene))
     {
-      error = "scene '" + scene + "' has no time-varying data to play (--moving data: contour)";
+      error = "scene '" + scene + "' has no time-varying data to play (--moving data: contour, timesteps)";
       return false;
     }
   }

@@ -200,8 +200,10 @@ const char* SpeedHelp()
          "                           glass-opaque (the same casting opaque shadows only),\n"
          "                           smoke (a volume), smoke-opaque (its volume not casting),\n"
          "                           contour (an isosurface of 780k triangles whose value\n"
-         "                           --moving data changes every frame), bigmesh (that\n"
-         "                           isosurface still, each triangle split in four: 3.3M)\n"
+         "                           --moving data changes every frame), timesteps (six\n"
+         "                           such surfaces made once, a step a frame, as a reader of\n"
+         "                           a file series plays them), bigmesh (that isosurface\n"
+         "                           still, each triangle split in four: 3.3M)\n"
          "                           [outdoor,paraview,model,street]\n"
          "  --setups LIST            [perpendicular,spot]\n"
          "  --techniques LIST        [uniform,lispsm,csm] (none and vtk always measured)\n"
@@ -501,6 +503,7 @@ std::string ParseSpeedScenes(const std::string& value, Options& options)
   names.push_back("smoke");
   names.push_back("smoke-opaque");
   names.push_back("contour");
+  names.push_back("timesteps");
   names.push_back("bigmesh");
   for (const std::string& scene : SplitList(value))
   {
@@ -508,7 +511,7 @@ std::string ParseSpeedScenes(const std::string& value, Options& options)
     {
       return "unknown scene '" + scene +
         "' (expected outdoor, paraview, model, street, blocks, glass, glass-opaque, smoke, "
-        "smoke-opaque, contour or bigmesh)";
+        "smoke-opaque, contour, timesteps or bigmesh)";
     }
   }
   options.bench.Scenes = SplitList(value);
