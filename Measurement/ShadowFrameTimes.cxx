@@ -85,6 +85,21 @@ std::vector<double> Of(const std::vector<FrameTime>& frames, double FrameTime::*
   return values;
 }
 
+/// The last frame's milliseconds in each of the pass's frame steps; empty for
+/// a pass not of this module.
+std::vector<double> FrameStepMilliseconds(vtkRenderPass* pass)
+{
+  std::vector<double> steps;
+  if (auto* ours = vtkAbstractShadowMapPass::SafeDownCast(pass))
+  {
+    for (int step = 0; step < vtkAbstractShadowMapPass::NUMBER_OF_FRAME_STEPS; ++step)
+    {
+      steps.push_back(ours->GetFrameStepMilliseconds(step));
+    }
+  }
+  return steps;
+}
+
 /// TimedRender's, with what one of this module's passes rendered into its maps.
 FrameTime TimedPassRender(vtkRenderWindow* window, vtkRenderPass* pass)
 {
@@ -115,6 +130,7 @@ std::vector<Timing> MeasureFrameTimes(vtkRenderWindow* window, vtkRenderer* rend
       if (round == 0)
       {
         timing[p].First = first;
+        timing[p].FirstStepMilliseconds = FrameStepMilliseconds(passes[p]);
       }
       for (int i = 0; i < WarmUpFrames; ++i)
       {

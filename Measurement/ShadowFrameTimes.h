@@ -29,6 +29,9 @@ struct Timing
 {
   /// The first frame of a pass on the scene (its maps and shaders built).
   double First = 0.0;
+  /// This module's passes: the first frame's milliseconds in each frame step
+  /// (vtkAbstractShadowMapPass::GetFrameStepMilliseconds); empty otherwise.
+  std::vector<double> FirstStepMilliseconds;
   /// Median of frames with nothing changed.
   double Steady = 0.0;
   /// Median of frames with the camera moved a little before each, rendered
