@@ -361,11 +361,6 @@ void MeasureFlicker(View& view, const shadoworacle::Oracle& oracle,
   SetPathFrame(view, 0, 2);
 }
 
-std::string CaseName(const std::string& scene, const std::string& setup)
-{
-  return scene + "-" + setup;
-}
-
 void WriteChart(const std::vector<Row>& rows, const std::string& path, const std::string& title);
 
 void WriteShownFrame(const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& plain,
@@ -797,6 +792,12 @@ Options WithReferences(Options options)
   return options;
 }
 } // namespace
+
+//------------------------------------------------------------------------------
+std::string CaseName(const std::string& scene, const std::string& setup)
+{
+  return scene + "-" + setup;
+}
 
 //------------------------------------------------------------------------------
 Options DefaultOptions()

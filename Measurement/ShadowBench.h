@@ -82,6 +82,9 @@ Options QuickAnalyzeOptions();
 /// uniform map's.
 constexpr double RecommendationBudget = 1.25;
 
+/// "<scene>-<setup>": the stem of every file the benchmark writes for a case.
+std::string CaseName(const std::string& scene, const std::string& setup);
+
 /// Runs the benchmark: prints the markdown table and the recommendation
 /// (ShadowRecommendation.h) on `out` and writes into the output directory
 /// results.md (both), results.csv, recommendation.json, one error map PNG per

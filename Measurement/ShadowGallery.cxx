@@ -12,6 +12,8 @@
 #include <vtkSmartPointer.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -34,7 +36,27 @@ constexpr int OverviewCases = 3;
 
 std::string CaseName(const Case& c)
 {
-  return c.Scene + "-" + c.Setup;
+  return shadowbench::CaseName(c.Scene, c.Setup);
+}
+
+/// The link name GitHub gives a heading: lower case, spaces to hyphens, other
+/// punctuation but hyphens and underscores dropped.
+std::string HeadingAnchor(const std::string& heading)
+{
+  std::string anchor;
+  for (const char c : heading)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (std::isalnum(u) || c == '-' || c == '_')
+    {
+      anchor += static_cast<char>(std::tolower(u));
+    }
+    else if (c == ' ')
+    {
+      anchor += '-';
+    }
+  }
+  return anchor;
 }
 
 std::string TechniqueTitle(const std::string& technique)
@@ -96,7 +118,8 @@ bool WriteFrameAndErrors(
 
 /// The README's picture: for the first OverviewCases cases, VTK's frame, the
 /// default's and the truth side by side, one case a row.
-bool WriteOverview(const Options& options, const std::string& scratch, std::string& error)
+bool WriteOverview(const Options& options, const std::string& scratch, const std::string& folder,
+  std::string& error)
 {
   const auto& techniques = options.Techniques;
   if (std::find(techniques.begin(), techniques.end(), "vtk") == techniques.end() ||
@@ -119,9 +142,9 @@ bool WriteOverview(const Options& options, const std::string& scratch, std::stri
     rows->AddInputData(row);
   }
   rows->Update();
-  if (!WriteImage(rows->GetOutput(), options.OutputDirectory + "/overview.png"))
+  if (!WriteImage(rows->GetOutput(), folder + "/overview.png"))
   {
-    error = "cannot write " + options.OutputDirectory + "/overview.png";
+    error = "cannot write " + folder + "/overview.png";
     return false;
   }
   return true;
@@ -181,11 +204,12 @@ bool IsTranslucentCase(const std::vector<shadowbench::CaseFigures>& figures, con
   });
 }
 
-void WriteCSV(const Options& options, const std::vector<shadowbench::CaseFigures>& figures)
+bool WriteCSV(const Options& options, const std::vector<shadowbench::CaseFigures>& figures,
+  const std::string& folder)
 {
-  std::ofstream csv(options.OutputDirectory + "/gallery.csv");
+  std::ofstream csv(folder + "/gallery.csv");
   csv << "scene,light,technique,misclassified,leak,false_shadow,counted_pixels,"
-         "transmittance_error,choice\n";
+         "light_error,choice\n";
   csv << std::setprecision(12);
   for (const Case& c : options.Cases)
   {
@@ -195,18 +219,49 @@ void WriteCSV(const Options& options, const std::vector<shadowbench::CaseFigures
       {
         csv << c.Scene << ',' << c.Setup << ',' << technique << ',' << f->Errors.Misclassified
             << ',' << f->Errors.LightLeak << ',' << f->Errors.FalseShadow << ','
-            << f->Errors.Counted << ',' << (f->Translucent ? f->TransmittanceError : NAN)
+            << f->Errors.Counted << ',' << (f->Translucent ? HeadlineFigure(*f) : NAN)
             << ",\"" << f->Choice << "\"\n";
       }
     }
   }
+  return static_cast<bool>(csv);
 }
 
+std::string Joined(const std::vector<std::string>& items)
+{
+  std::string joined;
+  for (const std::string& item : items)
+  {
+    joined += (joined.empty() ? "" : ",") + item;
+  }
+  return joined;
+}
+
+/// The command that makes this gallery again, naming the cases and techniques
+/// where they are not the defaults.
 std::string CommandOf(const Options& options, const std::string& page)
 {
   std::ostringstream command;
-  command << "vtkshadows gallery --out " << options.OutputDirectory << " --page " << page
-          << " --size " << options.Width << 'x' << options.Height << " --resolution "
+  command << "vtkshadows gallery --out " << options.OutputDirectory << " --page " << page;
+  std::vector<std::string> cases;
+  for (const Case& c : options.Cases)
+  {
+    cases.push_back(CaseKey(c));
+  }
+  std::vector<std::string> defaultCases;
+  for (const Case& c : DefaultCases())
+  {
+    defaultCases.push_back(CaseKey(c));
+  }
+  if (cases != defaultCases)
+  {
+    command << " --cases " << Joined(cases);
+  }
+  if (options.Techniques != DefaultTechniques())
+  {
+    command << " --techniques " << Joined(options.Techniques);
+  }
+  command << " --size " << options.Width << 'x' << options.Height << " --resolution "
           << options.Resolution;
   return command.str();
 }
@@ -227,7 +282,7 @@ void WriteSummary(const Options& options, const std::vector<shadowbench::CaseFig
   page << '\n';
   for (const Case& c : options.Cases)
   {
-    page << "| [" << CaseName(c) << "](#" << CaseName(c) << ")"
+    page << "| [" << CaseName(c) << "](#" << HeadingAnchor(CaseName(c)) << ")"
          << (IsTranslucentCase(figures, c) ? " (light error %)" : "") << " |";
     for (const std::string& technique : options.Techniques)
     {
@@ -276,7 +331,7 @@ void WriteCase(const Options& options, const std::vector<shadowbench::CaseFigure
   }
 }
 
-void WritePage(const Options& options, const std::vector<shadowbench::CaseFigures>& figures,
+bool WritePage(const Options& options, const std::vector<shadowbench::CaseFigures>& figures,
   const std::string& commit, const std::string& pagePath)
 {
   const fs::path pageFolder = fs::absolute(pagePath).parent_path();
@@ -297,14 +352,15 @@ void WritePage(const Options& options, const std::vector<shadowbench::CaseFigure
           "|frame's − truth's| per colour channel, in % of full light, and the error map is "
           "red where the frame is lighter than the truth and blue where it is darker, in "
           "proportion (full at half the light); a sized light's map is drawn the same way "
-          "against its visibility.\n\n"
+          "against its visibility (against the transmittance where casters are "
+          "translucent).\n\n"
        << "The materials are white and purely diffuse so that a frame's ratio to the frame "
           "without shadows is its shadow factor; the pictures add "
        << static_cast<int>(100.0f * shadowmetrics::ShownAmbient + 0.5f)
        << " % of the unshadowed frame as an ambient term, so that shapes stay visible in "
           "shadow.\n\n"
-       << "Made by `" << CommandOf(options, pagePath) << "` on Mesa's llvmpipe, source "
-       << commit << "; maps of " << options.Resolution
+       << "Made by `" << CommandOf(options, pagePath) << "` at source " << commit
+       << "; maps of " << options.Resolution
        << "² texels (cascades: 4 of half that), VTK's pass at its default 1024².\n\n";
   if (fs::exists(options.OutputDirectory + "/overview.png"))
   {
@@ -320,19 +376,20 @@ void WritePage(const Options& options, const std::vector<shadowbench::CaseFigure
   {
     WriteCase(options, figures, c, images, page);
   }
+  return static_cast<bool>(page);
 }
 
-/// Moves the benchmark's frames into the gallery: the truth, then each
+/// Composes the benchmark's frames into `folder`: the truth, then each
 /// technique's frame beside its error map.
-bool ComposeImages(const Options& options, const std::string& scratch, std::string& error)
+bool ComposeImages(
+  const Options& options, const std::string& scratch, const std::string& folder, std::string& error)
 {
   for (const Case& c : options.Cases)
   {
     const std::string name = CaseName(c);
     std::error_code failed;
-    fs::copy_file(scratch + "/" + name + "-truth.png",
-      options.OutputDirectory + "/" + name + "-truth.png", fs::copy_options::overwrite_existing,
-      failed);
+    fs::copy_file(scratch + "/" + name + "-truth.png", folder + "/" + name + "-truth.png",
+      fs::copy_options::overwrite_existing, failed);
     if (failed)
     {
       error = name + ": no truth picture (" + failed.message() + ")";
@@ -342,12 +399,74 @@ bool ComposeImages(const Options& options, const std::string& scratch, std::stri
     {
       const std::string stem = scratch + "/" + name + "-" + technique;
       if (!WriteFrameAndErrors(stem + "-frame.png", stem + "-errors.png",
-            options.OutputDirectory + "/" + name + "-" + technique + ".png"))
+            folder + "/" + name + "-" + technique + ".png"))
       {
         error = name + ", " + technique + ": cannot compose its picture";
         return false;
       }
     }
+  }
+  return true;
+}
+
+/// Copies every file of `composed` into the gallery's folder, and removes an
+/// overview this run did not make, so that no picture of an earlier run is
+/// left beside this one's figures.
+bool Publish(const std::string& composed, const std::string& folder, std::string& error)
+{
+  std::error_code failed;
+  if (!fs::exists(composed + "/overview.png"))
+  {
+    fs::remove(folder + "/overview.png", failed);
+  }
+  fs::directory_iterator files(composed, failed);
+  if (failed)
+  {
+    error = "cannot read " + composed + ": " + failed.message();
+    return false;
+  }
+  for (const auto& entry : files)
+  {
+    fs::copy_file(entry.path(), folder / entry.path().filename(),
+      fs::copy_options::overwrite_existing, failed);
+    if (failed)
+    {
+      error = "cannot write " + (fs::path(folder) / entry.path().filename()).string() + ": " +
+        failed.message();
+      return false;
+    }
+  }
+  return true;
+}
+
+/// A new folder of its own under the system's temporary folder.
+bool MakeScratchFolder(std::string& scratch, std::string& error)
+{
+  std::error_code failed;
+  fs::path base = fs::temp_directory_path(failed);
+  if (failed)
+  {
+    base = "/tmp";
+  }
+  std::string pattern = (base / "vtkshadows-gallery-XXXXXX").string();
+  if (!mkdtemp(pattern.data()))
+  {
+    error = "cannot make a scratch folder in " + base.string();
+    return false;
+  }
+  scratch = pattern;
+  return true;
+}
+
+/// The page's folder must exist before minutes of measuring.
+bool CheckPageFolder(const std::string& page, std::string& error)
+{
+  std::error_code failed;
+  const fs::path folder = fs::absolute(page, failed).parent_path();
+  if (failed || !fs::is_directory(folder, failed))
+  {
+    error = "cannot write the page '" + page + "': no such directory";
+    return false;
   }
   return true;
 }
@@ -416,7 +535,9 @@ bool CaseOfKey(const std::string& key, Case& c)
     }
   }
   const auto colon = key.find(':');
-  if (colon == std::string::npos || !shadowscenes::IsLightSetup(key.substr(colon + 1)))
+  const std::vector<std::string> scenes = shadowscenes::SceneNames();
+  if (colon == std::string::npos || !shadowscenes::IsLightSetup(key.substr(colon + 1)) ||
+    std::find(scenes.begin(), scenes.end(), key.substr(0, colon)) == scenes.end())
   {
     return false;
   }
@@ -433,29 +554,46 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
     error = "no case or no technique to show";
     return false;
   }
-  if (!shadowbench::MakeOutputDirectory(options.OutputDirectory, error))
+  const std::string page =
+    options.PagePath.empty() ? options.OutputDirectory + "/gallery.md" : options.PagePath;
+  std::string scratch;
+  if (!shadowbench::MakeOutputDirectory(options.OutputDirectory, error) ||
+    !CheckPageFolder(page, error) || !MakeScratchFolder(scratch, error))
   {
     return false;
   }
   // Before anything is written: the page and the pictures are in the tree.
   const std::string commit = SourceCommit();
-  const std::string scratch = (fs::temp_directory_path() /
-    ("vtkshadows-gallery-" + std::to_string(getpid()))).string();
+  const std::string composed = scratch + "/gallery";
   std::vector<shadowbench::CaseFigures> figures;
   std::ostringstream table;
-  const bool measured =
+  std::error_code failed;
+  bool made = fs::create_directory(composed, failed);
+  if (!made)
+  {
+    error = "cannot make " + composed + ": " + failed.message();
+  }
+  made = made &&
     shadowbench::Run(BenchOptionsOf(options, scratch), table, log, error, &figures) &&
-    ComposeImages(options, scratch, error) && WriteOverview(options, scratch, error);
+    ComposeImages(options, scratch, composed, error) &&
+    WriteOverview(options, scratch, composed, error);
+  if (made && !WriteCSV(options, figures, composed))
+  {
+    error = "cannot write " + composed + "/gallery.csv";
+    made = false;
+  }
+  made = made && Publish(composed, options.OutputDirectory, error);
   std::error_code ignored;
   fs::remove_all(scratch, ignored);
-  if (!measured)
+  if (!made)
   {
     return false;
   }
-  WriteCSV(options, figures);
-  const std::string page =
-    options.PagePath.empty() ? options.OutputDirectory + "/gallery.md" : options.PagePath;
-  WritePage(options, figures, commit, page);
+  if (!WritePage(options, figures, commit, page))
+  {
+    error = "cannot write the page '" + page + "'";
+    return false;
+  }
   out << fs::absolute(page).string() << std::endl;
   return true;
 }

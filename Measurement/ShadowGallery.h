@@ -33,8 +33,9 @@ std::vector<std::string> DefaultTechniques();
 /// "scene:setup" of `c`, as --cases takes it.
 std::string CaseKey(const Case& c);
 
-/// The case of DefaultCases with that key, or one of that scene and set-up
-/// captioned by the two; false if either name is unknown.
+/// The case of DefaultCases with that key, or one of that scene
+/// (shadowscenes::SceneNames) and set-up captioned by the two; false if either
+/// name is unknown.
 bool CaseOfKey(const std::string& key, Case& c);
 
 struct Options
@@ -53,7 +54,8 @@ struct Options
 };
 
 /// Measures the cases (ShadowBench with frames written, in a scratch folder
-/// removed afterwards) and writes into OutputDirectory, per case,
+/// removed afterwards; the page's folder must exist) and, once every picture
+/// is made, writes into OutputDirectory, per case,
 /// <scene>-<setup>-truth.png and <scene>-<setup>-<technique>.png (the frame
 /// beside its error map: light leaks red, false shadows blue), gallery.csv
 /// (every figure), the page and, when the techniques include vtk and auto,

@@ -65,6 +65,7 @@
 #include <vtkImageData.h>
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -1719,7 +1720,11 @@ void BuildTimeStepsScene(vtkRenderer* renderer)
     auto contour = ContourOfWavelet<vtkContourFilter>();
     contour->SetValue(0, ContourValueAt(step));
     contour->Update();
-    series->AddStep(contour->GetOutput());
+    // A copy of its own: the filter's output would keep the filter, and its
+    // wavelet's 221^3 samples, alive.
+    vtkNew<vtkPolyData> surface;
+    surface->ShallowCopy(contour->GetOutput());
+    series->AddStep(surface);
   }
   BuildIsosurfaceScene(renderer, series->GetOutputPort());
 }
@@ -1922,88 +1927,78 @@ void BuildBlocksScene(vtkRenderer* renderer)
   SetCamera(renderer, position, focalPoint, 40.0);
 }
 
+namespace
+{
+using SceneBuilder = std::function<bool(vtkRenderer*, std::string&)>;
+
+/// A builder that cannot fail.
+template <void (*Build)(vtkRenderer*)>
+bool Always(vtkRenderer* renderer, std::string&)
+{
+  Build(renderer);
+  return true;
+}
+
+/// Every scene BuildSceneByName makes, by name, in the order SceneNames gives.
+const std::vector<std::pair<std::string, SceneBuilder>>& SceneBuilders()
+{
+  static const std::vector<std::pair<std::string, SceneBuilder>> builders = {
+    { "default", Always<BuildDefaultScene> },
+    { "outdoor", Always<BuildOutdoorScene> },
+    { "paraview", Always<BuildParaViewScene> },
+    { "model", BuildModelScene },
+    { "city", Always<BuildCityScene> },
+    { "field", Always<BuildFieldScene> },
+    { "room", Always<BuildRoomScene> },
+    { "street", Always<BuildStreetScene> },
+    { "blocks", Always<BuildBlocksScene> },
+    { "glass", Always<BuildGlassScene> },
+    { "glass-opaque",
+      [](vtkRenderer* renderer, std::string&) {
+        BuildGlassScene(renderer);
+        KeepTranslucentActorsFromCasting(renderer);
+        return true;
+      } },
+    { "smoke", Always<BuildSmokeScene> },
+    { "smoke-opaque",
+      [](vtkRenderer* renderer, std::string&) {
+        BuildSmokeScene(renderer);
+        KeepVolumesFromCasting(renderer);
+        return true;
+      } },
+    { "contour", Always<BuildContourScene> },
+    { "timesteps", Always<BuildTimeStepsScene> },
+    { "bigmesh", Always<BuildBigMeshScene> },
+  };
+  return builders;
+}
+} // namespace
+
+std::vector<std::string> SceneNames()
+{
+  std::vector<std::string> names;
+  for (const auto& builder : SceneBuilders())
+  {
+    names.push_back(builder.first);
+  }
+  return names;
+}
+
 bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::string& error)
 {
-  if (name == "default")
+  const auto& builders = SceneBuilders();
+  const auto builder = std::find_if(
+    builders.begin(), builders.end(), [&](const auto& entry) { return entry.first == name; });
+  if (builder != builders.end())
   {
-    BuildDefaultScene(renderer);
-    return true;
+    return builder->second(renderer, error);
   }
-  if (name == "outdoor")
+  std::string known;
+  for (const auto& entry : builders)
   {
-    BuildOutdoorScene(renderer);
-    return true;
+    known += (known.empty() ? "" : ", ") + entry.first;
   }
-  if (name == "paraview")
-  {
-    BuildParaViewScene(renderer);
-    return true;
-  }
-  if (name == "model")
-  {
-    return BuildModelScene(renderer, error);
-  }
-  if (name == "city")
-  {
-    BuildCityScene(renderer);
-    return true;
-  }
-  if (name == "field")
-  {
-    BuildFieldScene(renderer);
-    return true;
-  }
-  if (name == "room")
-  {
-    BuildRoomScene(renderer);
-    return true;
-  }
-  if (name == "glass" || name == "glass-opaque")
-  {
-    BuildGlassScene(renderer);
-    if (name == "glass-opaque")
-    {
-      KeepTranslucentActorsFromCasting(renderer);
-    }
-    return true;
-  }
-  if (name == "smoke" || name == "smoke-opaque")
-  {
-    BuildSmokeScene(renderer);
-    if (name == "smoke-opaque")
-    {
-      KeepVolumesFromCasting(renderer);
-    }
-    return true;
-  }
-  if (name == "street")
-  {
-    BuildStreetScene(renderer);
-    return true;
-  }
-  if (name == "contour")
-  {
-    BuildContourScene(renderer);
-    return true;
-  }
-  if (name == "timesteps")
-  {
-    BuildTimeStepsScene(renderer);
-    return true;
-  }
-  if (name == "bigmesh")
-  {
-    BuildBigMeshScene(renderer);
-    return true;
-  }
-  if (name == "blocks")
-  {
-    BuildBlocksScene(renderer);
-    return true;
-  }
-  error = "unknown scene '" + name +
-    "' (expected default, outdoor, paraview, model, city, field, room, street, blocks, glass, "
-    "smoke, contour, timesteps or bigmesh)";
+  error = "unknown scene '" + name + "' (expected one of " + known + ")";
   return false;
 }
 

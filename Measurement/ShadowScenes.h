@@ -231,6 +231,9 @@ void BuildSmokeScene(vtkRenderer* renderer);
  */
 bool BuildSceneByName(vtkRenderer* renderer, const std::string& name, std::string& error);
 
+/** Every name BuildSceneByName builds. */
+std::vector<std::string> SceneNames();
+
 // --- light set-ups relative to the camera ----------------------------------------
 
 /**

@@ -754,6 +754,12 @@ std::string ParseGalleryCases(const std::string& value, Options& options)
     {
       return "gallery case '" + key + "' is not scene:set-up (for instance city:perpendicular)";
     }
+    const auto& cases = options.gallery.Cases;
+    if (std::any_of(cases.begin(), cases.end(),
+          [&](const shadowgallery::Case& known) { return shadowgallery::CaseKey(known) == key; }))
+    {
+      return "gallery case '" + key + "' given twice";
+    }
     options.gallery.Cases.push_back(c);
   }
   return options.gallery.Cases.empty() ? "no gallery case given" : std::string();
@@ -986,6 +992,7 @@ bool ParseCommandLine(
   if (IsHelpFlag(arguments[0]) || arguments[0] == "help")
   {
     options.help = true;
+    options.command = arguments[0] == "help" && arguments.size() > 1 ? arguments[1] : "";
     return true;
   }
   options.command = arguments[0];

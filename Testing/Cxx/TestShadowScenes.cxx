@@ -10,6 +10,7 @@
 #include <vtkMapper.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderer.h>
 
 #include <set>
@@ -91,4 +92,22 @@ TEST(ShadowScenes, BigMeshHoldsMillionsOfTriangles)
   const vtkIdType triangles = LargestInput(renderer)->GetNumberOfCells();
   EXPECT_GT(triangles, 2500000);
   EXPECT_LT(triangles, 4000000);
+}
+
+TEST(ShadowScenes, EverySceneNameBuildsAndAnUnknownOneIsNamed)
+{
+  const std::vector<std::string> names = shadowscenes::SceneNames();
+  EXPECT_GE(names.size(), 16u);
+  for (const std::string& name : names)
+  {
+    vtkNew<vtkRenderer> renderer;
+    std::string error;
+    EXPECT_TRUE(shadowscenes::BuildSceneByName(renderer, name, error)) << name << ": " << error;
+    EXPECT_GT(renderer->GetViewProps()->GetNumberOfItems(), 0) << name;
+  }
+  vtkNew<vtkRenderer> renderer;
+  std::string error;
+  EXPECT_FALSE(shadowscenes::BuildSceneByName(renderer, "nowhere", error));
+  EXPECT_NE(error.find("'nowhere'"), std::string::npos) << error;
+  EXPECT_NE(error.find("timesteps"), std::string::npos) << error;
 }

@@ -98,6 +98,9 @@ def main(program, output_dir):
             not all(any(line.startswith("  " + c + " ") for line in overview) for c in commands) or \
             "COMMAND --help" not in result.stdout:
         failures.append(f"--help: {len(overview)} lines, rc={result.returncode}: {result.stdout!r}")
+    result = run(program, "help", "gallery")
+    if result.returncode != 0 or not result.stdout.startswith("usage: vtkshadows gallery"):
+        failures.append(f"help gallery: rc={result.returncode}: {result.stdout[:200]!r}")
     for command in commands:
         result = run(program, command, "--help") if command != "analyze" else run(program, "analyze", "--help")
         if result.returncode != 0 or f"vtkshadows {command}" not in result.stdout or \
@@ -106,7 +109,7 @@ def main(program, output_dir):
 
     for failure in failures:
         print("FAIL:", failure)
-    checks = 4 + len(commands) + len(bad_inputs)
+    checks = 5 + len(commands) + len(bad_inputs)
     print(f"{checks - len(failures)} passed, {len(failures)} failed")
     return 1 if failures else 0
 

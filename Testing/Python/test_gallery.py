@@ -45,7 +45,7 @@ def figures(path):
 
 def headline(row):
     """What the page judges a case by: the misclassified %, or the light's error."""
-    return float(row["misclassified"] if row["transmittance_error"] == "nan" else row["transmittance_error"])
+    return float(row["misclassified"] if row["light_error"] == "nan" else row["light_error"])
 
 
 def count(pixels, color):
@@ -77,7 +77,7 @@ def test_tiny(program, output):
             check(picture.shape == (height, 2 * width, 3), name + ", " + technique + ": frame|errors")
             errors = picture[:, width:]
             row = rows[(scene, light, technique)]
-            if row["transmittance_error"] != "nan":
+            if row["light_error"] != "nan":
                 continue  # the map shows the light's error in proportion, not leaks and false shadows
             counted = int(row["counted_pixels"])
             for column, color in (("leak", LEAK), ("false_shadow", FALSE_SHADOW)):
@@ -89,20 +89,37 @@ def test_tiny(program, output):
         vtk, default = (headline(rows[(scene, light, t)]) for t in ("vtk", "auto"))
         check(vtk > 2.0 * default, "%s: VTK's pass %.2f %% wrong, the default %.2f %%" % (name, vtk, default))
     check(rows[("outdoor", "perpendicular", "auto")]["choice"] != "", "the automatic pass's choice")
-    check(all(rows[("glass", "perpendicular", t)]["transmittance_error"] != "nan" for t in techniques),
+    check(all(rows[("glass", "perpendicular", t)]["light_error"] != "nan" for t in techniques),
           "the glass's light error measured")
-    check(all(rows[("outdoor", "perpendicular", t)]["transmittance_error"] == "nan" for t in techniques),
+    check(all(rows[("outdoor", "perpendicular", t)]["light_error"] == "nan" for t in techniques),
           "no light error without translucent casters")
     overview = read_png(os.path.join(directory, "overview.png"))
     check(overview.shape == (2 * height, 3 * width, 3), "overview: 2 cases of 3 pictures")
+    first = os.path.join(directory, "outdoor-perpendicular-")
+    check(numpy.array_equal(overview[:height, :width], read_png(first + "vtk.png")[:, :width]),
+          "overview: the first case's VTK frame at the top left")
+    check(numpy.array_equal(overview[:height, 2 * width:], read_png(first + "truth.png")),
+          "overview: the first case's truth at the top right")
     text = open(page).read()
     links = re.findall(r"\]\(([^)#]+)\)", text)
     check(len(links) == 1 + len(cases) * (1 + len(techniques)), "page links every picture")
     for link in links:
         check(os.path.isfile(os.path.join(os.path.dirname(page), link)), "page link " + link)
+    # Again without VTK's pass: no overview to make, and none of the last run's left.
+    result = run(program, "gallery", "--out", directory, "--page", page, "--cases",
+                 "outdoor:perpendicular", "--techniques", "uniform", "--size", "%dx%d" % (width, height),
+                 "--resolution", "512")
+    check(result.returncode == 0, "gallery without vtk failed: " + result.stderr[-2000:])
+    check(not os.path.exists(os.path.join(directory, "overview.png")), "the last run's overview removed")
+    check("overview.png" not in open(page).read(), "the page links no overview")
+    check("--cases outdoor:perpendicular --techniques uniform" in open(page).read(),
+          "the page's command makes this gallery again")
     for arguments, expected in (
             (["--cases", "outdoor"], "is not scene:set-up"),
             (["--cases", "outdoor:nowhere"], "is not scene:set-up"),
+            (["--cases", "nowhere:perpendicular"], "is not scene:set-up"),
+            (["--cases", "outdoor:spot,outdoor:spot"], "given twice"),
+            (["--page", "/nonexistent/GALLERY.md"], "no such directory"),
             (["--techniques", "bogus"], "unknown technique"),
             (["--size", "0x0"], "size")):
         check_usage_error(program, ["gallery", "--out", directory] + arguments, expected)
@@ -129,7 +146,7 @@ def test_committed(program, output, source):
     committed = os.path.join(source, "docs", "images", "gallery")
     directory = os.path.join(output, "gallery-committed")
     scene, light = "outdoor", "perpendicular"
-    techniques = ["vtk", "uniform"]
+    techniques = ["vtk", "auto", "uniform"]
     result = run(program, "gallery", "--out", directory, "--cases", scene + ":" + light,
                  "--techniques", ",".join(techniques), "--size", width + "x" + height,
                  "--resolution", resolution)
