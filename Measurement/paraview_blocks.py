@@ -18,10 +18,11 @@ scripts/paraview.sh --run, which installs ParaView and builds the plugin:
 """
 import argparse
 import statistics
-import time
 
-from paraview.simple import (AddLight, CreateView, LoadPlugin, ProgrammableSource, Render,
-                             SetActiveView, Show)
+from paraview.simple import LoadPlugin, ProgrammableSource, Render, SetActiveView
+
+import paraview_views
+from paraview_views import timed
 
 parser = argparse.ArgumentParser()
 parser.add_argument("plugin")
@@ -57,34 +58,8 @@ def make_source():
     return source
 
 
-TECHNIQUES = {
-    "none": ("RenderView", {}),
-    "uniform": ("ShadowRenderView", {"ShadowViews": "Uniform", "ShadowStorage": "Depth (PCF)"}),
-    "csm": ("ShadowRenderView", {"ShadowViews": "Cascades", "ShadowStorage": "Depth (PCF)"}),
-    "second-depth": ("ShadowRenderView", {"ShadowViews": "Uniform",
-                                          "ShadowStorage": "Dual depth (no bias)"}),
-    "evsm4": ("ShadowRenderView", {"ShadowViews": "Uniform", "ShadowStorage": "Moments (EVSM4)"}),
-}
-
-
 def make_view(technique, source):
-    kind, properties = TECHNIQUES[technique]
-    view = CreateView(kind)
-    view.ViewSize = SIZE
-    view.OrientationAxesVisibility = 0
-    if view.GetProperty("UseColorPaletteForBackground") is not None:
-        view.UseColorPaletteForBackground = 0
-    if kind == "ShadowRenderView":
-        view.ShadowMapResolution = arguments.resolution
-    for name, value in properties.items():
-        setattr(view, name, value)
-    view.UseLight = 0
-    sun = AddLight(view=view)
-    sun.Coords = "Scene"
-    sun.Type = "Directional"
-    sun.Position = [1, -1, 3]
-    sun.FocalPoint = [0, 0, 0]
-    Show(source, view)
+    view = paraview_views.make_view(technique, [source], SIZE, arguments.resolution)
     place_camera(view)
     return view
 
@@ -93,15 +68,6 @@ def place_camera(view):
     view.CameraPosition = [-65, -70, 35]
     view.CameraFocalPoint = [0, 0, 0]
     view.CameraViewUp = [0, 0, 1]
-
-
-def timed(view, frame):
-    """Wall-clock and rendering-thread CPU seconds of one frame, the GL finished."""
-    window = view.GetRenderWindow()
-    wall, cpu = time.perf_counter(), time.thread_time()
-    frame()
-    window.WaitForCompletion()
-    return time.perf_counter() - wall, time.thread_time() - cpu
 
 
 def steady_frames(view):
