@@ -23,8 +23,6 @@
 #include <map>
 #include <sstream>
 
-#include <unistd.h>
-
 namespace shadowgallery
 {
 namespace

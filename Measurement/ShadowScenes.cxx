@@ -1939,6 +1939,14 @@ bool Always(vtkRenderer* renderer, std::string&)
   return true;
 }
 
+/// A scene, then some of its props kept from casting.
+template <void (*Build)(vtkRenderer*), void (*KeepFromCasting)(vtkRenderer*)>
+void BuiltThenKeptFromCasting(vtkRenderer* renderer)
+{
+  Build(renderer);
+  KeepFromCasting(renderer);
+}
+
 /// Every scene BuildSceneByName makes, by name, in the order SceneNames gives.
 const std::vector<std::pair<std::string, SceneBuilder>>& SceneBuilders()
 {
@@ -1954,18 +1962,10 @@ const std::vector<std::pair<std::string, SceneBuilder>>& SceneBuilders()
     { "blocks", Always<BuildBlocksScene> },
     { "glass", Always<BuildGlassScene> },
     { "glass-opaque",
-      [](vtkRenderer* renderer, std::string&) {
-        BuildGlassScene(renderer);
-        KeepTranslucentActorsFromCasting(renderer);
-        return true;
-      } },
+      Always<BuiltThenKeptFromCasting<BuildGlassScene, KeepTranslucentActorsFromCasting>> },
     { "smoke", Always<BuildSmokeScene> },
     { "smoke-opaque",
-      [](vtkRenderer* renderer, std::string&) {
-        BuildSmokeScene(renderer);
-        KeepVolumesFromCasting(renderer);
-        return true;
-      } },
+      Always<BuiltThenKeptFromCasting<BuildSmokeScene, KeepVolumesFromCasting>> },
     { "contour", Always<BuildContourScene> },
     { "timesteps", Always<BuildTimeStepsScene> },
     { "bigmesh", Always<BuildBigMeshScene> },
