@@ -547,6 +547,10 @@ CaseResult MeasureCase(SceneView& view, const Case& drawn, const Options& option
   {
     shadowbench::WritePNG(plain, drawn.Width, drawn.Height, ImagePath(options, drawn, "none"));
   }
+  if (options.CountedOnly && !options.Replay && result.Counted < options.MinimumCounted)
+  {
+    return result;
+  }
   for (const std::string& name : options.Techniques)
   {
     result.Techniques.push_back(
@@ -800,18 +804,25 @@ std::vector<Distribution> SummariseBy(
   const std::vector<CaseResult>& results, int minimumCounted, Value value)
 {
   std::vector<Distribution> distributions;
-  if (results.empty())
+  // Cases left unmeasured (Options::CountedOnly) have no technique's result.
+  const auto measuredCase = std::find_if(results.begin(), results.end(),
+    [](const CaseResult& result) { return !result.Techniques.empty(); });
+  if (measuredCase == results.end())
   {
     return distributions;
   }
-  for (std::size_t t = 0; t < results.front().Techniques.size(); ++t)
+  for (std::size_t t = 0; t < measuredCase->Techniques.size(); ++t)
   {
     Distribution d;
-    d.Technique = results.front().Techniques[t].Technique;
+    d.Technique = measuredCase->Techniques[t].Technique;
     d.UniformWorst = std::numeric_limits<double>::quiet_NaN();
     std::vector<double> values;
     for (const CaseResult& result : results)
     {
+      if (result.Techniques.empty())
+      {
+        continue;
+      }
       const TechniqueResult& measured = result.Techniques[t];
       d.Flagged += measured.Flagged() ? 1 : 0;
       const double figure = value(measured);
@@ -982,7 +993,7 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
   {
     for (int i = 0; i < options.Cases; ++i)
     {
-      seeds.push_back(CaseSeed(options.Seed, i));
+      seeds.push_back(CaseSeed(options.Seed, options.FirstCase + i));
     }
   }
   std::vector<CaseResult> results;
@@ -1015,9 +1026,15 @@ bool Run(const Options& options, std::ostream& out, std::ostream& log, std::stri
   }
   else
   {
-    report << "Sweep of " << options.Cases << " cases, seed " << options.Seed << ", maps of "
-           << options.Resolution << "², distributions over the cases with at least "
-           << options.MinimumCounted << " counted pixels.\n\n";
+    report << "Sweep of " << options.Cases << " cases";
+    if (options.FirstCase > 0)
+    {
+      report << " (" << options.FirstCase << " to " << options.FirstCase + options.Cases - 1 << ")";
+    }
+    report << ", seed " << options.Seed << ", maps of " << options.Resolution
+           << "², distributions over the cases with at least " << options.MinimumCounted
+           << " counted pixels" << (options.CountedOnly ? ", the only ones measured" : "")
+           << ".\n\n";
     PrintDistributions(Summarise(results, options.MinimumCounted), report);
     if (options.SizedLights)
     {

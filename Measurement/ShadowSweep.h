@@ -99,6 +99,13 @@ struct Options
 {
   int Cases = 200;
   std::uint64_t Seed = 1;
+  /// The sweep's cases FirstCase .. FirstCase + Cases - 1: a long sweep run in
+  /// parts gives the same cases as in one run.
+  int FirstCase = 0;
+  /// Cases below MinimumCounted are drawn and judged by the truth but not
+  /// rendered by the techniques (they enter no distribution; their flags go
+  /// unseen): a sweep for distributions in about half the time.
+  bool CountedOnly = false;
   /// Technique names of ShadowTechniques.h.
   std::vector<std::string> Techniques = { "uniform", "psm", "lispsm", "tsm", "gmnpr", "csm",
     "csm-tight", "csm-lispsm" };

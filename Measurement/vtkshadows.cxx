@@ -226,12 +226,16 @@ const char* SweepHelp()
          "options of sweep:\n"
          "  --cases N                random cases, 1..1000000 [200]\n"
          "  --seed S                 seed of the sweep, 0..2^64-1 [1]\n"
+         "  --first-case N           start at the sweep's case N, 0..1000000 (a sweep run\n"
+         "                           in parts) [0]\n"
          "  --techniques LIST|all    as for bench, without none\n"
          "                           [uniform,psm,lispsm,tsm,gmnpr,csm,csm-tight,csm-lispsm]\n"
          "  --resolution N           map size [2048]\n"
          "  --size WxH               base image size, each case scales each side by 0.5..1.5\n"
          "                           [192x144]\n"
          "  --min-counted N          counted pixels a case needs to enter the distributions [300]\n"
+         "  --counted-only yes|no    render the techniques only in cases with that many\n"
+         "                           counted pixels [no]\n"
          "  --replay SEED            render the one case of that seed (printed by a sweep),\n"
          "                           with its frames and error maps\n"
          "  --lights hard|sized      sized: every light gets a size drawn from its case's\n"
@@ -672,6 +676,27 @@ std::string ParseCases(const std::string& value, Options& options)
   return {};
 }
 
+std::string ParseFirstCase(const std::string& value, Options& options)
+{
+  int first = 0;
+  if (!ParseInt(value, first) || first < 0 || first > 1000000)
+  {
+    return "first case '" + value + "' is not an integer in 0..1000000";
+  }
+  options.sweep.FirstCase = first;
+  return {};
+}
+
+std::string ParseCountedOnly(const std::string& value, Options& options)
+{
+  if (value != "yes" && value != "no")
+  {
+    return "counted-only '" + value + "' is neither yes nor no";
+  }
+  options.sweep.CountedOnly = value == "yes";
+  return {};
+}
+
 std::string ParseSeed(const std::string& value, Options& options)
 {
   return ParseUnsigned64(value, options.sweep.Seed)
@@ -914,6 +939,8 @@ const std::map<std::string, OptionParser>& SweepOptionParsers()
   static const std::map<std::string, OptionParser> parsers = {
     { "--cases", ParseCases },
     { "--seed", ParseSeed },
+    { "--first-case", ParseFirstCase },
+    { "--counted-only", ParseCountedOnly },
     { "--techniques", ParseSweepTechniques },
     { "--resolution", ParseSweepResolution },
     { "--size", ParseSweepSize },

@@ -134,6 +134,19 @@ TEST(ShadowSweepDraws, SummariseTakesMedianPercentileAndWorstOverCountedCases)
   EXPECT_EQ(d[1].WorstSeed, 102u);
   EXPECT_DOUBLE_EQ(d[1].UniformWorst, 3.0);
   EXPECT_EQ(d[1].Flagged, 1);
+
+  // A sweep measuring only counted cases (Options::CountedOnly) leaves the
+  // others without results, first ones included: the same distributions.
+  CaseResult unmeasured;
+  unmeasured.Counted = 10;
+  results.insert(results.begin(), unmeasured);
+  results.push_back(unmeasured);
+  const auto same = shadowsweep::Summarise(results, 300);
+  ASSERT_EQ(same.size(), 2u);
+  EXPECT_EQ(same[1].Technique, "lispsm");
+  EXPECT_EQ(same[1].Cases, 3);
+  EXPECT_DOUBLE_EQ(same[1].Percentile95, 9.0);
+  EXPECT_EQ(same[1].Flagged, 1);
 }
 
 // --- the defects the sweep found, as hand-built cases ---------------------------------

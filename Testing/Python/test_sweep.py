@@ -54,6 +54,32 @@ def test_sweep_and_replay(program, output):
     for name in ["none"] + TECHNIQUES + [t + "-errors" for t in TECHNIQUES] + [t + "-maps" for t in TECHNIQUES]:
         path = os.path.join(replay_dir, "%s-%s.png" % (seed, name))
         check(os.path.isfile(path) and os.path.getsize(path) > 0, path + " written")
+    return rows
+
+
+def test_parts_and_counted_only(program, output, rows):
+    """Cases 2..5 run alone are the full run's last four (its csv lists cases
+    in order); with --counted-only the cases below --min-counted get no
+    technique's row and the others the same figures."""
+    counts = {row["seed"]: int(row["counted"]) for row in rows}
+    in_order = list(dict.fromkeys(row["seed"] for row in rows))
+    threshold = sorted(counts[seed] for seed in in_order[2:])[1] + 1
+    directory = os.path.join(output, "sweep-part")
+    result = run(program, "sweep", "--cases", "4", "--seed", "4", "--first-case", "2",
+                 "--techniques", ",".join(TECHNIQUES), "--min-counted", str(threshold),
+                 "--counted-only", "yes", "--out", directory, *SMALL)
+    check(result.returncode == 0, "partial sweep failed: " + result.stderr[-2000:])
+    check("(2 to 5)" in result.stdout and "the only ones measured" in result.stdout,
+          "the report says which cases and that only counted ones were measured")
+    part = read_rows(os.path.join(directory, "results.csv"))
+    expected = {seed for seed in in_order[2:] if counts[seed] >= threshold}
+    check({row["seed"] for row in part} == expected,
+          "the measured cases are the full run's cases 2..5 with enough counted pixels")
+    check(len(expected) == 2, "the threshold leaves two of the four cases out")
+    full = {(row["seed"], row["technique"]): row["misclassified"] for row in rows}
+    for row in part:
+        check(full[(row["seed"], row["technique"])] == row["misclassified"],
+              "case %s measured alone gives the full run's %s" % (row["seed"], row["technique"]))
 
 
 def test_sized_lights(program, output):
@@ -92,6 +118,8 @@ def test_errors(program):
         (["sweep", "--techniques", "magic"], "unknown technique"),
         (["sweep", "--bogus", "1"], "unknown option"),
         (["sweep", "--lights", "soft"], "neither hard nor sized"),
+        (["sweep", "--first-case", "-2"], "first case"),
+        (["sweep", "--counted-only", "maybe"], "neither yes nor no"),
     ]:
         lines = check_usage_error(program, arguments, expected)
         check(len(lines) == 1, "%s: one error line, got %r" % (arguments, lines))
@@ -101,7 +129,8 @@ def main():
     program, output = sys.argv[1], sys.argv[2]
     os.makedirs(output, exist_ok=True)
     test_errors(program)
-    test_sweep_and_replay(program, output)
+    rows = test_sweep_and_replay(program, output)
+    test_parts_and_counted_only(program, output, rows)
     test_sized_lights(program, output)
     print("ok")
 
