@@ -9,6 +9,7 @@ default (csm).
 
   automatic_rules.py results.csv [more.csv ...] [--best-of T,T,...]
       [--technique auto] [--default csm] [--candidates dual,dual+csm,...]
+      [--in-sample-rule] [--rule-from other.csv[,more.csv]]
 
 Several results.csv of the same sweep seed (the same cases, other techniques)
 are read as one; a technique measured in a later file replaces the earlier's.
@@ -54,6 +55,23 @@ def summary(values):
     return statistics.median(values), percentile(values, 0.95)
 
 
+def rule_of(cases, by_class, candidates):
+    """Each class's candidate of the lowest mean misclassified % over its cases."""
+    def mean_of(seeds, candidate):
+        values = [cases[s][candidate] for s in seeds if candidate in cases[s]]
+        return statistics.mean(values) if values else float("inf")
+    return {name: min(candidates, key=lambda c: mean_of(seeds, c))
+            for name, seeds in by_class.items()}
+
+
+def rule_summary(cases, classes, chosen):
+    """Median, 95th percentile and count of the figures the rule `chosen` gets."""
+    values = [cases[s][chosen[classes[s]]] for s in cases
+              if classes[s] in chosen and chosen[classes[s]] in cases[s]]
+    median, p95 = summary(values) if values else (float("nan"), float("nan"))
+    return median, p95, len(values)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("csv", nargs="+")
@@ -66,6 +84,10 @@ def main():
                         help="also the distribution of the rule that gives each class its "
                              "candidate of the lowest mean there (the best any rule of the "
                              "classes can do on these cases)")
+    parser.add_argument("--rule-from", default="",
+                        help="comma-separated results.csv of other cases: the rule that gives "
+                             "each class the candidate of the lowest mean over those cases, "
+                             "measured on these (a rule checked out of sample)")
     args = parser.parse_args()
     cases, classes = read_cases(args.csv, args.min_counted)
     candidates = args.candidates.split(",")
@@ -93,15 +115,23 @@ def main():
         print(f"| {name} | {len(seeds)} | " + " | ".join(cells) + f" | {lowest} |")
 
     if args.in_sample_rule:
-        chosen = {}
-        for name, seeds in by_class.items():
-            chosen[name] = min(candidates, key=lambda c: statistics.mean(
-                cases[s][c] for s in seeds if c in cases[s]) if any(
-                c in cases[s] for s in seeds) else float("inf"))
-        values = [cases[s][chosen[classes[s]]] for s in cases if chosen[classes[s]] in cases[s]]
-        median, p95 = summary(values)
+        chosen = rule_of(cases, by_class, candidates)
+        median, p95, count = rule_summary(cases, classes, chosen)
         print(f"\nThe in-sample rule (each class's lowest mean among the candidates): "
-              f"median {median:.3f}, p95 {p95:.3f} over {len(values)} cases")
+              f"median {median:.3f}, p95 {p95:.3f} over {count} cases")
+    if args.rule_from:
+        other_cases, other_classes = read_cases(args.rule_from.split(","), args.min_counted)
+        other_by_class = defaultdict(list)
+        for seed in other_cases:
+            other_by_class[other_classes[seed]].append(seed)
+        chosen = rule_of(other_cases, other_by_class, candidates)
+        print(f"\nThe rule read off {args.rule_from} ({len(other_cases)} cases):\n")
+        print("| class | cases there | candidate |\n|---|---:|---|")
+        for name in sorted(chosen):
+            print(f"| {name} | {len(other_by_class[name])} | {chosen[name]} |")
+        median, p95, count = rule_summary(cases, classes, chosen)
+        print(f"\nThat rule on these cases (classes it has not seen: skipped): "
+              f"median {median:.3f}, p95 {p95:.3f} over {count} cases")
 
     technique = args.technique
     measured = [s for s in cases if technique in cases[s]]
