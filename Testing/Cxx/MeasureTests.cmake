@@ -54,6 +54,10 @@ if (TARGET vtkshadows)
             "$<TARGET_FILE:vtkshadows>" "${CMAKE_CURRENT_BINARY_DIR}/Output")
   set_tests_properties(CLI.Sweep PROPERTIES TIMEOUT 900)
 endif ()
+# The script that reads the automatic pass's rules off a sweep (docs/AUTOMATIC.md).
+add_test(NAME Measurement.AutomaticRules
+  COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_automatic_rules.py"
+          "${PROJECT_SOURCE_DIR}/Measurement/automatic_rules.py" "${CMAKE_CURRENT_BINARY_DIR}/Output")
 
 # A user's model the right way up, and what `vtkshadows analyze` recommends.
 add_executable(TestShadowModelUp Cxx/TestShadowModelUp.cxx)
