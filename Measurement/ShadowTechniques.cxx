@@ -227,11 +227,12 @@ std::vector<std::string> BiasSweepNames()
 // "<representation>+<views>": a representation a preset has ("depth": the
 // uniform technique's depth map and filter; "dual": the dual technique;
 // "evsm4": the moments' defaults) on any views ("uniform", "psm", "psm-cube",
-// "lispsm", "tsm", "gmnpr"; "csm" and "csm-lispsm": four stable cascades of
-// half the resolution, the latter tight and LiSPSM-warped as "csm-lispsm").
+// "lispsm", "lispsm-lloyd" (LiSPSM with vtkWarpedShadowMapViews::LloydFalloff),
+// "tsm", "gmnpr"; "csm" and "csm-lispsm": four stable cascades of half the
+// resolution, the latter tight and LiSPSM-warped as "csm-lispsm").
 const std::vector<std::string> PairRepresentations = { "depth", "dual", "evsm4" };
-const std::vector<std::string> PairViews = { "uniform", "psm", "psm-cube", "lispsm", "tsm", "gmnpr",
-  "csm", "csm-lispsm" };
+const std::vector<std::string> PairViews = { "uniform", "psm", "psm-cube", "lispsm",
+  "lispsm-lloyd", "tsm", "gmnpr", "csm", "csm-lispsm" };
 
 std::vector<std::string> PairNames()
 {
@@ -274,8 +275,10 @@ vtkSmartPointer<vtkShadowMapViews> MakePairViews(const std::string& views)
     return cascades;
   }
   auto warped = vtkSmartPointer<vtkWarpedShadowMapViews>::New();
-  warped->SetWarpMode(WarpModeOf(views));
+  const bool lloyd = views == "lispsm-lloyd";
+  warped->SetWarpMode(WarpModeOf(lloyd ? "lispsm" : views));
   warped->SetPSMCubeMap(PSMCubeMapOf(views));
+  warped->SetLloydFalloff(lloyd);
   return warped;
 }
 
