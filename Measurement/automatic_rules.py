@@ -55,6 +55,14 @@ def summary(values):
     return statistics.median(values), percentile(values, 0.95)
 
 
+def seeds_by_class(classes):
+    """The case seeds of each class."""
+    by_class = defaultdict(list)
+    for seed, name in classes.items():
+        by_class[name].append(seed)
+    return by_class
+
+
 def rule_of(cases, by_class, candidates):
     """Each class's candidate of the lowest mean misclassified % over its cases."""
     def mean_of(seeds, candidate):
@@ -93,9 +101,7 @@ def main():
     candidates = args.candidates.split(",")
     best_of = args.best_of.split(",") if args.best_of else None
 
-    by_class = defaultdict(list)
-    for seed, errors in cases.items():
-        by_class[classes[seed]].append(seed)
+    by_class = seeds_by_class(classes)
 
     print("| class | cases | " + " | ".join(candidates) + " | lowest |")
     print("|---|---:|" + "---:|" * len(candidates) + "---|")
@@ -121,9 +127,7 @@ def main():
               f"median {median:.3f}, p95 {p95:.3f} over {count} cases")
     if args.rule_from:
         other_cases, other_classes = read_cases(args.rule_from.split(","), args.min_counted)
-        other_by_class = defaultdict(list)
-        for seed in other_cases:
-            other_by_class[other_classes[seed]].append(seed)
+        other_by_class = seeds_by_class(other_classes)
         chosen = rule_of(other_cases, other_by_class, candidates)
         print(f"\nThe rule read off {args.rule_from} ({len(other_cases)} cases):\n")
         print("| class | cases there | candidate |\n|---|---:|---|")
