@@ -115,6 +115,12 @@ double LiSPSMFreeParameter(double zNear, double zFar, double gammaRadians, doubl
   return n;
 }
 
+double PseudoNear(double zNear, double zFar, double fraction)
+{
+  const double clamped = std::isfinite(fraction) ? std::min(std::max(fraction, 0.0), 1.0) : 0.0;
+  return std::max(zNear, clamped * zFar);
+}
+
 double GMNPRLambda(double theta, double phi, double n, double f)
 {
   theta = std::min(std::abs(theta), 0.5 * Pi);
@@ -290,16 +296,16 @@ double WarpNearInFrame(
   }
   else if (frame.ZNear > 0.0 && frame.ZFar > frame.ZNear)
   {
+    const double zNear = PseudoNear(frame.ZNear, frame.ZFar, options.PseudoNearFraction);
     if (warp == DirectionalWarp::LiSPSM)
     {
-      warpNear =
-        LiSPSMFreeParameter(frame.ZNear, frame.ZFar, frame.Gamma, frame.Phi, options.LloydFalloff);
+      warpNear = LiSPSMFreeParameter(zNear, frame.ZFar, frame.Gamma, frame.Phi, options.LloydFalloff);
     }
     else if (frame.Phi > 0.0)
     {
       // 002: lambda = P_n / (P_f - P_n), P_f - P_n = B's extent along the warp axis.
       warpNear = WarpNearFromLambda(
-        GMNPRLambda(frame.Gamma, frame.Phi, frame.ZNear, frame.ZFar), worldWarpDepth);
+        GMNPRLambda(frame.Gamma, frame.Phi, zNear, frame.ZFar), worldWarpDepth);
     }
   }
   return warpNear * (worldWarpDepth > 0.0 ? warpDepth / worldWarpDepth : 1.0);

@@ -40,6 +40,12 @@ struct WarpOptions
   /// LiSPSM only: fall off faster than 1/sin(gamma) once gamma < phi (see
   /// LiSPSMFreeParameter).
   bool LloydFalloff = false;
+  /// LiSPSM and GMNPR: the view depth z_n their n is chosen from is taken no nearer
+  /// than this fraction of B's far depth z_f (a pseudo near plane, 003 section 4.2.2
+  /// after Lloyd). A camera whose near plane sits a hair in front of it, inside the
+  /// bounds of what it sees, would otherwise spend the map on the empty space there.
+  /// The default was measured (docs/WARPS.md); 0 takes z_n as it is.
+  double PseudoNearFraction = 0.003;
   /// Below this angle (degrees) between view and light lines the map is uniform;
   /// between it and FullWarpAboveDegrees the warp strength (P_f - P_n) / n is
   /// multiplied by a smoothstep, so every mode reaches the uniform map continuously.
@@ -60,6 +66,10 @@ double ViewLightAngle(const glm::dvec3& viewDirection, const glm::dvec3& lightDi
 /// choice satisfying that requirement continuously; Lloyd's exact formula (his thesis
 /// 5.1.2) is not in the literature set. Returns +infinity at gamma = 0.
 double LiSPSMFreeParameter(double zNear, double zFar, double gammaRadians, double phiRadians, bool lloyd);
+
+/// The view depth LiSPSM and GMNPR take as z_n: zNear, or `fraction` (clamped to
+/// [0, 1]) of zFar where that is farther (WarpOptions::PseudoNearFraction).
+double PseudoNear(double zNear, double zFar, double fraction);
 
 /// GMNPR lambda (002, Eq. 8): theta in [phi, pi/2]:
 ///   lambda_1 = (n + sqrt(f n) - n tan(phi)/tan(theta)) / (f - n + (f + n) tan(phi)/tan(theta));

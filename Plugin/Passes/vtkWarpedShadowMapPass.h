@@ -65,6 +65,12 @@ public:
   ///@}
 
   ///@{
+  /** vtkWarpedShadowMapViews' PseudoNearFraction (0: the near depth as it is). */
+  void SetPseudoNearFraction(double fraction) { this->Warped->SetPseudoNearFraction(fraction); }
+  double GetPseudoNearFraction() { return this->Warped->GetPseudoNearFraction(); }
+  ///@}
+
+  ///@{
   /** vtkWarpedShadowMapViews' LloydFalloff. */
   void SetLloydFalloff(bool on) { this->Warped->SetLloydFalloff(on); }
   bool GetLloydFalloff() { return this->Warped->GetLloydFalloff(); }

@@ -133,6 +133,7 @@ shadowmaps::WarpOptions vtkWarpedShadowMapViews::LightSpaceWarpOptions() const
   shadowmaps::WarpOptions options;
   options.FreeParameterN = this->LiSPSMFreeParameter;
   options.LloydFalloff = this->LloydFalloff;
+  options.PseudoNearFraction = this->PseudoNearFraction;
   return options;
 }
 
@@ -328,6 +329,7 @@ void vtkWarpedShadowMapViews::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "WarpMode: " << this->WarpMode << "\n";
   os << indent << "LiSPSMFreeParameter: " << this->LiSPSMFreeParameter << "\n";
   os << indent << "LloydFalloff: " << this->LloydFalloff << "\n";
+  os << indent << "PseudoNearFraction: " << this->PseudoNearFraction << "\n";
   os << indent << "PSMSlideBack: " << this->PSMSlideBack << "\n";
   os << indent << "PSMCubeMap: " << this->PSMCubeMap << "\n";
   os << indent << "TSMFocusDistance: " << this->TSMFocusDistance << "\n";

@@ -67,6 +67,15 @@ glm::dvec3 LightAtAngle(double theta)
   return { 0.0, -std::sin(theta), -std::cos(theta) };
 }
 
+// The papers' parameterization: z_n is the camera's near depth however near
+// (no pseudo near plane), as the formulas these tests check assume.
+WarpOptions PaperWarp()
+{
+  WarpOptions options;
+  options.PseudoNearFraction = 0.0;
+  return options;
+}
+
 glm::dvec4 Clip(const LightView& fit, const glm::dvec3& p)
 {
   return fit.ViewProjection() * glm::dvec4(p, 1.0);
@@ -291,7 +300,7 @@ TEST(ShadowMapWarping, LiSPSMImplementedNearDistanceFollowsFalloff)
     const double nOpt = 1.0 + std::sqrt(f);
     for (bool lloyd : { false, true })
     {
-      WarpOptions options;
+      WarpOptions options = PaperWarp();
       options.LloydFalloff = lloyd;
       for (double degrees : { 15.0, 20.0, 30.0, 45.0, 60.0, 75.0, 90.0 })
       {
@@ -324,6 +333,47 @@ TEST(ShadowMapWarping, LiSPSMImplementedNearDistanceFollowsFalloff)
 // light, affine in that distance, in [-1, 1] over B, and the rasterized z / w
 // stays inside the clip volume. (Stored as rasterized, the warp's depth crowds
 // the far part of B into a sliver.)
+TEST(ShadowMapWarping, PseudoNearRaisesOnlyANearerNearDepth)
+{
+  EXPECT_DOUBLE_EQ(shadowmaps::PseudoNear(1.0, 800.0, 0.01), 8.0);
+  EXPECT_DOUBLE_EQ(shadowmaps::PseudoNear(20.0, 800.0, 0.01), 20.0);
+  EXPECT_DOUBLE_EQ(shadowmaps::PseudoNear(1.0, 800.0, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(shadowmaps::PseudoNear(1.0, 800.0, -3.0), 1.0) << "clamped to 0";
+  EXPECT_DOUBLE_EQ(shadowmaps::PseudoNear(1.0, 800.0, 7.0), 800.0) << "clamped to 1";
+  EXPECT_DOUBLE_EQ(
+    shadowmaps::PseudoNear(1.0, 800.0, std::numeric_limits<double>::quiet_NaN()), 1.0);
+}
+
+// By default LiSPSM and GMNPR take their n from a near depth no nearer than
+// 0.3 % of B's far depth: a camera's near plane a hair in front of it (1e-6 of
+// the far plane here) warps the map as one at 0.3 % does, and a near plane
+// beyond it keeps the papers' n.
+TEST(ShadowMapWarping, WarpsTakeTheirNearDepthNoNearerThanThePseudoNearPlane)
+{
+  const double f = 800.0;
+  const double gamma = glm::radians(60.0);
+  const glm::dvec3 light = LightAtAngle(gamma);
+  for (double zNear : { 1e-6 * f, 1.0, 0.05 * f })
+  {
+    const Camera camera = MakeCamera(zNear, f);
+    const Aabb scene = EnclosingScene(camera);
+    const double used = std::max(zNear, WarpOptions().PseudoNearFraction * f);
+    const double expected = (used + std::sqrt(f * used)) / std::sin(gamma);
+    const LightView fit = shadowmaps::FitDirectionalWarped(
+      camera.View, camera.Projection, scene, light, Resolution, DirectionalWarp::LiSPSM);
+    ASSERT_TRUE(fit.Perspective);
+    EXPECT_NEAR(MeasuredWarpNear(fit, camera, light) / expected, 1.0, 1e-4) << "near " << zNear;
+
+    const LightView gmnpr = shadowmaps::FitDirectionalWarped(
+      camera.View, camera.Projection, scene, light, Resolution, DirectionalWarp::GMNPR);
+    const double gmnprExpected = shadowmaps::GMNPRLambda(gamma, Phi, used, f) *
+      shadowmaps::WarpDepthOfFrustum(gamma, Phi, zNear, f);
+    EXPECT_NEAR(MeasuredWarpNear(gmnpr, camera, light) / gmnprExpected, 1.0, 1e-4)
+      << "near " << zNear;
+  }
+  EXPECT_DOUBLE_EQ(WarpOptions().PseudoNearFraction, 0.003);
+}
+
 TEST(ShadowMapWarping, DirectionalWarpsStoreLinearLightSpaceDepth)
 {
   const Camera camera = MakeCamera(1.0, 100.0);
@@ -332,7 +382,7 @@ TEST(ShadowMapWarping, DirectionalWarpsStoreLinearLightSpaceDepth)
   for (DirectionalWarp warp : { DirectionalWarp::LiSPSM, DirectionalWarp::GMNPR })
   {
     const LightView fit = shadowmaps::FitDirectionalWarped(
-      camera.View, camera.Projection, scene, light, Resolution, warp);
+      camera.View, camera.Projection, scene, light, Resolution, warp, PaperWarp());
     ASSERT_TRUE(fit.Perspective);
     ASSERT_TRUE(fit.LinearDepth);
     const glm::dvec3 inverseW = shadowmaps::NdcToInverseW(fit);
@@ -368,7 +418,7 @@ TEST(ShadowMapWarping, GMNPRImplementedNearDistanceIsLambdaTimesWarpDepth)
       const double theta = glm::radians(degrees);
       const glm::dvec3 light = LightAtAngle(theta);
       const LightView fit = shadowmaps::FitDirectionalWarped(
-        camera.View, camera.Projection, scene, light, Resolution, DirectionalWarp::GMNPR);
+        camera.View, camera.Projection, scene, light, Resolution, DirectionalWarp::GMNPR, PaperWarp());
       const double expected = shadowmaps::GMNPRLambda(theta, Phi, 1.0, f) *
         shadowmaps::WarpDepthOfFrustum(theta, Phi, 1.0, f);
       EXPECT_NEAR(MeasuredWarpNear(fit, camera, light) / expected, 1.0, 1e-4)
@@ -394,7 +444,7 @@ TEST(ShadowMapWarping, GMNPREqualizesMeasuredAliasingAtNearAndFar)
       for (DirectionalWarp warp : { DirectionalWarp::GMNPR, DirectionalWarp::LiSPSM })
       {
         const LightView fit = shadowmaps::FitDirectionalWarped(
-          camera.View, camera.Projection, scene, LightAtAngle(theta), Resolution, warp);
+          camera.View, camera.Projection, scene, LightAtAngle(theta), Resolution, warp, PaperWarp());
         const double ratio = MeasuredAliasing(fit, camera, 1.0) / MeasuredAliasing(fit, camera, f);
         ratios[warp == DirectionalWarp::LiSPSM] = ratio;
         std::printf("[ aliasing ] f=%g theta=%4.1f %-6s E(n)/E(f) = %.4f\n", f, degrees, Name(warp), ratio);
@@ -424,7 +474,7 @@ TEST(ShadowMapWarping, LiSPSMMeasuredAliasingMatchesModel)
   {
     const double theta = glm::radians(degrees);
     const LightView fit = shadowmaps::FitDirectionalWarped(camera.View, camera.Projection, scene,
-      LightAtAngle(theta), Resolution, DirectionalWarp::LiSPSM);
+      LightAtAngle(theta), Resolution, DirectionalWarp::LiSPSM, PaperWarp());
     const double lambda = shadowmaps::LiSPSMLambda(theta, Phi, 1.0, f);
     const double reference = shadowmaps::GMNPRAliasing(lambda, theta, Phi, 1.0, f, f);
     const double measuredReference = MeasuredAliasing(fit, camera, f);

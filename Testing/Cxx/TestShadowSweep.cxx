@@ -391,6 +391,32 @@ TEST(ShadowSweepDefects, WarpedMapsCapTheirSlopeScaledBias)
   }
 }
 
+// Sweep seed 17163050172880156331 (seed 3's 500 cases): a camera among the
+// field's poles, looking up into a sun near its 96-degree view cone, with a near
+// plane 4.3e-5 of its far. The poles are one prop whose bounds hold the camera,
+// so the near depth pulled to the nearest visible prop stayed a hair in front of
+// it, and n_opt = z_n + sqrt(z_f z_n) gave the map to that empty near field:
+// LiSPSM and GMNPR misclassified 7.27 and 8.78% against the focused map's 0.77
+// (here, built by hand: 7.62 and 9.46 against 0.44). Their near depth is now no
+// nearer than 0.3% of B's far depth (a pseudo near plane): here 2.21 and 2.58.
+// A larger fraction does better here but worse on the bench's outdoor scene
+// (docs/WARPS.md).
+TEST(ShadowSweepDefects, LightSpaceWarpsOfAHairNearPlaneKeepTheirShadows)
+{
+  Case drawn = MakeCase("field", { -15.9413401, 28.4479018, 1.06936798 },
+    { -31.3030218, 3.96756788, 26.1367278 }, 96.2, 0.00455782, 106.427, 278, 134);
+  SetLight(drawn, LightKind::Directional, { 2.3685758, -115.809257, 57.2257134 },
+    { 0.0, 0.0, 3.88456054 });
+  const CaseResult result = MeasureOne(drawn, { "dual", "dual+lispsm", "dual+gmnpr" });
+  ASSERT_GT(result.TruthShadowed, 100);
+  ExpectNoFlags(result);
+  const double focused = Misclassified(result, "dual");
+  for (const char* warped : { "dual+lispsm", "dual+gmnpr" })
+  {
+    EXPECT_LT(Misclassified(result, warped), 8.0 * focused) << warped;
+  }
+}
+
 // The bench's lamp-behind set-up over the outdoor scene (a bulb 1 unit behind
 // the camera and 16 above it, its shadows running away down the view): PSM's
 // post-perspective cube misclassified 0.179% against the uniform cube faces'
