@@ -97,6 +97,12 @@ std::vector<shadowmaps::Plane> ReceiversOfLight(const glm::dmat4& cameraViewProj
 } // namespace
 
 //------------------------------------------------------------------------------
+vtkWarpedShadowMapViews::vtkWarpedShadowMapViews()
+  : PseudoNearFraction(shadowmaps::WarpOptions().PseudoNearFraction)
+{
+}
+
+//------------------------------------------------------------------------------
 const char* vtkWarpedShadowMapViews::GetSingleMapKindName(const ShadowLight& light) const
 {
   // Only warped views take their texel size from the map's gradient; a fit

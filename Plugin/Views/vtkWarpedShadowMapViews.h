@@ -179,7 +179,7 @@ protected:
   /** The warp mode, or "uniform" where the fit fell back to the focused uniform map. */
   VTK_WRAPEXCLUDE const char* GetSingleMapKindName(
     const shadowmaps::ShadowLight& light) const override;
-  vtkWarpedShadowMapViews() = default;
+  vtkWarpedShadowMapViews();
   ~vtkWarpedShadowMapViews() override = default;
 
   shadowmaps::LightView FitDirectionalLight(
@@ -207,7 +207,7 @@ protected:
   int WarpMode = UNIFORM;
   double LiSPSMFreeParameter = 0.0;
   bool LloydFalloff = false;
-  double PseudoNearFraction = 0.003;
+  double PseudoNearFraction; // WarpOptions' default
   double PSMSlideBack = -1.0;
   int PSMCubeMap = PSM_CUBE_AUTOMATIC;
   double TSMFocusDistance = 0.0;
