@@ -20,9 +20,12 @@
 #include <vector>
 
 // A time series brings new casters every frame, so this runs per frame on
-// millions of triangles: edges are grouped by their lower point id in flat
-// arrays (no hashing of edges, no allocation per edge), and coincident points
-// are merged only where an edge found no partner.
+// millions of triangles. A surface bounds a volume when each edge is there as
+// often one way as the other; one pass sums, at each point, a hash of each
+// neighbour it has an edge to minus one of each it has an edge from (no
+// sorting, no memory per edge). The few edges at points whose sums do not
+// cancel (a boundary, corners repeated per face) are then counted exactly,
+// after merging coincident points.
 namespace shadowmaps
 {
 namespace
@@ -35,6 +38,17 @@ struct Edge
   std::uint32_t To;
 };
 
+// Calls visit(ids, size) for each polygon, reading VTK's arrays directly: a
+// cell iterator's call per cell costs more than the pass's work on a triangle.
+template <typename Offset, typename Id, typename Visitor>
+void ForEachPolygonIn(Offset* offsets, Id* connectivity, vtkIdType cellCount, Visitor& visit)
+{
+  for (vtkIdType cell = 0; cell < cellCount; ++cell)
+  {
+    visit(connectivity + offsets[cell], static_cast<vtkIdType>(offsets[cell + 1] - offsets[cell]));
+  }
+}
+
 // Calls visit(from, to) for each edge of the oriented faces, in point ids as
 // stored. Strips join with degenerate triangles, which bound nothing.
 template <typename Visitor>
@@ -46,17 +60,29 @@ void ForEachEdge(vtkPolyData* surface, Visitor&& visit)
       visit(static_cast<std::uint32_t>(from), static_cast<std::uint32_t>(to));
     }
   };
+  auto polygon = [&edge](const auto* ids, vtkIdType size) {
+    for (vtkIdType i = 0; i + 1 < size; ++i)
+    {
+      edge(ids[i], ids[i + 1]);
+    }
+    if (size > 1)
+    {
+      edge(ids[size - 1], ids[0]);
+    }
+  };
+  vtkCellArray* polys = surface->GetPolys();
+  if (polys->IsStorage64Bit())
+  {
+    ForEachPolygonIn(polys->GetOffsetsArray64()->GetPointer(0),
+      polys->GetConnectivityArray64()->GetPointer(0), polys->GetNumberOfCells(), polygon);
+  }
+  else
+  {
+    ForEachPolygonIn(polys->GetOffsetsArray32()->GetPointer(0),
+      polys->GetConnectivityArray32()->GetPointer(0), polys->GetNumberOfCells(), polygon);
+  }
   vtkIdType size;
   const vtkIdType* ids;
-  for (auto cell = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
-       !cell->IsDoneWithTraversal(); cell->GoToNextCell())
-  {
-    cell->GetCurrentCell(size, ids);
-    for (vtkIdType i = 0; i < size; ++i)
-    {
-      edge(ids[i], ids[(i + 1) % size]);
-    }
-  }
   for (auto cell = vtk::TakeSmartPointer(surface->GetStrips()->NewIterator());
        !cell->IsDoneWithTraversal(); cell->GoToNextCell())
   {
@@ -77,63 +103,56 @@ void ForEachEdge(vtkPolyData* surface, Visitor&& visit)
   }
 }
 
-enum class Pairing
+std::uint64_t Mix(std::uint64_t h)
 {
-  NoEdges, // bounds nothing
-  EachOnceEachWay,
-  SomeUnpaired,
-  SomeTwiceOneWay, // open, or inconsistently wound, whatever points merge
-};
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ULL;
+  return h ^ (h >> 33);
+}
 
-// Whether each edge is there once each way; `unpaired` receives those that
-// are there once only. forEachEdge(visit) calls visit(from, to) per edge, and
-// is called twice. Edges are grouped by their lower point, whose groups hold a
-// few edges each on a mesh.
-template <typename EdgeSource>
-Pairing PairEdges(EdgeSource&& forEachEdge, std::size_t pointCount, std::vector<Edge>& unpaired)
+// Per point, the hashes of the points its edges go to less those of the points
+// its edges come from: zero where every edge there is matched by one the other
+// way (up to a collision of 64-bit hashes). A non-linear hash, so that no
+// arithmetic among neighbours' ids cancels.
+std::vector<std::uint64_t> EdgeBalance(vtkPolyData* surface, std::size_t pointCount, bool& anyEdge)
 {
-  std::vector<std::uint32_t> groupStart(pointCount + 1, 0);
-  forEachEdge([&](std::uint32_t from, std::uint32_t to) { ++groupStart[std::min(from, to) + 1]; });
-  for (std::size_t point = 0; point < pointCount; ++point)
-  {
-    groupStart[point + 1] += groupStart[point];
-  }
-  // Each group holds the other point, shifted, with the direction in bit 0.
-  std::vector<std::uint32_t> others(groupStart.back());
-  std::vector<std::uint32_t> next(groupStart.begin(), groupStart.end() - 1);
-  forEachEdge([&](std::uint32_t from, std::uint32_t to) {
-    const bool upward = from < to;
-    others[next[upward ? from : to]++] = (std::max(from, to) << 1) | upward;
+  std::vector<std::uint64_t> balance(pointCount, 0);
+  anyEdge = false;
+  ForEachEdge(surface, [&](std::uint32_t from, std::uint32_t to) {
+    balance[from] += Mix(to + 1);
+    balance[to] -= Mix(from + 1);
+    anyEdge = true;
   });
-  for (std::uint32_t low = 0; low < pointCount; ++low)
+  return balance;
+}
+
+// The edges whose two points' ids, taken either way, are there more often one
+// way than the other: all of each such pair's edges.
+std::vector<Edge> UnmatchedEdges(std::vector<Edge> edges)
+{
+  auto pairOf = [](const Edge& edge) {
+    return std::make_pair(std::min(edge.From, edge.To), std::max(edge.From, edge.To));
+  };
+  std::sort(edges.begin(), edges.end(),
+    [&pairOf](const Edge& a, const Edge& b) { return pairOf(a) < pairOf(b); });
+  std::vector<Edge> unmatched;
+  for (auto first = edges.begin(); first != edges.end();)
   {
-    auto first = others.begin() + groupStart[low];
-    auto last = others.begin() + groupStart[low + 1];
-    std::sort(first, last);
-    for (auto it = first; it != last;)
+    auto last = first;
+    int upward = 0;
+    for (; last != edges.end() && pairOf(*last) == pairOf(*first); ++last)
     {
-      const std::uint32_t high = *it >> 1;
-      const bool pairAhead = it + 1 != last && (*(it + 1) >> 1) == high;
-      if (pairAhead && (*it & 1) == (*(it + 1) & 1))
-      {
-        return Pairing::SomeTwiceOneWay;
-      }
-      if (pairAhead && it + 2 != last && (*(it + 2) >> 1) == high)
-      {
-        return Pairing::SomeTwiceOneWay;
-      }
-      if (!pairAhead)
-      {
-        unpaired.push_back((*it & 1) ? Edge{ low, high } : Edge{ high, low });
-      }
-      it += pairAhead ? 2 : 1;
+      upward += last->From < last->To ? 1 : -1;
     }
+    if (upward != 0)
+    {
+      unmatched.insert(unmatched.end(), first, last);
+    }
+    first = last;
   }
-  if (others.empty())
-  {
-    return Pairing::NoEdges;
-  }
-  return unpaired.empty() ? Pairing::EachOnceEachWay : Pairing::SomeUnpaired;
+  return unmatched;
 }
 
 std::size_t PowerOfTwoAtLeast(std::size_t n)
@@ -144,15 +163,6 @@ std::size_t PowerOfTwoAtLeast(std::size_t n)
     size *= 2;
   }
   return size;
-}
-
-std::uint64_t Mix(std::uint64_t h)
-{
-  h ^= h >> 33;
-  h *= 0xff51afd7ed558ccdULL;
-  h ^= h >> 33;
-  h *= 0xc4ceb9fe1a85ec53ULL;
-  return h ^ (h >> 33);
 }
 
 std::uint64_t HashOfPlace(const double* p)
@@ -222,37 +232,29 @@ bool IsClosedSurface(vtkPolyData* surface)
   {
     return false;
   }
-  // Point ids go to 31 bits, so that a direction fits beside one, and edges
-  // are counted in 32; a bigger surface counts as open, which peeling handles.
-  const vtkIdType mostEdges = surface->GetPolys()->GetNumberOfConnectivityIds() +
-    3 * surface->GetStrips()->GetNumberOfConnectivityIds();
-  if (surface->GetNumberOfPoints() >= (vtkIdType(1) << 31) || mostEdges >= (vtkIdType(1) << 32))
+  // Point ids go to 32 bits; a bigger surface counts as open, which peeling handles.
+  if (surface->GetNumberOfPoints() > vtkIdType(NoPoint))
   {
     return false;
   }
-  const std::size_t pointCount = static_cast<std::size_t>(surface->GetNumberOfPoints());
-  std::vector<Edge> unpaired;
-  switch (PairEdges([surface](auto visit) { ForEachEdge(surface, visit); }, pointCount, unpaired))
+  bool anyEdge;
+  const std::vector<std::uint64_t> balance =
+    EdgeBalance(surface, static_cast<std::size_t>(surface->GetNumberOfPoints()), anyEdge);
+  if (std::all_of(balance.begin(), balance.end(), [](std::uint64_t sum) { return sum == 0; }))
   {
-    case Pairing::EachOnceEachWay:
-      return true;
-    case Pairing::NoEdges:
-    case Pairing::SomeTwiceOneWay:
-      return false;
-    case Pairing::SomeUnpaired:
-      break;
+    return anyEdge;
   }
-  // Edges paired as stored stay paired when points merge; the others must pair
-  // among themselves once their points are merged.
-  const std::vector<Edge> merged = MergedPlaces(unpaired, surface->GetPoints());
-  auto forEachMerged = [&merged](auto visit) {
-    for (const Edge& edge : merged)
+  std::vector<Edge> atUnbalancedPoints;
+  ForEachEdge(surface, [&](std::uint32_t from, std::uint32_t to) {
+    if (balance[from] != 0 || balance[to] != 0)
     {
-      visit(edge.From, edge.To);
+      atUnbalancedPoints.push_back({ from, to });
     }
-  };
-  std::vector<Edge> stillUnpaired;
-  return PairEdges(forEachMerged, pointCount, stillUnpaired) == Pairing::EachOnceEachWay;
+  });
+  // Edges matched as stored stay matched when points merge; the others must
+  // match among themselves once their points are merged.
+  const std::vector<Edge> unmatched = UnmatchedEdges(std::move(atUnbalancedPoints));
+  return anyEdge && UnmatchedEdges(MergedPlaces(unmatched, surface->GetPoints())).empty();
 }
 
 //------------------------------------------------------------------------------

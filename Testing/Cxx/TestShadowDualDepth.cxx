@@ -447,6 +447,54 @@ TEST(DualDepth, OpenSurfacesStayOpenWhateverPointsMerge)
   EXPECT_FALSE(shadowmaps::IsClosedSurface(flat));
 }
 
+// A surface bounds a volume when its edges match in number each way, not only
+// when each is there once each way: minimum blending needs no more.
+TEST(DualDepth, SurfacesMeetingAlongEdgesStayClosed)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  vtkNew<vtkPolyData> twice;
+  twice->DeepCopy(sphere->GetOutput());
+  vtkNew<vtkCellArray> allTwice;
+  allTwice->DeepCopy(twice->GetPolys());
+  allTwice->Append(twice->GetPolys());
+  twice->SetPolys(allTwice);
+  EXPECT_TRUE(shadowmaps::IsClosedSurface(twice));
+
+  // Two tetrahedra sharing the edge (0, 1): four faces meet there.
+  vtkNew<vtkPoints> corners;
+  corners->InsertNextPoint(0.0, 0.0, 0.0);
+  corners->InsertNextPoint(1.0, 0.0, 0.0);
+  corners->InsertNextPoint(0.5, 1.0, 0.2);
+  corners->InsertNextPoint(0.5, 0.3, 1.0);
+  corners->InsertNextPoint(0.5, -1.0, 0.2);
+  corners->InsertNextPoint(0.5, -0.3, -1.0);
+  vtkNew<vtkCellArray> faces;
+  auto tetrahedron = [&faces](vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) {
+    const vtkIdType outward[4][3] = { { a, c, b }, { a, b, d }, { a, d, c }, { b, c, d } };
+    for (const auto& face : outward)
+    {
+      faces->InsertNextCell(3, face);
+    }
+  };
+  tetrahedron(0, 1, 2, 3);
+  tetrahedron(0, 1, 4, 5);
+  vtkNew<vtkPolyData> pair;
+  pair->SetPoints(corners);
+  pair->SetPolys(faces);
+  EXPECT_TRUE(shadowmaps::IsClosedSurface(pair));
+  // Without one face, the surface has a hole.
+  vtkNew<vtkCellArray> sevenFaces;
+  for (vtkIdType face = 0; face < 7; ++face)
+  {
+    vtkNew<vtkIdList> ids;
+    faces->GetCellAtId(face, ids);
+    sevenFaces->InsertNextCell(ids);
+  }
+  pair->SetPolys(sevenFaces);
+  EXPECT_FALSE(shadowmaps::IsClosedSurface(pair));
+}
+
 class DualDepthViewsAndModes : public ::testing::TestWithParam<std::tuple<std::string, int>>
 {
 };
