@@ -278,6 +278,16 @@ bool IsClosedData(vtkDataObject* data)
 }
 
 //------------------------------------------------------------------------------
+vtkIdType CellsDrawn(vtkProp* prop)
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  vtkDataObject* data =
+    mapper && mapper->GetNumberOfInputConnections(0) > 0 ? mapper->GetInputDataObject(0, 0) : nullptr;
+  return data ? data->GetNumberOfElements(vtkDataObject::CELL) : 0;
+}
+
+//------------------------------------------------------------------------------
 bool DrawsClosedSurface(vtkProp* prop)
 {
   auto* actor = vtkActor::SafeDownCast(prop);
@@ -295,19 +305,43 @@ bool DrawsClosedSurface(vtkProp* prop)
 //------------------------------------------------------------------------------
 bool ClosedCasters::AllClosed(const std::vector<std::pair<vtkProp*, vtkMTimeType>>& casters)
 {
+  // Only the current casters are kept: a deleted prop's address may come back.
   std::unordered_map<vtkProp*, std::pair<vtkMTimeType, bool>> known;
-  bool all = true;
+  std::vector<std::pair<vtkProp*, vtkMTimeType>> unknown;
   for (const auto& caster : casters)
   {
     auto found = this->Known.find(caster.first);
-    const bool closed = found != this->Known.end() && found->second.first == caster.second
-      ? found->second.second
-      : DrawsClosedSurface(caster.first);
-    known[caster.first] = { caster.second, closed };
-    all = all && closed;
+    if (found != this->Known.end() && found->second.first == caster.second)
+    {
+      known.insert(*found);
+    }
+    else
+    {
+      unknown.push_back(caster);
+    }
   }
-  // Only the current casters are kept: a deleted prop's address may come back.
   this->Known = std::move(known);
-  return all;
+  // One open caster settles the answer: the answers known come first, then the
+  // smallest casters, so that a ground plane spares a changing isosurface its
+  // analysis at every step.
+  auto open = [](const auto& entry) { return !entry.second.second; };
+  if (std::any_of(this->Known.begin(), this->Known.end(), open))
+  {
+    return false;
+  }
+  std::stable_sort(unknown.begin(), unknown.end(), [](const auto& a, const auto& b) {
+    return CellsDrawn(a.first) < CellsDrawn(b.first);
+  });
+  for (const auto& caster : unknown)
+  {
+    const bool closed = DrawsClosedSurface(caster.first);
+    ++this->Analyses;
+    this->Known[caster.first] = { caster.second, closed };
+    if (!closed)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 } // namespace shadowmaps

@@ -9,6 +9,7 @@
 
 #include "vtkType.h" // For vtkMTimeType
 
+#include <cstddef>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -41,16 +42,24 @@ bool IsClosedData(vtkDataObject* data);
 /// glyphs, volumes) count as open, the answer that is right for any geometry.
 bool DrawsClosedSurface(vtkProp* prop);
 
-/// DrawsClosedSurface of the casters, each computed once per modification time
-/// of what it draws.
+/// The number of cells of what an actor's mapper draws (0 for other props).
+vtkIdType CellsDrawn(vtkProp* prop);
+
+/// Whether DrawsClosedSurface holds for every caster, each caster's answer kept
+/// per modification time of what it draws. It stops at the first open caster,
+/// taking the answers known first and then the smallest casters.
 class ClosedCasters
 {
 public:
   /// `casters`: each prop with the modification time of its data.
   bool AllClosed(const std::vector<std::pair<vtkProp*, vtkMTimeType>>& casters);
 
+  /// How many casters' surfaces AllClosed has analysed so far.
+  std::size_t GetNumberOfAnalyses() const { return this->Analyses; }
+
 private:
   std::unordered_map<vtkProp*, std::pair<vtkMTimeType, bool>> Known;
+  std::size_t Analyses = 0;
 };
 } // namespace shadowmaps
 

@@ -447,6 +447,42 @@ TEST(DualDepth, OpenSurfacesStayOpenWhateverPointsMerge)
   EXPECT_FALSE(shadowmaps::IsClosedSurface(flat));
 }
 
+// A time series changes an isosurface every frame over an open ground: the
+// ground's known answer must spare the isosurface its analysis.
+TEST(DualDepth, OneOpenCasterSparesTheOthersTheirAnalysis)
+{
+  auto actorOf = [](vtkPolyDataAlgorithm* source) {
+    source->Update();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(source->GetOutputPort());
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    return actor;
+  };
+  vtkNew<vtkPlaneSource> plane;
+  vtkNew<vtkSphereSource> sphere;
+  vtkNew<vtkCubeSource> cube;
+  auto ground = actorOf(plane);
+  auto ball = actorOf(sphere);
+  auto box = actorOf(cube);
+  shadowmaps::ClosedCasters closed;
+  // The smallest caster first: the plane's one cell before the cube's six.
+  EXPECT_FALSE(closed.AllClosed({ { ball, 1 }, { box, 1 }, { ground, 1 } }));
+  EXPECT_EQ(closed.GetNumberOfAnalyses(), 1u);
+  EXPECT_FALSE(closed.AllClosed({ { ball, 2 }, { box, 2 }, { ground, 1 } }));
+  EXPECT_EQ(closed.GetNumberOfAnalyses(), 1u);
+  // Without the ground, both closed casters are analysed once per version.
+  EXPECT_TRUE(closed.AllClosed({ { ball, 2 }, { box, 2 } }));
+  EXPECT_EQ(closed.GetNumberOfAnalyses(), 3u);
+  EXPECT_TRUE(closed.AllClosed({ { ball, 2 }, { box, 2 } }));
+  EXPECT_EQ(closed.GetNumberOfAnalyses(), 3u);
+  EXPECT_TRUE(closed.AllClosed({ { ball, 3 }, { box, 2 } }));
+  EXPECT_EQ(closed.GetNumberOfAnalyses(), 4u);
+  // The ground back: analysed again, its answer having been let go.
+  EXPECT_FALSE(closed.AllClosed({ { ball, 3 }, { box, 2 }, { ground, 1 } }));
+  EXPECT_EQ(closed.GetNumberOfAnalyses(), 5u);
+}
+
 // A surface bounds a volume when its edges match in number each way, not only
 // when each is there once each way: minimum blending needs no more.
 TEST(DualDepth, SurfacesMeetingAlongEdgesStayClosed)
