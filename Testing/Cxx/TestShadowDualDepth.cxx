@@ -447,6 +447,27 @@ TEST(DualDepth, OpenSurfacesStayOpenWhateverPointsMerge)
   EXPECT_FALSE(shadowmaps::IsClosedSurface(flat));
 }
 
+// The analysis reads VTK's cell arrays directly, in either width of ids.
+TEST(DualDepth, ClosednessReadsCellArraysOfEitherWidth)
+{
+  for (const bool wide : { false, true })
+  {
+    for (const double endTheta : { 360.0, 300.0 })
+    {
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetEndTheta(endTheta);
+      sphere->Update();
+      vtkNew<vtkPolyData> surface;
+      surface->DeepCopy(sphere->GetOutput());
+      ASSERT_TRUE(wide ? surface->GetPolys()->ConvertTo64BitStorage()
+                       : surface->GetPolys()->ConvertTo32BitStorage());
+      ASSERT_EQ(surface->GetPolys()->IsStorage64Bit(), wide);
+      EXPECT_EQ(shadowmaps::IsClosedSurface(surface), endTheta == 360.0)
+        << (wide ? "64" : "32") << "-bit ids, sphere to " << endTheta << " degrees";
+    }
+  }
+}
+
 // A time series changes an isosurface every frame over an open ground: the
 // ground's known answer must spare the isosurface its analysis.
 TEST(DualDepth, OneOpenCasterSparesTheOthersTheirAnalysis)
