@@ -1,5 +1,6 @@
 #include "ShadowMapClosedSurfaces.h"
 
+#include "vtkAOSDataArrayTemplate.h"
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -38,15 +39,28 @@ struct Edge
   std::uint32_t To;
 };
 
-// Calls visit(ids, size) for each polygon, reading VTK's arrays directly: a
+// Calls visit(ids, size) for each polygon of `cells` if they are held in plain
+// arrays of `Id` (VTK's 32- and 64-bit storage), reading them directly: a
 // cell iterator's call per cell costs more than the pass's work on a triangle.
-template <typename Offset, typename Id, typename Visitor>
-void ForEachPolygonIn(Offset* offsets, Id* connectivity, vtkIdType cellCount, Visitor& visit)
+// False for other storage (VTK 9.6's fixed-size and generic cell arrays).
+template <typename Id, typename Visitor>
+bool ForEachPolygonIn(vtkCellArray* cells, Visitor& visit)
 {
+  using IdArray = vtkAOSDataArrayTemplate<Id>;
+  auto* offsetArray = vtkArrayDownCast<IdArray>(cells->GetOffsetsArray());
+  auto* connectivityArray = vtkArrayDownCast<IdArray>(cells->GetConnectivityArray());
+  if (!offsetArray || !connectivityArray)
+  {
+    return false;
+  }
+  const auto* offsets = offsetArray->GetPointer(0);
+  const auto* connectivity = connectivityArray->GetPointer(0);
+  const vtkIdType cellCount = cells->GetNumberOfCells();
   for (vtkIdType cell = 0; cell < cellCount; ++cell)
   {
     visit(connectivity + offsets[cell], static_cast<vtkIdType>(offsets[cell + 1] - offsets[cell]));
   }
+  return true;
 }
 
 // Calls visit(from, to) for each edge of the oriented faces, in point ids as
@@ -70,19 +84,19 @@ void ForEachEdge(vtkPolyData* surface, Visitor&& visit)
       edge(ids[size - 1], ids[0]);
     }
   };
-  vtkCellArray* polys = surface->GetPolys();
-  if (polys->IsStorage64Bit())
-  {
-    ForEachPolygonIn(polys->GetOffsetsArray64()->GetPointer(0),
-      polys->GetConnectivityArray64()->GetPointer(0), polys->GetNumberOfCells(), polygon);
-  }
-  else
-  {
-    ForEachPolygonIn(polys->GetOffsetsArray32()->GetPointer(0),
-      polys->GetConnectivityArray32()->GetPointer(0), polys->GetNumberOfCells(), polygon);
-  }
   vtkIdType size;
   const vtkIdType* ids;
+  vtkCellArray* polys = surface->GetPolys();
+  if (!ForEachPolygonIn<vtkTypeInt64>(polys, polygon) &&
+    !ForEachPolygonIn<vtkTypeInt32>(polys, polygon))
+  {
+    for (auto cell = vtk::TakeSmartPointer(polys->NewIterator()); !cell->IsDoneWithTraversal();
+         cell->GoToNextCell())
+    {
+      cell->GetCurrentCell(size, ids);
+      polygon(ids, size);
+    }
+  }
   for (auto cell = vtk::TakeSmartPointer(surface->GetStrips()->NewIterator());
        !cell->IsDoneWithTraversal(); cell->GoToNextCell())
   {

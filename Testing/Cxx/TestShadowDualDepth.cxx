@@ -447,10 +447,19 @@ TEST(DualDepth, OpenSurfacesStayOpenWhateverPointsMerge)
   EXPECT_FALSE(shadowmaps::IsClosedSurface(flat));
 }
 
-// The analysis reads VTK's cell arrays directly, in either width of ids.
-TEST(DualDepth, ClosednessReadsCellArraysOfEitherWidth)
+// The analysis reads VTK's cell arrays directly in either width of ids, and
+// VTK 9.6's other storage through the cell iterator.
+TEST(DualDepth, ClosednessReadsEveryStorageOfCellArrays)
 {
-  for (const bool wide : { false, true })
+  std::vector<std::pair<std::string, std::function<bool(vtkCellArray*)>>> storages = {
+    { "32-bit ids", [](vtkCellArray* cells) { return cells->ConvertTo32BitStorage(); } },
+    { "64-bit ids", [](vtkCellArray* cells) { return cells->ConvertTo64BitStorage(); } },
+  };
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 6, 0)
+  storages.emplace_back(
+    "fixed-size cells", [](vtkCellArray* cells) { return cells->ConvertToFixedSizeStorage(); });
+#endif
+  for (const auto& storage : storages)
   {
     for (const double endTheta : { 360.0, 300.0 })
     {
@@ -459,11 +468,9 @@ TEST(DualDepth, ClosednessReadsCellArraysOfEitherWidth)
       sphere->Update();
       vtkNew<vtkPolyData> surface;
       surface->DeepCopy(sphere->GetOutput());
-      ASSERT_TRUE(wide ? surface->GetPolys()->ConvertTo64BitStorage()
-                       : surface->GetPolys()->ConvertTo32BitStorage());
-      ASSERT_EQ(surface->GetPolys()->IsStorage64Bit(), wide);
+      ASSERT_TRUE(storage.second(surface->GetPolys())) << storage.first;
       EXPECT_EQ(shadowmaps::IsClosedSurface(surface), endTheta == 360.0)
-        << (wide ? "64" : "32") << "-bit ids, sphere to " << endTheta << " degrees";
+        << storage.first << ", sphere to " << endTheta << " degrees";
     }
   }
 }
