@@ -456,8 +456,10 @@ TEST(DualDepth, ClosednessReadsEveryStorageOfCellArrays)
     { "64-bit ids", [](vtkCellArray* cells) { return cells->ConvertTo64BitStorage(); } },
   };
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 6, 0)
-  storages.emplace_back(
-    "fixed-size cells", [](vtkCellArray* cells) { return cells->ConvertToFixedSizeStorage(); });
+  storages.emplace_back("fixed-size cells, 32-bit ids",
+    [](vtkCellArray* cells) { return cells->ConvertToFixedSize32BitStorage(); });
+  storages.emplace_back("fixed-size cells, 64-bit ids",
+    [](vtkCellArray* cells) { return cells->ConvertToFixedSize64BitStorage(); });
 #endif
   for (const auto& storage : storages)
   {
