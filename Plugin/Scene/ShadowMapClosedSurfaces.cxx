@@ -321,7 +321,13 @@ bool ClosedCasters::AllClosed(const std::vector<std::pair<vtkProp*, vtkMTimeType
 {
   // Only the current casters are kept: a deleted prop's address may come back.
   std::unordered_map<vtkProp*, std::pair<vtkMTimeType, bool>> known;
-  std::vector<std::pair<vtkProp*, vtkMTimeType>> unknown;
+  struct Unknown
+  {
+    vtkProp* Prop;
+    vtkMTimeType Version;
+    vtkIdType Cells;
+  };
+  std::vector<Unknown> unknown;
   for (const auto& caster : casters)
   {
     auto found = this->Known.find(caster.first);
@@ -331,7 +337,7 @@ bool ClosedCasters::AllClosed(const std::vector<std::pair<vtkProp*, vtkMTimeType
     }
     else
     {
-      unknown.push_back(caster);
+      unknown.push_back({ caster.first, caster.second, 0 });
     }
   }
   this->Known = std::move(known);
@@ -343,14 +349,17 @@ bool ClosedCasters::AllClosed(const std::vector<std::pair<vtkProp*, vtkMTimeType
   {
     return false;
   }
-  std::stable_sort(unknown.begin(), unknown.end(), [](const auto& a, const auto& b) {
-    return CellsDrawn(a.first) < CellsDrawn(b.first);
-  });
-  for (const auto& caster : unknown)
+  for (Unknown& caster : unknown)
   {
-    const bool closed = DrawsClosedSurface(caster.first);
+    caster.Cells = CellsDrawn(caster.Prop);
+  }
+  std::stable_sort(unknown.begin(), unknown.end(),
+    [](const Unknown& a, const Unknown& b) { return a.Cells < b.Cells; });
+  for (const Unknown& caster : unknown)
+  {
+    const bool closed = DrawsClosedSurface(caster.Prop);
     ++this->Analyses;
-    this->Known[caster.first] = { caster.second, closed };
+    this->Known[caster.Prop] = { caster.Version, closed };
     if (!closed)
     {
       return false;
