@@ -11,6 +11,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkSetGet.h"
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
@@ -64,12 +65,19 @@ bool ForEachPolygonIn(vtkCellArray* cells, Visitor& visit)
 }
 
 // Calls visit(from, to) for each edge of the oriented faces, in point ids as
-// stored. Strips join with degenerate triangles, which bound nothing.
+// stored. Strips join with degenerate triangles, which bound nothing. False if
+// some face names a point the surface does not have (such edges are left out).
 template <typename Visitor>
-void ForEachEdge(vtkPolyData* surface, Visitor&& visit)
+bool ForEachEdge(vtkPolyData* surface, Visitor&& visit)
 {
-  auto edge = [&visit](vtkIdType from, vtkIdType to) {
-    if (from != to) // a degenerate edge bounds nothing
+  const vtkIdType pointCount = surface->GetNumberOfPoints();
+  bool idsInRange = true;
+  auto edge = [&visit, &idsInRange, pointCount](vtkIdType from, vtkIdType to) {
+    if (from < 0 || to < 0 || from >= pointCount || to >= pointCount)
+    {
+      idsInRange = false;
+    }
+    else if (from != to) // a degenerate edge bounds nothing
     {
       visit(static_cast<std::uint32_t>(from), static_cast<std::uint32_t>(to));
     }
@@ -115,6 +123,7 @@ void ForEachEdge(vtkPolyData* surface, Visitor&& visit)
       }
     }
   }
+  return idsInRange;
 }
 
 std::uint64_t Mix(std::uint64_t h)
@@ -130,14 +139,21 @@ std::uint64_t Mix(std::uint64_t h)
 // its edges come from: zero where every edge there is matched by one the other
 // way (up to a collision of 64-bit hashes). A non-linear hash, so that no
 // arithmetic among neighbours' ids cancels.
-std::vector<std::uint64_t> EdgeBalance(vtkPolyData* surface, std::size_t pointCount, bool& anyEdge)
+struct EdgeBalance
 {
-  std::vector<std::uint64_t> balance(pointCount, 0);
-  anyEdge = false;
-  ForEachEdge(surface, [&](std::uint32_t from, std::uint32_t to) {
-    balance[from] += Mix(to + 1);
-    balance[to] -= Mix(from + 1);
-    anyEdge = true;
+  std::vector<std::uint64_t> PerPoint;
+  bool AnyEdge = false;
+  bool IdsInRange = true;
+};
+
+EdgeBalance BalanceEdges(vtkPolyData* surface)
+{
+  EdgeBalance balance;
+  balance.PerPoint.assign(static_cast<std::size_t>(surface->GetNumberOfPoints()), 0);
+  balance.IdsInRange = ForEachEdge(surface, [&balance](std::uint32_t from, std::uint32_t to) {
+    balance.PerPoint[from] += Mix(to + 1);
+    balance.PerPoint[to] -= Mix(from + 1);
+    balance.AnyEdge = true;
   });
   return balance;
 }
@@ -251,16 +267,20 @@ bool IsClosedSurface(vtkPolyData* surface)
   {
     return false;
   }
-  bool anyEdge;
-  const std::vector<std::uint64_t> balance =
-    EdgeBalance(surface, static_cast<std::size_t>(surface->GetNumberOfPoints()), anyEdge);
-  if (std::all_of(balance.begin(), balance.end(), [](std::uint64_t sum) { return sum == 0; }))
+  const EdgeBalance balance = BalanceEdges(surface);
+  if (!balance.IdsInRange)
   {
-    return anyEdge;
+    vtkGenericWarningMacro("A caster's faces name points it does not have: it counts as open.");
+    return false;
+  }
+  const std::vector<std::uint64_t>& sums = balance.PerPoint;
+  if (std::all_of(sums.begin(), sums.end(), [](std::uint64_t sum) { return sum == 0; }))
+  {
+    return balance.AnyEdge;
   }
   std::vector<Edge> atUnbalancedPoints;
   ForEachEdge(surface, [&](std::uint32_t from, std::uint32_t to) {
-    if (balance[from] != 0 || balance[to] != 0)
+    if (sums[from] != 0 || sums[to] != 0)
     {
       atUnbalancedPoints.push_back({ from, to });
     }
@@ -268,7 +288,7 @@ bool IsClosedSurface(vtkPolyData* surface)
   // Edges matched as stored stay matched when points merge; the others must
   // match among themselves once their points are merged.
   const std::vector<Edge> unmatched = UnmatchedEdges(std::move(atUnbalancedPoints));
-  return anyEdge && UnmatchedEdges(MergedPlaces(unmatched, surface->GetPoints())).empty();
+  return balance.AnyEdge && UnmatchedEdges(MergedPlaces(unmatched, surface->GetPoints())).empty();
 }
 
 //------------------------------------------------------------------------------

@@ -477,6 +477,27 @@ TEST(DualDepth, ClosednessReadsEveryStorageOfCellArrays)
   }
 }
 
+// Faces naming points the surface does not have (negative, past the end, or
+// past 32 bits) are bad data: a warning, and open (peeling is right for any
+// casters), never a read or write outside the points.
+TEST(DualDepth, FacesNamingMissingPointsCountAsOpen)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  for (const vtkIdType missing : { vtkIdType(-1), sphere->GetOutput()->GetNumberOfPoints(),
+         (vtkIdType(1) << 32) + 1 })
+  {
+    vtkNew<vtkPolyData> surface;
+    surface->DeepCopy(sphere->GetOutput());
+    ASSERT_TRUE(surface->GetPolys()->ConvertTo64BitStorage()); // holds ids past 32 bits
+    const vtkIdType face[3] = { 0, 1, missing };
+    surface->GetPolys()->InsertNextCell(3, face);
+    ErrorCounter messages;
+    EXPECT_FALSE(shadowmaps::IsClosedSurface(surface)) << missing;
+    EXPECT_EQ(messages.Warnings(), 1) << missing;
+  }
+}
+
 // A time series changes an isosurface every frame over an open ground: the
 // ground's known answer must spare the isosurface its analysis.
 TEST(DualDepth, OneOpenCasterSparesTheOthersTheirAnalysis)
