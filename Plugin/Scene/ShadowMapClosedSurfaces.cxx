@@ -22,12 +22,13 @@
 #include <vector>
 
 // A time series brings new casters every frame, so this runs per frame on
-// millions of triangles. A surface bounds a volume when each edge is there as
-// often one way as the other; one pass sums, at each point, a hash of each
-// neighbour it has an edge to minus one of each it has an edge from (no
-// sorting, no memory per edge). The few edges at points whose sums do not
-// cancel (a boundary, corners repeated per face) are then counted exactly,
-// after merging coincident points.
+// millions of triangles, and most changing casters (isosurfaces cut by their
+// volume's boundary) are open. One pass sums, at each point, a hash of each
+// neighbour it has an edge to minus one of each it has an edge from (no memory
+// per edge): where a sum does not cancel, the few edges there are paired
+// exactly, which tells most open surfaces. Sums that all cancel allow an edge
+// twice each way (a surface given with its reverse), so a surface that passes
+// has every edge paired exactly, grouped by their lower point.
 namespace shadowmaps
 {
 namespace
@@ -158,31 +159,109 @@ EdgeBalance BalanceEdges(vtkPolyData* surface)
   return balance;
 }
 
-// The edges whose two points' ids, taken either way, are there more often one
-// way than the other: all of each such pair's edges.
-std::vector<Edge> UnmatchedEdges(std::vector<Edge> edges)
+enum class Pairing
 {
-  auto pairOf = [](const Edge& edge) {
-    return std::make_pair(std::min(edge.From, edge.To), std::max(edge.From, edge.To));
-  };
-  std::sort(edges.begin(), edges.end(),
-    [&pairOf](const Edge& a, const Edge& b) { return pairOf(a) < pairOf(b); });
-  std::vector<Edge> unmatched;
-  for (auto first = edges.begin(); first != edges.end();)
+  NoEdges, // bounds nothing
+  EachOnceEachWay,
+  SomeUnpaired,
+  SomeTwiceOneWay, // open, or inconsistently wound, whatever points merge
+};
+
+// Pairs the edges of one group, those whose lower point is `low`: `others`
+// holds each one's other point, shifted, with its direction in bit 0, sorted.
+// False if some edge is there twice one way or more than twice; `unpaired`
+// receives those that are there once only.
+bool PairGroup(std::uint32_t low, const std::uint32_t* first, const std::uint32_t* last,
+  std::vector<Edge>& unpaired)
+{
+  for (const std::uint32_t* it = first; it != last;)
   {
-    auto last = first;
-    int upward = 0;
-    for (; last != edges.end() && pairOf(*last) == pairOf(*first); ++last)
+    const std::uint32_t high = *it >> 1;
+    const bool pairAhead = it + 1 != last && (*(it + 1) >> 1) == high;
+    if (pairAhead && ((*it & 1) == (*(it + 1) & 1) || (it + 2 != last && (*(it + 2) >> 1) == high)))
     {
-      upward += last->From < last->To ? 1 : -1;
+      return false;
     }
-    if (upward != 0)
+    if (!pairAhead)
     {
-      unmatched.insert(unmatched.end(), first, last);
+      unpaired.push_back((*it & 1) ? Edge{ low, high } : Edge{ high, low });
     }
+    it += pairAhead ? 2 : 1;
+  }
+  return true;
+}
+
+Pairing Outcome(bool any, bool onceOneWayAtMost, const std::vector<Edge>& unpaired)
+{
+  if (!onceOneWayAtMost)
+  {
+    return Pairing::SomeTwiceOneWay;
+  }
+  if (!any)
+  {
+    return Pairing::NoEdges;
+  }
+  return unpaired.empty() ? Pairing::EachOnceEachWay : Pairing::SomeUnpaired;
+}
+
+// Whether each edge of a surface is there once each way; `unpaired` receives
+// those that are there once only. forEachEdge(visit) calls visit(from, to) per
+// edge, and is called twice. Edges are grouped by their lower point in arrays
+// of the surface's size, counted then filled (sorted only within a group,
+// which holds a few edges on a mesh).
+template <typename EdgeSource>
+Pairing PairEdges(EdgeSource&& forEachEdge, std::size_t pointCount, std::vector<Edge>& unpaired)
+{
+  std::vector<std::uint32_t> groupStart(pointCount + 1, 0);
+  forEachEdge([&](std::uint32_t from, std::uint32_t to) { ++groupStart[std::min(from, to) + 1]; });
+  for (std::size_t point = 0; point < pointCount; ++point)
+  {
+    groupStart[point + 1] += groupStart[point];
+  }
+  std::vector<std::uint32_t> others(groupStart.back());
+  std::vector<std::uint32_t> next(groupStart.begin(), groupStart.end() - 1);
+  forEachEdge([&](std::uint32_t from, std::uint32_t to) {
+    const bool upward = from < to;
+    others[next[upward ? from : to]++] = (std::max(from, to) << 1) | upward;
+  });
+  bool onceOneWayAtMost = true;
+  for (std::uint32_t low = 0; onceOneWayAtMost && low < pointCount; ++low)
+  {
+    std::uint32_t* first = others.data() + groupStart[low];
+    std::uint32_t* last = others.data() + groupStart[low + 1];
+    std::sort(first, last);
+    onceOneWayAtMost = PairGroup(low, first, last, unpaired);
+  }
+  return Outcome(!others.empty(), onceOneWayAtMost, unpaired);
+}
+
+// PairEdges for a few edges of a big surface: sorted, in memory of their number.
+Pairing PairEdgeList(const std::vector<Edge>& edges, std::vector<Edge>& unpaired)
+{
+  std::vector<std::uint64_t> keys;
+  keys.reserve(edges.size());
+  for (const Edge& edge : edges)
+  {
+    const bool upward = edge.From < edge.To;
+    const std::uint64_t low = std::min(edge.From, edge.To);
+    keys.push_back((low << 32) | (std::uint64_t(std::max(edge.From, edge.To)) << 1) | upward);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::uint32_t> group;
+  bool onceOneWayAtMost = true;
+  for (std::size_t first = 0; onceOneWayAtMost && first < keys.size();)
+  {
+    const std::uint32_t low = static_cast<std::uint32_t>(keys[first] >> 32);
+    group.clear();
+    std::size_t last = first;
+    for (; last < keys.size() && (keys[last] >> 32) == low; ++last)
+    {
+      group.push_back(static_cast<std::uint32_t>(keys[last]));
+    }
+    onceOneWayAtMost = PairGroup(low, group.data(), group.data() + group.size(), unpaired);
     first = last;
   }
-  return unmatched;
+  return Outcome(!edges.empty(), onceOneWayAtMost, unpaired);
 }
 
 std::size_t PowerOfTwoAtLeast(std::size_t n)
@@ -252,6 +331,24 @@ std::vector<Edge> MergedPlaces(const std::vector<Edge>& edges, vtkPoints* points
   }
   return merged;
 }
+// Whether edges paired as `pairing` says are each there once each way, edges
+// without a partner paired again with points at one place made one; edges
+// paired as stored stay paired when other points coincide with theirs.
+bool PairedOnceMerged(Pairing pairing, const std::vector<Edge>& unpaired, vtkPoints* points)
+{
+  switch (pairing)
+  {
+    case Pairing::EachOnceEachWay:
+      return true;
+    case Pairing::NoEdges:
+    case Pairing::SomeTwiceOneWay:
+      return false;
+    case Pairing::SomeUnpaired:
+      break;
+  }
+  std::vector<Edge> stillUnpaired;
+  return PairEdgeList(MergedPlaces(unpaired, points), stillUnpaired) == Pairing::EachOnceEachWay;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -262,8 +359,11 @@ bool IsClosedSurface(vtkPolyData* surface)
   {
     return false;
   }
-  // Point ids go to 32 bits; a bigger surface counts as open, which peeling handles.
-  if (surface->GetNumberOfPoints() > vtkIdType(NoPoint))
+  // Point ids go to 31 bits, so that a direction fits beside one, and edges
+  // are counted in 32; a bigger surface counts as open, which peeling handles.
+  const vtkIdType mostEdges = surface->GetPolys()->GetNumberOfConnectivityIds() +
+    3 * surface->GetStrips()->GetNumberOfConnectivityIds();
+  if (surface->GetNumberOfPoints() >= (vtkIdType(1) << 31) || mostEdges >= (vtkIdType(1) << 32))
   {
     return false;
   }
@@ -273,22 +373,29 @@ bool IsClosedSurface(vtkPolyData* surface)
     vtkGenericWarningMacro("A caster's faces name points it does not have: it counts as open.");
     return false;
   }
+  const std::size_t pointCount = balance.PerPoint.size();
   const std::vector<std::uint64_t>& sums = balance.PerPoint;
-  if (std::all_of(sums.begin(), sums.end(), [](std::uint64_t sum) { return sum == 0; }))
+  if (!std::all_of(sums.begin(), sums.end(), [](std::uint64_t sum) { return sum == 0; }))
   {
-    return balance.AnyEdge;
-  }
-  std::vector<Edge> atUnbalancedPoints;
-  ForEachEdge(surface, [&](std::uint32_t from, std::uint32_t to) {
-    if (sums[from] != 0 || sums[to] != 0)
+    // The edges at points whose sums do not cancel must pair among themselves.
+    std::vector<Edge> atUnbalancedPoints;
+    ForEachEdge(surface, [&](std::uint32_t from, std::uint32_t to) {
+      if (sums[from] != 0 || sums[to] != 0)
+      {
+        atUnbalancedPoints.push_back({ from, to });
+      }
+    });
+    std::vector<Edge> unpaired;
+    if (!PairedOnceMerged(
+          PairEdgeList(atUnbalancedPoints, unpaired), unpaired, surface->GetPoints()))
     {
-      atUnbalancedPoints.push_back({ from, to });
+      return false;
     }
-  });
-  // Edges matched as stored stay matched when points merge; the others must
-  // match among themselves once their points are merged.
-  const std::vector<Edge> unmatched = UnmatchedEdges(std::move(atUnbalancedPoints));
-  return balance.AnyEdge && UnmatchedEdges(MergedPlaces(unmatched, surface->GetPoints())).empty();
+  }
+  std::vector<Edge> unpaired;
+  return PairedOnceMerged(
+    PairEdges([surface](auto visit) { ForEachEdge(surface, visit); }, pointCount, unpaired),
+    unpaired, surface->GetPoints());
 }
 
 //------------------------------------------------------------------------------

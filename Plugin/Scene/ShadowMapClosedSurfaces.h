@@ -20,17 +20,18 @@ class vtkProp;
 
 namespace shadowmaps
 {
-/// True if every edge of the polygons and strips is there as often one way as
-/// the other (the oriented surface has no boundary: minimum blending tells its
-/// entries from its exits by facing), and there are no lines or vertices. Two
-/// closed surfaces that meet along an edge, or one given twice, are closed;
-/// a face given twice, or wound against its neighbours, leaves the surface
-/// open. Unmatched edges are matched again with points that have the same
+/// True if every edge of the polygons and strips is shared by exactly two of
+/// them, wound opposite ways (a consistently oriented surface: minimum
+/// blending tells its entries from its exits by facing), and there are no lines
+/// or vertices. Edges without a partner pair up with points that have the same
 /// coordinates made one (sources such as vtkCubeSource repeat corners per
-/// face); edges matched as stored stay matched even where other points
-/// coincide with theirs. False for data without polygons. Linear in the size of
-/// the surface, one pass and one number per point where it is closed: it runs
-/// for every new version of a caster's data.
+/// face); edges paired as stored count as paired even where other points
+/// coincide with theirs. An edge of more than two faces (a face given twice or
+/// with its reverse, surfaces meeting along an edge) leaves the surface open.
+/// False, with a warning, for faces naming points the surface does not have,
+/// and for data without polygons. Linear in the size of the surface, and one
+/// pass with a number per point for most open ones: it runs for every new
+/// version of a caster's data.
 bool IsClosedSurface(vtkPolyData* surface);
 
 /// IsClosedSurface of every leaf of composite data; false for data that is not

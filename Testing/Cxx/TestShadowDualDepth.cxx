@@ -534,9 +534,11 @@ TEST(DualDepth, OneOpenCasterSparesTheOthersTheirAnalysis)
   EXPECT_EQ(closed.GetNumberOfAnalyses(), 5u);
 }
 
-// A surface bounds a volume when its edges match in number each way, not only
-// when each is there once each way: minimum blending needs no more.
-TEST(DualDepth, SurfacesMeetingAlongEdgesStayClosed)
+// Every edge's sums cancel when a surface is given with its reverse (as
+// vtkReverseSense and vtkAppendPolyData make two-sided geometry), yet minimum
+// blending would then store each near face as its own exit: an edge of more
+// than two faces leaves the surface open, whichever way they are wound.
+TEST(DualDepth, EdgesOfMoreThanTwoFacesLeaveSurfacesOpen)
 {
   vtkNew<vtkSphereSource> sphere;
   sphere->Update();
@@ -546,7 +548,15 @@ TEST(DualDepth, SurfacesMeetingAlongEdgesStayClosed)
   allTwice->DeepCopy(twice->GetPolys());
   allTwice->Append(twice->GetPolys());
   twice->SetPolys(allTwice);
-  EXPECT_TRUE(shadowmaps::IsClosedSurface(twice));
+  EXPECT_FALSE(shadowmaps::IsClosedSurface(twice));
+  vtkNew<vtkPolyData> withReverse;
+  withReverse->DeepCopy(twice);
+  for (vtkIdType face = sphere->GetOutput()->GetNumberOfPolys(); face < withReverse->GetNumberOfPolys();
+       ++face)
+  {
+    withReverse->GetPolys()->ReverseCellAtId(face);
+  }
+  EXPECT_FALSE(shadowmaps::IsClosedSurface(withReverse));
 
   // Two tetrahedra sharing the edge (0, 1): four faces meet there.
   vtkNew<vtkPoints> corners;
@@ -569,17 +579,17 @@ TEST(DualDepth, SurfacesMeetingAlongEdgesStayClosed)
   vtkNew<vtkPolyData> pair;
   pair->SetPoints(corners);
   pair->SetPolys(faces);
-  EXPECT_TRUE(shadowmaps::IsClosedSurface(pair));
-  // Without one face, the surface has a hole.
-  vtkNew<vtkCellArray> sevenFaces;
-  for (vtkIdType face = 0; face < 7; ++face)
+  EXPECT_FALSE(shadowmaps::IsClosedSurface(pair));
+  // Either tetrahedron alone is closed.
+  vtkNew<vtkCellArray> fourFaces;
+  for (vtkIdType face = 0; face < 4; ++face)
   {
     vtkNew<vtkIdList> ids;
     faces->GetCellAtId(face, ids);
-    sevenFaces->InsertNextCell(ids);
+    fourFaces->InsertNextCell(ids);
   }
-  pair->SetPolys(sevenFaces);
-  EXPECT_FALSE(shadowmaps::IsClosedSurface(pair));
+  pair->SetPolys(fourFaces);
+  EXPECT_TRUE(shadowmaps::IsClosedSurface(pair));
 }
 
 class DualDepthViewsAndModes : public ::testing::TestWithParam<std::tuple<std::string, int>>
