@@ -71,9 +71,11 @@ bool ForEachPolygonIn(vtkCellArray* cells, Visitor& visit)
 template <typename Visitor>
 bool ForEachEdge(vtkPolyData* surface, Visitor&& visit)
 {
-  const vtkIdType pointCount = surface->GetNumberOfPoints();
+  // In 64 bits whatever vtkIdType is: a 64-bit cell array's ids are checked
+  // before they could wrap.
+  const std::int64_t pointCount = surface->GetNumberOfPoints();
   bool idsInRange = true;
-  auto edge = [&visit, &idsInRange, pointCount](vtkIdType from, vtkIdType to) {
+  auto edge = [&visit, &idsInRange, pointCount](std::int64_t from, std::int64_t to) {
     if (from < 0 || to < 0 || from >= pointCount || to >= pointCount)
     {
       idsInRange = false;
