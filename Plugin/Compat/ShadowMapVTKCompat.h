@@ -14,6 +14,11 @@
 //   again. The module sets every uniform through SetUniform*, so nothing needs
 //   a change; vtkShadowSkipsRepeatedUniforms tells the GL call counts of the
 //   tests and benchmarks that a value set again may cost no call.
+// - Cell arrays: VTK 9.6 may hold cells as fixed-size cells (affine offsets)
+//   or generic arrays besides the plain 32- and 64-bit arrays
+//   (ShadowMapClosedSurfaces reads the plain ones directly, the others through
+//   the cell iterator); VTK_SHADOW_FIXED_SIZE_CELL_ARRAYS says the tests can
+//   make them.
 #ifndef ShadowMapVTKCompat_h
 #define ShadowMapVTKCompat_h
 
@@ -31,6 +36,12 @@ using vtkShadowCompositeMapper = vtkCompositePolyDataMapper;
 #else
 #include "vtkCompositePolyDataMapper2.h" // IWYU pragma: export
 using vtkShadowCompositeMapper = vtkCompositePolyDataMapper2;
+#endif
+
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 6, 0)
+#define VTK_SHADOW_FIXED_SIZE_CELL_ARRAYS 1
+#else
+#define VTK_SHADOW_FIXED_SIZE_CELL_ARRAYS 0
 #endif
 
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 7, 0)

@@ -169,6 +169,13 @@ enum class Pairing
   SomeTwiceOneWay, // open, or inconsistently wound, whatever points merge
 };
 
+// An edge as its group (its lower point) keeps it: the other point, shifted,
+// with the direction in bit 0.
+std::uint32_t KeyInGroup(std::uint32_t from, std::uint32_t to)
+{
+  return (std::max(from, to) << 1) | (from < to ? 1u : 0u);
+}
+
 // Pairs the edges of one group, those whose lower point is `low`: `others`
 // holds each one's other point, shifted, with its direction in bit 0, sorted.
 // False if some edge is there twice one way or more than twice; `unpaired`
@@ -223,8 +230,7 @@ Pairing PairEdges(EdgeSource&& forEachEdge, std::size_t pointCount, std::vector<
   std::vector<std::uint32_t> others(groupStart.back());
   std::vector<std::uint32_t> next(groupStart.begin(), groupStart.end() - 1);
   forEachEdge([&](std::uint32_t from, std::uint32_t to) {
-    const bool upward = from < to;
-    others[next[upward ? from : to]++] = (std::max(from, to) << 1) | upward;
+    others[next[std::min(from, to)]++] = KeyInGroup(from, to);
   });
   bool onceOneWayAtMost = true;
   for (std::uint32_t low = 0; onceOneWayAtMost && low < pointCount; ++low)
@@ -244,9 +250,8 @@ Pairing PairEdgeList(const std::vector<Edge>& edges, std::vector<Edge>& unpaired
   keys.reserve(edges.size());
   for (const Edge& edge : edges)
   {
-    const bool upward = edge.From < edge.To;
     const std::uint64_t low = std::min(edge.From, edge.To);
-    keys.push_back((low << 32) | (std::uint64_t(std::max(edge.From, edge.To)) << 1) | upward);
+    keys.push_back((low << 32) | KeyInGroup(edge.From, edge.To));
   }
   std::sort(keys.begin(), keys.end());
   std::vector<std::uint32_t> group;
@@ -333,6 +338,7 @@ std::vector<Edge> MergedPlaces(const std::vector<Edge>& edges, vtkPoints* points
   }
   return merged;
 }
+
 // Whether edges paired as `pairing` says are each there once each way, edges
 // without a partner paired again with points at one place made one; edges
 // paired as stored stay paired when other points coincide with theirs.
@@ -350,6 +356,15 @@ bool PairedOnceMerged(Pairing pairing, const std::vector<Edge>& unpaired, vtkPoi
   }
   std::vector<Edge> stillUnpaired;
   return PairEdgeList(MergedPlaces(unpaired, points), stillUnpaired) == Pairing::EachOnceEachWay;
+}
+
+// The data an actor's mapper draws; null for other props.
+vtkDataObject* DrawnData(vtkProp* prop)
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  return mapper && mapper->GetNumberOfInputConnections(0) > 0 ? mapper->GetInputDataObject(0, 0)
+                                                              : nullptr;
 }
 } // namespace
 
@@ -423,26 +438,23 @@ bool IsClosedData(vtkDataObject* data)
 //------------------------------------------------------------------------------
 vtkIdType CellsDrawn(vtkProp* prop)
 {
-  auto* actor = vtkActor::SafeDownCast(prop);
-  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-  vtkDataObject* data =
-    mapper && mapper->GetNumberOfInputConnections(0) > 0 ? mapper->GetInputDataObject(0, 0) : nullptr;
+  vtkDataObject* data = DrawnData(prop);
   return data ? data->GetNumberOfElements(vtkDataObject::CELL) : 0;
 }
 
 //------------------------------------------------------------------------------
 bool DrawsClosedSurface(vtkProp* prop)
 {
-  auto* actor = vtkActor::SafeDownCast(prop);
-  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-  // Clipping planes cut the drawn surface open.
-  if (!mapper || actor->GetProperty()->GetRepresentation() != VTK_SURFACE ||
-    mapper->GetNumberOfInputConnections(0) < 1 ||
-    (mapper->GetClippingPlanes() && mapper->GetClippingPlanes()->GetNumberOfItems() > 0))
+  vtkDataObject* data = DrawnData(prop);
+  if (!data)
   {
     return false;
   }
-  return IsClosedData(mapper->GetInputDataObject(0, 0));
+  auto* actor = static_cast<vtkActor*>(prop);
+  vtkPlaneCollection* clipping = actor->GetMapper()->GetClippingPlanes();
+  // Clipping planes cut the drawn surface open.
+  return actor->GetProperty()->GetRepresentation() == VTK_SURFACE &&
+    !(clipping && clipping->GetNumberOfItems() > 0) && IsClosedData(data);
 }
 
 //------------------------------------------------------------------------------

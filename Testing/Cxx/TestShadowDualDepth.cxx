@@ -455,7 +455,7 @@ TEST(DualDepth, ClosednessReadsEveryStorageOfCellArrays)
     { "32-bit ids", [](vtkCellArray* cells) { return cells->ConvertTo32BitStorage(); } },
     { "64-bit ids", [](vtkCellArray* cells) { return cells->ConvertTo64BitStorage(); } },
   };
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 6, 0)
+#if VTK_SHADOW_FIXED_SIZE_CELL_ARRAYS
   storages.emplace_back("fixed-size cells, 32-bit ids",
     [](vtkCellArray* cells) { return cells->ConvertToFixedSize32BitStorage(); });
   storages.emplace_back("fixed-size cells, 64-bit ids",
