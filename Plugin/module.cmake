@@ -91,12 +91,14 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapStoreFromLightDepths.cxx
     Plugin/OpenGL/ShadowMapReceiverShader.cxx
     Plugin/OpenGL/ShadowMapRotationNoise.cxx
+    Plugin/OpenGL/ShadowMapShaderGroup.cxx
     Plugin/OpenGL/ShadowMapTransmittance.cxx
     Plugin/OpenGL/ShadowMapVolumeCasting.cxx
     Plugin/OpenGL/ShadowMapTextureArray.cxx
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapFramePolicy.cxx
     Plugin/Passes/ShadowMapFrameUpdate.cxx
+    Plugin/Passes/ShadowMapGroups.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
     Plugin/Passes/ShadowMapLayerDrawing.cxx
     Plugin/Passes/ShadowMapPassShaders.cxx
@@ -146,12 +148,15 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapQuad.h
     Plugin/OpenGL/ShadowMapReceiverShader.h
     Plugin/OpenGL/ShadowMapRotationNoise.h
+    Plugin/OpenGL/ShadowMapShaderGroup.h
     Plugin/OpenGL/ShadowMapTransmittance.h
     Plugin/Passes/ShadowMapCombination.h
     Plugin/Passes/ShadowMapFrameUpdate.h
+    Plugin/Passes/ShadowMapGroups.h
     Plugin/Passes/ShadowMapLayerContent.h
     Plugin/Passes/ShadowMapLayerDrawing.h
     Plugin/Passes/ShadowMapPassShaders.h
+    Plugin/Passes/ShadowMapPerLight.h
     Plugin/Passes/ShadowMapProgramUniforms.h
     Plugin/Passes/ShadowMapPropJoining.h
     Plugin/Passes/ShadowMapReceiverTextures.h

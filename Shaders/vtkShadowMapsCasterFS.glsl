@@ -2,9 +2,9 @@
 // same program draws a prop into the maps and into the scene, so that moving
 // the camera, which re-renders the maps, rebuilds no shader: VTK's mapper keeps
 // one program per primitive type and rebuilds it whenever the set of render
-// passes on its prop changes. vtkShadowCasting selects the branch (a uniform:
-// the branch costs one test in the scene's draws).
-uniform int vtkShadowCasting;
+// passes on its prop changes. The uniform vtkShadowCasting selects the branch
+// (ShadowMapCasterShader.cxx declares it once for every group's branch): the
+// branch costs one test in the scene's draws.
 
 // Face selection is done here rather than with GL_CULL_FACE because vtkProperty
 // culling settings override that state.

@@ -1,5 +1,6 @@
 #include "ShadowMapCasterShader.h"
 
+#include "ShadowMapShaderGroup.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsCasterFS.h"
 #include "vtkShadowMapsLightDepthFS.h"
@@ -48,11 +49,14 @@ bool ShapesItsOwnFragments(const std::string& code)
   return code.find("gl_FragDepth") != std::string::npos || CountOccurrences(code, "discard") > 1;
 }
 
-std::string Declarations(const CasterCode& code, Impostors sized)
+// A group's declarations; group 0 also declares what every group shares:
+// the branch's selector and the impostors' functions.
+std::string Declarations(const CasterCode& code, Impostors sized, const ShaderGroup& group)
 {
-  std::string dec = code.Faces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
-    : code.Faces == 1               ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
-                                    : "";
+  std::string dec = group.Index() == 0 ? "uniform int vtkShadowCasting;\n" : "";
+  dec += code.Faces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
+    : code.Faces == 1    ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
+                         : "";
   if (code.SecondDepth == SecondDepthMethod::Peeling)
   {
     dec += "#define VTK_SHADOW_PEEL\n";
@@ -72,7 +76,8 @@ std::string Declarations(const CasterCode& code, Impostors sized)
   {
     dec += vtkShadowMapsLinearDepthFS;
   }
-  return dec + ImpostorShader::CasterDeclarations(sized) + code.StoreFunctions + "\n";
+  const std::string shared = group.Index() == 0 ? ImpostorShader::CasterDeclarations(sized) : "";
+  return group.Rename(dec) + shared + group.Rename(code.StoreFunctions) + "\n";
 }
 
 // What the branch writes once it has vtkShadowCasterDepth (and, for an
@@ -121,10 +126,10 @@ std::string StoredDepth(const CasterCode& code, const std::string& raw)
 // second depth, one surface for front and back faces, and the surface behind
 // the peeled one in the second peeling pass.
 std::string Branch(const CasterCode& code, const std::string& rawDepth,
-  const std::string& rawBackDepth, bool writeDepth, bool selectFaces)
+  const std::string& rawBackDepth, bool writeDepth, bool selectFaces, const ShaderGroup& group)
 {
   std::ostringstream branch;
-  branch << "  if (vtkShadowCasting " << (code.Transmittance ? "== 1" : "!= 0") << ")\n  {\n";
+  branch << "  if (vtkShadowCasting == " << group.CastingValue() << ")\n  {\n";
   if (selectFaces)
   {
     branch << "    if (!vtkShadowCastsThisFace())\n    {\n      discard;\n    }\n";
@@ -151,18 +156,18 @@ std::string Branch(const CasterCode& code, const std::string& rawDepth,
            << ";\n";
   }
   branch << StoreCode(code, backDepth) << "\n    return;\n  }\n";
-  return branch.str();
+  return group.Rename(branch.str());
 }
 
 // The branch that draws a translucent caster into the transmittance maps,
 // where the mapper has its colour and opacity (right after its colour code,
 // before edges and lighting): what the surface lets through and its light
 // depth. A shader without them draws nothing there.
-std::string TransmittanceBranch(const std::string& mapperCode)
+std::string TransmittanceBranch(const std::string& mapperCode, const ShaderGroup& group)
 {
   const std::string transmitted = CasterShader::TransmittedLight(mapperCode);
   std::ostringstream branch;
-  branch << "  if (vtkShadowCasting == 2)\n  {\n";
+  branch << "  if (vtkShadowCasting == " << group.TransmittingValue() << ")\n  {\n";
   if (transmitted.empty())
   {
     branch << "    discard;\n  }\n";
@@ -170,7 +175,7 @@ std::string TransmittanceBranch(const std::string& mapperCode)
   }
   branch << "    gl_FragData[0] = vec4(" << transmitted
          << ", vtkShadowTransmittedDepth(gl_FragCoord.z));\n    return;\n  }\n";
-  return branch.str();
+  return group.Rename(branch.str());
 }
 
 // Inserts `text` at the start of main()'s body.
@@ -184,13 +189,14 @@ void PutAtMainStart(std::string& shader, const std::string& text)
   }
 }
 
-// Puts `text` at `marker`, or before the end of main() (the last function of
-// VTK's fragment shaders) if a mapper's template had no such marker.
+// Puts `text` before `marker`, which stays for the next group's code, or
+// before the end of main() (the last function of VTK's fragment shaders) if a
+// mapper's template had no such marker.
 void PutAtMarker(std::string& fragmentShader, const char* marker, const std::string& text)
 {
   if (fragmentShader.find(marker) != std::string::npos)
   {
-    vtkShaderProgram::Substitute(fragmentShader, marker, text);
+    vtkShaderProgram::Substitute(fragmentShader, marker, text + marker);
     return;
   }
   const size_t end = fragmentShader.rfind('}');
@@ -223,10 +229,10 @@ void CasterShader::MarkInjectionPoints(std::string& fragmentShader)
 }
 
 //------------------------------------------------------------------------------
-CasterBranch CasterShader::Inject(
-  std::string& fragmentShader, const CasterCode& code, Impostors sized)
+CasterBranch CasterShader::Inject(std::string& fragmentShader, const std::string& mapperShader,
+  const CasterCode& code, Impostors sized, const ShaderGroup& group)
 {
-  const std::string mapperCode = WithoutLineComments(fragmentShader);
+  const std::string mapperCode = WithoutLineComments(mapperShader);
   const bool writesDepth = mapperCode.find("gl_FragDepth") != std::string::npos;
   const bool ownFragments = ShapesItsOwnFragments(mapperCode);
   // An impostor's depth as the mapper writes it follows the scene camera's
@@ -235,14 +241,14 @@ CasterBranch CasterShader::Inject(
   // Shapes that cut their own fragments (impostors, splats) draw nothing into
   // the transmittance maps: their cuts come after the colour code.
   PutAtMarker(fragmentShader, TransmitMarker,
-    code.Transmittance ? TransmittanceBranch(ownFragments ? std::string() : mapperCode)
+    code.Transmittance ? TransmittanceBranch(ownFragments ? std::string() : mapperCode, group)
                        : std::string());
   if (code.Transmittance && !ownFragments)
   {
     // Where control flow is uniform, before any of the mapper's discards.
     PutAtMainStart(fragmentShader,
-      "  vtkShadowCasterDepthDx = dFdx(gl_FragCoord.z);\n"
-      "  vtkShadowCasterDepthDy = dFdy(gl_FragCoord.z);\n");
+      group.Rename("  vtkShadowCasterDepthDx = dFdx(gl_FragCoord.z);\n"
+                   "  vtkShadowCasterDepthDy = dFdy(gl_FragCoord.z);\n"));
   }
 
   if (ownFragments)
@@ -260,23 +266,31 @@ CasterBranch CasterShader::Inject(
                         : impostorDepth;
     const bool first =
       !impostorDepth.empty() && !ImpostorShader::LiftOwnCutWhileCasting(fragmentShader, sized);
-    vtkShaderProgram::Substitute(fragmentShader, first ? LateMarker : EarlyMarker, "");
     PutAtMarker(fragmentShader, first ? EarlyMarker : LateMarker,
-      Branch(code, depth, backDepth, !impostorDepth.empty(), false));
+      Branch(code, depth, backDepth, !impostorDepth.empty(), false, group));
   }
   else
   {
     // A shader that writes gl_FragDepth on one path must on every path.
-    vtkShaderProgram::Substitute(fragmentShader, LateMarker, "");
-    PutAtMarker(fragmentShader, EarlyMarker, Branch(code, "gl_FragCoord.z", "", writesDepth, true));
+    PutAtMarker(
+      fragmentShader, EarlyMarker, Branch(code, "gl_FragCoord.z", "", writesDepth, true, group));
   }
   const size_t main = fragmentShader.find("void main");
   if (main != std::string::npos)
   {
     fragmentShader.insert(
-      main, Declarations(code, impostorDepth.empty() ? Impostors::None : sized));
+      main, Declarations(code, impostorDepth.empty() ? Impostors::None : sized, group));
   }
   return ownFragments ? CasterBranch::AfterOwnFragments : CasterBranch::DepthOnly;
+}
+
+//------------------------------------------------------------------------------
+void CasterShader::ClearMarkers(std::string& fragmentShader)
+{
+  for (const char* marker : { EarlyMarker, LateMarker, TransmitMarker })
+  {
+    vtkShaderProgram::Substitute(fragmentShader, marker, "");
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -338,38 +352,57 @@ void CasterUniforms::SetPeeling(bool secondPass, int peelUnit)
 }
 
 //------------------------------------------------------------------------------
+CasterUniforms::Names CasterUniforms::NamesOf(const ShaderGroup& g)
+{
+  return { g.Name("vtkShadowPeelDepths"), g.Name("vtkShadowPeelSecondPass"),
+    g.Name("vtkShadowWindowToLight"), g.Name("vtkShadowLightDepthPlane"),
+    g.Name("vtkShadowLightDepthPerDistance"), g.Name("vtkShadowWindowToInverseW"),
+    g.Name("vtkShadowLinearDepthBias") };
+}
+
+//------------------------------------------------------------------------------
+void CasterUniforms::SetGroup(int index)
+{
+  this->Group = ShaderGroup(index);
+  this->GroupNames = NamesOf(this->Group);
+}
+
+//------------------------------------------------------------------------------
 void CasterUniforms::ApplyPeelUnit(vtkShaderProgram* program) const
 {
-  if (program->IsUniformUsed("vtkShadowPeelDepths"))
+  const char* name = this->GroupNames.PeelDepths.c_str();
+  if (program->IsUniformUsed(name))
   {
-    program->SetUniformi("vtkShadowPeelDepths", this->PeelUnit);
+    program->SetUniformi(name, this->PeelUnit);
   }
 }
 
 //------------------------------------------------------------------------------
 void CasterUniforms::ApplyCasting(vtkShaderProgram* program) const
 {
-  program->SetUniformi("vtkShadowCasting", this->Transmitting ? 2 : 1);
+  program->SetUniformi("vtkShadowCasting",
+    this->Transmitting ? this->Group.TransmittingValue() : this->Group.CastingValue());
   this->ApplyPeelUnit(program);
-  if (program->IsUniformUsed("vtkShadowPeelSecondPass"))
+  const Names& names = this->GroupNames;
+  if (program->IsUniformUsed(names.PeelSecondPass.c_str()))
   {
-    program->SetUniformi("vtkShadowPeelSecondPass", this->SecondPass ? 1 : 0);
+    program->SetUniformi(names.PeelSecondPass.c_str(), this->SecondPass ? 1 : 0);
   }
   if (program->IsUniformUsed("vtkShadowCasterParallel"))
   {
     program->SetUniformi("vtkShadowCasterParallel", this->Parallel ? 1 : 0);
   }
-  if (program->IsUniformUsed("vtkShadowWindowToLight"))
+  if (program->IsUniformUsed(names.WindowToLight.c_str()))
   {
     glm::mat4 windowToLight = this->WindowToLight; // VTK 9.1 takes a mutable pointer
-    program->SetUniformMatrix4x4("vtkShadowWindowToLight", glm::value_ptr(windowToLight));
-    program->SetUniform4f("vtkShadowLightDepthPlane", glm::value_ptr(this->LightDepthPlane));
-    program->SetUniformf("vtkShadowLightDepthPerDistance", this->LightDepthPerDistance);
+    program->SetUniformMatrix4x4(names.WindowToLight.c_str(), glm::value_ptr(windowToLight));
+    program->SetUniform4f(names.LightDepthPlane.c_str(), glm::value_ptr(this->LightDepthPlane));
+    program->SetUniformf(names.LightDepthPerDistance.c_str(), this->LightDepthPerDistance);
   }
-  if (program->IsUniformUsed("vtkShadowWindowToInverseW"))
+  if (program->IsUniformUsed(names.WindowToInverseW.c_str()))
   {
-    program->SetUniform3f("vtkShadowWindowToInverseW", this->WindowToInverseW.data());
-    program->SetUniform3f("vtkShadowLinearDepthBias", this->LinearDepthBias.data());
+    program->SetUniform3f(names.WindowToInverseW.c_str(), this->WindowToInverseW.data());
+    program->SetUniform3f(names.LinearDepthBias.c_str(), this->LinearDepthBias.data());
   }
   if (ImpostorShader::IsSized(program))
   {

@@ -16,6 +16,7 @@
 #define ShadowMapCasterShader_h
 
 #include "ShadowMapImpostors.h"     // For Impostors
+#include "ShadowMapShaderGroup.h"   // For ShaderGroup
 #include "ShadowMapTextureArray.h" // For SecondDepthMethod
 
 #include <array>
@@ -75,10 +76,16 @@ public:
   /// Call before the receivers' markers (both precede //VTK::Light::Impl).
   static void MarkInjectionPoints(std::string& fragmentShader);
 
-  /// Puts the branch at one of the markers and removes the other. `sized`:
-  /// the impostors ImpostorShader::Size sized, whose depth the branch computes.
-  static CasterBranch Inject(
-    std::string& fragmentShader, const CasterCode& code, Impostors sized = Impostors::None);
+  /// Puts `group`'s branch before one of the markers (ClearMarkers removes
+  /// them once every group's is in). `mapperShader`: the fragment shader
+  /// before any group's code, whose own fragment shaping says where the
+  /// branch goes. `sized`: the impostors ImpostorShader::Size sized, whose
+  /// depth the branch computes.
+  static CasterBranch Inject(std::string& fragmentShader, const std::string& mapperShader,
+    const CasterCode& code, Impostors sized, const ShaderGroup& group);
+
+  /// Removes the markers, after the last group's Inject.
+  static void ClearMarkers(std::string& fragmentShader);
 
   /// The GLSL expression (a vec3) of what the drawn surface lets through
   /// (vtkAbstractShadowMapPass::GetTransmittance's model), valid after the
@@ -122,15 +129,19 @@ public:
   /// casters) instead of the maps.
   void SetTransmitting(bool transmitting) { this->Transmitting = transmitting; }
 
+  /// The group whose branch and uniforms these are (ShaderGroup).
+  void SetGroup(int index);
+
   /// Selects the branch and sets the view's uniforms.
   void ApplyCasting(vtkShaderProgram* program) const;
 
   /// Selects the scene's path.
   void ApplyReceiving(vtkShaderProgram* program) const;
 
-private:
+  /// Points the group's peeling sampler at its unit (SetPeeling).
   void ApplyPeelUnit(vtkShaderProgram* program) const;
 
+private:
   bool SecondPass = false;
   bool Transmitting = false;
   int PeelUnit = 0;
@@ -141,6 +152,15 @@ private:
   float LightDepthPerDistance = 0.0f;
   bool Parallel = false;
   ImpostorUniforms ImpostorSizes;
+  ShaderGroup Group;
+  /// The group's names of the uniforms set by name, made once.
+  struct Names
+  {
+    std::string PeelDepths, PeelSecondPass, WindowToLight, LightDepthPlane,
+      LightDepthPerDistance, WindowToInverseW, LinearDepthBias;
+  };
+  static Names NamesOf(const ShaderGroup& group);
+  Names GroupNames = NamesOf(ShaderGroup());
 };
 } // namespace shadowmaps
 

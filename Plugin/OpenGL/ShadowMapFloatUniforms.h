@@ -14,11 +14,13 @@ namespace shadowmaps
 {
 using FloatUniforms = std::vector<std::pair<std::string, float>>;
 
-inline void SetFloatUniforms(vtkShaderProgram* program, const FloatUniforms& uniforms)
+/// Sets each uniform, its name followed by `suffix` (ShaderGroup::Suffix).
+inline void SetFloatUniforms(
+  vtkShaderProgram* program, const FloatUniforms& uniforms, const std::string& suffix = {})
 {
   for (const auto& uniform : uniforms)
   {
-    program->SetUniformf(uniform.first.c_str(), uniform.second);
+    program->SetUniformf((uniform.first + suffix).c_str(), uniform.second);
   }
 }
 } // namespace shadowmaps

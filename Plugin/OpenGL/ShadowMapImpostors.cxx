@@ -173,13 +173,15 @@ bool ImpostorShader::LiftOwnCutWhileCasting(std::string& fragmentShader, Imposto
     return true;
   }
   // VTK 9.1 to 9.6 write it so (vtkOpenGLPolyDataMapper::ReplaceShaderDepth).
+  // Lifted once for every group's branch.
   const std::string cut = "if (len2 > 1.0) { discard; }";
+  const std::string lifted = "if (len2 > 1.0 && vtkShadowCasting == 0) { discard; }";
   const size_t at = fragmentShader.find(cut);
   if (at == std::string::npos)
   {
-    return false;
+    return fragmentShader.find(lifted) != std::string::npos;
   }
-  fragmentShader.replace(at, cut.size(), "if (len2 > 1.0 && vtkShadowCasting == 0) { discard; }");
+  fragmentShader.replace(at, cut.size(), lifted);
   return true;
 }
 

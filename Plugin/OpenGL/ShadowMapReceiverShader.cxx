@@ -4,6 +4,7 @@
 #include "ShadowMapCrop.h"
 #include "ShadowMapImpostors.h"
 #include "ShadowMapLight.h"
+#include "ShadowMapShaderGroup.h"
 #include "ShadowMapTrapezoid.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapsReceiverFS.h"
@@ -21,10 +22,9 @@ namespace
 {
 // Polydata draws are patched where the mapper applies light i's colour: Phong's
 // diffuse and specular sums and PBR's radiance (vtkOpenGLPolyDataMapper 9.1).
-int InjectShadowFactor(std::string& fragmentShader, int shaderIndex, int lightIndex)
+int InjectShadowFactor(std::string& fragmentShader, int shaderIndex, const std::string& factor)
 {
   const std::string color = "lightColor" + std::to_string(shaderIndex);
-  const std::string factor = "vtkShadowFactor" + std::to_string(lightIndex);
   const std::pair<std::string, std::string> patterns[] = {
     { "diffuse += (df * " + color + ");", "diffuse += (df * " + color + " * " + factor + ");" },
     { "specular += (sf * " + color + ");", "specular += (sf * " + color + " * " + factor + ");" },
@@ -83,6 +83,7 @@ const char* const UniformFlowMarker = "//VTK::ShadowMaps::UniformFlow";
 // components' path composites its own sum).
 const char* const VolumeDecMarker = "//VTK::ShadowMaps::VolumeDec";
 const char* const VolumeRayMarker = "//VTK::ShadowMaps::VolumeRay";
+const char* const VolumeFactorCall = "vtkShadowVolumeFactor(g_dataPos)";
 const std::pair<const char*, const char*> VolumeSamplePatterns[] = {
   { "g_srcColor.rgb *= g_srcColor.a;",
     "g_srcColor.rgb *= vtkShadowVolumeFactor(g_dataPos) * g_srcColor.a;" },
@@ -143,7 +144,13 @@ void ClearVolumeMarkers(std::string& fragmentShader)
   vtkShaderProgram::Substitute(fragmentShader, VolumeRayMarker, "");
 }
 
-void ClearMarkers(std::string& fragmentShader)
+// Puts `text` before `marker`, which stays for the next group's code.
+void PutBeforeMarker(std::string& shader, const std::string& marker, const std::string& text)
+{
+  vtkShaderProgram::Substitute(shader, marker, text + marker);
+}
+
+void ClearSurfaceMarkers(std::string& fragmentShader)
 {
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Dec", "");
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl", "");
@@ -216,7 +223,8 @@ void ReceiverShader::MarkInjectionPoints(std::string& fragmentShader)
 
 //------------------------------------------------------------------------------
 int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
-  int layers, const ReceiverCode& code, bool receives, bool facetDerivatives, bool ownShare)
+  int layers, const ReceiverCode& code, bool receives, bool facetDerivatives, bool ownShare,
+  const ShaderGroup& group)
 {
   // The receiver's position is taken in the fragment shader, not the vertex
   // shader, because impostor mappers compute their true surface per fragment.
@@ -225,7 +233,8 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
   int unpatched = 0;
   for (int k = 0; receives && k < static_cast<int>(lights.size()); ++k)
   {
-    if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, k) > 0)
+    const std::string factor = group.Rename("vtkShadowFactor" + std::to_string(k));
+    if (InjectShadowFactor(fragmentShader, lights[k].ShaderIndex, factor) > 0)
     {
       declared << (code.Transmittance ? "  vec3" : "  float") << " vtkShadowFactor" << k
                << (code.Transmittance ? " = vec3(1.0);\n" : " = 1.0;\n");
@@ -239,7 +248,6 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
   }
   if (impl.tellp() <= 0)
   {
-    ClearMarkers(fragmentShader);
     return unpatched;
   }
   if (!code.AnalysisStatement.empty())
@@ -248,31 +256,44 @@ int ReceiverShader::Inject(std::string& fragmentShader, const std::vector<Shadow
     const size_t end = fragmentShader.rfind('}');
     if (end != std::string::npos)
     {
-      fragmentShader.insert(
-        end, "  if (vtkShadowReceiving != 0)\n  {\n  " + code.AnalysisStatement + "  }\n");
+      fragmentShader.insert(end,
+        group.Rename("  if (vtkShadowReceiving != 0)\n  {\n  " + code.AnalysisStatement + "  }\n"));
     }
   }
-  vtkShaderProgram::Substitute(
-    fragmentShader, "//VTK::ShadowMaps::Dec",
-    Declarations(lights, layers, code) + ImpostorShader::ReceiverDeclarations(fragmentShader));
-  vtkShaderProgram::Substitute(fragmentShader, UniformFlowMarker,
-    facetDerivatives ? "#ifdef VTK_SHADOW_POSITION_DERIVATIVES\n"
-                       "  vtkShadowPositionDx = dFdx(vertexVC.xyz);\n"
-                       "  vtkShadowPositionDy = dFdy(vertexVC.xyz);\n"
-                       "#endif\n"
-                     : "");
+  PutBeforeMarker(
+    fragmentShader, "//VTK::ShadowMaps::Dec", group.Rename(Declarations(lights, layers, code)));
+  PutBeforeMarker(fragmentShader, UniformFlowMarker,
+    facetDerivatives ? group.Rename("#ifdef VTK_SHADOW_POSITION_DERIVATIVES\n"
+                                    "  vtkShadowPositionDx = dFdx(vertexVC.xyz);\n"
+                                    "  vtkShadowPositionDy = dFdy(vertexVC.xyz);\n"
+                                    "#endif\n")
+                     : std::string());
   const std::string position = ImpostorShader::ReceiverPositionVC(fragmentShader);
   // Another renderer that draws the prop without the pass draws it with this
   // program too (PropJoining), unshadowed: vtkShadowReceiving 0.
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::ShadowMaps::Impl",
-    "  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n"
-    "  vec3 vtkShadowPositionVC = " + position + ";\n" + declared.str() +
+  PutBeforeMarker(fragmentShader, "//VTK::ShadowMaps::Impl",
+    group.Rename("  vec3 vtkShadowNormalVC = normalize(normalVCVSOutput);\n"
+                 "  vec3 vtkShadowPositionVC = " + position + ";\n" + declared.str() +
       "  if (vtkShadowReceiving != 0)\n  {\n"
       "#ifdef VTK_SHADOW_RECEIVER_PLANE\n"
       "    vtkShadowSetReceiverPlane(vtkShadowNormalVC);\n"
       "#endif\n" +
-      (ownShare ? OwnTransmittance(fragmentShader, code) : std::string()) + impl.str() + "  }\n");
+      (ownShare ? OwnTransmittance(fragmentShader, code) : std::string()) + impl.str() + "  }\n"));
   return unpatched;
+}
+
+//------------------------------------------------------------------------------
+void ReceiverShader::DeclareShared(std::string& fragmentShader)
+{
+  PutBeforeMarker(
+    fragmentShader, "//VTK::ShadowMaps::Dec", ImpostorShader::ReceiverDeclarations(fragmentShader));
+}
+
+//------------------------------------------------------------------------------
+void ReceiverShader::ClearMarkers(std::string& fragmentShader)
+{
+  ClearSurfaceMarkers(fragmentShader);
+  ClearVolumeMarkers(fragmentShader);
 }
 
 //------------------------------------------------------------------------------
@@ -291,34 +312,49 @@ void ReceiverShader::MarkVolumeInjectionPoints(std::string& fragmentShader)
 
 //------------------------------------------------------------------------------
 bool ReceiverShader::InjectVolume(std::string& fragmentShader,
-  const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code, bool receives)
+  const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code, bool receives,
+  const ShaderGroup& group, std::string& factors)
 {
   const bool marked = fragmentShader.find(VolumeDecMarker) != std::string::npos &&
     fragmentShader.find(VolumeRayMarker) != std::string::npos;
-  int composited = 0;
-  for (const auto& pattern : VolumeSamplePatterns)
+  if (!receives || !marked || lights.empty())
   {
-    if (receives && marked && !lights.empty() &&
-      fragmentShader.find(pattern.first) != std::string::npos)
+    return false;
+  }
+  const std::string factor = group.Rename(VolumeFactorCall);
+  if (factors.empty())
+  {
+    for (const auto& pattern : VolumeSamplePatterns)
     {
-      vtkShaderProgram::Substitute(fragmentShader, pattern.first, pattern.second, true);
-      ++composited;
+      if (fragmentShader.find(pattern.first) != std::string::npos)
+      {
+        vtkShaderProgram::Substitute(
+          fragmentShader, pattern.first, group.Rename(pattern.second), true);
+        factors = factor;
+      }
     }
   }
-  if (composited == 0)
+  else
   {
-    ClearVolumeMarkers(fragmentShader);
+    // Each group's factor is one less its lights' shadowed shares: the sum of
+    // the groups' factors, less one for each but the first, is the lights'.
+    vtkShaderProgram::Substitute(
+      fragmentShader, factors, "(" + factors + " + " + factor + " - 1.0)", true);
+  }
+  if (factors.empty())
+  {
     return false;
   }
   ReceiverCode volumeCode = code;
   volumeCode.AnalysisFunctions.clear();
-  vtkShaderProgram::Substitute(fragmentShader, VolumeDecMarker,
-    Declarations(lights, layers, volumeCode) + VolumeFactorFunction(lights));
+  PutBeforeMarker(fragmentShader, VolumeDecMarker,
+    group.Rename(Declarations(lights, layers, volumeCode) + VolumeFactorFunction(lights)));
   // The sample's texture coordinates to the camera's view coordinates, once a ray.
-  vtkShaderProgram::Substitute(fragmentShader, VolumeRayMarker,
-    "  vtkShadowVolumeTextureToVC = inverse(vtkShadowViewToWorld) * in_volumeMatrix[0] *\n"
-    "    inverse(ip_inverseTextureDataAdjusted);\n"
-    "  vtkShadowVolumeSamples = 0;\n");
+  PutBeforeMarker(fragmentShader, VolumeRayMarker,
+    group.Rename(
+      "  vtkShadowVolumeTextureToVC = inverse(vtkShadowViewToWorld) * in_volumeMatrix[0] *\n"
+      "    inverse(ip_inverseTextureDataAdjusted);\n"
+      "  vtkShadowVolumeSamples = 0;\n"));
   return true;
 }
 
@@ -461,11 +497,12 @@ void ReceiverUniforms::Pack(const std::vector<ShadowLight>& lights, const glm::d
 //------------------------------------------------------------------------------
 void ReceiverUniforms::NameMembers()
 {
-  const auto name = [](const char* array, std::size_t i, std::initializer_list<const char*> members) {
+  const auto name = [this](const char* array, std::size_t i,
+                      std::initializer_list<const char*> members) {
     std::vector<std::string> names;
     for (const char* member : members)
     {
-      names.push_back(std::string(array) + "[" + std::to_string(i) + "]." + member);
+      names.push_back(array + this->Suffix + "[" + std::to_string(i) + "]." + member);
     }
     return names;
   };
@@ -485,30 +522,38 @@ void ReceiverUniforms::NameMembers()
 }
 
 //------------------------------------------------------------------------------
-bool ReceiverUniforms::IsReceiver(vtkShaderProgram* program)
+bool ReceiverUniforms::IsReceiver(vtkShaderProgram* program, const std::string& suffix)
 {
-  return program->IsUniformUsed("vtkShadowViews[0].ViewToMap");
+  return program->IsUniformUsed(("vtkShadowViews" + suffix + "[0].ViewToMap").c_str());
 }
 
 //------------------------------------------------------------------------------
 void ReceiverUniforms::ApplyTextureUnits(
-  vtkShaderProgram* program, const ReceiverTextureUnits& units)
+  vtkShaderProgram* program, const ReceiverTextureUnits& units, const std::string& suffix)
 {
-  program->SetUniformi("vtkShadowMaps", units.Maps);
+  program->SetUniformi(("vtkShadowMaps" + suffix).c_str(), units.Maps);
   if (units.RawDepths >= 0)
   {
-    program->SetUniformi("vtkShadowDepths", units.RawDepths);
+    program->SetUniformi(("vtkShadowDepths" + suffix).c_str(), units.RawDepths);
   }
   if (units.Transmittances >= 0)
   {
-    program->SetUniformi("vtkShadowTransmittances", units.Transmittances);
+    program->SetUniformi(("vtkShadowTransmittances" + suffix).c_str(), units.Transmittances);
   }
 }
 
 //------------------------------------------------------------------------------
 void ReceiverUniforms::Apply(vtkShaderProgram* program, const ReceiverTextureUnits& units,
-  int resolution, double normalOffset)
+  int resolution, double normalOffset, const std::string& suffix)
 {
+  if (suffix != this->Suffix)
+  {
+    // The maps' group took another place among the pass's groups.
+    this->Suffix = suffix;
+    this->ViewNames.clear();
+    this->LightNames.clear();
+    this->NameMembers();
+  }
   for (std::size_t i = 0; i < this->Views.size(); ++i)
   {
     View& view = this->Views[i];
@@ -539,10 +584,11 @@ void ReceiverUniforms::Apply(vtkShaderProgram* program, const ReceiverTextureUni
       program->SetUniformf(names[9].c_str(), light.Size);
     }
   }
-  ApplyTextureUnits(program, units);
-  program->SetUniformi("vtkShadowReceiving", 1);
-  program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(this->ViewToWorld));
-  program->SetUniformf("vtkShadowMapResolution", static_cast<float>(resolution));
-  program->SetUniformf("vtkShadowNormalOffset", static_cast<float>(normalOffset));
+  ApplyTextureUnits(program, units, suffix);
+  program->SetUniformi(("vtkShadowReceiving" + suffix).c_str(), 1);
+  program->SetUniformMatrix4x4(
+    ("vtkShadowViewToWorld" + suffix).c_str(), glm::value_ptr(this->ViewToWorld));
+  program->SetUniformf(("vtkShadowMapResolution" + suffix).c_str(), static_cast<float>(resolution));
+  program->SetUniformf(("vtkShadowNormalOffset" + suffix).c_str(), static_cast<float>(normalOffset));
 }
 } // namespace shadowmaps

@@ -16,6 +16,7 @@ class vtkShaderProgram;
 
 namespace shadowmaps
 {
+class ShaderGroup;
 struct ShadowLight;
 
 /// The C++ constants the receivers' GLSL shares, as #defines: the view layouts
@@ -52,10 +53,11 @@ public:
   /// Before the mapper's own replacements: markers where the shadow code goes.
   static void MarkInjectionPoints(std::string& fragmentShader);
 
-  /// Scales each light's diffuse and specular (Phong) or radiance (PBR) terms
-  /// by its shadow factor where the mapper generated them, and puts the shadow
-  /// code at the markers. `receives` false, or a shader without per-light code
-  /// (unlit), only loses the markers. `facetDerivatives`: the drawn position is
+  /// Scales each of `group`'s lights' diffuse and specular (Phong) or
+  /// radiance (PBR) terms by its shadow factor where the mapper generated
+  /// them, and puts the group's shadow code before the markers (ClearMarkers
+  /// removes them once every group's is in). `receives` false, or a shader
+  /// without per-light code (unlit), injects nothing. `facetDerivatives`: the drawn position is
   /// the surface's until the lighting (not an impostor's), so its screen
   /// derivatives, taken where VTK keeps control flow uniform, give the facet
   /// (vtkShadowSetReceiverPlane); otherwise the shading normal stands in.
@@ -65,8 +67,8 @@ public:
   /// `ownShare`: the maps hold what this prop lets through where it is
   /// translucent (HoldsItsOwnTransmittance), which its receivers divide out.
   static int Inject(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
-    int layers, const ReceiverCode& code, bool receives, bool facetDerivatives,
-    bool ownShare = false);
+    int layers, const ReceiverCode& code, bool receives, bool facetDerivatives, bool ownShare,
+    const ShaderGroup& group);
 
   /// Before the volume mapper's own replacements (its GPU ray caster's
   /// template): markers where InjectVolume puts its code.
@@ -76,11 +78,22 @@ public:
   /// opaque casters at the sample (taken at every fourth sample of a ray),
   /// light by light in proportion to each shadowed light's share of the
   /// lights' intensity (vtkShadowVolumeLightShares, set per draw): the
-  /// sample's colour, lit or not, is what the volume shows of the light. Without `receives`, or where
-  /// the shader composites no sample (maximum intensity and other blend
-  /// modes), only loses the markers; returns whether it injected.
+  /// sample's colour, lit or not, is what the volume shows of the light.
+  /// `factors`: the call that darkens each sample, which the first group to
+  /// inject makes and the next add their lights' shadowed shares to. Without
+  /// `receives` or lights, or where the shader composites no sample (maximum
+  /// intensity and other blend modes), injects nothing; returns whether it
+  /// injected.
   static bool InjectVolume(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
-    int layers, const ReceiverCode& code, bool receives);
+    int layers, const ReceiverCode& code, bool receives, const ShaderGroup& group,
+    std::string& factors);
+
+  /// What every group's receiver code uses once any group's is in (the
+  /// impostors' drawn size), before the markers are cleared.
+  static void DeclareShared(std::string& fragmentShader);
+
+  /// Removes the surface's and the volume's markers, after the last group's code.
+  static void ClearMarkers(std::string& fragmentShader);
 
   /// A key of everything Inject's result depends on but the shader it patches.
   static std::string Key(const std::vector<ShadowLight>& lights, int layers, const ReceiverCode& code);
@@ -110,15 +123,17 @@ struct ReceiverTextureUnits
 };
 
 /// The uniforms of the receiver functions for one map update: one struct per
-/// view (vtkShadowViews) and per light (vtkShadowLights).
+/// view (vtkShadowViews) and per light (vtkShadowLights), named as the
+/// group of the maps names them (ShaderGroup).
 class ReceiverUniforms
 {
 public:
   /// Packs the lights' views for a camera with view matrix `cameraView`.
   void Pack(const std::vector<ShadowLight>& lights, const glm::dmat4& cameraView);
 
-  /// Whether `program` is a receiver of the shadow code.
-  static bool IsReceiver(vtkShaderProgram* program);
+  /// Whether `program` is a receiver of the shadow code of the group whose
+  /// names end with `suffix`.
+  static bool IsReceiver(vtkShaderProgram* program, const std::string& suffix);
 
   /// Starts a frame: its texture units may differ from the last one's.
   void NewFrame() { this->Programs.Invalidate(); }
@@ -127,12 +142,15 @@ public:
   bool FirstUseThisFrame(vtkShaderProgram* program) { return this->Programs.FirstUse(program); }
 
   /// Sets the packed uniforms, the maps' texture units and resolution and the
-  /// receivers' normal offset (texels).
+  /// receivers' normal offset (texels), named as the group whose names end
+  /// with `suffix` (ShaderGroup) names them.
   void Apply(vtkShaderProgram* program, const ReceiverTextureUnits& units, int resolution,
-    double normalOffset);
+    double normalOffset, const std::string& suffix);
 
-  /// Points the program's samplers at the units (each sampler type its own).
-  static void ApplyTextureUnits(vtkShaderProgram* program, const ReceiverTextureUnits& units);
+  /// Points the samplers of the group whose names end with `suffix` at the
+  /// units (each sampler type its own).
+  static void ApplyTextureUnits(
+    vtkShaderProgram* program, const ReceiverTextureUnits& units, const std::string& suffix);
 
 private:
   struct View
@@ -165,6 +183,7 @@ private:
 
   std::vector<View> Views;
   std::vector<Light> Lights;
+  std::string Suffix;
   glm::mat4 ViewToWorld{ 1.0f };
   /// "vtkShadowViews[i]." and "vtkShadowLights[i]." member names, made once.
   std::vector<std::vector<std::string>> ViewNames;

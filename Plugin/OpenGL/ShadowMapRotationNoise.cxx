@@ -48,11 +48,11 @@ void RotationNoise::Activate(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-void RotationNoise::SetUniform(vtkShaderProgram* program) const
+void RotationNoise::SetUniform(vtkShaderProgram* program, const std::string& nameSuffix) const
 {
   if (this->Active)
   {
-    program->SetUniformi("vtkShadowNoise", this->Active->GetTextureUnit());
+    program->SetUniformi(("vtkShadowNoise" + nameSuffix).c_str(), this->Active->GetTextureUnit());
   }
 }
 

@@ -8,6 +8,7 @@
 #include "vtkTextureObject.h"
 
 #include <map>
+#include <string>
 
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -21,7 +22,7 @@ public:
   /// Binds `window`'s texture (made on first use) to a texture unit.
   void Activate(vtkOpenGLRenderWindow* window);
   /// Points the sampler `vtkShadowNoise` at the active texture's unit.
-  void SetUniform(vtkShaderProgram* program) const;
+  void SetUniform(vtkShaderProgram* program, const std::string& nameSuffix) const;
   void Deactivate();
   void ReleaseGraphicsResources(vtkWindow* window);
 

@@ -57,6 +57,24 @@ vtkOpenGLRenderWindow* WindowOf(vtkOpenGLRenderer* renderer)
   return static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
 }
 
+// Gives each of `lights` the shader index of the light of `collected` it is;
+// whether any changed.
+bool TakeShaderIndices(const std::vector<ShadowLight>& collected, std::vector<ShadowLight>& lights)
+{
+  bool changed = false;
+  for (ShadowLight& light : lights)
+  {
+    auto same = std::find_if(collected.begin(), collected.end(),
+      [&light](const ShadowLight& other) { return other.Light == light.Light; });
+    if (same != collected.end() && same->ShaderIndex != light.ShaderIndex)
+    {
+      light.ShaderIndex = same->ShaderIndex;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
 bool AnyRenders(const std::vector<LayerPlan>& plans)
 {
   return std::any_of(
@@ -88,6 +106,8 @@ bool FrameUpdate::Prepare(
 {
   this->Settings = &settings;
   this->Counts.Steps.Clear();
+  this->Pending = PendingMaps();
+  this->Uniforms.SetGroup(settings.Group);
   {
     const StepTimes::Scope reading(this->Counts.Steps, FrameStep::Reading);
     renderer->UpdateLightsGeometryToFollowCamera();
@@ -104,7 +124,47 @@ bool FrameUpdate::Prepare(
     const StepTimes::Scope shaders(this->Counts.Steps, FrameStep::Shaders);
     this->RebuildShadersOfChangedReceivers(s);
   }
-  const bool ready = this->UpdateMaps(renderer);
+  this->PlanMaps(renderer);
+  // Before any group's casters draw: they share the receivers' programs.
+  this->ReserveTextureUnits(renderer);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void FrameUpdate::Abandon(const std::string& error)
+{
+  this->Pending.Next = PendingMaps::Step::Fail;
+  this->Pending.Error = error;
+}
+
+//------------------------------------------------------------------------------
+bool FrameUpdate::Render(vtkOpenGLRenderer* renderer)
+{
+  PendingMaps pending = std::move(this->Pending);
+  this->Pending = PendingMaps();
+  bool ready = true;
+  if (pending.Next == PendingMaps::Step::Fail)
+  {
+    // Each failure still answers the other processes' question.
+    this->CombineAcrossProcesses(WindowOf(renderer), false);
+    if (!pending.Error.empty())
+    {
+      this->Fail(pending.Error, renderer->GetRenderWindow());
+    }
+    ready = false;
+  }
+  else if (pending.Next == PendingMaps::Step::RenderLayers)
+  {
+    ready = this->RenderMaps(renderer, std::move(pending.Plans));
+    if (ready)
+    {
+      this->FinishMaps(std::move(pending.Signature));
+    }
+    else
+    {
+      this->Fail(this->LastGLError, renderer->GetRenderWindow());
+    }
+  }
   // Lights whose views were not finite are gone by now.
   this->Counts.ShadowedLights = static_cast<int>(this->FrameLights.size());
   return ready;
@@ -126,8 +186,42 @@ void FrameUpdate::CollectLights(vtkOpenGLRenderer* renderer)
     this->Warnings.push_back(warning.str());
   }
   this->WarnedTooManyLights = skipped > 0;
-  this->SettleLightSizes(clamped);
   this->Shares = IntensityShares(renderer, this->FrameLights);
+  this->KeepLightsOfGroup(clamped);
+  this->SettleLightSizes(clamped);
+}
+
+//------------------------------------------------------------------------------
+void FrameUpdate::KeepLightsOfGroup(std::vector<vtkLight*>& clamped)
+{
+  const FrameSettings& settings = *this->Settings;
+  if (settings.Shadows)
+  {
+    clamped.erase(std::remove_if(clamped.begin(), clamped.end(),
+                    [&settings](vtkLight* light) { return !settings.Shadows(light); }),
+      clamped.end());
+  }
+  this->AnalysisLight = -1;
+  std::vector<ShadowLight> kept;
+  std::vector<float> keptShares;
+  for (std::size_t i = 0; i < this->FrameLights.size(); ++i)
+  {
+    if (settings.Shadows && !settings.Shadows(this->FrameLights[i].Light))
+    {
+      continue;
+    }
+    if (static_cast<int>(i) == settings.AnalysisLight)
+    {
+      this->AnalysisLight = static_cast<int>(kept.size());
+    }
+    kept.push_back(std::move(this->FrameLights[i]));
+    if (i < this->Shares.size())
+    {
+      keptShares.push_back(this->Shares[i]);
+    }
+  }
+  this->FrameLights = std::move(kept);
+  this->Shares = std::move(keptShares);
 }
 
 //------------------------------------------------------------------------------
@@ -244,7 +338,7 @@ void FrameUpdate::RebuildShadersOfChangedReceivers(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
+void FrameUpdate::PlanMaps(vtkOpenGLRenderer* renderer)
 {
   const FrameSettings& settings = *this->Settings;
   RendererMaps& maps = this->Maps();
@@ -259,18 +353,22 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
     renderer, settings.ParametersTime(), this->CurrentFrame, this->FrameLights, this->Casters);
   if (!this->Policy.MustRender(maps.Updates, signature))
   {
-    // CollectLights rebuilt the lights without views; the maps hold these.
-    this->FrameLights = maps.Updates.GetRenderedLights();
+    // CollectLights rebuilt the lights without views; the maps hold these,
+    // lit by the mapper as the lights collected now are (switching another
+    // light moves a light's place among the renderer's).
+    std::vector<ShadowLight> rendered = maps.Updates.GetRenderedLights();
+    const bool moved = TakeShaderIndices(this->FrameLights, rendered);
+    this->FrameLights = std::move(rendered);
     this->Counts.Layers = maps.Layers;
     this->CurrentFrame.Resolution = maps.Maps.GetResolution();
     this->Counts.Resolution = this->CurrentFrame.Resolution;
-    if (this->CodeFor != &maps)
+    if (this->CodeFor != &maps || moved)
     {
       // The shaders follow the lights, layers and storage of the renderer
       // they draw for: another renderer's may differ.
       this->UpdateShaders(renderer);
     }
-    return true;
+    return;
   }
 
   // A drag draws whatever layers it must draw coarser (CoarseResolution); the
@@ -296,21 +394,17 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
     ok = ok && this->PrepareLayers(renderer, resolution, spareFor(resolution), error);
     plans = ok ? this->PlanLayers() : std::vector<LayerPlan>();
   }
-  if (!ok)
-  {
-    // Each failure still answers the other processes' question.
-    this->CombineAcrossProcesses(WindowOf(renderer), false);
-    if (!error.empty())
-    {
-      this->Fail(error, renderer->GetRenderWindow());
-    }
-    return false;
-  }
-  if (!this->RenderMaps(renderer, std::move(plans)))
-  {
-    this->Fail(this->LastGLError, renderer->GetRenderWindow());
-    return false;
-  }
+  this->Pending.Next = ok ? PendingMaps::Step::RenderLayers : PendingMaps::Step::Fail;
+  this->Pending.Plans = std::move(plans);
+  this->Pending.Signature = std::move(signature);
+  this->Pending.Error = std::move(error);
+}
+
+//------------------------------------------------------------------------------
+void FrameUpdate::FinishMaps(std::vector<vtkMTimeType> signature)
+{
+  const FrameSettings& settings = *this->Settings;
+  RendererMaps& maps = this->Maps();
   if (!NeedsSecondOutput(maps.Storage, this->MapCombination(), this->FrameLights))
   {
     maps.Maps.ReleaseSecondOutput();
@@ -326,7 +420,6 @@ bool FrameUpdate::UpdateMaps(vtkOpenGLRenderer* renderer)
   this->Counts.Resolution = this->CurrentFrame.Resolution;
   this->WarnedGLError.clear();
   ++this->Counts.Updates;
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -504,13 +597,14 @@ void FrameUpdate::UpdateShaders(vtkOpenGLRenderer* renderer)
   const FrameSettings& settings = *this->Settings;
   ShaderChoices choices;
   choices.CasterFaces = settings.CasterFaces;
-  choices.AnalysisView = settings.RecolouringAnalysisView;
-  choices.AnalysisLight = settings.AnalysisLight;
+  // Another group's light is analysed: no analysis code here.
+  choices.AnalysisView = this->AnalysisLight >= 0 ? settings.RecolouringAnalysisView : 0;
+  choices.AnalysisLight = std::max(this->AnalysisLight, 0);
   static_assert(ChosenViewsAnalysis == vtkAbstractShadowMapPass::CHOSEN_VIEWS, "one value");
-  if (settings.RecolouringAnalysisView == ChosenViewsAnalysis &&
-    settings.AnalysisLight < static_cast<int>(this->FrameLights.size()))
+  if (choices.AnalysisView == ChosenViewsAnalysis &&
+    this->AnalysisLight < static_cast<int>(this->FrameLights.size()))
   {
-    const ShadowLight& analysed = this->FrameLights[settings.AnalysisLight];
+    const ShadowLight& analysed = this->FrameLights[this->AnalysisLight];
     choices.AnalysisViewsKind = settings.ViewsOf(analysed.Light)->GetKindName(analysed);
   }
   choices.KeepsLightDepths = this->MapCombination() == Combination::NearestLightDepths;
@@ -518,8 +612,8 @@ void FrameUpdate::UpdateShaders(vtkOpenGLRenderer* renderer)
   if (this->Code.Update(this->Maps().Storage, settings.Representation, this->FrameLights,
         this->Counts.Layers, choices))
   {
-    this->CodeCompiles =
-      this->Code.Compiles(WindowOf(renderer), this->FrameLights, this->Counts.Layers);
+    this->CodeCompiles = !settings.ProbesShaders ||
+      PassShaders::Compiles(WindowOf(renderer), { this->ShaderCode() });
   }
 }
 

@@ -69,7 +69,16 @@ struct FrameSettings
 {
   /// The views each light gets: its own, or the pass's.
   std::function<vtkShadowMapViews*(vtkLight*)> ViewsOf;
+  /// The representation of this update's maps, and the lights they shadow
+  /// (empty: all): a pass whose lights use several representations has an
+  /// update, a group of maps, for each.
   vtkShadowMapRepresentation* Representation = nullptr;
+  std::function<bool(vtkLight*)> Shadows;
+  /// The group's index: its names in the shaders (ShaderGroup).
+  int Group = 0;
+  /// Whether the update tries its shader code on a probe program before the
+  /// mappers build it; false where the pass tries every group's together.
+  bool ProbesShaders = true;
   vtkShadowMapExchange* Exchange = nullptr;
   /// The pass's modification time, its strategies' included: a change
   /// re-renders the maps. Asked at each step that reads it, as a strategy
@@ -129,11 +138,19 @@ public:
   /// Makes `renderer`'s maps (and its camera's eye's) the current ones.
   void SelectRenderer(vtkOpenGLRenderer* renderer);
 
-  /// The frame's shadows for the current renderer: its lights, casters and
-  /// camera collected and, where anything they depend on changed, its maps
-  /// rendered. Whether the frame has shadows (false: no shadowed light, or a
-  /// failure, warned).
+  /// The frame's shadows for the current renderer, in two steps, so that
+  /// every group's texture units are reserved before any group's casters
+  /// draw (they share programs). Prepare collects its lights, casters and
+  /// camera and, where anything they depend on changed, makes ready to render
+  /// its maps; false: no light to shadow, and nothing to render. Render then
+  /// renders them, and whether the frame has shadows (false: a failure,
+  /// warned). Every process of a parallel renderer makes the same collective
+  /// calls in each step.
   bool Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s, const FrameSettings& settings);
+  bool Render(vtkOpenGLRenderer* renderer);
+  /// Between Prepare and Render: the maps are not rendered, and Render
+  /// fails with `error` (still answering the other processes).
+  void Abandon(const std::string& error);
 
   /// Binds the maps for the receivers of the frame just prepared.
   void BindForReceivers(vtkOpenGLRenderer* renderer);
@@ -154,6 +171,10 @@ public:
   const RendererMaps& Maps() const { return *this->Renderers.Current(); }
   const ShadowFrame& Frame() const { return this->CurrentFrame; }
   const PassShaders& Shaders() const { return this->Code; }
+  /// This group's share of the mappers' shaders.
+  GroupCode ShaderCode() const { return { &this->Code, &this->FrameLights, this->Counts.Layers }; }
+  /// The analysis view's light among Lights(); -1 when another group's.
+  int AnalysedLight() const { return this->AnalysisLight; }
   ProgramUniforms& Programs() { return this->Uniforms; }
   ReceiverTextures& Textures() { return this->Units; }
   /// Each shadowed light's share of the lights' intensity (volumes that receive).
@@ -172,10 +193,16 @@ public:
 
 private:
   void CollectLights(vtkOpenGLRenderer* renderer);
+  /// Keeps the lights of this update's group (FrameSettings::Shadows), and
+  /// of `clamped` (lights whose size was clamped) those.
+  void KeepLightsOfGroup(std::vector<vtkLight*>& clamped);
   void SettleLightSizes(const std::vector<vtkLight*>& clamped);
   void CollectCastersAndCamera(vtkOpenGLRenderer* renderer);
   void RebuildShadersOfChangedReceivers(const vtkRenderState* s);
-  bool UpdateMaps(vtkOpenGLRenderer* renderer);
+  /// Prepare's part once the scene is read: what must be rendered, in Pending.
+  void PlanMaps(vtkOpenGLRenderer* renderer);
+  /// After the layers were rendered: what the maps now hold.
+  void FinishMaps(std::vector<vtkMTimeType> signature);
   int UsableResolution();
   /// The maps' resolution when a drag must draw layers: `still` scaled by
   /// InteractiveResolutionScale, not below 64.
@@ -219,6 +246,24 @@ private:
   const FrameSettings* Settings = nullptr;
   ShadowFrame CurrentFrame;
   std::vector<ShadowLight> FrameLights;
+  /// The analysis view's light among FrameLights; -1 when another group's.
+  int AnalysisLight = -1;
+  /// What Prepare left Render to do.
+  struct PendingMaps
+  {
+    enum class Step
+    {
+      Nothing,
+      RenderLayers,
+      Fail
+    };
+    Step Next = Step::Nothing;
+    std::vector<LayerPlan> Plans;
+    std::vector<vtkMTimeType> Signature;
+    /// Fail: the failure to warn of (none where no light had usable views).
+    std::string Error;
+  };
+  PendingMaps Pending;
   std::vector<Caster> Casters;
   bool SceneCameraParallel = false;
   /// Whether this process's casters (or, with an exchange, any process's)

@@ -1,5 +1,7 @@
 #include "ShadowMapPassShaders.h"
 
+#include "ShadowMapShaderGroup.h"
+
 #include "ShadowMapAnalysis.h"
 #include "ShadowMapImpostors.h"
 #include "ShadowMapStorageChoice.h"
@@ -11,6 +13,7 @@
 #include "vtkOpenGLShaderCache.h"
 
 #include <algorithm>
+#include <set>
 
 #include <utility>
 
@@ -68,30 +71,90 @@ void PassShaders::MarkInjectionPoints(std::string& fragmentShader)
 }
 
 //------------------------------------------------------------------------------
+std::vector<ShaderGroup> PassShaders::Groups(
+  const std::vector<GroupCode>& groups, const std::string& fragmentShader, Impostors sized)
+{
+  // What the mapper's shader holds before any group's code, and the
+  // impostors' declarations group 0 makes, are every group's.
+  std::set<std::string> shared = ShadowNamesIn(fragmentShader);
+  for (const std::string& code :
+    { ImpostorShader::CasterDeclarations(sized), ImpostorShader::ReceiverDeclarations(fragmentShader) })
+  {
+    const std::set<std::string> names = ShadowNamesIn(code);
+    shared.insert(names.begin(), names.end());
+  }
+  std::vector<ShaderGroup> named;
+  for (std::size_t g = 0; g < groups.size(); ++g)
+  {
+    named.emplace_back(static_cast<int>(g));
+    named.back().ShareNames(shared);
+  }
+  return named;
+}
+
+//------------------------------------------------------------------------------
 CasterBranch PassShaders::Inject(std::string& vertexShader, std::string& geometryShader,
-  std::string& fragmentShader, const std::vector<ShadowLight>& lights, int layers, bool receives,
-  int& unpatched, bool ownShare) const
+  std::string& fragmentShader, const std::vector<GroupCode>& groups, bool receives,
+  int& unpatched, bool ownShare)
 {
   const Impostors sized = ImpostorShader::Size(vertexShader, geometryShader, fragmentShader);
-  const CasterBranch branch = CasterShader::Inject(fragmentShader, this->Casters, sized);
+  const std::vector<ShaderGroup> named = Groups(groups, fragmentShader, sized);
+  const std::string mapperShader = fragmentShader;
+  CasterBranch branch = CasterBranch::DepthOnly;
+  for (std::size_t g = 0; g < groups.size(); ++g)
+  {
+    branch = CasterShader::Inject(
+      fragmentShader, mapperShader, groups[g].Code->Casters, sized, named[g]);
+  }
+  CasterShader::ClearMarkers(fragmentShader);
   for (std::string* stage : { &vertexShader, &geometryShader, &fragmentShader })
   {
     CasterShader::RouteCameraParallel(*stage);
   }
-  unpatched += ReceiverShader::Inject(fragmentShader, lights, layers, this->Receivers, receives,
-    branch == CasterBranch::DepthOnly, ownShare);
+  const std::string withoutReceivers = fragmentShader;
+  for (std::size_t g = 0; g < groups.size(); ++g)
+  {
+    unpatched += ReceiverShader::Inject(fragmentShader, *groups[g].Lights, groups[g].Layers,
+      groups[g].Code->Receivers, receives, branch == CasterBranch::DepthOnly, ownShare, named[g]);
+  }
+  if (fragmentShader != withoutReceivers)
+  {
+    ReceiverShader::DeclareShared(fragmentShader);
+  }
+  ReceiverShader::ClearMarkers(fragmentShader);
   return branch;
 }
 
 //------------------------------------------------------------------------------
-bool PassShaders::Compiles(
-  vtkOpenGLRenderWindow* window, const std::vector<ShadowLight>& lights, int layers) const
+bool PassShaders::InjectVolume(
+  std::string& fragmentShader, const std::vector<GroupCode>& groups, bool receives)
 {
+  const std::vector<ShaderGroup> named = Groups(groups, fragmentShader, Impostors::None);
+  bool injected = false;
+  std::string factors;
+  for (std::size_t g = 0; g < groups.size(); ++g)
+  {
+    injected = ReceiverShader::InjectVolume(fragmentShader, *groups[g].Lights, groups[g].Layers,
+                 groups[g].Code->Receivers, receives, named[g], factors) ||
+      injected;
+  }
+  ReceiverShader::ClearMarkers(fragmentShader);
+  return injected;
+}
+
+//------------------------------------------------------------------------------
+bool PassShaders::Compiles(vtkOpenGLRenderWindow* window, const std::vector<GroupCode>& groups)
+{
+  std::vector<ShadowLight> lights;
+  for (const GroupCode& group : groups)
+  {
+    lights.insert(lights.end(), group.Lights->begin(), group.Lights->end());
+  }
   ProbeShaders probe = MakeProbeShaders(lights);
   std::string geometryShader;
   MarkInjectionPoints(probe.Fragment);
   int unpatched = 0;
-  this->Inject(probe.Vertex, geometryShader, probe.Fragment, lights, layers, true, unpatched);
+  Inject(probe.Vertex, geometryShader, probe.Fragment, groups, true, unpatched);
   return window->GetShaderCache()->ReadyShaderProgram(
            probe.Vertex.c_str(), probe.Fragment.c_str(), "") != nullptr;
 }

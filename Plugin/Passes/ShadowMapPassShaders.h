@@ -3,12 +3,15 @@
 // rebuild their shaders, and the injection itself. The receivers and casters
 // share one program per mapper primitive (vtkShadowMapsCasterFS.glsl), so the
 // key changes only with the lights' layouts, the layers and the storage, never
-// with the camera. Not a VTK class.
+// with the camera. Where lights use several representations, each has its
+// group of maps and its PassShaders, and every group's code goes into the
+// same shaders under names of its own (ShaderGroup). Not a VTK class.
 #ifndef ShadowMapPassShaders_h
 #define ShadowMapPassShaders_h
 
 #include "ShadowMapCasterShader.h"   // For CasterCode, CasterBranch
 #include "ShadowMapReceiverShader.h" // For ReceiverCode
+#include "ShadowMapShaderGroup.h"    // For ShaderGroup
 
 #include "vtkAbstractShadowMapPass.h" // For CasterFacesType
 #include "vtkTimeStamp.h"
@@ -40,48 +43,63 @@ struct ShaderChoices
   bool KeepsLightDepths = false;
 };
 
+class PassShaders;
+
+/// One group's share of the mappers' shaders: its code, and the lights and
+/// layers of its maps. The group's names are ShaderGroup(index in the list)'s.
+struct GroupCode
+{
+  const PassShaders* Code = nullptr;
+  const std::vector<ShadowLight>* Lights = nullptr;
+  int Layers = 0;
+};
+
 class PassShaders
 {
 public:
   PassShaders() { this->KeyTime.Modified(); }
 
   /// Makes the code for maps of `storage`, read as `representation` says, of
-  /// `lights` in `layers` layers. True when the key changed: the mappers
-  /// then rebuild their shaders (GetKeyTime).
+  /// `lights` in `layers` layers. True when the key changed: the mappers then
+  /// rebuild their shaders (GetKeyTime).
   bool Update(const MapStorage& storage, vtkShadowMapRepresentation* representation,
     const std::vector<ShadowLight>& lights, int layers, const ShaderChoices& choices);
 
   /// When the key last changed (vtkOpenGLRenderPass::GetShaderStageMTime).
   vtkMTimeType GetKeyTime() const { return this->KeyTime.GetMTime(); }
 
-  /// Puts the code into a mapper's shaders, which hold the injection points
-  /// (MarkInjectionPoints). Adds to `unpatched` the receiving lights the
-  /// mapper lit in code this module cannot patch. `receives` false: the
-  /// casters' branch only. `ownShare`: ReceiverShader::Inject's.
-  CasterBranch Inject(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, const std::vector<ShadowLight>& lights, int layers,
-    bool receives, int& unpatched, bool ownShare = false) const;
+  /// The key of the code.
+  const std::string& GetKey() const { return this->Key; }
 
-  /// Puts the receivers' code into a volume mapper's ray caster
+  /// Puts every group's code into a mapper's shaders, which hold the
+  /// injection points (MarkInjectionPoints). Adds to `unpatched` the
+  /// receiving lights the mapper lit in code this module cannot patch.
+  /// `receives` false: the casters' branches only. `ownShare`:
+  /// ReceiverShader::Inject's.
+  static CasterBranch Inject(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, const std::vector<GroupCode>& groups, bool receives,
+    int& unpatched, bool ownShare = false);
+
+  /// Puts every group's receivers' code into a volume mapper's ray caster
   /// (ReceiverShader::InjectVolume); volumes cast by being marched, not drawn.
-  bool InjectVolume(std::string& fragmentShader, const std::vector<ShadowLight>& lights,
-    int layers, bool receives) const
-  {
-    return ReceiverShader::InjectVolume(fragmentShader, lights, layers, this->Receivers, receives);
-  }
+  static bool InjectVolume(
+    std::string& fragmentShader, const std::vector<GroupCode>& groups, bool receives);
 
   /// Marks where Inject and InjectVolume put their code, before the mapper's
   /// own replacements.
   static void MarkInjectionPoints(std::string& fragmentShader);
 
-  /// Whether the current code compiles in `window`, tried on a probe program:
-  /// VTK 9.1's mappers crash on a program that fails to build.
-  bool Compiles(vtkOpenGLRenderWindow* window, const std::vector<ShadowLight>& lights,
-    int layers) const;
+  /// Whether the groups' code compiles in `window`, tried on a probe
+  /// program: VTK 9.1's mappers crash on a program that fails to build.
+  static bool Compiles(vtkOpenGLRenderWindow* window, const std::vector<GroupCode>& groups);
 
   const CasterCode& GetCasterCode() const { return this->Casters; }
 
 private:
+  /// The groups' names in a mapper's fragment shader before their code goes in.
+  static std::vector<ShaderGroup> Groups(
+    const std::vector<GroupCode>& groups, const std::string& fragmentShader, Impostors sized);
+
   ReceiverCode Receivers;
   CasterCode Casters;
   std::string Key;

@@ -32,6 +32,17 @@ glm::dmat4 WindowToWorld(const LightView& view, int resolution)
 } // namespace
 
 //------------------------------------------------------------------------------
+void ProgramUniforms::SetGroup(int index)
+{
+  if (index != this->Group.Index())
+  {
+    this->Group = ShaderGroup(index);
+    this->Casters.SetGroup(index);
+    this->Clear();
+  }
+}
+
+//------------------------------------------------------------------------------
 void ProgramUniforms::SetCastingView(const ShadowLight& light, const LightView& view,
   const ShadowFrame& frame, const CastingSettings& settings)
 {
@@ -114,13 +125,31 @@ void ProgramUniforms::Casting(vtkShaderProgram* program, const ReceiverTextureUn
   }
   this->CastSinceSceneDraw.insert(program);
   this->Casters.ApplyCasting(program);
-  SetFloatUniforms(program, this->StoreUniforms);
-  if (ReceiverUniforms::IsReceiver(program))
+  const std::string& suffix = this->Group.Suffix();
+  SetFloatUniforms(program, this->StoreUniforms, suffix);
+  if (ReceiverUniforms::IsReceiver(program, suffix))
   {
     // Not sampled while casting, but a sampler must not share a unit with
     // one of another type.
-    ReceiverUniforms::ApplyTextureUnits(program, units);
-    representation->SetReceiverUniforms(program);
+    ReceiverUniforms::ApplyTextureUnits(program, units, suffix);
+    representation->SetReceiverUniforms(program, suffix);
+  }
+}
+
+//------------------------------------------------------------------------------
+void ProgramUniforms::WhileOthersCast(vtkShaderProgram* program,
+  const ReceiverTextureUnits& units, vtkShadowMapRepresentation* representation)
+{
+  if (!this->OthersCastingPrograms.FirstUse(program))
+  {
+    return;
+  }
+  this->Casters.ApplyPeelUnit(program);
+  const std::string& suffix = this->Group.Suffix();
+  if (ReceiverUniforms::IsReceiver(program, suffix))
+  {
+    ReceiverUniforms::ApplyTextureUnits(program, units, suffix);
+    representation->SetReceiverUniforms(program, suffix);
   }
 }
 
@@ -145,10 +174,11 @@ void ProgramUniforms::Receiving(vtkShaderProgram* program, RendererMaps& maps,
     // sharing the program left them in its camera's frame.
     program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
   }
-  if (ReceiverUniforms::IsReceiver(program))
+  const std::string& suffix = this->Group.Suffix();
+  if (ReceiverUniforms::IsReceiver(program, suffix))
   {
-    maps.Uniforms.Apply(program, units, resolution, normalOffset);
-    representation->SetReceiverUniforms(program);
+    maps.Uniforms.Apply(program, units, resolution, normalOffset, suffix);
+    representation->SetReceiverUniforms(program, suffix);
   }
 }
 
@@ -165,11 +195,12 @@ void ProgramUniforms::DrawnWithoutThePass(vtkShaderProgram* program,
   // last lighting; the pass's renderer sent its own since.
   program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
   this->LastDrawnFor[program] = nullptr;
-  if (ReceiverUniforms::IsReceiver(program))
+  const std::string& suffix = this->Group.Suffix();
+  if (ReceiverUniforms::IsReceiver(program, suffix))
   {
-    ReceiverUniforms::ApplyTextureUnits(program, units);
-    representation->SetReceiverUniforms(program);
-    program->SetUniformi("vtkShadowReceiving", 0);
+    ReceiverUniforms::ApplyTextureUnits(program, units, suffix);
+    representation->SetReceiverUniforms(program, suffix);
+    program->SetUniformi(("vtkShadowReceiving" + suffix).c_str(), 0);
   }
 }
 
@@ -187,6 +218,7 @@ void ProgramUniforms::Clear()
 {
   this->CasterPrograms.Clear();
   this->ElsewherePrograms.Clear();
+  this->OthersCastingPrograms.Clear();
   this->CastSinceSceneDraw.clear();
   this->LastDrawnFor.clear();
 }

@@ -45,6 +45,9 @@ struct CastingSettings
 class ProgramUniforms
 {
 public:
+  /// The group of maps whose shadow code these uniforms are for (ShaderGroup).
+  void SetGroup(int index);
+
   /// The casters' uniforms, and the GL polygon offset, for drawing into
   /// `view` of `light`: every program takes them on its next caster draw.
   void SetCastingView(const ShadowLight& light, const LightView& view, const ShadowFrame& frame,
@@ -63,6 +66,12 @@ public:
   void Casting(vtkShaderProgram* program, const ReceiverTextureUnits& units,
     vtkShadowMapRepresentation* representation);
 
+  /// Before a caster draw with `program` into another group's maps: this
+  /// group's samplers on units of their own (a sampler sharing a unit with
+  /// one of another type fails the draw). Once per program and frame.
+  void WhileOthersCast(vtkShaderProgram* program, const ReceiverTextureUnits& units,
+    vtkShadowMapRepresentation* representation);
+
   /// Before a scene draw with `program`, shaded with `maps`.
   void Receiving(vtkShaderProgram* program, RendererMaps& maps, const ReceiverTextureUnits& units,
     int resolution,
@@ -76,7 +85,11 @@ public:
     vtkShadowMapRepresentation* representation);
 
   /// A frame of the pass's ended: the programs it drew with hold its uniforms.
-  void EndFrame() { this->ElsewherePrograms.Invalidate(); }
+  void EndFrame()
+  {
+    this->ElsewherePrograms.Invalidate();
+    this->OthersCastingPrograms.Invalidate();
+  }
 
   /// `maps` are going: no program was last drawn for them.
   void Forget(const RendererMaps* maps);
@@ -90,6 +103,9 @@ private:
   ProgramStamps CasterPrograms;
   /// Programs set up for other renderers' draws since the pass's last frame.
   ProgramStamps ElsewherePrograms;
+  /// Programs set up for other groups' caster draws in this frame.
+  ProgramStamps OthersCastingPrograms;
+  ShaderGroup Group;
   /// Programs the casters drew with since the scene last did.
   std::unordered_set<vtkShaderProgram*> CastSinceSceneDraw;
   /// The maps each program last shaded with.

@@ -33,6 +33,14 @@ class StepTimes
 public:
   void Clear() { this->Milliseconds.fill(0.0); }
   double Get(FrameStep step) const { return this->Milliseconds[Index(step)]; }
+  /// Adds another's times, step by step.
+  void Add(const StepTimes& other)
+  {
+    for (std::size_t i = 0; i < this->Milliseconds.size(); ++i)
+    {
+      this->Milliseconds[i] += other.Milliseconds[i];
+    }
+  }
 
   /// Adds the time from its making to its end to `step`.
   class Scope

@@ -3,6 +3,8 @@
 #include "ShadowMapAnalysis.h"
 #include "ShadowMapCasting.h"
 #include "ShadowMapFrameUpdate.h"
+#include "ShadowMapGroups.h"
+#include "ShadowMapPerLight.h"
 #include "ShadowMapImpostors.h"
 #include "ShadowMapPropJoining.h"
 #include "ShadowMapPropRoles.h"
@@ -65,25 +67,23 @@ struct vtkAbstractShadowMapPass::Internals
   vtkSmartPointer<vtkShadowMapRepresentation> DefaultRepresentation;
   vtkSmartPointer<vtkShadowMapViews> Views;
   vtkSmartPointer<vtkShadowMapRepresentation> Representation;
-  // The lights with views of their own (SetLightViews).
-  std::vector<std::pair<vtkWeakPointer<vtkLight>, vtkSmartPointer<vtkShadowMapViews>>> LightViews;
+  // The lights with views or a representation of their own.
+  shadowmaps::PerLight<vtkShadowMapViews> LightViews;
+  shadowmaps::PerLight<vtkShadowMapRepresentation> LightRepresentations;
 
   // Forgets the lights deleted since: whether it forgot any (the pass is
-  // then modified, so that no new light at a deleted one's address keeps the
-  // views that light's strategy fitted).
+  // then modified, so that no new light at a deleted one's address keeps
+  // what the deleted one's strategies fitted).
   bool ForgetDeletedLights()
   {
-    auto deleted = [](const auto& entry) { return !entry.first; };
-    const auto kept = std::remove_if(this->LightViews.begin(), this->LightViews.end(), deleted);
-    const bool forgot = kept != this->LightViews.end();
-    this->LightViews.erase(kept, this->LightViews.end());
-    return forgot;
+    const bool views = this->LightViews.ForgetDeleted();
+    return this->LightRepresentations.ForgetDeleted() || views;
   }
 
-  // The settings of a renderer's frame, and what renders its maps (which
-  // reads them until it is destroyed).
+  // The settings of a renderer's frame, and what renders its maps, a group
+  // per representation in use (which reads them until it is destroyed).
   shadowmaps::FrameSettings Settings;
-  shadowmaps::FrameUpdate Update;
+  shadowmaps::MapGroups Groups;
 
   // What draws the scene.
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
@@ -218,29 +218,9 @@ void vtkAbstractShadowMapPass::SetLightViews(vtkLight* light, vtkShadowMapViews*
     return;
   }
   Internals& r = *this->Internal;
-  if (r.ForgetDeletedLights())
+  const bool forgot = r.ForgetDeletedLights();
+  if (r.LightViews.Set(light, views) || forgot)
   {
-    this->Modified();
-  }
-  auto entry = std::find_if(r.LightViews.begin(), r.LightViews.end(),
-    [light](const auto& candidate) { return candidate.first == light; });
-  if (!views)
-  {
-    if (entry != r.LightViews.end())
-    {
-      r.LightViews.erase(entry);
-      this->Modified();
-    }
-    return;
-  }
-  if (entry == r.LightViews.end())
-  {
-    r.LightViews.emplace_back(light, views);
-    this->Modified();
-  }
-  else if (entry->second != views)
-  {
-    entry->second = views;
     this->Modified();
   }
 }
@@ -248,14 +228,38 @@ void vtkAbstractShadowMapPass::SetLightViews(vtkLight* light, vtkShadowMapViews*
 //------------------------------------------------------------------------------
 vtkShadowMapViews* vtkAbstractShadowMapPass::GetLightViews(vtkLight* light)
 {
-  for (const auto& entry : this->Internal->LightViews)
+  vtkShadowMapViews* own = this->Internal->LightViews.Get(light);
+  return own ? own : this->Internal->Views.Get();
+}
+
+//------------------------------------------------------------------------------
+void vtkAbstractShadowMapPass::SetLightRepresentation(
+  vtkLight* light, vtkShadowMapRepresentation* representation)
+{
+  if (!light)
   {
-    if (light && entry.first == light)
-    {
-      return entry.second;
-    }
+    vtkWarningMacro(<< "SetLightRepresentation: no light given; nothing changes.");
+    return;
   }
-  return this->Internal->Views;
+  Internals& r = *this->Internal;
+  const bool forgot = r.ForgetDeletedLights();
+  if (r.LightRepresentations.Set(light, representation) || forgot)
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkShadowMapRepresentation* vtkAbstractShadowMapPass::GetLightRepresentation(vtkLight* light)
+{
+  vtkShadowMapRepresentation* own = this->Internal->LightRepresentations.Get(light);
+  return own ? own : this->Internal->Representation.Get();
+}
+
+//------------------------------------------------------------------------------
+int vtkAbstractShadowMapPass::GetNumberOfRepresentationsInUse()
+{
+  return this->Internal->Groups.Count();
 }
 
 //------------------------------------------------------------------------------
@@ -316,61 +320,58 @@ vtkShadowMapRepresentation* vtkAbstractShadowMapPass::GetRepresentation()
 //------------------------------------------------------------------------------
 vtkMTimeType vtkAbstractShadowMapPass::GetMTime()
 {
-  vtkMTimeType time = std::max({ this->Superclass::GetMTime(),
-    this->Internal->Views->GetMTime(), this->Internal->Representation->GetMTime() });
-  for (const auto& entry : this->Internal->LightViews)
-  {
-    time = entry.first ? std::max(time, entry.second->GetMTime()) : time;
-  }
-  return time;
+  const Internals& r = *this->Internal;
+  const vtkMTimeType time = std::max(
+    { this->Superclass::GetMTime(), r.Views->GetMTime(), r.Representation->GetMTime() });
+  return r.LightRepresentations.LatestMTime(r.LightViews.LatestMTime(time));
 }
 
 //------------------------------------------------------------------------------
 size_t vtkAbstractShadowMapPass::GetShadowMapMemory() const
 {
-  return this->Internal->Update.MemoryBytes();
+  return this->Internal->Groups.MemoryBytes();
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfShadowedLights() const
 {
-  return this->Internal->Update.Statistics().ShadowedLights;
+  return this->Internal->Groups.Statistics().ShadowedLights;
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfShadowMapLayers() const
 {
-  return this->Internal->Update.Statistics().Layers;
+  return this->Internal->Groups.Statistics().Layers;
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfNonFiniteViews() const
 {
-  return this->Internal->Update.Statistics().NonFiniteViews;
+  return this->Internal->Groups.Statistics().NonFiniteViews;
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfShadowMapUpdates() const
 {
-  return this->Internal->Update.Statistics().Updates;
+  return this->Internal->Groups.Statistics().Updates;
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfCasterDraws() const
 {
-  return this->Internal->Update.Statistics().CasterDraws;
+  return this->Internal->Groups.Statistics().CasterDraws;
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetShadowMapResolution() const
 {
-  return this->Internal->Update.Statistics().Resolution;
+  return this->Internal->Groups.Statistics().Resolution;
 }
 
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfRenderedLayers() const
 {
-  return this->Internal->Update.Statistics().RenderedLayers;
+  return this->Internal->Groups.Statistics().RenderedLayers;
 }
 
 //------------------------------------------------------------------------------
@@ -382,7 +383,7 @@ double vtkAbstractShadowMapPass::GetFrameStepMilliseconds(int step) const
   {
     return 0.0;
   }
-  return this->Internal->Update.Statistics().Steps.Get(static_cast<shadowmaps::FrameStep>(step));
+  return this->Internal->Groups.Statistics().Steps.Get(static_cast<shadowmaps::FrameStep>(step));
 }
 
 //------------------------------------------------------------------------------
@@ -396,7 +397,7 @@ const char* vtkAbstractShadowMapPass::GetFrameStepName(int step)
 //------------------------------------------------------------------------------
 int vtkAbstractShadowMapPass::GetNumberOfCasterPassesPerLayer() const
 {
-  return this->Internal->Update.Statistics().CasterPassesPerLayer;
+  return this->Internal->Groups.Statistics().CasterPassesPerLayer;
 }
 
 //------------------------------------------------------------------------------
@@ -408,7 +409,7 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
     this->DelegatePass ? this->DelegatePass : this->Internal->DefaultDelegate.Get();
 
   Internals& r = *this->Internal;
-  r.Update.ClearFrameStatistics();
+  r.Groups.ClearFrameStatistics();
   r.Active = false;
   if (renderer)
   {
@@ -430,7 +431,7 @@ void vtkAbstractShadowMapPass::Render(const vtkRenderState* s)
   if (r.Active)
   {
     this->JoinRenderPasses(s->GetPropArray(), s->GetPropArrayCount());
-    r.Update.BindForReceivers(renderer);
+    r.Groups.BindForReceivers(renderer);
   }
   else
   {
@@ -490,14 +491,14 @@ void vtkAbstractShadowMapPass::UseContextOf(vtkOpenGLRenderer* renderer)
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::SelectRendererMaps(vtkOpenGLRenderer* renderer)
 {
-  this->Internal->Update.SelectRenderer(renderer);
+  this->Internal->Groups.SelectRenderer(renderer);
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  if (!r.Context || !r.Update.HoldsMapsOf(renderer))
+  if (!r.Context || !r.Groups.HoldsMapsOf(renderer))
   {
     return; // released with the context it was moved from, or never drawn
   }
@@ -509,8 +510,8 @@ void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
   {
     window->PushContext();
   }
-  r.Update.ReleaseMapsOf(renderer, window);
-  if (r.Update.HoldsNoMaps())
+  r.Groups.ReleaseMapsOf(renderer, window);
+  if (r.Groups.HoldsNoMaps())
   {
     // No renderer draws through the pass any more: it holds nothing.
     this->ReleaseGraphicsResources(window);
@@ -566,7 +567,7 @@ void vtkAbstractShadowMapPass::EndFrame(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   r.Joining.EndFrame(renderer);
-  r.Update.Programs().EndFrame();
+  r.Groups.EndFrame();
   if (!r.Joining.KeepsAny())
   {
     this->ReleaseTextureUnits(renderer);
@@ -599,7 +600,12 @@ bool vtkAbstractShadowMapPass::PrepareShadows(vtkOpenGLRenderer* renderer, const
   const bool recolours = this->AnalysisView != NO_ANALYSIS && this->AnalysisView != SHADOW_MAP;
   settings.RecolouringAnalysisView = recolours ? this->AnalysisView : 0;
   settings.AnalysisLight = this->AnalysisLight;
-  const bool ready = r.Update.Prepare(renderer, s, settings);
+  std::vector<vtkShadowMapRepresentation*> assigned{ r.Representation };
+  r.LightRepresentations.ForEachValue(
+    [&assigned](vtkShadowMapRepresentation* own) { assigned.push_back(own); });
+  const bool ready = r.Groups.Prepare(
+    renderer, s, settings,
+    [this](vtkLight* light) { return this->GetLightRepresentation(light); }, assigned);
   this->WarnAboutUpdate();
   return ready;
 }
@@ -616,7 +622,7 @@ int vtkAbstractShadowMapPass::GetLayerResolution()
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::WarnAboutUpdate()
 {
-  for (const std::string& warning : this->Internal->Update.TakeWarnings())
+  for (const std::string& warning : this->Internal->Groups.TakeWarnings())
   {
     vtkWarningMacro(<< warning);
   }
@@ -627,7 +633,7 @@ void vtkAbstractShadowMapPass::ReleaseTextureUnits(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  r.Update.Textures().Release(window, r.Representation);
+  r.Groups.ReleaseTextureUnits(window);
 }
 
 //------------------------------------------------------------------------------
@@ -645,9 +651,7 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
   std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   using shadowmaps::ReceiverRole;
-  const shadowmaps::FrameUpdate& update = this->Internal->Update;
-  const shadowmaps::PassShaders& shaders = update.Shaders();
-  const int layers = update.Statistics().Layers;
+  const std::vector<shadowmaps::GroupCode> code = this->Internal->Groups.ShaderCode();
   ++this->NumberOfShaderBuilds;
   // Shaders first built by a caster draw are the ones the scene then uses; a
   // renderer drawing a prop the pass keeps joined (PropJoining) builds them
@@ -657,12 +661,12 @@ bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader
     : ReceiverRole::None;
   if (vtkVolume::SafeDownCast(prop))
   {
-    shaders.InjectVolume(fragmentShader, update.Lights(), layers, role != ReceiverRole::None);
+    shadowmaps::PassShaders::InjectVolume(fragmentShader, code, role != ReceiverRole::None);
     return true;
   }
   int unpatched = 0;
-  const shadowmaps::CasterBranch branch = shaders.Inject(vertexShader, geometryShader,
-    fragmentShader, update.Lights(), layers, role != ReceiverRole::None, unpatched,
+  const shadowmaps::CasterBranch branch = shadowmaps::PassShaders::Inject(vertexShader,
+    geometryShader, fragmentShader, code, role != ReceiverRole::None, unpatched,
     role == ReceiverRole::ReceivesWithOwnShare);
   ++(branch == shadowmaps::CasterBranch::DepthOnly ? this->NumberOfDepthOnlyCasterShaders
                                                    : this->NumberOfOwnFragmentCasterShaders);
@@ -681,54 +685,33 @@ bool vtkAbstractShadowMapPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   Internals& r = *this->Internal;
-  shadowmaps::FrameUpdate& update = r.Update;
-  shadowmaps::ProgramUniforms& programs = update.Programs();
-  const shadowmaps::ReceiverTextureUnits units = update.Textures().Units();
-  if (shadowmaps::CasterGLState* casting = update.CastingState())
-  {
-    casting->UseProgramPointSize(shadowmaps::ImpostorShader::IsSized(program));
-    programs.Casting(program, units, r.Representation);
-  }
-  else if (r.Active)
-  {
-    programs.Receiving(program, update.Maps(), units, update.Frame().Resolution,
-      this->NormalOffset, r.Representation);
-    const std::vector<float>& shares = update.LightShares();
-    if (vtkVolume::SafeDownCast(prop) && !shares.empty())
-    {
-      program->SetUniform1fv(
-        "vtkShadowVolumeLightShares", static_cast<int>(shares.size()), shares.data());
-    }
-  }
-  else
-  {
-    programs.DrawnWithoutThePass(program, units, r.Representation);
-  }
+  r.Groups.SetProgramUniforms(program, prop, r.Active, this->NormalOffset);
   return true;
 }
 
 //------------------------------------------------------------------------------
 vtkMTimeType vtkAbstractShadowMapPass::GetShaderStageMTime()
 {
-  return this->Internal->Update.Shaders().GetKeyTime();
+  return this->Internal->Groups.ShaderKeyTime();
 }
 
 //------------------------------------------------------------------------------
 void vtkAbstractShadowMapPass::RenderShadowMapView(vtkOpenGLRenderer* renderer)
 {
   Internals& r = *this->Internal;
-  shadowmaps::FrameUpdate& update = r.Update;
-  shadowmaps::RendererMaps& maps = update.Maps();
-  if (this->AnalysisLight >= static_cast<int>(update.Lights().size()))
+  int light = 0;
+  shadowmaps::FrameUpdate* update = r.Groups.AnalysedGroup(light);
+  if (!update)
   {
     return;
   }
+  shadowmaps::RendererMaps& maps = update->Maps();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   const bool twoSurfaces = maps.Storage.SecondDepth != shadowmaps::SecondDepthMethod::None;
-  if (!r.MapView.Render(window, maps.Maps, update.Textures().Units().Maps,
-        update.Lights()[this->AnalysisLight], twoSurfaces, maps.Storage.WarpExponent))
+  if (!r.MapView.Render(window, maps.Maps, update->Textures().Units().Maps,
+        update->Lights()[light], twoSurfaces, maps.Storage.WarpExponent))
   {
-    update.Fail("the shadow-map view shader did not compile", window);
+    r.Groups.Fail("the shadow-map view shader did not compile", window);
     this->WarnAboutUpdate();
   }
 }
@@ -741,16 +724,18 @@ void vtkAbstractShadowMapPass::ReleaseGraphicsResources(vtkWindow* window)
   if (window == r.Context)
   {
     // The units kept past the last frame are that window's.
-    r.Update.Textures().Release(static_cast<vtkOpenGLRenderWindow*>(window), r.Representation);
+    r.Groups.ReleaseTextureUnits(static_cast<vtkOpenGLRenderWindow*>(window));
   }
   r.HoldsGraphicsResources = false;
-  r.Update.ReleaseGraphicsResources(window);
+  r.Groups.ReleaseGraphicsResources(window);
   r.MapView.ReleaseGraphicsResources(window);
   r.Representation->ReleaseGraphicsResources(window);
   if (r.DefaultRepresentation != r.Representation)
   {
     r.DefaultRepresentation->ReleaseGraphicsResources(window);
   }
+  r.LightRepresentations.ForEachValue(
+    [window](vtkShadowMapRepresentation* own) { own->ReleaseGraphicsResources(window); });
   r.DefaultDelegate->ReleaseGraphicsResources(window);
   r.DepthPeeling->ReleaseGraphicsResources(window);
   if (this->DelegatePass)
@@ -772,7 +757,10 @@ void vtkAbstractShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->SceneBounds[5] << "\n";
   os << indent << "Views:\n";
   this->Internal->Views->PrintSelf(os, indent.GetNextIndent());
-  os << indent << "Lights with views of their own: " << this->Internal->LightViews.size() << "\n";
+  os << indent << "Lights with views of their own: " << this->Internal->LightViews.Size() << "\n";
+  os << indent << "Lights with a representation of their own: "
+     << this->Internal->LightRepresentations.Size() << "\n";
+  os << indent << "NumberOfRepresentationsInUse: " << this->Internal->Groups.Count() << "\n";
   os << indent << "Representation:\n";
   this->Internal->Representation->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Resolution: " << this->Resolution << "\n";

@@ -191,6 +191,30 @@ public:
 
   ///@{
   /**
+   * The representation of one light, instead of the pass's
+   * (GetRepresentation()): a sun in dual-depth maps and a lamp in depth maps
+   * in the same frame. The lights of each representation have maps of their
+   * own (one texture array per representation in use), and the receivers'
+   * shaders hold every representation's code, under names of its own
+   * (shadowmaps::ShaderGroup), so that no shader is built while the camera
+   * moves. nullptr gives the light the pass's representation again. The pass
+   * does not keep the light alive; a light deleted is forgotten. One
+   * representation object may serve several lights (they then share its
+   * maps) and passes. In parallel rendering every process must give a light
+   * the same representation.
+   */
+  void SetLightRepresentation(vtkLight* light, vtkShadowMapRepresentation* representation);
+  /** The representation `light` gets: its own (SetLightRepresentation), else the pass's. */
+  vtkShadowMapRepresentation* GetLightRepresentation(vtkLight* light);
+  /**
+   * How many representations the shadowed lights of the last frame (the last
+   * renderer's) used, each with a texture array of its own.
+   */
+  int GetNumberOfRepresentationsInUse();
+  ///@}
+
+  ///@{
+  /**
    * Parallel rendering: the collectives with which the processes that each
    * render a piece of the data combine their maps into the nearest surfaces
    * over all of them (vtkShadowMapExchange): depth maps and front-and-back-face

@@ -151,7 +151,8 @@ int vtkAutomaticShadowMapPass::GetChosenRepresentation(int index)
   {
     return -2;
   }
-  vtkShadowMapRepresentation* representation = this->GetRepresentation();
+  vtkShadowMapRepresentation* representation =
+    this->GetLightRepresentation(this->Internal->Choices.Choices()[index].Light);
   if (vtkDualDepthShadowMapRepresentation::SafeDownCast(representation))
   {
     return DUAL_DEPTH_REPRESENTATION;

@@ -44,7 +44,9 @@
  * Pinning: SetViewsChoice() gives every light the same views (SetViews()
  * does not: the pass gives each light views of its own); SetLightViews()
  * with a views object of the user's pins one light (the pass leaves it
- * alone); SetRepresentation() replaces the dual-depth maps. The choices are
+ * alone); SetRepresentation() replaces the dual-depth maps of every light,
+ * SetLightRepresentation() those of one light (its maps are then another
+ * texture array, whose code the receivers' shaders also hold). The choices are
  * read from the light and the camera only, so every process of a parallel
  * renderer chooses the same, and with an exchange (SetExchange) a frame
  * counts as interactive only where it is on every process, so that a light's

@@ -7,7 +7,8 @@ snake_case names of its setters (``make_pass("cascaded", number_of_cascades=3)``
 
 - ``auto`` (the default): vtkAutomaticShadowMapPass gives each light the views its
   situation measured best for, on dual-depth maps; ``cost_budget`` lets it spend
-  more maps, ``SetLightViews(light, views)`` pins a light's views.
+  more maps, ``SetLightViews(light, views)`` pins a light's views and
+  ``SetLightRepresentation(light, representation)`` its representation.
 - ``uniform``, ``psm``, ``lispsm``, ``tsm``, ``gmnpr``: vtkWarpedShadowMapPass in that
   warp mode (one map per sun or spot, warped to give the viewer's near field more
   texels; ``psm_cube_map`` for Kozlov's cube).

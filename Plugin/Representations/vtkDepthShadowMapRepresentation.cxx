@@ -87,10 +87,11 @@ void vtkDepthShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderW
 }
 
 //------------------------------------------------------------------------------
-void vtkDepthShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* program)
+void vtkDepthShadowMapRepresentation::SetReceiverUniforms(
+  vtkShaderProgram* program, const std::string& nameSuffix)
 {
-  this->Noise->SetUniform(program);
-  program->SetUniformf("vtkShadowFilterRadius", static_cast<float>(this->FilterRadius));
+  this->Noise->SetUniform(program, nameSuffix);
+  program->SetUniformf(("vtkShadowFilterRadius" + nameSuffix).c_str(), static_cast<float>(this->FilterRadius));
 }
 
 //------------------------------------------------------------------------------

@@ -116,7 +116,8 @@ public:
   bool GetPostProcessingFollowsFilterScale() const override;
   VTK_WRAPEXCLUDE shadowmaps::DepthOffset GetCasterDepthOffset() const override;
   VTK_WRAPEXCLUDE void ActivateReceiverResources(vtkOpenGLRenderWindow* window) override;
-  VTK_WRAPEXCLUDE void SetReceiverUniforms(vtkShaderProgram* program) override;
+  VTK_WRAPEXCLUDE void SetReceiverUniforms(
+    vtkShaderProgram* program, const std::string& nameSuffix) override;
   VTK_WRAPEXCLUDE void DeactivateReceiverResources() override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 

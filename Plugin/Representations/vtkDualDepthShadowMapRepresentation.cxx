@@ -63,10 +63,11 @@ bool vtkDualDepthShadowMapRepresentation::GetLinearFiltering() const
 }
 
 //------------------------------------------------------------------------------
-void vtkDualDepthShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* program)
+void vtkDualDepthShadowMapRepresentation::SetReceiverUniforms(
+  vtkShaderProgram* program, const std::string& nameSuffix)
 {
-  this->Superclass::SetReceiverUniforms(program);
-  program->SetUniformf("vtkShadowDualOffset", static_cast<float>(this->DualOffset));
+  this->Superclass::SetReceiverUniforms(program, nameSuffix);
+  program->SetUniformf(("vtkShadowDualOffset" + nameSuffix).c_str(), static_cast<float>(this->DualOffset));
 }
 
 //------------------------------------------------------------------------------

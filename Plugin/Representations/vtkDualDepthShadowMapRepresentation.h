@@ -94,7 +94,8 @@ public:
   std::string GetReceiverLookupCode() const override;
   std::string GetReceiverDefinitions() const override;
   bool GetLinearFiltering() const override;
-  VTK_WRAPEXCLUDE void SetReceiverUniforms(vtkShaderProgram* program) override;
+  VTK_WRAPEXCLUDE void SetReceiverUniforms(
+    vtkShaderProgram* program, const std::string& nameSuffix) override;
 
 protected:
   vtkDualDepthShadowMapRepresentation();

@@ -59,7 +59,7 @@ bool vtkShadowMapRepresentation::GetSupportsSizedLights() const
 void vtkShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRenderWindow*) {}
 
 //------------------------------------------------------------------------------
-void vtkShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram*) {}
+void vtkShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram*, const std::string&) {}
 
 //------------------------------------------------------------------------------
 void vtkShadowMapRepresentation::DeactivateReceiverResources() {}

@@ -121,7 +121,9 @@ public:
    * receiver at depth mapCoord.z seen at texture coordinates mapCoord.xy of map
    * layer `layer`. `vtkShadowViews[layer].FilterScale` is its light's first
    * layer's texel size over this layer's (1 but for cascades): offsets in texels
-   * multiplied by it keep a kernel's world size.
+   * multiplied by it keep a kernel's world size. Every global name it declares
+   * starts with vtkShadow (macros VTK_SHADOW_): where lights of one pass use
+   * two representations, each one's names get a suffix of their own.
    */
   virtual std::string GetReceiverLookupCode() const = 0;
 
@@ -177,9 +179,13 @@ public:
    * Receiver resources: ActivateReceiverResources before the scene is drawn
    * (bind textures of the representation's own), SetReceiverUniforms per
    * receiver program, DeactivateReceiverResources after. Default: nothing.
+   * The names of the uniforms SetReceiverUniforms sets end with `nameSuffix`:
+   * where lights of a pass use several representations, each one's shadow
+   * code has names of its own (shadowmaps::ShaderGroup); empty otherwise.
    */
   VTK_WRAPEXCLUDE virtual void ActivateReceiverResources(vtkOpenGLRenderWindow* window);
-  VTK_WRAPEXCLUDE virtual void SetReceiverUniforms(vtkShaderProgram* program);
+  VTK_WRAPEXCLUDE virtual void SetReceiverUniforms(
+    vtkShaderProgram* program, const std::string& nameSuffix);
   VTK_WRAPEXCLUDE virtual void DeactivateReceiverResources();
   ///@}
 

@@ -276,16 +276,19 @@ void vtkVarianceShadowMapRepresentation::ActivateReceiverResources(vtkOpenGLRend
 }
 
 //------------------------------------------------------------------------------
-void vtkVarianceShadowMapRepresentation::SetReceiverUniforms(vtkShaderProgram* program)
+void vtkVarianceShadowMapRepresentation::SetReceiverUniforms(
+  vtkShaderProgram* program, const std::string& nameSuffix)
 {
-  this->Noise->SetUniform(program);
-  program->SetUniformf("vtkShadowLightBleeding", static_cast<float>(this->LightBleedingReduction));
-  program->SetUniformf("vtkShadowMinimumVariance", static_cast<float>(this->MinimumVariance));
-  program->SetUniformf("vtkShadowMomentBias", static_cast<float>(this->MomentBias));
-  program->SetUniformf(
-    "vtkShadowMomentsBlurSigma", static_cast<float>(shadowmaps::BlurSigma(this->BlurRadius)));
-  program->SetUniformf("vtkShadowAnisotropy", static_cast<float>(this->Anisotropy));
-  shadowmaps::SetFloatUniforms(program, this->ExponentUniforms());
+  this->Noise->SetUniform(program, nameSuffix);
+  const auto blurSigma = static_cast<float>(shadowmaps::BlurSigma(this->BlurRadius));
+  shadowmaps::FloatUniforms uniforms = this->ExponentUniforms();
+  uniforms.insert(uniforms.end(),
+    { { "vtkShadowLightBleeding", static_cast<float>(this->LightBleedingReduction) },
+      { "vtkShadowMinimumVariance", static_cast<float>(this->MinimumVariance) },
+      { "vtkShadowMomentBias", static_cast<float>(this->MomentBias) },
+      { "vtkShadowMomentsBlurSigma", blurSigma },
+      { "vtkShadowAnisotropy", static_cast<float>(this->Anisotropy) } });
+  shadowmaps::SetFloatUniforms(program, uniforms, nameSuffix);
 }
 
 //------------------------------------------------------------------------------

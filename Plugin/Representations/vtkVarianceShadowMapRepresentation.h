@@ -225,7 +225,8 @@ public:
   /** True while BlurRadius > 0: the blur keeps one world size in every cascade. */
   bool GetPostProcessingFollowsFilterScale() const override;
   VTK_WRAPEXCLUDE void ActivateReceiverResources(vtkOpenGLRenderWindow* window) override;
-  VTK_WRAPEXCLUDE void SetReceiverUniforms(vtkShaderProgram* program) override;
+  VTK_WRAPEXCLUDE void SetReceiverUniforms(
+    vtkShaderProgram* program, const std::string& nameSuffix) override;
   void DeactivateReceiverResources() override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 

@@ -132,6 +132,18 @@ TestScene::TestScene(int width, int height)
   this->Renderer->ResetCameraClippingRange();
 }
 
+void OrbitDraggedThenStill(TestScene& scene)
+{
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  for (int i = 0; i < 8; ++i)
+  {
+    scene.Window->SetDesiredUpdateRate(i < 7 ? 15.0 : 0.0001);
+    camera->Azimuth(4.0);
+    scene.Renderer->ResetCameraClippingRange();
+    scene.Window->Render();
+  }
+}
+
 vtkLight* TestScene::SetSun(const glm::dvec3& d)
 {
   vtkLight* light = ReplaceLights(this->Renderer);

@@ -56,6 +56,9 @@ vtkSmartPointer<vtkActor> AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* so
 /// A box of `size` centred at `center`, added to `renderer`.
 vtkSmartPointer<vtkActor> AddBox(vtkRenderer* renderer, const glm::dvec3& center, const glm::dvec3& size);
 
+/// Orbits the camera 4 degrees a frame: seven frames drawn as a drag, then a still one.
+void OrbitDraggedThenStill(TestScene& scene);
+
 /// A new pass of a preset.
 template <typename Pass>
 vtkSmartPointer<vtkAbstractShadowMapPass> NewPass()

@@ -9,6 +9,7 @@
 #include "ShadowMapLightChoices.h"
 #include "ShadowMapViewsRules.h"
 #include "ShadowTestUtilities.h"
+#include "vtkDepthShadowMapRepresentation.h"
 #include "vtkAutomaticShadowMapPass.h"
 #include "vtkCascadedShadowMapViews.h"
 #include "vtkDualDepthShadowMapPass.h"
@@ -378,6 +379,19 @@ TEST(ShadowAutomatic, TheUserPinsEveryLightsViewsOrOnes)
   pass->SetLightViews(scene.Spot, nullptr);
   scene.Scene.Window->Render();
   EXPECT_NE(pass->GetChosenViews(1), vtkAutomaticShadowMapPass::USER_VIEWS) << "unpinned";
+
+  // A light's representation: its own maps, reported as chosen.
+  vtkNew<vtkDepthShadowMapRepresentation> depth;
+  pass->SetLightRepresentation(scene.Spot, depth);
+  scene.Scene.Window->Render();
+  EXPECT_EQ(pass->GetChosenRepresentation(1), vtkAutomaticShadowMapPass::DEPTH_REPRESENTATION);
+  EXPECT_STREQ(pass->GetChosenRepresentationName(1), "depth");
+  EXPECT_STREQ(pass->GetChosenRepresentationName(0), "dual depth");
+  EXPECT_EQ(pass->GetNumberOfRepresentationsInUse(), 2);
+  pass->SetLightRepresentation(scene.Spot, nullptr);
+  scene.Scene.Window->Render();
+  EXPECT_STREQ(pass->GetChosenRepresentationName(1), "dual depth");
+  EXPECT_EQ(pass->GetNumberOfRepresentationsInUse(), 1);
 
   // The budget: the sun's one map, or Kozlov's cube of up to six.
   EXPECT_EQ(pass->GetChosenViews(0), vtkAutomaticShadowMapPass::LISPSM_VIEWS);

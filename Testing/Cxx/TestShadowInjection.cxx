@@ -10,6 +10,7 @@
 #include "ShadowMapLight.h"
 #include "ShadowMapQuad.h"
 #include "ShadowMapReceiverShader.h"
+#include "ShadowMapShaderGroup.h"
 #include "ShadowTestUtilities.h"
 #include "vtkDepthShadowMapPass.h"
 #include "vtkDualDepthShadowMapPass.h"
@@ -155,28 +156,30 @@ TEST(ShadowInjection, LightingCodeItCannotPatchIsCounted)
   light.ShaderIndex = 0;
   const std::vector<shadowmaps::ShadowLight> lights{ light };
   shadowmaps::ReceiverCode code;
+  const shadowmaps::ShaderGroup group;
   const std::string head = "//VTK::System::Dec\nuniform vec3 lightColor0;\n//VTK::Light::Dec\n"
                            "void main()\n{\n  vec3 diffuse = vec3(0.0);\n  float df = 1.0;\n"
                            "  //VTK::Light::Impl\n";
   std::string known = head + "  diffuse += (df * lightColor0);\n}\n";
   shadowmaps::ReceiverShader::MarkInjectionPoints(known);
-  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(known, lights, 1, code, true, false), 0);
+  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(known, lights, 1, code, true, false, false, group), 0);
   EXPECT_NE(known.find("lightColor0 * vtkShadowFactor0"), std::string::npos);
 
   std::string unknown = head + "  diffuse += df * lightColor0 * 0.5;\n}\n";
   shadowmaps::ReceiverShader::MarkInjectionPoints(unknown);
-  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(unknown, lights, 1, code, true, false), 1);
+  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(unknown, lights, 1, code, true, false, false, group), 1);
   EXPECT_EQ(unknown.find("vtkShadowFactor"), std::string::npos);
+  shadowmaps::ReceiverShader::ClearMarkers(unknown);
   EXPECT_EQ(unknown.find("//VTK::ShadowMaps"), std::string::npos);
 
   // lightColor01 is another light's; an unlit shader names none.
   std::string other = "uniform vec3 lightColor01;\nvoid main()\n{\n}\n";
-  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(other, lights, 1, code, true, false), 0);
+  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(other, lights, 1, code, true, false, false, group), 0);
 
   // VTK declares the light's colour for props it draws unlit, and uses it nowhere.
   std::string unlit = head + "  gl_FragData[0] = vec4(1.0);\n}\n";
   shadowmaps::ReceiverShader::MarkInjectionPoints(unlit);
-  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(unlit, lights, 1, code, true, false), 0);
+  EXPECT_EQ(shadowmaps::ReceiverShader::Inject(unlit, lights, 1, code, true, false, false, group), 0);
 }
 
 // Numbers #define'd into GLSL are float literals the GL parses, huge and tiny

@@ -134,14 +134,7 @@ TEST(ShadowLightViews, AnOrbitWithMixedViewsBuildsNoShader)
   scene.Scene.Renderer->SetPass(pass);
   RenderAndCapture(scene.Scene.Window);
   const int builds = pass->GetNumberOfShaderBuilds();
-  vtkCamera* camera = scene.Scene.Renderer->GetActiveCamera();
-  for (int i = 0; i < 8; ++i)
-  {
-    scene.Scene.Window->SetDesiredUpdateRate(i < 7 ? 15.0 : 0.0001);
-    camera->Azimuth(4.0);
-    scene.Scene.Renderer->ResetCameraClippingRange();
-    scene.Scene.Window->Render();
-  }
+  OrbitDraggedThenStill(scene.Scene);
   EXPECT_EQ(pass->GetNumberOfShaderBuilds(), builds);
   EXPECT_EQ(pass->GetNumberOfShadowMapLayers(), 5);
 }

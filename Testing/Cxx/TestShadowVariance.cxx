@@ -156,7 +156,7 @@ std::vector<glm::vec4> EvaluateMoments(vtkVarianceShadowMapRepresentation* repre
     "struct vtkShadowView { float FilterScale; };\nuniform vtkShadowView vtkShadowViews[1];\n" +
     representation->GetReceiverLookupCode();
   return EvaluateGLSL(functions, expression, cases,
-    [representation](vtkShaderProgram* program) { representation->SetReceiverUniforms(program); });
+    [representation](vtkShaderProgram* program) { representation->SetReceiverUniforms(program, {}); });
 }
 
 /// Moments of occluders at depths `a` and `b`, half of the texel each.

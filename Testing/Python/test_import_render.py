@@ -145,6 +145,14 @@ def main(output_dir):
     automatic.SetViewsChoiceToLiSPSM()
     render_with(renderer, window, grab, automatic, UNDER_THE_SPHERE)
     assert automatic.GetChosenViews(0) == vtkshadowmaps.vtkAutomaticShadowMapPass.LISPSM_VIEWS
+    # A light's own representation, from Python: the sun's maps in moments.
+    automatic.SetLightRepresentation(light, vtkshadowmaps.vtkVarianceShadowMapRepresentation())
+    _, (under, open_ground) = render_with(renderer, window, grab, automatic, UNDER_THE_SPHERE,
+                                          OPEN_GROUND)
+    assert automatic.GetChosenRepresentationName(0) == "moments"
+    assert automatic.GetNumberOfRepresentationsInUse() == 1, "the only light's"
+    assert under < 80 and open_ground > 120
+    automatic.SetLightRepresentation(light, None)
     renderer.SetPass(None)
     automatic.ReleaseGraphicsResources(window)
 
