@@ -286,11 +286,10 @@ TEST(ShadowLightRepresentations, SwitchingALightOfOneGroupKeepsTheOthersShadow)
 
 // Two renderers of one window share a pass whose lights use different
 // representations in each: the groups stay (a frame of each renderer keeps
-// the other's maps), so that a still frame costs no more map updates and
-// shader builds than with one representation, and each renderer's shadows
-// are there. (Renderers whose lights differ rebuild the shared programs' code
-// for each other, and here render their maps again in each frame, whichever
-// the representations: measured, not what this test asks.)
+// the other's maps), so that a still frame renders no map and builds no more
+// shaders than with one representation, and each renderer's shadows are
+// there. (Renderers whose lights differ rebuild the shared programs' code for
+// each other, whichever the representations: measured, not what this asks.)
 namespace
 {
 struct FrameCost
@@ -308,7 +307,9 @@ FrameCost StillFrameOfTwoRenderers(bool pinned, vtkSmartPointer<vtkImageData>* f
   left.Scene.Window->AddRenderer(other);
   other->AddViewProp(left.Scene.Ground);
   other->AddViewProp(left.Scene.Sphere);
-  other->SetActiveCamera(left.Scene.Renderer->GetActiveCamera());
+  // A camera of its own: one camera shared by renderers of different props
+  // gets the clipping range of each in turn, which changes the maps' fit.
+  other->GetActiveCamera()->DeepCopy(left.Scene.Renderer->GetActiveCamera());
   other->AutomaticLightCreationOff();
   vtkNew<vtkLight> lamp; // over the sphere, in the pass's representation
   lamp->SetPositional(true);
@@ -331,9 +332,10 @@ FrameCost StillFrameOfTwoRenderers(bool pinned, vtkSmartPointer<vtkImageData>* f
   FrameCost cost;
   cost.Updates = -pass->GetNumberOfShadowMapUpdates();
   cost.Builds = -pass->GetNumberOfShaderBuilds();
-  auto drawn = RenderAndCapture(left.Scene.Window);
+  left.Scene.Window->Render();
   cost.Updates += pass->GetNumberOfShadowMapUpdates();
   cost.Builds += pass->GetNumberOfShaderBuilds();
+  auto drawn = RenderAndCapture(left.Scene.Window);
   EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
   left.Scene.Renderer->SetPass(nullptr);
   other->SetPass(nullptr);
@@ -355,10 +357,10 @@ TEST(ShadowLightRepresentations, RenderersWhoseLightsUseDifferentRepresentations
 {
   const FrameCost one = StillFrameOfTwoRenderers(false);
   const FrameCost two = StillFrameOfTwoRenderers(true);
-  // The renderers' maps are rendered at most once per renderer and group
-  // that has lights there (two and one here), as with one representation.
-  EXPECT_LE(one.Updates, 2);
-  EXPECT_LE(two.Updates, 3);
+  std::cout << "still frame: one representation " << one.Updates << " updates, " << one.Builds
+            << " builds; two " << two.Updates << ", " << two.Builds << "\n";
+  EXPECT_EQ(one.Updates, 0);
+  EXPECT_EQ(two.Updates, 0);
   EXPECT_LE(two.Builds, one.Builds);
 }
 
