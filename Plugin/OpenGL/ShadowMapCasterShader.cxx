@@ -49,14 +49,21 @@ bool ShapesItsOwnFragments(const std::string& code)
   return code.find("gl_FragDepth") != std::string::npos || CountOccurrences(code, "discard") > 1;
 }
 
-// A group's declarations; group 0 also declares what every group shares:
-// the branch's selector and the impostors' functions.
-std::string Declarations(const CasterCode& code, Impostors sized, const ShaderGroup& group)
+// The impostors whose depth the casters' branches compute: shapes that cut
+// their own fragments, sized by ImpostorShader::Size.
+Impostors CastingImpostors(const std::string& mapperCode, Impostors sized)
 {
-  std::string dec = group.Index() == 0 ? "uniform int vtkShadowCasting;\n" : "";
-  dec += code.Faces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
-    : code.Faces == 1    ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
-                         : "";
+  return ShapesItsOwnFragments(mapperCode) && !ImpostorShader::CasterDepth(sized).empty()
+    ? sized
+    : Impostors::None;
+}
+
+// A group's declarations (the shared ones are CasterShader::DeclareShared's).
+std::string Declarations(const CasterCode& code, const ShaderGroup& group)
+{
+  std::string dec = code.Faces == 0 ? "#define VTK_SHADOW_CAST_FRONT_ONLY\n"
+    : code.Faces == 1               ? "#define VTK_SHADOW_CAST_BACK_ONLY\n"
+                                    : "";
   if (code.SecondDepth == SecondDepthMethod::Peeling)
   {
     dec += "#define VTK_SHADOW_PEEL\n";
@@ -76,8 +83,7 @@ std::string Declarations(const CasterCode& code, Impostors sized, const ShaderGr
   {
     dec += vtkShadowMapsLinearDepthFS;
   }
-  const std::string shared = group.Index() == 0 ? ImpostorShader::CasterDeclarations(sized) : "";
-  return group.Rename(dec) + shared + group.Rename(code.StoreFunctions) + "\n";
+  return group.Rename(dec + code.StoreFunctions) + "\n";
 }
 
 // What the branch writes once it has vtkShadowCasterDepth (and, for an
@@ -237,7 +243,8 @@ CasterBranch CasterShader::Inject(std::string& fragmentShader, const std::string
   const bool ownFragments = ShapesItsOwnFragments(mapperCode);
   // An impostor's depth as the mapper writes it follows the scene camera's
   // sizes: the branch computes its own.
-  const std::string impostorDepth = ownFragments ? ImpostorShader::CasterDepth(sized) : "";
+  const std::string impostorDepth =
+    ImpostorShader::CasterDepth(CastingImpostors(mapperCode, sized));
   // Shapes that cut their own fragments (impostors, splats) draw nothing into
   // the transmittance maps: their cuts come after the colour code.
   PutAtMarker(fragmentShader, TransmitMarker,
@@ -278,10 +285,23 @@ CasterBranch CasterShader::Inject(std::string& fragmentShader, const std::string
   const size_t main = fragmentShader.find("void main");
   if (main != std::string::npos)
   {
-    fragmentShader.insert(
-      main, Declarations(code, impostorDepth.empty() ? Impostors::None : sized, group));
+    fragmentShader.insert(main, Declarations(code, group));
   }
   return ownFragments ? CasterBranch::AfterOwnFragments : CasterBranch::DepthOnly;
+}
+
+//------------------------------------------------------------------------------
+void CasterShader::DeclareShared(
+  std::string& fragmentShader, const std::string& mapperShader, Impostors sized)
+{
+  const size_t main = fragmentShader.find("void main");
+  if (main != std::string::npos)
+  {
+    fragmentShader.insert(main,
+      "uniform int vtkShadowCasting;\n" +
+        ImpostorShader::CasterDeclarations(
+          CastingImpostors(WithoutLineComments(mapperShader), sized)));
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -84,6 +84,11 @@ public:
   static CasterBranch Inject(std::string& fragmentShader, const std::string& mapperShader,
     const CasterCode& code, Impostors sized, const ShaderGroup& group);
 
+  /// Before the groups' Inject: what every group's branch uses, once (the
+  /// branches' selector vtkShadowCasting, the impostors' depth functions).
+  static void DeclareShared(
+    std::string& fragmentShader, const std::string& mapperShader, Impostors sized);
+
   /// Removes the markers, after the last group's Inject.
   static void ClearMarkers(std::string& fragmentShader);
 

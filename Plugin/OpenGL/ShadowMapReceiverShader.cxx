@@ -531,7 +531,10 @@ bool ReceiverUniforms::IsReceiver(vtkShaderProgram* program, const std::string& 
 void ReceiverUniforms::ApplyTextureUnits(
   vtkShaderProgram* program, const ReceiverTextureUnits& units, const std::string& suffix)
 {
-  program->SetUniformi(("vtkShadowMaps" + suffix).c_str(), units.Maps);
+  if (units.Maps >= 0)
+  {
+    program->SetUniformi(("vtkShadowMaps" + suffix).c_str(), units.Maps);
+  }
   if (units.RawDepths >= 0)
   {
     program->SetUniformi(("vtkShadowDepths" + suffix).c_str(), units.RawDepths);

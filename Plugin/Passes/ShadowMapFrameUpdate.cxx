@@ -57,24 +57,6 @@ vtkOpenGLRenderWindow* WindowOf(vtkOpenGLRenderer* renderer)
   return static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
 }
 
-// Gives each of `lights` the shader index of the light of `collected` it is;
-// whether any changed.
-bool TakeShaderIndices(const std::vector<ShadowLight>& collected, std::vector<ShadowLight>& lights)
-{
-  bool changed = false;
-  for (ShadowLight& light : lights)
-  {
-    auto same = std::find_if(collected.begin(), collected.end(),
-      [&light](const ShadowLight& other) { return other.Light == light.Light; });
-    if (same != collected.end() && same->ShaderIndex != light.ShaderIndex)
-    {
-      light.ShaderIndex = same->ShaderIndex;
-      changed = true;
-    }
-  }
-  return changed;
-}
-
 bool AnyRenders(const std::vector<LayerPlan>& plans)
 {
   return std::any_of(
@@ -116,6 +98,11 @@ bool FrameUpdate::Prepare(
     if (this->FrameLights.empty())
     {
       this->Counts.Layers = 0;
+      if (settings.ClearsCodeWithoutLights)
+      {
+        this->Code.Clear();
+        this->CodeFor = nullptr;
+      }
       return false;
     }
     this->CollectCastersAndCamera(renderer);
@@ -356,9 +343,8 @@ void FrameUpdate::PlanMaps(vtkOpenGLRenderer* renderer)
     // CollectLights rebuilt the lights without views; the maps hold these,
     // lit by the mapper as the lights collected now are (switching another
     // light moves a light's place among the renderer's).
-    std::vector<ShadowLight> rendered = maps.Updates.GetRenderedLights();
-    const bool moved = TakeShaderIndices(this->FrameLights, rendered);
-    this->FrameLights = std::move(rendered);
+    const bool moved = maps.Updates.TakeShaderIndices(this->FrameLights);
+    this->FrameLights = maps.Updates.GetRenderedLights();
     this->Counts.Layers = maps.Layers;
     this->CurrentFrame.Resolution = maps.Maps.GetResolution();
     this->Counts.Resolution = this->CurrentFrame.Resolution;

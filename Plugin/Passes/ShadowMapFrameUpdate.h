@@ -79,6 +79,9 @@ struct FrameSettings
   /// Whether the update tries its shader code on a probe program before the
   /// mappers build it; false where the pass tries every group's together.
   bool ProbesShaders = true;
+  /// Whether a frame without lights of the group empties its shader code
+  /// (PassShaders::Clear): where several groups share the programs.
+  bool ClearsCodeWithoutLights = false;
   vtkShadowMapExchange* Exchange = nullptr;
   /// The pass's modification time, its strategies' included: a change
   /// re-renders the maps. Asked at each step that reads it, as a strategy

@@ -7,6 +7,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowMapExchange.h"
 #include "vtkShadowMapRepresentation.h"
 #include "vtkVolume.h"
 
@@ -113,6 +114,7 @@ bool MapGroups::Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s,
     group.Settings.Representation = group.Representation;
     group.Settings.Group = static_cast<int>(g);
     group.Settings.ProbesShaders = alone;
+    group.Settings.ClearsCodeWithoutLights = !alone;
     if (!alone)
     {
       group.Settings.Shadows = [representationOf, representation = group.Representation.Get()](
@@ -120,7 +122,7 @@ bool MapGroups::Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s,
     }
     group.Ready = group.Update->Prepare(renderer, s, group.Settings);
   }
-  if (!this->GroupsCompile(window))
+  if (!this->GroupsCompile(window, settings.Exchange))
   {
     // Every group still renders its step, failing: the other processes wait
     // for its answer.
@@ -140,9 +142,11 @@ bool MapGroups::Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s,
 }
 
 //------------------------------------------------------------------------------
-bool MapGroups::GroupsCompile(vtkOpenGLRenderWindow* window)
+bool MapGroups::GroupsCompile(vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange)
 {
-  if (this->Groups.size() < 2)
+  // A group left alone tried its code alone only if it changed since: the
+  // last code tried together is tried again alone once.
+  if (this->Groups.size() < 2 && this->CheckedKey.empty())
   {
     return true;
   }
@@ -156,7 +160,13 @@ bool MapGroups::GroupsCompile(vtkOpenGLRenderWindow* window)
     this->CheckedKey = key.str();
     this->CheckedCompiles = PassShaders::Compiles(window, this->ShaderCode());
   }
-  return this->CheckedCompiles;
+  if (this->Groups.size() < 2 && this->CheckedCompiles)
+  {
+    this->CheckedKey.clear(); // the group tries its own code from now on
+  }
+  // Every process renders its groups' maps, or none does.
+  return exchange && this->Groups.size() >= 2 ? !exchange->AnyOf(!this->CheckedCompiles)
+                                               : this->CheckedCompiles;
 }
 
 //------------------------------------------------------------------------------
@@ -205,6 +215,10 @@ FrameStatistics MapGroups::Statistics() const
   FrameStatistics all;
   for (const Group& group : this->Groups)
   {
+    if (group.Update->Lights().empty() && this->Groups.size() > 1)
+    {
+      continue; // what it counted is of a frame it had lights in
+    }
     const FrameStatistics& one = group.Update->Statistics();
     all.ShadowedLights += one.ShadowedLights;
     all.Layers += one.Layers;
@@ -268,7 +282,7 @@ void MapGroups::SetProgramUniforms(
     casting->Update->CastingState()->UseProgramPointSize(ImpostorShader::IsSized(program));
     for (Group& group : this->Groups)
     {
-      if (&group != &*casting)
+      if (&group != &*casting && !group.Update->Shaders().Empty())
       {
         group.Update->Programs().WhileOthersCast(
           program, group.Update->Textures().Units(), group.Representation);
@@ -282,6 +296,10 @@ void MapGroups::SetProgramUniforms(
   {
     Group& group = this->Groups[g];
     FrameUpdate& update = *group.Update;
+    if (update.Shaders().Empty() && this->Groups.size() > 1)
+    {
+      continue; // nothing of the group's is in the programs
+    }
     const ReceiverTextureUnits units = update.Textures().Units();
     if (!active || !group.Ready)
     {

@@ -31,6 +31,7 @@ class vtkProp;
 class vtkRenderState;
 class vtkRenderer;
 class vtkShaderProgram;
+class vtkShadowMapExchange;
 class vtkShadowMapRepresentation;
 class vtkWindow;
 
@@ -116,8 +117,10 @@ private:
   void FormGroups(const std::vector<vtkShadowMapRepresentation*>& used,
     const std::vector<vtkShadowMapRepresentation*>& assigned, vtkOpenGLRenderWindow* window);
   void Release(Group& group, vtkWindow* window);
-  /// With several groups, whether their code compiles together (tried once per change).
-  bool GroupsCompile(vtkOpenGLRenderWindow* window);
+  /// With several groups, whether their code compiles together (tried once
+  /// per change, and on every process alike); a group left alone after
+  /// them is tried once alone.
+  bool GroupsCompile(vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange);
 
   std::vector<Group> Groups;
   vtkTimeStamp GroupsTime;

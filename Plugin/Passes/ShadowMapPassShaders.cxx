@@ -63,6 +63,15 @@ bool PassShaders::Update(const MapStorage& storage, vtkShadowMapRepresentation* 
 }
 
 //------------------------------------------------------------------------------
+void PassShaders::Clear()
+{
+  if (!this->Key.empty())
+  {
+    *this = PassShaders();
+  }
+}
+
+//------------------------------------------------------------------------------
 void PassShaders::MarkInjectionPoints(std::string& fragmentShader)
 {
   CasterShader::MarkInjectionPoints(fragmentShader);
@@ -100,11 +109,16 @@ CasterBranch PassShaders::Inject(std::string& vertexShader, std::string& geometr
   const Impostors sized = ImpostorShader::Size(vertexShader, geometryShader, fragmentShader);
   const std::vector<ShaderGroup> named = Groups(groups, fragmentShader, sized);
   const std::string mapperShader = fragmentShader;
+  CasterShader::DeclareShared(fragmentShader, mapperShader, sized);
   CasterBranch branch = CasterBranch::DepthOnly;
   for (std::size_t g = 0; g < groups.size(); ++g)
   {
-    branch = CasterShader::Inject(
-      fragmentShader, mapperShader, groups[g].Code->Casters, sized, named[g]);
+    // An emptied group keeps its place (its names) and puts nothing in.
+    if (!groups[g].Code->Empty() || groups.size() == 1)
+    {
+      branch = CasterShader::Inject(
+        fragmentShader, mapperShader, groups[g].Code->Casters, sized, named[g]);
+    }
   }
   CasterShader::ClearMarkers(fragmentShader);
   for (std::string* stage : { &vertexShader, &geometryShader, &fragmentShader })

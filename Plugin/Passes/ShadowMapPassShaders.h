@@ -71,6 +71,12 @@ public:
   /// The key of the code.
   const std::string& GetKey() const { return this->Key; }
 
+  /// No code: the group's lights are gone from this frame, so that the
+  /// shaders hold nothing of it (its samplers would have no units). A change
+  /// rebuilds the mappers' shaders.
+  void Clear();
+  bool Empty() const { return this->Key.empty(); }
+
   /// Puts every group's code into a mapper's shaders, which hold the
   /// injection points (MarkInjectionPoints). Adds to `unpatched` the
   /// receiving lights the mapper lit in code this module cannot patch.

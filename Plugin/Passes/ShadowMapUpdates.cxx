@@ -226,6 +226,23 @@ std::vector<vtkMTimeType> MapUpdates::Signature(const MapInputs& inputs, const S
 }
 
 //------------------------------------------------------------------------------
+bool MapUpdates::TakeShaderIndices(const std::vector<ShadowLight>& collected)
+{
+  bool moved = false;
+  for (ShadowLight& light : this->RenderedLights)
+  {
+    auto same = std::find_if(collected.begin(), collected.end(),
+      [&light](const ShadowLight& other) { return other.Light == light.Light; });
+    if (same != collected.end() && same->ShaderIndex != light.ShaderIndex)
+    {
+      light.ShaderIndex = same->ShaderIndex;
+      moved = true;
+    }
+  }
+  return moved;
+}
+
+//------------------------------------------------------------------------------
 bool MapUpdates::Current(const std::vector<vtkMTimeType>& signature) const
 {
   return !this->RenderedSignature.empty() && signature == this->RenderedSignature;

@@ -99,6 +99,11 @@ public:
   /// The lights and views the maps were last rendered for.
   const std::vector<ShadowLight>& GetRenderedLights() const { return this->RenderedLights; }
 
+  /// Gives each rendered light the shader index (its place among the
+  /// renderer's lights) of the light of `collected` it is: switching another
+  /// light moves it. Whether any moved.
+  bool TakeShaderIndices(const std::vector<ShadowLight>& collected);
+
 private:
   std::vector<vtkMTimeType> RenderedSignature; // empty: to be rendered
   std::vector<LayerContent> Layers;

@@ -14,6 +14,7 @@
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLineSource.h"
 #include "vtkPiecewiseFunction.h"
@@ -282,6 +283,41 @@ TEST(ShadowLightRepresentations, SwitchingALightOfOneGroupKeepsTheOthersShadow)
   auto unshadowed = RenderAndCapture(scene.Scene.Window);
   const double lit = LuminanceAt(scene.Scene.Renderer, unshadowed, InBoxShadow);
   EXPECT_LT(LuminanceAt(scene.Scene.Renderer, rightOnly, InBoxShadow), 0.5 * lit);
+}
+
+// A group's only light stops casting (its CASTS_SHADOWS key: VTK builds no
+// shader for it) and starts again: meanwhile the programs hold nothing of the
+// group, and once it casts again its shadow is back, as before, without an
+// error.
+TEST(ShadowLightRepresentations, AGroupsLightThatStopsCastingShadowsAgainWhenItStarts)
+{
+  TwoSpots scene;
+  vtkNew<vtkDepthShadowMapPass> pass;
+  vtkNew<vtkDualDepthShadowMapRepresentation> dual;
+  pass->SetRepresentation(dual);
+  pass->SetLightRepresentation(scene.Right, Made("Moments"));
+  scene.Scene.Renderer->SetPass(pass);
+  ErrorCounter errors;
+  auto before = RenderAndCapture(scene.Scene.Window);
+  scene.Right->GetInformation()->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 0);
+  auto stopped = RenderAndCapture(scene.Scene.Window);
+  EXPECT_EQ(pass->GetNumberOfShadowedLights(), 1);
+  EXPECT_EQ(pass->GetNumberOfRepresentationsInUse(), 1);
+  // Meanwhile the other group's code changes, and back: the programs are
+  // built again while the right spot does not cast.
+  dual->SetModeToMidpoint();
+  RenderAndCapture(scene.Scene.Window);
+  dual->SetModeToDual();
+  RenderAndCapture(scene.Scene.Window);
+  scene.Right->GetInformation()->Set(vtkAbstractShadowMapPass::CASTS_SHADOWS(), 1);
+  auto again = RenderAndCapture(scene.Scene.Window);
+  EXPECT_EQ(errors.Errors() + errors.Warnings(), 0) << errors.Text();
+  EXPECT_EQ(pass->GetNumberOfRepresentationsInUse(), 2);
+  EXPECT_EQ(RgbBytes(before), RgbBytes(again));
+  const double shadowed = LuminanceAt(scene.Scene.Renderer, before, InBoxShadow);
+  EXPECT_GT(LuminanceAt(scene.Scene.Renderer, stopped, InBoxShadow), 2.0 * shadowed + 10.0)
+    << "the box's shadow went with its light's casting";
+  scene.Scene.Renderer->SetPass(nullptr);
 }
 
 // Two renderers of one window share a pass whose lights use different
