@@ -98,7 +98,7 @@ bool FrameUpdate::Prepare(
     if (this->FrameLights.empty())
     {
       this->Counts.Layers = 0;
-      if (settings.ClearsCodeWithoutLights)
+      if (settings.AmongGroups)
       {
         this->Code.Clear();
         this->CodeFor = nullptr;
@@ -598,7 +598,7 @@ void FrameUpdate::UpdateShaders(vtkOpenGLRenderer* renderer)
   if (this->Code.Update(this->Maps().Storage, settings.Representation, this->FrameLights,
         this->Counts.Layers, choices))
   {
-    this->CodeCompiles = !settings.ProbesShaders ||
+    this->CodeCompiles = settings.AmongGroups ||
       PassShaders::Compiles(WindowOf(renderer), { this->ShaderCode() });
   }
 }

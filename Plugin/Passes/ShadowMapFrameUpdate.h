@@ -76,12 +76,10 @@ struct FrameSettings
   std::function<bool(vtkLight*)> Shadows;
   /// The group's index: its names in the shaders (ShaderGroup).
   int Group = 0;
-  /// Whether the update tries its shader code on a probe program before the
-  /// mappers build it; false where the pass tries every group's together.
-  bool ProbesShaders = true;
-  /// Whether a frame without lights of the group empties its shader code
-  /// (PassShaders::Clear): where several groups share the programs.
-  bool ClearsCodeWithoutLights = false;
+  /// Several groups' code shares the programs: the pass, not the update,
+  /// tries it on a probe program before the mappers build it, and a frame
+  /// without lights of the group empties its code (PassShaders::Clear).
+  bool AmongGroups = false;
   vtkShadowMapExchange* Exchange = nullptr;
   /// The pass's modification time, its strategies' included: a change
   /// re-renders the maps. Asked at each step that reads it, as a strategy

@@ -113,8 +113,7 @@ bool MapGroups::Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s,
     group.Settings = settings;
     group.Settings.Representation = group.Representation;
     group.Settings.Group = static_cast<int>(g);
-    group.Settings.ProbesShaders = alone;
-    group.Settings.ClearsCodeWithoutLights = !alone;
+    group.Settings.AmongGroups = !alone;
     if (!alone)
     {
       group.Settings.Shadows = [representationOf, representation = group.Representation.Get()](

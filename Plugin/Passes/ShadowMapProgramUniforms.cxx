@@ -125,15 +125,24 @@ void ProgramUniforms::Casting(vtkShaderProgram* program, const ReceiverTextureUn
   }
   this->CastSinceSceneDraw.insert(program);
   this->Casters.ApplyCasting(program);
+  SetFloatUniforms(program, this->StoreUniforms, this->Group.Suffix());
+  // Not sampled while casting, but a sampler must not share a unit with one
+  // of another type.
+  this->ApplyReceiverSamplers(program, units, representation);
+}
+
+//------------------------------------------------------------------------------
+bool ProgramUniforms::ApplyReceiverSamplers(vtkShaderProgram* program,
+  const ReceiverTextureUnits& units, vtkShadowMapRepresentation* representation) const
+{
   const std::string& suffix = this->Group.Suffix();
-  SetFloatUniforms(program, this->StoreUniforms, suffix);
-  if (ReceiverUniforms::IsReceiver(program, suffix))
+  if (!ReceiverUniforms::IsReceiver(program, suffix))
   {
-    // Not sampled while casting, but a sampler must not share a unit with
-    // one of another type.
-    ReceiverUniforms::ApplyTextureUnits(program, units, suffix);
-    representation->SetReceiverUniforms(program, suffix);
+    return false;
   }
+  ReceiverUniforms::ApplyTextureUnits(program, units, suffix);
+  representation->SetReceiverUniforms(program, suffix);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -145,12 +154,7 @@ void ProgramUniforms::WhileOthersCast(vtkShaderProgram* program,
     return;
   }
   this->Casters.ApplyPeelUnit(program);
-  const std::string& suffix = this->Group.Suffix();
-  if (ReceiverUniforms::IsReceiver(program, suffix))
-  {
-    ReceiverUniforms::ApplyTextureUnits(program, units, suffix);
-    representation->SetReceiverUniforms(program, suffix);
-  }
+  this->ApplyReceiverSamplers(program, units, representation);
 }
 
 //------------------------------------------------------------------------------
@@ -195,12 +199,9 @@ void ProgramUniforms::DrawnWithoutThePass(vtkShaderProgram* program,
   // last lighting; the pass's renderer sent its own since.
   program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
   this->LastDrawnFor[program] = nullptr;
-  const std::string& suffix = this->Group.Suffix();
-  if (ReceiverUniforms::IsReceiver(program, suffix))
+  if (this->ApplyReceiverSamplers(program, units, representation))
   {
-    ReceiverUniforms::ApplyTextureUnits(program, units, suffix);
-    representation->SetReceiverUniforms(program, suffix);
-    program->SetUniformi(("vtkShadowReceiving" + suffix).c_str(), 0);
+    program->SetUniformi(this->Group.Name("vtkShadowReceiving").c_str(), 0);
   }
 }
 

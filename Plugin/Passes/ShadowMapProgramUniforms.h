@@ -98,6 +98,11 @@ public:
   void Clear();
 
 private:
+  /// The group's samplers on `units` and the representation's uniforms, if
+  /// `program` receives the group's shadows (whether it does).
+  bool ApplyReceiverSamplers(vtkShaderProgram* program, const ReceiverTextureUnits& units,
+    vtkShadowMapRepresentation* representation) const;
+
   CasterUniforms Casters;
   FloatUniforms StoreUniforms;
   ProgramStamps CasterPrograms;
