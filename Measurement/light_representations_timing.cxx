@@ -1,13 +1,15 @@
 // What a representation of a light's own costs (SetLightRepresentation): a
 // sun and a spot over 25 spheres (327k triangles) and a ground, at 960 x 540,
-// drawn with no shadows, with depth maps for both lights, dual-depth maps for
-// both, and the sun in dual depth beside the spot in depth maps (two groups
+// drawn with no shadows, with VTK's vtkShadowMapPass, with depth maps for
+// both lights, dual-depth maps for both, and the sun in dual depth beside the
+// spot in depth maps (two groups
 // of maps, both representations' code in every shader). Per configuration:
 // the first frame (shaders built), the median of 24 frames of an orbit drawn
 // as a drag (coarser maps redrawn) and of 24 still frames of it, each over
 // the frame without shadows, and the reading step (the scene read once per
 // group). One run, the ratios from it:
 //   build/bin/light_representations_timing
+#include "ShadowTechniques.h"
 #include "vtkAbstractShadowMapPass.h"
 #include "vtkDepthShadowMapPass.h"
 #include "vtkDepthShadowMapRepresentation.h"
@@ -111,13 +113,14 @@ struct Timing
   int Groups = 0;
 };
 
-using MakePass = std::function<vtkSmartPointer<vtkAbstractShadowMapPass>(Scene&)>;
+using MakePass = std::function<vtkSmartPointer<vtkRenderPass>(Scene&)>;
 
 Timing Measure(const MakePass& make)
 {
   Scene scene;
-  vtkSmartPointer<vtkAbstractShadowMapPass> pass = make ? make(scene) : nullptr;
-  scene.Renderer->SetPass(pass);
+  vtkSmartPointer<vtkRenderPass> drawing = make ? make(scene) : nullptr;
+  auto* pass = vtkAbstractShadowMapPass::SafeDownCast(drawing);
+  scene.Renderer->SetPass(drawing);
   Timing timing;
   scene.Window->SetDesiredUpdateRate(0.0001);
   timing.First = Milliseconds(scene.Window);
@@ -145,11 +148,15 @@ Timing Measure(const MakePass& make)
   timing.Reading = reading.empty() ? 0.0 : Median(reading);
   timing.Groups = pass ? pass->GetNumberOfRepresentationsInUse() : 0;
   scene.Renderer->SetPass(nullptr);
+  if (drawing)
+  {
+    drawing->ReleaseGraphicsResources(scene.Window);
+  }
   return timing;
 }
 } // namespace
 
-vtkSmartPointer<vtkAbstractShadowMapPass> PassOf(vtkShadowMapRepresentation* representation)
+vtkSmartPointer<vtkDepthShadowMapPass> PassOf(vtkShadowMapRepresentation* representation)
 {
   auto pass = vtkSmartPointer<vtkDepthShadowMapPass>::New();
   pass->SetRepresentation(representation);
@@ -168,6 +175,8 @@ int main()
     std::printf("| %s | %d | %.0f | %.2f | %.2f | %.2f |\n", name, t.Groups, t.First,
       t.Drag / none.Drag, t.Still / none.Still, t.Reading);
   };
+  row("VTK's vtkShadowMapPass (1024^2)",
+    [](Scene&) { return shadowbench::MakeVTKShadowMapPass(1024); });
   row("depth maps, both lights",
     [](Scene&) { return PassOf(vtkNew<vtkDepthShadowMapRepresentation>()); });
   row("dual depth, both lights",
