@@ -98,6 +98,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/Passes/ShadowMapCombination.cxx
     Plugin/Passes/ShadowMapFramePolicy.cxx
     Plugin/Passes/ShadowMapFrameUpdate.cxx
+    Plugin/Passes/ShadowMapBuiltCode.cxx
     Plugin/Passes/ShadowMapGroups.cxx
     Plugin/Passes/ShadowMapLayerContent.cxx
     Plugin/Passes/ShadowMapLayerDrawing.cxx
@@ -152,6 +153,7 @@ vtk_module_add_module(ShadowMaps::RenderingShadowMaps
     Plugin/OpenGL/ShadowMapTransmittance.h
     Plugin/Passes/ShadowMapCombination.h
     Plugin/Passes/ShadowMapFrameUpdate.h
+    Plugin/Passes/ShadowMapBuiltCode.h
     Plugin/Passes/ShadowMapGroups.h
     Plugin/Passes/ShadowMapLayerContent.h
     Plugin/Passes/ShadowMapLayerDrawing.h

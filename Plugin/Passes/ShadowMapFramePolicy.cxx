@@ -36,7 +36,7 @@ bool FramePolicy::BeginFrame(
 }
 
 //------------------------------------------------------------------------------
-std::vector<vtkMTimeType> FramePolicy::Signature(vtkRenderer* renderer, vtkMTimeType passTime,
+MapSignature FramePolicy::Signature(vtkRenderer* renderer, vtkMTimeType passTime,
   const ShadowFrame& frame, const std::vector<ShadowLight>& lights,
   const std::vector<Caster>& casters)
 {
@@ -50,8 +50,7 @@ std::vector<vtkMTimeType> FramePolicy::Signature(vtkRenderer* renderer, vtkMTime
 }
 
 //------------------------------------------------------------------------------
-bool FramePolicy::MustRender(
-  const MapUpdates& updates, const std::vector<vtkMTimeType>& signature) const
+bool FramePolicy::MustRender(const MapUpdates& updates, const MapSignature& signature) const
 {
   return this->AnyProcess(!updates.Current(signature));
 }

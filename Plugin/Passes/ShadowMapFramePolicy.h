@@ -59,14 +59,14 @@ public:
 
   /// The signature of everything `renderer`'s maps depend on for this frame
   /// (`passTime`: the pass's and its strategies' modification time).
-  static std::vector<vtkMTimeType> Signature(vtkRenderer* renderer, vtkMTimeType passTime,
+  static MapSignature Signature(vtkRenderer* renderer, vtkMTimeType passTime,
     const ShadowFrame& frame, const std::vector<ShadowLight>& lights,
     const std::vector<Caster>& casters);
 
   /// Whether the maps must be rendered for `signature`: they do not hold it
   /// here, or on some other process (asked every frame: another process's
   /// casters may have moved).
-  bool MustRender(const MapUpdates& updates, const std::vector<vtkMTimeType>& signature) const;
+  bool MustRender(const MapUpdates& updates, const MapSignature& signature) const;
 
   /// Whether `here` holds on this process or on any other (every process
   /// asks, in the same order): decisions every process must take alike, such

@@ -83,6 +83,14 @@ void FrameUpdate::SelectRenderer(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+const PassShaders& FrameUpdate::Shaders() const
+{
+  static const PassShaders none;
+  const RendererMaps* maps = this->Renderers.Current();
+  return maps ? maps->Code : none;
+}
+
+//------------------------------------------------------------------------------
 bool FrameUpdate::Prepare(
   vtkOpenGLRenderer* renderer, const vtkRenderState* s, const FrameSettings& settings)
 {
@@ -100,8 +108,7 @@ bool FrameUpdate::Prepare(
       this->Counts.Layers = 0;
       if (settings.AmongGroups)
       {
-        this->Code.Clear();
-        this->CodeFor = nullptr;
+        this->Maps().Code.Clear();
       }
       return false;
     }
@@ -336,7 +343,7 @@ void FrameUpdate::PlanMaps(vtkOpenGLRenderer* renderer)
     this->Policy.BeginFrame(this->CurrentFrame, this->Casters, boundsGiven);
   this->CurrentFrame.StillKeepsViews = !this->CurrentFrame.Interactive && settings.AnimationKeepsViews;
   this->TakePolicyWarnings();
-  std::vector<vtkMTimeType> signature = FramePolicy::Signature(
+  MapSignature signature = FramePolicy::Signature(
     renderer, settings.ParametersTime(), this->CurrentFrame, this->FrameLights, this->Casters);
   if (!this->Policy.MustRender(maps.Updates, signature))
   {
@@ -348,11 +355,10 @@ void FrameUpdate::PlanMaps(vtkOpenGLRenderer* renderer)
     this->Counts.Layers = maps.Layers;
     this->CurrentFrame.Resolution = maps.Maps.GetResolution();
     this->Counts.Resolution = this->CurrentFrame.Resolution;
-    if (this->CodeFor != &maps || moved)
+    if (maps.Code.Empty() || moved)
     {
-      // The shaders follow the lights, layers and storage of the renderer
-      // they draw for: another renderer's may differ.
-      this->UpdateShaders(renderer);
+      // A group without lights in an earlier frame emptied the code.
+      this->UpdateShaders();
     }
     return;
   }
@@ -387,7 +393,7 @@ void FrameUpdate::PlanMaps(vtkOpenGLRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-void FrameUpdate::FinishMaps(std::vector<vtkMTimeType> signature)
+void FrameUpdate::FinishMaps(MapSignature signature)
 {
   const FrameSettings& settings = *this->Settings;
   RendererMaps& maps = this->Maps();
@@ -465,13 +471,7 @@ bool FrameUpdate::PrepareLayers(
   }
   {
     const StepTimes::Scope shaders(steps, FrameStep::Shaders);
-    this->UpdateShaders(renderer);
-  }
-  if (!this->CodeCompiles)
-  {
-    error = "the shadow shader code does not compile (see the shader error above; a "
-            "representation's GLSL?)";
-    return false;
+    this->UpdateShaders();
   }
   const StepTimes::Scope storage(steps, FrameStep::Storage);
   RendererMaps& maps = this->Maps();
@@ -577,7 +577,7 @@ void FrameUpdate::ChooseStorage()
 }
 
 //------------------------------------------------------------------------------
-void FrameUpdate::UpdateShaders(vtkOpenGLRenderer* renderer)
+void FrameUpdate::UpdateShaders()
 {
   // Before the casters draw: they build the shaders the scene then uses.
   const FrameSettings& settings = *this->Settings;
@@ -594,13 +594,10 @@ void FrameUpdate::UpdateShaders(vtkOpenGLRenderer* renderer)
     choices.AnalysisViewsKind = settings.ViewsOf(analysed.Light)->GetKindName(analysed);
   }
   choices.KeepsLightDepths = this->MapCombination() == Combination::NearestLightDepths;
-  this->CodeFor = &this->Maps();
-  if (this->Code.Update(this->Maps().Storage, settings.Representation, this->FrameLights,
-        this->Counts.Layers, choices))
-  {
-    this->CodeCompiles = settings.AmongGroups ||
-      PassShaders::Compiles(WindowOf(renderer), { this->ShaderCode() });
-  }
+  RendererMaps& maps = this->Maps();
+  // MapGroups tries it on a probe program before any caster draws.
+  maps.Code.Update(
+    maps.Storage, settings.Representation, this->FrameLights, this->Counts.Layers, choices);
 }
 
 //------------------------------------------------------------------------------
@@ -611,7 +608,7 @@ CastingSettings FrameUpdate::CastingSettingsOfUpdate() const
   CastingSettings casting;
   casting.Resolution = this->CurrentFrame.Resolution;
   casting.Depth16 = maps.Storage.Format == TexelFormat::Depth16;
-  const CasterCode& code = this->Code.GetCasterCode();
+  const CasterCode& code = maps.Code.GetCasterCode();
   casting.LightDepth = code.LightDepth || code.Transmittance;
   casting.SlopeScaledOffset = offset.SlopeScaled;
   casting.ConstantOffset = offset.Constant;
@@ -835,17 +832,14 @@ std::vector<std::string> FrameUpdate::TakeWarnings()
 //------------------------------------------------------------------------------
 void FrameUpdate::ReleaseMapsOf(vtkRenderer* renderer, vtkOpenGLRenderWindow* window)
 {
-  this->Renderers.Release(renderer, window, [this](const RendererMaps* maps) {
-    this->CodeFor = this->CodeFor == maps ? nullptr : this->CodeFor;
-    this->Uniforms.Forget(maps);
-  });
+  this->Renderers.Release(
+    renderer, window, [this](const RendererMaps* maps) { this->Uniforms.Forget(maps); });
 }
 
 //------------------------------------------------------------------------------
 void FrameUpdate::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Renderers.ReleaseAll(window);
-  this->CodeFor = nullptr;
   this->Uniforms.Clear();
   this->MaximumSamples = 0;
   this->Layers.ReleaseGraphicsResources(window);

@@ -171,9 +171,10 @@ public:
   RendererMaps& Maps() { return *this->Renderers.Current(); }
   const RendererMaps& Maps() const { return *this->Renderers.Current(); }
   const ShadowFrame& Frame() const { return this->CurrentFrame; }
-  const PassShaders& Shaders() const { return this->Code; }
+  /// The current renderer's code (none before a renderer is selected).
+  const PassShaders& Shaders() const;
   /// This group's share of the mappers' shaders.
-  GroupCode ShaderCode() const { return { &this->Code, &this->FrameLights, this->Counts.Layers }; }
+  GroupCode ShaderCode() const { return { &this->Shaders(), &this->FrameLights, this->Counts.Layers }; }
   /// The analysis view's light among Lights(); -1 when another group's.
   int AnalysedLight() const { return this->AnalysisLight; }
   ProgramUniforms& Programs() { return this->Uniforms; }
@@ -203,7 +204,7 @@ private:
   /// Prepare's part once the scene is read: what must be rendered, in Pending.
   void PlanMaps(vtkOpenGLRenderer* renderer);
   /// After the layers were rendered: what the maps now hold.
-  void FinishMaps(std::vector<vtkMTimeType> signature);
+  void FinishMaps(MapSignature signature);
   int UsableResolution();
   /// The maps' resolution when a drag must draw layers: `still` scaled by
   /// InteractiveResolutionScale, not below 64.
@@ -223,7 +224,7 @@ private:
   void ChooseStorage();
   /// The shadow code for the current maps' lights, layers and storage; a new
   /// key rebuilds the mappers' shaders, once the code is known to compile.
-  void UpdateShaders(vtkOpenGLRenderer* renderer);
+  void UpdateShaders();
   /// The transmittance maps as the storage asks (none without translucent casters).
   bool ReserveTransmittanceMaps(std::string& error);
   /// Draws the layers `plans` render, then combines and post-processes them.
@@ -260,7 +261,7 @@ private:
     };
     Step Next = Step::Nothing;
     std::vector<LayerPlan> Plans;
-    std::vector<vtkMTimeType> Signature;
+    MapSignature Signature;
     /// Fail: the failure to warn of (none where no light had usable views).
     std::string Error;
   };
@@ -283,12 +284,7 @@ private:
   int MaximumSamples = 0;
   CasterGLState* Casting = nullptr;
 
-  // The shadow code in the mappers' shaders, the same for every renderer's
-  // maps, and what is set on their programs and which units they read.
-  PassShaders Code;
-  bool CodeCompiles = true;
-  /// The maps whose lights, layers and storage the shader code was made for.
-  const RendererMaps* CodeFor = nullptr;
+  // What is set on the mappers' programs and which units they read.
   ProgramUniforms Uniforms;
   ReceiverTextures Units;
   /// Whether each prop received shadows (and held its own transmittance)

@@ -12,7 +12,6 @@
 #include "vtkVolume.h"
 
 #include <algorithm>
-#include <sstream>
 #include <utility>
 
 namespace shadowmaps
@@ -121,14 +120,22 @@ bool MapGroups::Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s,
     }
     group.Ready = group.Update->Prepare(renderer, s, group.Settings);
   }
-  if (!this->GroupsCompile(window, settings.Exchange))
+  const bool shadowed = std::any_of(this->Groups.begin(), this->Groups.end(),
+    [](const Group& group) { return !group.Update->Lights().empty(); });
+  this->Built.Select(renderer, this->CodeKey(), s, shadowed);
+  // Asked in every frame, shadowed or not: with several groups, every process
+  // makes the same collective call.
+  if (!this->CodeCompiles(window, settings.Exchange))
   {
     // Every group still renders its step, failing: the other processes wait
     // for its answer.
     for (Group& group : this->Groups)
     {
-      group.Update->Abandon("the shadow shader code of the lights' representations does not "
-                            "compile together (see the shader error above)");
+      group.Update->Abandon(alone
+          ? "the shadow shader code does not compile (see the shader error above; a "
+            "representation's GLSL?)"
+          : "the shadow shader code of the lights' representations does not compile together "
+            "(see the shader error above)");
     }
   }
   bool any = false;
@@ -141,31 +148,33 @@ bool MapGroups::Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s,
 }
 
 //------------------------------------------------------------------------------
-bool MapGroups::GroupsCompile(vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange)
+bool MapGroups::CodeCompiles(vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange)
 {
-  // A group left alone tried its code alone only if it changed since: the
-  // last code tried together is tried again alone once.
-  if (this->Groups.size() < 2 && this->CheckedKey.empty())
+  const std::string key = this->CodeKey();
+  auto checked = this->CheckedCodes.find(key);
+  if (checked == this->CheckedCodes.end())
   {
-    return true;
+    if (this->CheckedCodes.size() >= 16)
+    {
+      this->CheckedCodes.clear();
+    }
+    checked = this->CheckedCodes.emplace(key, PassShaders::Compiles(window, this->ShaderCode())).first;
   }
-  std::ostringstream key;
+  const bool compiles = checked->second;
+  // Every process renders its groups' maps, or none does.
+  return exchange && this->Groups.size() >= 2 ? !exchange->AnyOf(!compiles) : compiles;
+}
+
+//------------------------------------------------------------------------------
+std::string MapGroups::CodeKey() const
+{
+  std::string key;
   for (const Group& group : this->Groups)
   {
-    key << group.Update->Shaders().GetKey() << '\n';
+    key += group.Update->Shaders().GetKey();
+    key += '\n';
   }
-  if (key.str() != this->CheckedKey)
-  {
-    this->CheckedKey = key.str();
-    this->CheckedCompiles = PassShaders::Compiles(window, this->ShaderCode());
-  }
-  if (this->Groups.size() < 2 && this->CheckedCompiles)
-  {
-    this->CheckedKey.clear(); // the group tries its own code from now on
-  }
-  // Every process renders its groups' maps, or none does.
-  return exchange && this->Groups.size() >= 2 ? !exchange->AnyOf(!this->CheckedCompiles)
-                                               : this->CheckedCompiles;
+  return key;
 }
 
 //------------------------------------------------------------------------------
@@ -262,12 +271,7 @@ std::vector<GroupCode> MapGroups::ShaderCode() const
 //------------------------------------------------------------------------------
 vtkMTimeType MapGroups::ShaderKeyTime() const
 {
-  vtkMTimeType time = this->GroupsTime.GetMTime();
-  for (const Group& group : this->Groups)
-  {
-    time = std::max(time, group.Update->Shaders().GetKeyTime());
-  }
-  return time;
+  return std::max(this->GroupsTime.GetMTime(), this->Built.RebuildTime());
 }
 
 //------------------------------------------------------------------------------
@@ -382,6 +386,7 @@ void MapGroups::ReleaseMapsOf(vtkRenderer* renderer, vtkOpenGLRenderWindow* wind
   {
     group.Update->ReleaseMapsOf(renderer, window);
   }
+  this->Built.Forget(renderer);
 }
 
 //------------------------------------------------------------------------------
@@ -402,5 +407,6 @@ void MapGroups::ReleaseGraphicsResources(vtkWindow* window)
     group.Update->ReleaseGraphicsResources(window);
     group.Representation->ReleaseGraphicsResources(window);
   }
+  this->Built.Clear();
 }
 } // namespace shadowmaps

@@ -13,6 +13,7 @@
 #ifndef ShadowMapGroups_h
 #define ShadowMapGroups_h
 
+#include "ShadowMapBuiltCode.h"   // For BuiltCode
 #include "ShadowMapFrameUpdate.h" // For FrameSettings, FrameStatistics, FrameUpdate
 
 #include "vtkSmartPointer.h"
@@ -20,10 +21,12 @@
 #include "vtkType.h"
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+class vtkAbstractMapper;
 class vtkLight;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
@@ -75,8 +78,12 @@ public:
 
   /// Every group's share of the mappers' shaders, in group order.
   std::vector<GroupCode> ShaderCode() const;
-  /// When the shaders' code last changed: a group's code, or the groups.
+  /// When the current renderer's mappers must last have built their shaders:
+  /// the groups changed, or its code did, or a prop of it is drawn with
+  /// another renderer's code (BuiltCode).
   vtkMTimeType ShaderKeyTime() const;
+  /// `mapper` just built its shaders with the current renderer's code, to draw `prop`.
+  void ShadersBuilt(vtkAbstractMapper* mapper, vtkProp* prop) { this->Built.Built(mapper, prop); }
 
   /// Sets `program`'s uniforms for its next draw: casting into the group whose
   /// casters draw, else receiving every group's shadows (`active`: the frame
@@ -117,15 +124,18 @@ private:
   void FormGroups(const std::vector<vtkShadowMapRepresentation*>& used,
     const std::vector<vtkShadowMapRepresentation*>& assigned, vtkOpenGLRenderWindow* window);
   void Release(Group& group, vtkWindow* window);
-  /// With several groups, whether their code compiles together (tried once
-  /// per change, and on every process alike); a group left alone after
-  /// them is tried once alone.
-  bool GroupsCompile(vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange);
+  /// Whether the groups' code for the current renderer compiles (together),
+  /// tried once per code; with several groups, on every process alike.
+  bool CodeCompiles(vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange);
+  /// The keys of every group's code for the current renderer, in group order.
+  std::string CodeKey() const;
 
   std::vector<Group> Groups;
   vtkTimeStamp GroupsTime;
-  std::string CheckedKey;
-  bool CheckedCompiles = true;
+  /// Whether the groups' code compiles, by CodeKey: renderers whose lights
+  /// differ hold different code, each tried once.
+  std::map<std::string, bool> CheckedCodes;
+  BuiltCode Built;
 };
 } // namespace shadowmaps
 

@@ -58,7 +58,6 @@ bool PassShaders::Update(const MapStorage& storage, vtkShadowMapRepresentation* 
     return false;
   }
   this->Key = std::move(key);
-  this->KeyTime.Modified();
   return true;
 }
 

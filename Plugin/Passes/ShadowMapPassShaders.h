@@ -14,7 +14,6 @@
 #include "ShadowMapShaderGroup.h"    // For ShaderGroup
 
 #include "vtkAbstractShadowMapPass.h" // For CasterFacesType
-#include "vtkTimeStamp.h"
 
 #include <string>
 #include <vector>
@@ -57,16 +56,11 @@ struct GroupCode
 class PassShaders
 {
 public:
-  PassShaders() { this->KeyTime.Modified(); }
-
   /// Makes the code for maps of `storage`, read as `representation` says, of
   /// `lights` in `layers` layers. True when the key changed: the mappers then
-  /// rebuild their shaders (GetKeyTime).
+  /// rebuild their shaders (BuiltCode).
   bool Update(const MapStorage& storage, vtkShadowMapRepresentation* representation,
     const std::vector<ShadowLight>& lights, int layers, const ShaderChoices& choices);
-
-  /// When the key last changed (vtkOpenGLRenderPass::GetShaderStageMTime).
-  vtkMTimeType GetKeyTime() const { return this->KeyTime.GetMTime(); }
 
   /// The key of the code.
   const std::string& GetKey() const { return this->Key; }
@@ -109,7 +103,6 @@ private:
   ReceiverCode Receivers;
   CasterCode Casters;
   std::string Key;
-  vtkTimeStamp KeyTime;
 };
 } // namespace shadowmaps
 

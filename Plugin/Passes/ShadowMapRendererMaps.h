@@ -1,11 +1,13 @@
 // The maps of each renderer that draws through a pass, and of each eye of a
 // stereo camera: views sharing one set would fit and render it anew for each
-// other. A renderer's maps hold their GL objects, their receivers' uniforms
-// and what they were last rendered for (MapUpdates). Not a VTK class.
+// other. A renderer's maps hold their GL objects, their receivers' uniforms,
+// the shader code made for them, and what they were last rendered for
+// (MapUpdates). Not a VTK class.
 #ifndef ShadowMapRendererMaps_h
 #define ShadowMapRendererMaps_h
 
 #include "ShadowMapLinearDepthResolve.h"
+#include "ShadowMapPassShaders.h"
 #include "ShadowMapPropRecords.h"
 #include "ShadowMapReceiverShader.h"
 #include "ShadowMapStoreFromLightDepths.h"
@@ -27,7 +29,7 @@ class vtkWindow;
 namespace shadowmaps
 {
 /// One renderer's (one eye's) maps, what renders them, their receivers'
-/// uniforms, and what the maps were last rendered for.
+/// uniforms and shader code, and what the maps were last rendered for.
 struct RendererMaps
 {
   TextureArray Maps;
@@ -47,6 +49,10 @@ struct RendererMaps
   /// The props' bounds and versions, read again only when they change.
   PropRecords Props;
   int Layers = 0;
+  /// The shadow code for these maps' lights, layers and storage. Each
+  /// renderer's is its own, so that renderers whose lights differ do not
+  /// change the code of each other's mappers (MapGroups::ShaderKeyTime).
+  PassShaders Code;
 
   /// Makes Maps those held at `resolution` if SpareMaps holds them, and keeps
   /// as SpareMaps only maps of resolution `spare` (0: none), released else.

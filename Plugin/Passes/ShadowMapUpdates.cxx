@@ -194,13 +194,15 @@ std::vector<CasterStamp> StampsOf(const std::vector<const Caster*>& casters)
 } // namespace
 
 //------------------------------------------------------------------------------
-std::vector<vtkMTimeType> MapUpdates::Signature(const MapInputs& inputs, const ShadowFrame& frame,
+MapSignature MapUpdates::Signature(const MapInputs& inputs, const ShadowFrame& frame,
   const std::vector<ShadowLight>& lights, const std::vector<Caster>& casters)
 {
-  std::vector<vtkMTimeType> signature = { inputs.PassTime, inputs.LightsTime, inputs.PropsTime,
+  MapSignature whole;
+  whole.CameraView = frame.CameraView;
+  whole.CameraProjection = frame.CameraProjection;
+  std::vector<vtkMTimeType>& signature = whole.Words;
+  signature = { inputs.PassTime, inputs.LightsTime, inputs.PropsTime,
     static_cast<vtkMTimeType>(inputs.ViewportWidth), static_cast<vtkMTimeType>(inputs.ViewportHeight) };
-  AppendMatrixBits(frame.CameraView, signature);
-  AppendMatrixBits(frame.CameraProjection, signature);
   // The fits and the casters' reach follow every prop's bounds, receivers'
   // too (every process's, with an exchange).
   for (const Aabb& box : frame.PropBounds)
@@ -222,7 +224,31 @@ std::vector<vtkMTimeType> MapUpdates::Signature(const MapInputs& inputs, const S
     signature.push_back(reinterpret_cast<vtkMTimeType>(caster.Prop));
     signature.push_back(caster.Version);
   }
-  return signature;
+  return whole;
+}
+
+//------------------------------------------------------------------------------
+bool MapSignature::Matches(const MapSignature& other) const
+{
+  // A ten-millionth, far below anything a camera's move or zoom changes (a
+  // 4096-texel map would move by a 2,000th of a texel); entries below one
+  // (a rotation's) are compared absolutely.
+  const auto near = [](const glm::dmat4& a, const glm::dmat4& b) {
+    for (int c = 0; c < 4; ++c)
+    {
+      for (int r = 0; r < 4; ++r)
+      {
+        const double scale = std::max({ 1.0, std::abs(a[c][r]), std::abs(b[c][r]) });
+        if (!(std::abs(a[c][r] - b[c][r]) <= 1e-7 * scale))
+        {
+          return false;
+        }
+      }
+    }
+    return true;
+  };
+  return this->Words == other.Words && near(this->CameraView, other.CameraView) &&
+    near(this->CameraProjection, other.CameraProjection);
 }
 
 //------------------------------------------------------------------------------
@@ -243,15 +269,15 @@ bool MapUpdates::TakeShaderIndices(const std::vector<ShadowLight>& collected)
 }
 
 //------------------------------------------------------------------------------
-bool MapUpdates::Current(const std::vector<vtkMTimeType>& signature) const
+bool MapUpdates::Current(const MapSignature& signature) const
 {
-  return !this->RenderedSignature.empty() && signature == this->RenderedSignature;
+  return !this->RenderedSignature.Empty() && signature.Matches(this->RenderedSignature);
 }
 
 //------------------------------------------------------------------------------
 void MapUpdates::Invalidate()
 {
-  this->RenderedSignature.clear();
+  this->RenderedSignature = MapSignature();
   this->Layers.clear();
   this->LayersDrawnInDrag.clear();
   this->RenderedLights.clear();
@@ -292,7 +318,7 @@ std::vector<LightView> MapUpdates::KeptViews(
 void MapUpdates::BeginUpdate(const std::vector<vtkMTimeType>& layersKey, int layers, bool combined,
   const std::vector<Caster>& casters)
 {
-  this->RenderedSignature.clear();
+  this->RenderedSignature = MapSignature();
   if (layersKey != this->LayersKey || combined)
   {
     this->LayersKey = layersKey;
@@ -375,7 +401,7 @@ void MapUpdates::Rendered(int layer, LayerPlan plan)
 }
 
 //------------------------------------------------------------------------------
-void MapUpdates::Finish(const std::vector<ShadowLight>& lights, std::vector<vtkMTimeType> signature,
+void MapUpdates::Finish(const std::vector<ShadowLight>& lights, MapSignature signature,
   vtkMTimeType passTime, int resolution, const Aabb& sceneBounds)
 {
   this->RenderedLights = lights;

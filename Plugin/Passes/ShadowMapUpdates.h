@@ -57,15 +57,30 @@ struct LayerPlan
   bool DrawsEveryCasterInView = false;
 };
 
+/// What the maps of a frame depend on: the camera's matrices, and the bits of
+/// everything else. The camera is compared within a ten-millionth: a capture
+/// of a renderer that fills part of the window (vtkWindowToImageFilter)
+/// derives its projection by another path, which differs by about 5e-9.
+struct MapSignature
+{
+  std::vector<vtkMTimeType> Words;
+  glm::dmat4 CameraView{ 0.0 };
+  glm::dmat4 CameraProjection{ 0.0 };
+
+  /// Whether `other` is this signature, its camera within a ten-millionth.
+  bool Matches(const MapSignature& other) const;
+  bool Empty() const { return this->Words.empty(); }
+};
+
 class MapUpdates
 {
 public:
   /// The signature of everything the maps of `frame` depend on.
-  static std::vector<vtkMTimeType> Signature(const MapInputs& inputs, const ShadowFrame& frame,
+  static MapSignature Signature(const MapInputs& inputs, const ShadowFrame& frame,
     const std::vector<ShadowLight>& lights, const std::vector<Caster>& casters);
 
   /// Whether the maps were rendered for `signature` and are still there.
-  bool Current(const std::vector<vtkMTimeType>& signature) const;
+  bool Current(const MapSignature& signature) const;
 
   /// The maps are gone (released, or a GL failure): everything is rendered anew.
   void Invalidate();
@@ -93,7 +108,7 @@ public:
   void Rendered(int layer, LayerPlan plan);
 
   /// The update finished: the maps show `lights` for `signature`.
-  void Finish(const std::vector<ShadowLight>& lights, std::vector<vtkMTimeType> signature,
+  void Finish(const std::vector<ShadowLight>& lights, MapSignature signature,
     vtkMTimeType passTime, int resolution, const Aabb& sceneBounds);
 
   /// The lights and views the maps were last rendered for.
@@ -105,7 +120,7 @@ public:
   bool TakeShaderIndices(const std::vector<ShadowLight>& collected);
 
 private:
-  std::vector<vtkMTimeType> RenderedSignature; // empty: to be rendered
+  MapSignature RenderedSignature; // empty: to be rendered
   std::vector<LayerContent> Layers;
   std::vector<bool> LayersDrawnInDrag;
   std::vector<vtkMTimeType> LayersKey;

@@ -648,10 +648,11 @@ bool vtkAbstractShadowMapPass::PreReplaceShaderValues(std::string&, std::string&
 
 //------------------------------------------------------------------------------
 bool vtkAbstractShadowMapPass::PostReplaceShaderValues(std::string& vertexShader,
-  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   using shadowmaps::ReceiverRole;
   const std::vector<shadowmaps::GroupCode> code = this->Internal->Groups.ShaderCode();
+  this->Internal->Groups.ShadersBuilt(mapper, prop);
   ++this->NumberOfShaderBuilds;
   // Shaders first built by a caster draw are the ones the scene then uses; a
   // renderer drawing a prop the pass keeps joined (PropJoining) builds them

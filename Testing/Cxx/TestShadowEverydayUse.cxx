@@ -387,22 +387,34 @@ void LookFromAnotherSide(vtkRenderer* renderer)
   renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
   renderer->ResetCameraClippingRange();
 }
+
+// The test scene on the left half, seen from another side on the right, both
+// drawn through one cascaded pass.
+struct TwoSidesOneCascadedPass
+{
+  TestScene Scene{ 480, 240 };
+  vtkNew<vtkRenderer> Right;
+  vtkNew<vtkCascadedShadowMapPass> Pass;
+
+  TwoSidesOneCascadedPass()
+  {
+    this->Scene.SetSun(SideSun);
+    ShareSceneWithRightHalf(this->Scene, this->Right);
+    LookFromAnotherSide(this->Right);
+    this->Scene.Renderer->SetPass(this->Pass);
+    this->Right->SetPass(this->Pass);
+  }
+};
 } // namespace
 
 // One pass shared by two renderers side by side: each shows its own view's
 // shadows, as a fresh pass would, and still cameras re-render no layer.
 TEST(ShadowEverydayUse, TwoRenderersShareAPass)
 {
-  TestScene scene(480, 240);
-  scene.SetSun(SideSun);
-  vtkNew<vtkRenderer> right;
-  ShareSceneWithRightHalf(scene, right);
-  LookFromAnotherSide(right);
-  vtkNew<vtkCascadedShadowMapPass> pass;
-  scene.Renderer->SetPass(pass);
-  right->SetPass(pass);
-  // Rendered, then captured as rendered: vtkWindowToImageFilter's own render
-  // moves each camera's view angle by a rounding error.
+  TwoSidesOneCascadedPass two;
+  TestScene& scene = two.Scene;
+  vtkRenderer* right = two.Right;
+  vtkCascadedShadowMapPass* pass = two.Pass;
   scene.Window->Render();
   const int updates = pass->GetNumberOfShadowMapUpdates();
   scene.Window->Render();
@@ -417,6 +429,28 @@ TEST(ShadowEverydayUse, TwoRenderersShareAPass)
   EXPECT_TRUE(shared == separate) << "a shared pass draws other shadows than a pass per renderer";
   auto image = CaptureAsRendered(scene.Window);
   EXPECT_LT(LuminanceAt(right, image, GroundShadowOfSphereCenter(SideSun)), ShadowedBelow);
+}
+
+// A window of two renderers captured by vtkWindowToImageFilter, whose own
+// render derives each renderer's projection by another path (about 5e-9
+// apart): no map is rendered for the capture, nor for the plain frame after
+// it, and the capture is the plain frame.
+TEST(ShadowEverydayUse, CapturingTwoRenderersRendersNoMap)
+{
+  TwoSidesOneCascadedPass two;
+  TestScene& scene = two.Scene;
+  vtkCascadedShadowMapPass* pass = two.Pass;
+  scene.Window->Render();
+  scene.Window->Render();
+  const int updates = pass->GetNumberOfShadowMapUpdates();
+  const auto plain = RgbBytes(CaptureAsRendered(scene.Window));
+  const auto captured = RgbBytes(RenderAndCapture(scene.Window));
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates) << "the capture rendered maps";
+  scene.Window->Render();
+  EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates) << "the frame after it rendered maps";
+  EXPECT_TRUE(plain == captured) << "the capture differs from the plain frame";
+  scene.Renderer->SetPass(nullptr);
+  two.Right->SetPass(nullptr);
 }
 
 namespace
@@ -614,6 +648,47 @@ TEST(ShadowEverydayUse, StereoEyesKeepTheirMaps)
   scene.Renderer->GetActiveCamera()->Azimuth(10.0);
   scene.Window->Render();
   EXPECT_EQ(pass->GetNumberOfShadowMapUpdates(), updates + 2) << "each eye fits the moved camera";
+}
+
+// The eyes of a stereo camera hold the same shader code: a change of it (a
+// second light switched on and off) builds each mapper's shaders once, as
+// without stereo.
+TEST(ShadowEverydayUse, StereoEyesBuildShadersOnceForACodeChange)
+{
+  std::vector<int> builds[2];
+  for (int stereo : { 0, 1 })
+  {
+    TestScene scene(480, 240);
+    scene.SetSun(SideSun);
+    vtkNew<vtkLight> spot;
+    spot->SetLightTypeToSceneLight();
+    spot->SetPositional(true);
+    spot->SetPosition(-1.0, 0.5, 5.0);
+    spot->SetFocalPoint(0.0, 0.0, 0.0);
+    spot->SetConeAngle(40.0);
+    scene.Renderer->AddLight(spot);
+    scene.Window->SetStereoTypeToSplitViewportHorizontal();
+    scene.Window->SetStereoRender(stereo);
+    vtkNew<vtkDepthShadowMapPass> pass;
+    scene.Renderer->SetPass(pass);
+    const auto frame = [&] {
+      const int before = pass->GetNumberOfShaderBuilds();
+      scene.Window->Render();
+      builds[stereo].push_back(pass->GetNumberOfShaderBuilds() - before);
+    };
+    frame();
+    frame();
+    spot->SwitchOff();
+    frame();
+    frame();
+    spot->SwitchOn();
+    frame();
+    frame();
+    scene.Renderer->SetPass(nullptr);
+  }
+  EXPECT_EQ(builds[1], builds[0]) << "stereo built more than mono";
+  EXPECT_GT(builds[0][2], 0) << "the switch changed no code";
+  EXPECT_EQ(builds[0][3] + builds[0][5], 0) << "a still frame built shaders";
 }
 
 // The casters' GL state is set for their draws and restored after, as the

@@ -8,6 +8,7 @@
 using shadowmaps::Aabb;
 using shadowmaps::Caster;
 using shadowmaps::LayerRequest;
+using shadowmaps::MapSignature;
 using shadowmaps::MapUpdates;
 using shadowmaps::ShadowFrame;
 using shadowmaps::ShadowLight;
@@ -173,15 +174,25 @@ TEST(ShadowMapUpdates, ADragsLayerFollowsCastersBoundsAsWellAsVersions)
   EXPECT_TRUE(updates.Plan(drag, after, request).Render) << "the same version, now in view";
 }
 
+namespace
+{
+MapSignature WordsOnly(std::vector<vtkMTimeType> words)
+{
+  MapSignature signature;
+  signature.Words = std::move(words);
+  return signature;
+}
+} // namespace
+
 // Views are kept only where nothing but the camera moved since.
 TEST(ShadowMapUpdates, ViewsKeptOnlyWhenOnlyTheCameraMoved)
 {
   const ShadowLight light = SunAbove();
   const Aabb bounds = Aabb::FromBounds(std::array<double, 6>{ -1, 1, -1, 1, -1, 1 }.data());
   MapUpdates updates;
-  updates.Finish({ light }, { 1, 2, 3 }, 5, 1024, bounds);
-  EXPECT_TRUE(updates.Current({ 1, 2, 3 }));
-  EXPECT_FALSE(updates.Current({ 1, 2, 4 }));
+  updates.Finish({ light }, WordsOnly({ 1, 2, 3 }), 5, 1024, bounds);
+  EXPECT_TRUE(updates.Current(WordsOnly({ 1, 2, 3 })));
+  EXPECT_FALSE(updates.Current(WordsOnly({ 1, 2, 4 })));
   EXPECT_EQ(updates.KeptViews(light, 5, 1024, bounds).size(), 1u);
   EXPECT_TRUE(updates.KeptViews(light, 6, 1024, bounds).empty()) << "a parameter changed";
   EXPECT_TRUE(updates.KeptViews(light, 5, 2048, bounds).empty()) << "another resolution";
@@ -189,6 +200,35 @@ TEST(ShadowMapUpdates, ViewsKeptOnlyWhenOnlyTheCameraMoved)
   moved.Direction = glm::dvec3(0.0, 0.1, -1.0);
   EXPECT_TRUE(updates.KeptViews(moved, 5, 1024, bounds).empty()) << "the light turned";
   updates.Invalidate();
-  EXPECT_FALSE(updates.Current({ 1, 2, 3 }));
+  EXPECT_FALSE(updates.Current(WordsOnly({ 1, 2, 3 })));
   EXPECT_TRUE(updates.KeptViews(light, 5, 1024, bounds).empty());
+}
+
+// A camera whose projection was derived by another path (a capture's, about
+// 5e-9 apart) is the same camera; one turned or zoomed the least a user can
+// is not; a camera far from the origin is compared relatively.
+TEST(ShadowMapUpdates, CamerasMatchWithinATenMillionth)
+{
+  MapSignature rendered = WordsOnly({ 1, 2, 3 });
+  rendered.CameraView = glm::lookAt(glm::dvec3(0.0, -16.0, 10.0), glm::dvec3(0.0), glm::dvec3(0, 0, 1));
+  rendered.CameraProjection = glm::perspective(glm::radians(30.0), 1.5, 0.1, 100.0);
+  MapSignature capture = rendered;
+  capture.CameraProjection[0][0] *= 1.0 + 5e-9;
+  EXPECT_TRUE(capture.Matches(rendered));
+  MapSignature zoomed = rendered;
+  zoomed.CameraProjection[1][1] *= 1.0 + 1e-5;
+  EXPECT_FALSE(zoomed.Matches(rendered));
+  MapSignature turned = rendered;
+  turned.CameraView = glm::rotate(rendered.CameraView, 1e-5, glm::dvec3(0, 0, 1));
+  EXPECT_FALSE(turned.Matches(rendered));
+  MapSignature other = capture;
+  other.Words.back() = 4;
+  EXPECT_FALSE(other.Matches(rendered));
+  MapSignature far = rendered;
+  far.CameraView = glm::translate(rendered.CameraView, glm::dvec3(1e6, 0.0, 0.0));
+  MapSignature farther = far;
+  farther.CameraView[3][0] += 1e-3; // a billionth of the distance
+  EXPECT_TRUE(farther.Matches(far));
+  farther.CameraView[3][0] += 1.0;
+  EXPECT_FALSE(farther.Matches(far));
 }
