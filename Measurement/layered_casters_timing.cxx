@@ -132,7 +132,7 @@ GLuint Program(const std::string& vs, const std::string& gs, const std::string& 
 const char* const Header = "#version 410 core\n";
 
 // One crop per layer: strips of the light view's x range, each overlapping
-// the next by a tenth of the range.
+// the next by a twentieth of the range.
 std::vector<glm::mat4> Crops(const Mesh& mesh, glm::mat4& lightView)
 {
   const glm::vec3 centre = 0.5f * (mesh.Min + mesh.Max);

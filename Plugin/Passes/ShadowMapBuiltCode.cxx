@@ -33,7 +33,8 @@ void BuiltCode::Select(
   current.Renderer = renderer;
   current.Code = this->NumberOf(code);
   this->Current = &current;
-  if (current.Code != previous || (this->RenderersDiffer() && this->DrawnWithAnother(s)))
+  if (current.Code != previous || (this->AnyBuiltWithAnother() && this->BuiltWithAnother(s)) ||
+    (this->RenderersDiffer() && this->SharedWithAnother(s)))
   {
     current.Rebuild.Modified();
   }
@@ -61,15 +62,73 @@ void BuiltCode::Record(vtkAbstractMapper* mapper)
   {
     return;
   }
-  this->Mappers[mapper] = { mapper, this->Current->Code };
+  auto record = this->Mappers.find(mapper);
+  if (record == this->Mappers.end())
+  {
+    record = this->Mappers.emplace(mapper, std::make_pair(vtkWeakPointer<vtkObject>(mapper), 0)).first;
+  }
+  else if (!record->second.first)
+  {
+    record->second.first = mapper; // another mapper at a deleted one's address
+  }
+  if (record->second.second != this->Current->Code)
+  {
+    this->Count(record->second.second, -1);
+    this->Count(this->Current->Code, +1);
+    record->second.second = this->Current->Code;
+  }
   if (this->Mappers.size() > 2 * this->MappersAtLastPurge + 64)
   {
-    for (auto it = this->Mappers.begin(); it != this->Mappers.end();)
-    {
-      it = it->second.first ? std::next(it) : this->Mappers.erase(it);
-    }
-    this->MappersAtLastPurge = this->Mappers.size();
+    this->Purge();
   }
+}
+
+//------------------------------------------------------------------------------
+void BuiltCode::Count(int code, int change)
+{
+  if (code == 0)
+  {
+    return; // a record not counted yet
+  }
+  long& count = this->RecordsOfCode[code];
+  count += change;
+  if (count == 0)
+  {
+    this->RecordsOfCode.erase(code);
+  }
+}
+
+//------------------------------------------------------------------------------
+void BuiltCode::Purge()
+{
+  for (auto it = this->Mappers.begin(); it != this->Mappers.end();)
+  {
+    if (it->second.first)
+    {
+      ++it;
+      continue;
+    }
+    this->Count(it->second.second, -1);
+    it = this->Mappers.erase(it);
+  }
+  this->MappersAtLastPurge = this->Mappers.size();
+}
+
+//------------------------------------------------------------------------------
+bool BuiltCode::AnyBuiltWithAnother()
+{
+  const auto another = [this] {
+    return std::any_of(this->RecordsOfCode.begin(), this->RecordsOfCode.end(),
+      [this](const std::pair<const int, long>& codes) {
+        return codes.first != this->Current->Code;
+      });
+  };
+  if (!another())
+  {
+    return false;
+  }
+  this->Purge(); // the other code's mappers may all be gone
+  return another();
 }
 
 //------------------------------------------------------------------------------
@@ -96,6 +155,7 @@ void BuiltCode::Clear()
   this->Current = nullptr;
   this->Mappers.clear();
   this->MappersAtLastPurge = 0;
+  this->RecordsOfCode.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -134,7 +194,7 @@ bool BuiltCode::RenderersDiffer()
 }
 
 //------------------------------------------------------------------------------
-bool BuiltCode::DrawnWithAnother(const vtkRenderState* s) const
+bool BuiltCode::SharedWithAnother(const vtkRenderState* s) const
 {
   const auto otherCode = [this](vtkObject* consumer) {
     auto* renderer = vtkRenderer::SafeDownCast(consumer);
@@ -152,8 +212,17 @@ bool BuiltCode::DrawnWithAnother(const vtkRenderState* s) const
         return true;
       }
     }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool BuiltCode::BuiltWithAnother(const vtkRenderState* s) const
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
     bool another = false;
-    ForEachPart(prop, [&](vtkProp* part, vtkMatrix4x4*) {
+    ForEachPart(s->GetPropArray()[i], [&](vtkProp* part, vtkMatrix4x4*) {
       auto built = this->Mappers.find(MapperOf(part));
       another = another ||
         (built != this->Mappers.end() && built->second.first &&

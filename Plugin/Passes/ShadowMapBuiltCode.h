@@ -1,12 +1,13 @@
 // When a renderer's mappers must build their shaders again: VTK's mappers ask
 // a render pass one time for all of them (GetShaderStageMTime), not whether
 // its code changed for them. A renderer's code (every group's, for its lights)
-// is known by a number: its mappers build again when that number changes, or,
-// where renderers sharing the pass hold different code, when one of its props
-// is drawn by another renderer too, or its mapper was last built with another
-// code (a mapper drawn for both). A renderer without shadowed lights draws
-// with whatever code its programs hold, the receiving turned off. The eyes of
-// a stereo camera hold the same code. Not a VTK class.
+// is known by a number: its mappers build again when that number changes, when
+// a mapper one of its props draws with was last built with another code (a
+// mapper drawn for another renderer too, which may since have stopped), or,
+// where renderers drawing through the pass hold different code, when one of
+// its props is also another's. A renderer without shadowed lights draws with
+// whatever code its programs hold, the receiving turned off. The eyes of a
+// stereo camera hold the same code. Not a VTK class.
 #ifndef ShadowMapBuiltCode_h
 #define ShadowMapBuiltCode_h
 
@@ -58,10 +59,17 @@ private:
   int NumberOf(const std::string& code);
   /// Whether renderers drawing now hold more than one code.
   bool RenderersDiffer();
-  /// Whether a prop of `s` is drawn by a renderer of another code, or draws
-  /// with a mapper last built with another.
-  bool DrawnWithAnother(const vtkRenderState* s) const;
+  /// Whether a prop of `s` is drawn by a renderer of another code.
+  bool SharedWithAnother(const vtkRenderState* s) const;
+  /// Whether a prop of `s` draws with a mapper last built with another code.
+  bool BuiltWithAnother(const vtkRenderState* s) const;
+  /// Whether any mapper alive was last built with another code than the
+  /// current one (forgets the deleted ones).
+  bool AnyBuiltWithAnother();
   void Record(vtkAbstractMapper* mapper);
+  /// Adds `change` to the records of `code` (0: none).
+  void Count(int code, int change);
+  void Purge();
 
   std::map<std::string, int> Numbers;
   int NextNumber = 1;
@@ -72,6 +80,8 @@ private:
   /// (composite and glyph mappers, vtkSmartVolumeMapper).
   std::unordered_map<vtkObject*, std::pair<vtkWeakPointer<vtkObject>, int>> Mappers;
   std::size_t MappersAtLastPurge = 0;
+  /// How many records hold each code, deleted mappers' included until purged.
+  std::map<int, long> RecordsOfCode;
 };
 } // namespace shadowmaps
 

@@ -386,7 +386,7 @@ void MapGroups::ReleaseMapsOf(vtkRenderer* renderer, vtkOpenGLRenderWindow* wind
   {
     group.Update->ReleaseMapsOf(renderer, window);
   }
-  this->Built.Forget(renderer);
+  this->ForgetCodeOf(renderer);
 }
 
 //------------------------------------------------------------------------------

@@ -103,6 +103,9 @@ public:
   bool HoldsNoMaps() const;
   std::size_t MemoryBytes() const;
   void ReleaseMapsOf(vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
+  /// `renderer` stopped drawing through the pass: its shader code no longer
+  /// counts (BuiltCode).
+  void ForgetCodeOf(vtkRenderer* renderer) { this->Built.Forget(renderer); }
   /// Releases every GL object the groups hold in `window`'s (current) context.
   void ReleaseGraphicsResources(vtkWindow* window);
 

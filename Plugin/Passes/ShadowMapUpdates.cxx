@@ -198,11 +198,11 @@ MapSignature MapUpdates::Signature(const MapInputs& inputs, const ShadowFrame& f
   const std::vector<ShadowLight>& lights, const std::vector<Caster>& casters)
 {
   MapSignature whole;
-  whole.CameraView = frame.CameraView;
   whole.CameraProjection = frame.CameraProjection;
   std::vector<vtkMTimeType>& signature = whole.Words;
   signature = { inputs.PassTime, inputs.LightsTime, inputs.PropsTime,
     static_cast<vtkMTimeType>(inputs.ViewportWidth), static_cast<vtkMTimeType>(inputs.ViewportHeight) };
+  AppendMatrixBits(frame.CameraView, signature);
   // The fits and the casters' reach follow every prop's bounds, receivers'
   // too (every process's, with an exchange).
   for (const Aabb& box : frame.PropBounds)
@@ -230,25 +230,24 @@ MapSignature MapUpdates::Signature(const MapInputs& inputs, const ShadowFrame& f
 //------------------------------------------------------------------------------
 bool MapSignature::Matches(const MapSignature& other) const
 {
-  // A ten-millionth, far below anything a camera's move or zoom changes (a
-  // 4096-texel map would move by a 2,000th of a texel); entries below one
-  // (a rotation's) are compared absolutely.
-  const auto near = [](const glm::dmat4& a, const glm::dmat4& b) {
-    for (int c = 0; c < 4; ++c)
+  // Each entry within a ten-millionth of itself, far below anything a zoom
+  // changes (a 4096-texel map would move by a 2,000th of a texel); relative
+  // only, since a parallel camera's entries scale with the inverse of its
+  // size. The view's translation is in world units, whose scale this does not
+  // know: it is compared bit for bit, with the rest (Words).
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
     {
-      for (int r = 0; r < 4; ++r)
+      const double a = this->CameraProjection[c][r];
+      const double b = other.CameraProjection[c][r];
+      if (!(std::abs(a - b) <= 1e-7 * std::max(std::abs(a), std::abs(b))))
       {
-        const double scale = std::max({ 1.0, std::abs(a[c][r]), std::abs(b[c][r]) });
-        if (!(std::abs(a[c][r] - b[c][r]) <= 1e-7 * scale))
-        {
-          return false;
-        }
+        return false;
       }
     }
-    return true;
-  };
-  return this->Words == other.Words && near(this->CameraView, other.CameraView) &&
-    near(this->CameraProjection, other.CameraProjection);
+  }
+  return this->Words == other.Words;
 }
 
 //------------------------------------------------------------------------------

@@ -57,17 +57,17 @@ struct LayerPlan
   bool DrawsEveryCasterInView = false;
 };
 
-/// What the maps of a frame depend on: the camera's matrices, and the bits of
-/// everything else. The camera is compared within a ten-millionth: a capture
-/// of a renderer that fills part of the window (vtkWindowToImageFilter)
-/// derives its projection by another path, which differs by about 5e-9.
+/// What the maps of a frame depend on: the camera's projection, and the bits
+/// of everything else. The projection is compared within a ten-millionth: a
+/// capture of a renderer that fills part of the window
+/// (vtkWindowToImageFilter) derives it by another path, which differs by
+/// about 5e-9.
 struct MapSignature
 {
   std::vector<vtkMTimeType> Words;
-  glm::dmat4 CameraView{ 0.0 };
   glm::dmat4 CameraProjection{ 0.0 };
 
-  /// Whether `other` is this signature, its camera within a ten-millionth.
+  /// Whether `other` is this signature, its projection within a ten-millionth.
   bool Matches(const MapSignature& other) const;
   bool Empty() const { return this->Words.empty(); }
 };

@@ -498,6 +498,8 @@ void vtkAbstractShadowMapPass::SelectRendererMaps(vtkOpenGLRenderer* renderer)
 void vtkAbstractShadowMapPass::ReleaseMapsOf(vtkRenderer* renderer)
 {
   Internals& r = *this->Internal;
+  // Its code no longer counts, whatever maps it holds.
+  r.Groups.ForgetCodeOf(renderer);
   if (!r.Context || !r.Groups.HoldsMapsOf(renderer))
   {
     return; // released with the context it was moved from, or never drawn

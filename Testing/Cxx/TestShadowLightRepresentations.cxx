@@ -563,6 +563,39 @@ TEST(ShadowLightRepresentations, ARendererWithoutShadowsOrDrawingBuildsNoOthersS
   }
 }
 
+// Mappers last built for the other renderer, which then stops drawing or is
+// taken off the window, build again for this one: its pixels are its own
+// code's.
+TEST(ShadowLightRepresentations, ARendererThatStopsLeavesTheOtherItsOwnCode)
+{
+  TwoRenderers alone(Sharing::Mappers, true);
+  alone.Other->DrawOff();
+  const auto own =
+    TwoRenderers::ViewportBytes(RenderAndCapture(alone.Left.Scene.Window), alone.Left.Scene.Renderer);
+  for (bool removed : { false, true })
+  {
+    for (Sharing sharing : { Sharing::Mappers, Sharing::Actors })
+    {
+      TwoRenderers two(sharing, true);
+      vtkRenderWindow* window = two.Left.Scene.Window;
+      window->Render();
+      window->Render();
+      if (removed)
+      {
+        two.Other->SetPass(nullptr);
+        window->RemoveRenderer(two.Other);
+      }
+      else
+      {
+        two.Other->DrawOff();
+      }
+      EXPECT_TRUE(TwoRenderers::ViewportBytes(RenderAndCapture(window), two.Left.Scene.Renderer) == own)
+        << (sharing == Sharing::Mappers ? "mappers" : "actors") << " shared with a renderer "
+        << (removed ? "removed" : "no longer drawing") << ": the left renderer drew another's code";
+    }
+  }
+}
+
 TEST(ShadowLightRepresentations, WhatBothRenderersDrawDrawsWithEachRenderersCode)
 {
   const std::pair<Sharing, const char*> kinds[] = { { Sharing::Actors, "actors" },

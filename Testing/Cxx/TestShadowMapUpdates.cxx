@@ -204,31 +204,51 @@ TEST(ShadowMapUpdates, ViewsKeptOnlyWhenOnlyTheCameraMoved)
   EXPECT_TRUE(updates.KeptViews(light, 5, 1024, bounds).empty());
 }
 
-// A camera whose projection was derived by another path (a capture's, about
-// 5e-9 apart) is the same camera; one turned or zoomed the least a user can
-// is not; a camera far from the origin is compared relatively.
-TEST(ShadowMapUpdates, CamerasMatchWithinATenMillionth)
+// A projection derived by another path (a capture's, about 5e-9 apart) is the
+// same; one zoomed the least a user can is not, nor a parallel scale or a
+// window centre moved; the rest of the signature (the view among it, whose
+// translation is in world units) is compared bit for bit.
+TEST(ShadowMapUpdates, ProjectionsMatchWithinATenMillionth)
 {
   MapSignature rendered = WordsOnly({ 1, 2, 3 });
-  rendered.CameraView = glm::lookAt(glm::dvec3(0.0, -16.0, 10.0), glm::dvec3(0.0), glm::dvec3(0, 0, 1));
   rendered.CameraProjection = glm::perspective(glm::radians(30.0), 1.5, 0.1, 100.0);
   MapSignature capture = rendered;
   capture.CameraProjection[0][0] *= 1.0 + 5e-9;
+  capture.CameraProjection[3][2] *= 1.0 - 5e-9;
   EXPECT_TRUE(capture.Matches(rendered));
   MapSignature zoomed = rendered;
   zoomed.CameraProjection[1][1] *= 1.0 + 1e-5;
   EXPECT_FALSE(zoomed.Matches(rendered));
-  MapSignature turned = rendered;
-  turned.CameraView = glm::rotate(rendered.CameraView, 1e-5, glm::dvec3(0, 0, 1));
-  EXPECT_FALSE(turned.Matches(rendered));
+  MapSignature parallel = WordsOnly({ 1, 2, 3 });
+  parallel.CameraProjection = glm::ortho(-2.0, 2.0, -1.5, 1.5, 0.1, 100.0);
+  MapSignature scaled = parallel;
+  scaled.CameraProjection[0][0] *= 1.0 + 1e-5;
+  EXPECT_FALSE(scaled.Matches(parallel));
+  MapSignature shifted = parallel;
+  shifted.CameraProjection[3][0] += 1e-5; // a window centre moved
+  EXPECT_FALSE(shifted.Matches(parallel));
   MapSignature other = capture;
   other.Words.back() = 4;
   EXPECT_FALSE(other.Matches(rendered));
-  MapSignature far = rendered;
-  far.CameraView = glm::translate(rendered.CameraView, glm::dvec3(1e6, 0.0, 0.0));
-  MapSignature farther = far;
-  farther.CameraView[3][0] += 1e-3; // a billionth of the distance
-  EXPECT_TRUE(farther.Matches(far));
-  farther.CameraView[3][0] += 1.0;
-  EXPECT_FALSE(farther.Matches(far));
+  MapSignature huge = WordsOnly({ 1, 2, 3 });
+  huge.CameraProjection = glm::ortho(-2e5, 2e5, -1.5e5, 1.5e5, 0.1, 1e6);
+  MapSignature zoomedOut = huge;
+  zoomedOut.CameraProjection[0][0] *= 1.0 + 1e-5; // a parallel scale of 2e5 changed
+  EXPECT_FALSE(zoomedOut.Matches(huge));
+}
+
+// The camera's view is in the signature bit for bit: a camera a million units
+// from the origin moved by a thousandth renders new maps.
+TEST(ShadowMapUpdates, AViewFarFromTheOriginMovedRendersNewMaps)
+{
+  shadowmaps::MapInputs inputs;
+  ShadowFrame frame;
+  frame.CameraProjection = glm::perspective(glm::radians(30.0), 1.5, 0.1, 100.0);
+  frame.CameraView =
+    glm::lookAt(glm::dvec3(1e6, 0.0, 5.0), glm::dvec3(1e6, 0.0, 0.0), glm::dvec3(0, 1, 0));
+  const MapSignature rendered = MapUpdates::Signature(inputs, frame, {}, {});
+  EXPECT_TRUE(MapUpdates::Signature(inputs, frame, {}, {}).Matches(rendered));
+  frame.CameraView =
+    glm::lookAt(glm::dvec3(1e6 + 1e-3, 0.0, 5.0), glm::dvec3(1e6 + 1e-3, 0.0, 0.0), glm::dvec3(0, 1, 0));
+  EXPECT_FALSE(MapUpdates::Signature(inputs, frame, {}, {}).Matches(rendered));
 }
