@@ -7,6 +7,8 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 
+#include <algorithm>
+#include <iterator>
 #include <set>
 
 namespace shadowmaps
