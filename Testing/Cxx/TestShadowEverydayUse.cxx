@@ -388,6 +388,20 @@ void LookFromAnotherSide(vtkRenderer* renderer)
   renderer->ResetCameraClippingRange();
 }
 
+// A spot over the scene, lighting it besides its sun (another light count and
+// kind than the sun's alone: other shader code).
+vtkSmartPointer<vtkLight> SpotOverTheScene()
+{
+  auto spot = vtkSmartPointer<vtkLight>::New();
+  spot->SetLightTypeToSceneLight();
+  spot->SetPositional(true);
+  spot->SetPosition(-1.0, 0.5, 5.0);
+  spot->SetFocalPoint(0.0, 0.0, 0.0);
+  spot->SetConeAngle(40.0);
+  spot->SetAttenuationValues(1.0, 0.0, 0.0);
+  return spot;
+}
+
 // The test scene on the left half, seen from another side on the right, both
 // drawn through one cascaded pass.
 struct TwoSidesOneCascadedPass
@@ -604,14 +618,7 @@ TEST(ShadowEverydayUse, TwoRenderersWithOtherLights)
   scene.SetSun(SideSun);
   vtkNew<vtkRenderer> right;
   ShareSceneWithRightHalf(scene, right);
-  vtkNew<vtkLight> spot;
-  spot->SetLightTypeToSceneLight();
-  spot->SetPositional(true);
-  spot->SetPosition(-1.0, 0.5, 5.0);
-  spot->SetFocalPoint(0.0, 0.0, 0.0);
-  spot->SetConeAngle(40.0);
-  spot->SetAttenuationValues(1.0, 0.0, 0.0);
-  right->AddLight(spot);
+  right->AddLight(SpotOverTheScene());
   right->SetActiveCamera(scene.Renderer->GetActiveCamera());
   vtkNew<vtkWarpedShadowMapPass> pass;
   scene.Renderer->SetPass(pass);
@@ -660,12 +667,7 @@ TEST(ShadowEverydayUse, StereoEyesBuildShadersOnceForACodeChange)
   {
     TestScene scene(480, 240);
     scene.SetSun(SideSun);
-    vtkNew<vtkLight> spot;
-    spot->SetLightTypeToSceneLight();
-    spot->SetPositional(true);
-    spot->SetPosition(-1.0, 0.5, 5.0);
-    spot->SetFocalPoint(0.0, 0.0, 0.0);
-    spot->SetConeAngle(40.0);
+    vtkSmartPointer<vtkLight> spot = SpotOverTheScene();
     scene.Renderer->AddLight(spot);
     scene.Window->SetStereoTypeToSplitViewportHorizontal();
     scene.Window->SetStereoRender(stereo);
