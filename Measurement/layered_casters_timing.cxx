@@ -91,20 +91,30 @@ Mesh ContourOfWavelet()
   return mesh;
 }
 
+// Prints the GL's log for `object` where its status query says it failed.
+template <typename GetStatus, typename GetLog>
+void ReportFailure(GLuint object, GLenum status, GetStatus getStatus, GetLog getLog, const char* what)
+{
+  GLint ok = 0;
+  getStatus(object, status, &ok);
+  if (!ok)
+  {
+    char log[4096];
+    getLog(object, static_cast<GLsizei>(sizeof(log)), nullptr, log);
+    std::fprintf(stderr, "%s: %s\n", what, log);
+  }
+}
+
 GLuint Compile(GLenum stage, const std::string& source)
 {
   GLuint shader = glCreateShader(stage);
   const char* text = source.c_str();
   glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok)
-  {
-    char log[4096];
-    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-    std::fprintf(stderr, "shader: %s\n", log);
-  }
+  ReportFailure(
+    shader, GL_COMPILE_STATUS,
+    [](GLuint s, GLenum q, GLint* v) { glGetShaderiv(s, q, v); },
+    [](GLuint s, GLsizei n, GLsizei* l, GLchar* t) { glGetShaderInfoLog(s, n, l, t); }, "shader");
   return shader;
 }
 
@@ -118,14 +128,10 @@ GLuint Program(const std::string& vs, const std::string& gs, const std::string& 
   }
   glAttachShader(program, Compile(GL_FRAGMENT_SHADER, fs));
   glLinkProgram(program);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok)
-  {
-    char log[4096];
-    glGetProgramInfoLog(program, sizeof(log), nullptr, log);
-    std::fprintf(stderr, "program: %s\n", log);
-  }
+  ReportFailure(
+    program, GL_LINK_STATUS,
+    [](GLuint p, GLenum q, GLint* v) { glGetProgramiv(p, q, v); },
+    [](GLuint p, GLsizei n, GLsizei* l, GLchar* t) { glGetProgramInfoLog(p, n, l, t); }, "program");
   return program;
 }
 

@@ -122,10 +122,11 @@ bool MapGroups::Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s,
   }
   const bool shadowed = std::any_of(this->Groups.begin(), this->Groups.end(),
     [](const Group& group) { return !group.Update->Lights().empty(); });
-  this->Built.Select(renderer, this->CodeKey(), s, shadowed);
+  const std::string code = this->CodeKey();
+  this->Built.Select(renderer, code, s, shadowed);
   // Asked in every frame, shadowed or not: with several groups, every process
   // makes the same collective call.
-  if (!this->CodeCompiles(window, settings.Exchange))
+  if (!this->CodeCompiles(code, window, settings.Exchange))
   {
     // Every group still renders its step, failing: the other processes wait
     // for its answer.
@@ -148,9 +149,9 @@ bool MapGroups::Prepare(vtkOpenGLRenderer* renderer, const vtkRenderState* s,
 }
 
 //------------------------------------------------------------------------------
-bool MapGroups::CodeCompiles(vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange)
+bool MapGroups::CodeCompiles(
+  const std::string& key, vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange)
 {
-  const std::string key = this->CodeKey();
   auto checked = this->CheckedCodes.find(key);
   if (checked == this->CheckedCodes.end())
   {

@@ -127,9 +127,11 @@ private:
   void FormGroups(const std::vector<vtkShadowMapRepresentation*>& used,
     const std::vector<vtkShadowMapRepresentation*>& assigned, vtkOpenGLRenderWindow* window);
   void Release(Group& group, vtkWindow* window);
-  /// Whether the groups' code for the current renderer compiles (together),
-  /// tried once per code; with several groups, on every process alike.
-  bool CodeCompiles(vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange);
+  /// Whether the groups' code for the current renderer, of key `key`
+  /// (CodeKey), compiles (together), tried once per key; with several groups,
+  /// on every process alike.
+  bool CodeCompiles(
+    const std::string& key, vtkOpenGLRenderWindow* window, vtkShadowMapExchange* exchange);
   /// The keys of every group's code for the current renderer, in group order.
   std::string CodeKey() const;
 
